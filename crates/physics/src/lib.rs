@@ -1,0 +1,1 @@
+//! Exact event-driven billiards physics.
