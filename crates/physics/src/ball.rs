@@ -1,0 +1,131 @@
+//! Per-ball state and its closed-form motion between events.
+
+use crate::math::{Vec2, Vec3};
+use crate::table::Pocket;
+use serde::{Deserialize, Serialize};
+
+/// Index of a ball in a [`crate::Simulation`] (0 is the cue ball in every standard setup).
+pub type BallId = usize;
+
+/// A ball's motion state. Set explicitly at every event, never re-derived from a float
+/// comparison inside the event loop (see the reference's robustness lessons).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Motion {
+    /// At rest.
+    #[default]
+    Stationary,
+    /// Decelerating at the sliding rate.
+    Sliding,
+    /// Decelerating at the rolling rate.
+    Rolling,
+    /// Out of play, in this pocket.
+    Pocketed(Pocket),
+}
+
+impl Motion {
+    /// Moving on the table (not stationary, not pocketed).
+    pub fn is_moving(self) -> bool {
+        matches!(self, Motion::Sliding | Motion::Rolling)
+    }
+
+    /// In play (not pocketed).
+    pub fn on_table(self) -> bool {
+        !matches!(self, Motion::Pocketed(_))
+    }
+}
+
+/// A ball's kinematic state at one instant.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct BallState {
+    /// Centre, in the table plane, metres.
+    pub position: Vec2,
+    /// Velocity, m/s.
+    pub velocity: Vec2,
+    /// Angular velocity, rad/s (zero in the paper's model).
+    pub angular_velocity: Vec3,
+    /// Motion state.
+    pub motion: Motion,
+}
+
+/// The closed-form motion of one ball from one event to its next: constant acceleration, so
+/// the position is quadratic in time.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Segment {
+    /// Absolute time the segment starts, seconds.
+    pub start: f64,
+    /// State at `start`.
+    pub state: BallState,
+    /// Constant linear acceleration over the segment, m/s^2.
+    pub acceleration: Vec2,
+    /// Constant angular acceleration over the segment, rad/s^2.
+    pub angular_acceleration: Vec3,
+    /// Absolute time at which the motion state changes by itself (slide to roll, stop), if it
+    /// ever does.
+    pub end: Option<f64>,
+}
+
+impl Segment {
+    /// A segment at rest (or pocketed) from `start` on.
+    pub fn at_rest(start: f64, position: Vec2, motion: Motion) -> Self {
+        Self {
+            start,
+            state: BallState { position, motion, ..BallState::default() },
+            acceleration: Vec2::ZERO,
+            angular_acceleration: Vec3::ZERO,
+            end: None,
+        }
+    }
+
+    /// Position at absolute time `t` (within the segment).
+    #[inline]
+    pub fn position_at(&self, t: f64) -> Vec2 {
+        let tau = t - self.start;
+        let s = &self.state;
+        s.position + (s.velocity + self.acceleration * (0.5 * tau)) * tau
+    }
+
+    /// Velocity at absolute time `t`.
+    #[inline]
+    pub fn velocity_at(&self, t: f64) -> Vec2 {
+        self.state.velocity + self.acceleration * (t - self.start)
+    }
+
+    /// Full state at absolute time `t` (the motion state is the segment's).
+    pub fn state_at(&self, t: f64) -> BallState {
+        if !self.state.motion.is_moving() {
+            return self.state;
+        }
+        let tau = t - self.start;
+        BallState {
+            position: self.position_at(t),
+            velocity: self.velocity_at(t),
+            angular_velocity: self.state.angular_velocity + self.angular_acceleration * tau,
+            motion: self.state.motion,
+        }
+    }
+
+    /// An upper bound on how far the centre can move from its position at `t` before `t + h`.
+    /// Used to cull pairs that cannot meet before any polynomial is solved.
+    pub fn reach(&self, t: f64, h: f64) -> f64 {
+        if !self.state.motion.is_moving() {
+            return 0.0;
+        }
+        let v = self.velocity_at(t);
+        let (s, a) = (v.length(), self.acceleration.length());
+        let h = match self.end {
+            Some(end) => h.min(end - t),
+            None => h,
+        }
+        .max(0.0);
+        if a == 0.0 {
+            return s * h;
+        }
+        // Deceleration along the velocity: the ball travels at most s^2 / (2a).
+        if v.perp_dot(self.acceleration).abs() <= 1e-12 * s * a && v.dot(self.acceleration) < 0.0 {
+            let hs = h.min(s / a);
+            return s * hs - 0.5 * a * hs * hs;
+        }
+        s * h + 0.5 * a * h * h
+    }
+}

@@ -1,0 +1,49 @@
+//! Ball–ball time of impact: the smallest non-negative root of a quartic.
+
+use super::{Kinematics, RESTING_SPEED, SEPARATION};
+use crate::ball::Segment;
+use crate::math::Vec2;
+use crate::poly::{ContactTolerance, Poly, first_contact, root_bound};
+
+/// Time after `t` at which the balls of `a` and `b` touch, within `horizon` seconds.
+///
+/// With `dp`, `dv`, `da` the relative position, velocity and acceleration at `t`, contact is
+/// `|dp + dv τ + da τ²/2|² = (2R)²`, a quartic in τ (the paper's quadratic of 3.2 has
+/// `2 (dp · dv)` as its middle coefficient, slip 2, and omits `da`, slip 4).
+/// Pairs whose reachable discs cannot meet are culled before any polynomial is built.
+pub fn ball_ball(
+    a: &Segment,
+    b: &Segment,
+    t: f64,
+    radius: f64,
+    horizon: f64,
+    kin: Kinematics,
+) -> Option<f64> {
+    let (ma, mb) = (a.state.motion.is_moving(), b.state.motion.is_moving());
+    if !ma && !mb {
+        return None;
+    }
+    let dp = b.position_at(t) - a.position_at(t);
+    let contact = 2.0 * radius;
+    let reach = a.reach(t, horizon) + b.reach(t, horizon);
+    // Margin covers rounding in the reach bound itself.
+    if dp.length() - contact > reach * (1.0 + 1e-12) + 1e-12 {
+        return None;
+    }
+    let dv = b.velocity_at(t) - a.velocity_at(t);
+    let da = match kin {
+        Kinematics::Exact => b.acceleration - a.acceleration,
+        Kinematics::Linear => Vec2::ZERO,
+    };
+    let f = Poly::new([
+        dp.length_squared() - contact * contact,
+        2.0 * dp.dot(dv),
+        dv.length_squared() + dp.dot(da),
+        dv.dot(da),
+        0.25 * da.length_squared(),
+    ]);
+    let h = horizon.min(root_bound(&f));
+    // f' = 2 d · d' ≈ 2 (2R) × approach speed, so the speed tolerances scale by 4R.
+    let tol = ContactTolerance { slack: 2.0 * contact * RESTING_SPEED, separation: 2.0 * contact * SEPARATION };
+    first_contact(&f, h, tol)
+}

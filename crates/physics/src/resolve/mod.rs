@@ -1,0 +1,8 @@
+//! Resolution: what a contact does to the velocities. One model per collision kind, named
+//! after its source.
+
+mod ball_ball;
+mod ball_cushion;
+
+pub use ball_ball::equal_mass_restitution;
+pub use ball_cushion::reflect;
