@@ -70,7 +70,11 @@ impl Segment {
     pub fn at_rest(start: f64, position: Vec2, motion: Motion) -> Self {
         Self {
             start,
-            state: BallState { position, motion, ..BallState::default() },
+            state: BallState {
+                position,
+                motion,
+                ..BallState::default()
+            },
             acceleration: Vec2::ZERO,
             angular_acceleration: Vec3::ZERO,
             end: None,

@@ -63,6 +63,8 @@ impl History {
 
     /// Every ball's state at time `t`.
     pub fn states_at(&self, t: f64) -> Vec<BallState> {
-        (0..self.tracks.len()).map(|id| self.state_at(id, t)).collect()
+        (0..self.tracks.len())
+            .map(|id| self.state_at(id, t))
+            .collect()
     }
 }

@@ -13,14 +13,24 @@ pub fn segment_from(params: &Params, start: f64, position: Vec2, velocity: Vec2)
     if speed == 0.0 {
         return Segment::at_rest(start, position, Motion::Stationary);
     }
-    let motion = if speed > m.slide_roll_speed { Motion::Sliding } else { Motion::Rolling };
+    let motion = if speed > m.slide_roll_speed {
+        Motion::Sliding
+    } else {
+        Motion::Rolling
+    };
     paper_segment(params, start, position, velocity, motion)
 }
 
 /// The paper's decelerating segment in an explicit motion state: deceleration `mu g` against
 /// the velocity, ending where the speed reaches the slide/roll threshold (sliding) or zero
 /// (rolling).
-fn paper_segment(params: &Params, start: f64, position: Vec2, velocity: Vec2, motion: Motion) -> Segment {
+fn paper_segment(
+    params: &Params,
+    start: f64,
+    position: Vec2,
+    velocity: Vec2,
+    motion: Motion,
+) -> Segment {
     let Model::Paper(m) = params.model;
     let speed = velocity.length();
     let (decel, end_speed) = match motion {
@@ -30,7 +40,12 @@ fn paper_segment(params: &Params, start: f64, position: Vec2, velocity: Vec2, mo
     let dir = velocity / speed;
     Segment {
         start,
-        state: BallState { position, velocity, motion, ..BallState::default() },
+        state: BallState {
+            position,
+            velocity,
+            motion,
+            ..BallState::default()
+        },
         acceleration: dir * -decel,
         angular_acceleration: crate::Vec3::ZERO,
         end: (decel > 0.0).then(|| start + (speed - end_speed) / decel),
@@ -42,12 +57,20 @@ fn paper_segment(params: &Params, start: f64, position: Vec2, velocity: Vec2, mo
 /// speed, so a transition cannot fire again at the same instant.
 pub fn after_transition(params: &Params, seg: &Segment) -> Segment {
     let Model::Paper(m) = params.model;
-    let end = seg.end.expect("a transition happens only at a segment's end");
+    let end = seg
+        .end
+        .expect("a transition happens only at a segment's end");
     let position = seg.position_at(end);
     match seg.state.motion {
         Motion::Sliding if m.slide_roll_speed > 0.0 => {
             let dir = seg.state.velocity / seg.state.velocity.length();
-            paper_segment(params, end, position, dir * m.slide_roll_speed, Motion::Rolling)
+            paper_segment(
+                params,
+                end,
+                position,
+                dir * m.slide_roll_speed,
+                Motion::Rolling,
+            )
         }
         _ => Segment::at_rest(end, position, Motion::Stationary),
     }

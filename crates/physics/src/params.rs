@@ -135,20 +135,44 @@ pub struct ParamError {
     pub expected: &'static str,
 }
 
-fn check(name: &'static str, value: f64, ok: bool, expected: &'static str) -> Result<(), ParamError> {
+fn check(
+    name: &'static str,
+    value: f64,
+    ok: bool,
+    expected: &'static str,
+) -> Result<(), ParamError> {
     if value.is_finite() && ok {
         Ok(())
     } else {
-        Err(ParamError { name, value, expected })
+        Err(ParamError {
+            name,
+            value,
+            expected,
+        })
     }
 }
 
 impl Params {
     /// Checks that every parameter is finite and in its physical range.
     pub fn validate(&self) -> Result<(), ParamError> {
-        check("ball.radius", self.ball.radius, self.ball.radius > 0.0, "positive, metres")?;
-        check("ball.mass", self.ball.mass, self.ball.mass > 0.0, "positive, kg")?;
-        check("gravity", self.gravity, self.gravity >= 0.0, "non-negative, m/s^2")?;
+        check(
+            "ball.radius",
+            self.ball.radius,
+            self.ball.radius > 0.0,
+            "positive, metres",
+        )?;
+        check(
+            "ball.mass",
+            self.ball.mass,
+            self.ball.mass > 0.0,
+            "positive, kg",
+        )?;
+        check(
+            "gravity",
+            self.gravity,
+            self.gravity >= 0.0,
+            "non-negative, m/s^2",
+        )?;
         match self.model {
             Model::Paper(m) => {
                 check("mu_slide", m.mu_slide, m.mu_slide >= 0.0, "non-negative")?;
@@ -159,15 +183,34 @@ impl Params {
                     m.slide_roll_speed >= 0.0,
                     "non-negative, m/s",
                 )?;
-                check("e_ball", m.e_ball, (0.0..=1.0).contains(&m.e_ball), "in [0, 1]")?;
-                check("e_cushion", m.e_cushion, (0.0..=1.0).contains(&m.e_cushion), "in [0, 1]")?;
+                check(
+                    "e_ball",
+                    m.e_ball,
+                    (0.0..=1.0).contains(&m.e_ball),
+                    "in [0, 1]",
+                )?;
+                check(
+                    "e_cushion",
+                    m.e_cushion,
+                    (0.0..=1.0).contains(&m.e_cushion),
+                    "in [0, 1]",
+                )?;
             }
         }
         if let Some(r) = self.randomization {
-            check("randomization.spread", r.spread, (0.0..=0.5).contains(&r.spread), "in [0, 0.5] rad")?;
+            check(
+                "randomization.spread",
+                r.spread,
+                (0.0..=0.5).contains(&r.spread),
+                "in [0, 0.5] rad",
+            )?;
         }
         if self.max_events == 0 {
-            return Err(ParamError { name: "max_events", value: 0.0, expected: "at least 1" });
+            return Err(ParamError {
+                name: "max_events",
+                value: 0.0,
+                expected: "at least 1",
+            });
         }
         Ok(())
     }

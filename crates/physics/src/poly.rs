@@ -123,7 +123,7 @@ pub fn first_entry(p: &Poly, a: f64, b: f64) -> Option<f64> {
     if p.eval(a) <= 0.0 {
         return Some(a);
     }
-    if !(b > a) {
+    if b.is_nan() || b <= a {
         return None;
     }
     let crit = p.derivative().roots_in(a, b);
@@ -247,7 +247,10 @@ mod tests {
     #[test]
     fn quartic_with_four_simple_roots_finds_the_smallest_in_range() {
         let p = from_roots(&[0.5, 1.25, 2.0, 3.0]);
-        assert_eq!(first_entry(&p, 0.0, 10.0).map(|t| (t - 0.5).abs() < 1e-15), Some(true));
+        assert_eq!(
+            first_entry(&p, 0.0, 10.0).map(|t| (t - 0.5).abs() < 1e-15),
+            Some(true)
+        );
         let r = p.roots_in(0.0, 10.0);
         assert_eq!(r.1, 4);
         for (got, want) in r.0.iter().zip([0.5, 1.25, 2.0, 3.0]) {
@@ -293,22 +296,40 @@ mod tests {
     #[test]
     fn separating_touching_pair_has_no_false_root() {
         // f(t) = t (apart and moving apart from exact contact).
-        let tol = ContactTolerance { slack: 1e-12, separation: 1e-15 };
-        assert_eq!(first_contact(&Poly::new([0.0, 1.0, 0.0, 0.0, 0.0]), 5.0, tol), None);
+        let tol = ContactTolerance {
+            slack: 1e-12,
+            separation: 1e-15,
+        };
+        assert_eq!(
+            first_contact(&Poly::new([0.0, 1.0, 0.0, 0.0, 0.0]), 5.0, tol),
+            None
+        );
         // Slightly overlapping by rounding, separating: still none.
-        assert_eq!(first_contact(&Poly::new([-1e-19, 1.0, 0.0, 0.0, 0.0]), 5.0, tol), None);
+        assert_eq!(
+            first_contact(&Poly::new([-1e-19, 1.0, 0.0, 0.0, 0.0]), 5.0, tol),
+            None
+        );
     }
 
     #[test]
     fn touching_pair_that_approaches_collides_at_zero() {
-        let tol = ContactTolerance { slack: 1e-12, separation: 1e-15 };
-        assert_eq!(first_contact(&Poly::new([0.0, -1.0, 0.0, 0.0, 0.0]), 5.0, tol), Some(0.0));
+        let tol = ContactTolerance {
+            slack: 1e-12,
+            separation: 1e-15,
+        };
+        assert_eq!(
+            first_contact(&Poly::new([0.0, -1.0, 0.0, 0.0, 0.0]), 5.0, tol),
+            Some(0.0)
+        );
     }
 
     #[test]
     fn separating_pair_that_comes_back_collides_at_its_return() {
         // f = t (2 - t): apart on (0, 2), back in contact at 2.
-        let tol = ContactTolerance { slack: 1e-12, separation: 1e-15 };
+        let tol = ContactTolerance {
+            slack: 1e-12,
+            separation: 1e-15,
+        };
         let t = first_contact(&Poly::new([0.0, 2.0, -1.0, 0.0, 0.0]), 5.0, tol).unwrap();
         assert!((t - 2.0).abs() < 1e-12, "{t}");
     }

@@ -34,7 +34,13 @@ fn rack(table: &Table, ball: &BallSpec, gap: f64, rows: &[&[u8]]) -> Vec<BallSet
 
 /// Number order of an 8-ball rack: 1 at the apex, 8 in the middle, a solid and a stripe in
 /// the back corners.
-const FIFTEEN: [&[u8]; 5] = [&[1], &[9, 2], &[10, 8, 3], &[11, 7, 14, 4], &[5, 13, 15, 6, 12]];
+const FIFTEEN: [&[u8]; 5] = [
+    &[1],
+    &[9, 2],
+    &[10, 8, 3],
+    &[11, 7, 14, 4],
+    &[5, 13, 15, 6, 12],
+];
 
 /// The 15-ball rack of the paper (figure 2): 1/10 in between balls, apex on the foot spot.
 pub fn fifteen_ball(table: &Table, ball: &BallSpec) -> Vec<BallSetup> {
@@ -48,7 +54,12 @@ pub fn tight_rack(table: &Table, ball: &BallSpec) -> Vec<BallSetup> {
 
 /// A 9-ball diamond, tight: 1 on the foot spot, 9 in the centre.
 pub fn nine_ball(table: &Table, ball: &BallSpec) -> Vec<BallSetup> {
-    rack(table, ball, 0.0, &[&[1], &[2, 3], &[4, 9, 5], &[6, 7], &[8]])
+    rack(
+        table,
+        ball,
+        0.0,
+        &[&[1], &[2, 3], &[4, 9, 5], &[6, 7], &[8]],
+    )
 }
 
 /// A named standard layout (for scene files and the game's rack buttons).

@@ -33,7 +33,11 @@ pub struct BallSetup {
 impl BallSetup {
     /// A ball at rest.
     pub fn at(number: u8, position: Vec2) -> Self {
-        Self { number, position, velocity: Vec2::ZERO }
+        Self {
+            number,
+            position,
+            velocity: Vec2::ZERO,
+        }
     }
 }
 
@@ -140,7 +144,9 @@ impl Pending {
 
     fn precedes(&self, other: &Pending) -> bool {
         let (a, b) = (self.key(), other.key());
-        a.0.total_cmp(&b.0).then((a.1, a.2, a.3).cmp(&(b.1, b.2, b.3))) == Ordering::Less
+        a.0.total_cmp(&b.0)
+            .then((a.1, a.2, a.3).cmp(&(b.1, b.2, b.3)))
+            == Ordering::Less
     }
 
     fn involves(&self, id: BallId) -> bool {
@@ -186,20 +192,32 @@ impl Simulation {
         let bounds = table.centre_bounds(r);
         for (id, b) in balls.iter().enumerate() {
             if !b.position.is_finite() {
-                return Err(SetupError::NonFinite { ball: id, what: "position" });
+                return Err(SetupError::NonFinite {
+                    ball: id,
+                    what: "position",
+                });
             }
             if !b.velocity.is_finite() {
-                return Err(SetupError::NonFinite { ball: id, what: "velocity" });
+                return Err(SetupError::NonFinite {
+                    ball: id,
+                    what: "velocity",
+                });
             }
             if b.position.x.abs() > bounds.x + PLACEMENT_TOLERANCE
                 || b.position.y.abs() > bounds.y + PLACEMENT_TOLERANCE
             {
-                return Err(SetupError::OutsideTable { ball: id, x: b.position.x, y: b.position.y });
+                return Err(SetupError::OutsideTable {
+                    ball: id,
+                    x: b.position.x,
+                    y: b.position.y,
+                });
             }
         }
         check_overlaps(balls, r)?;
-        let segments: Vec<Segment> =
-            balls.iter().map(|b| motion::segment_from(&params, 0.0, b.position, b.velocity)).collect();
+        let segments: Vec<Segment> = balls
+            .iter()
+            .map(|b| motion::segment_from(&params, 0.0, b.position, b.velocity))
+            .collect();
         let mut sim = Self {
             table,
             params,
@@ -208,7 +226,9 @@ impl Simulation {
             cache: vec![None; segments.len()],
             segments,
             time: 0.0,
-            rng: params.randomization.map(|r| ChaCha8Rng::seed_from_u64(r.seed)),
+            rng: params
+                .randomization
+                .map(|r| ChaCha8Rng::seed_from_u64(r.seed)),
             bounds,
         };
         sim.predict_all();
@@ -288,13 +308,18 @@ impl Simulation {
         let mut count = 0;
         while let Some(p) = self.next_pending().filter(|p| p.time <= t) {
             if count == self.params.max_events {
-                return Err(SimError::EventCap { cap: count, time: self.time });
+                return Err(SimError::EventCap {
+                    cap: count,
+                    time: self.time,
+                });
             }
             self.process(p);
             count += 1;
         }
         self.time = t;
-        Ok(Advance { events: first..self.history.events().len() })
+        Ok(Advance {
+            events: first..self.history.events().len(),
+        })
     }
 
     /// Advances exactly to the next event and processes it (and only it); `None` at rest.
@@ -310,18 +335,26 @@ impl Simulation {
         let mut count = 0;
         while let Some(p) = self.next_pending() {
             if count == self.params.max_events {
-                return Err(SimError::EventCap { cap: count, time: self.time });
+                return Err(SimError::EventCap {
+                    cap: count,
+                    time: self.time,
+                });
             }
             self.process(p);
             count += 1;
         }
-        Ok(Advance { events: first..self.history.events().len() })
+        Ok(Advance {
+            events: first..self.history.events().len(),
+        })
     }
 
     /// Strikes ball `id` now (the paper's cue: an angle and a magnitude).
     pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
         if !(shot.angle.is_finite() && shot.speed.is_finite() && shot.speed >= 0.0) {
-            return Err(SetupError::BadShot { angle: shot.angle, speed: shot.speed });
+            return Err(SetupError::BadShot {
+                angle: shot.angle,
+                speed: shot.speed,
+            });
         }
         let state = self.ball_checked(id)?;
         let v = Vec2::from_angle(shot.angle) * shot.speed;
@@ -340,20 +373,34 @@ impl Simulation {
         let mut layout: Vec<BallSetup> = self
             .balls()
             .zip(&self.numbers)
-            .map(|(s, &n)| BallSetup { number: n, position: s.position, velocity: s.velocity })
+            .map(|(s, &n)| BallSetup {
+                number: n,
+                position: s.position,
+                velocity: s.velocity,
+            })
             .collect();
         layout[id].position = position;
         layout[id].velocity = velocity;
         if !position.is_finite() {
-            return Err(SetupError::NonFinite { ball: id, what: "position" });
+            return Err(SetupError::NonFinite {
+                ball: id,
+                what: "position",
+            });
         }
         if !velocity.is_finite() {
-            return Err(SetupError::NonFinite { ball: id, what: "velocity" });
+            return Err(SetupError::NonFinite {
+                ball: id,
+                what: "velocity",
+            });
         }
         if position.x.abs() > self.bounds.x + PLACEMENT_TOLERANCE
             || position.y.abs() > self.bounds.y + PLACEMENT_TOLERANCE
         {
-            return Err(SetupError::OutsideTable { ball: id, x: position.x, y: position.y });
+            return Err(SetupError::OutsideTable {
+                ball: id,
+                x: position.x,
+                y: position.y,
+            });
         }
         let r = self.params.ball.radius;
         for (j, other) in layout.iter().enumerate() {
@@ -361,7 +408,11 @@ impl Simulation {
             if j != id && on_table {
                 let overlap = 2.0 * r - (other.position - position).length();
                 if overlap > PLACEMENT_TOLERANCE {
-                    return Err(SetupError::Overlap { a: id.min(j), b: id.max(j), overlap });
+                    return Err(SetupError::Overlap {
+                        a: id.min(j),
+                        b: id.max(j),
+                        overlap,
+                    });
                 }
             }
         }
@@ -383,7 +434,9 @@ impl Simulation {
             }));
         }
         if params.randomization != self.params.randomization {
-            self.rng = params.randomization.map(|r| ChaCha8Rng::seed_from_u64(r.seed));
+            self.rng = params
+                .randomization
+                .map(|r| ChaCha8Rng::seed_from_u64(r.seed));
         }
         self.params = params;
         for seg in &mut self.segments {
@@ -392,7 +445,11 @@ impl Simulation {
                 *seg = motion::segment_from(&params, self.time, s.position, s.velocity);
             }
         }
-        let event = Event { time: self.time, kind: EventKind::ParamsChanged, after: Default::default() };
+        let event = Event {
+            time: self.time,
+            kind: EventKind::ParamsChanged,
+            after: Default::default(),
+        };
         self.history.push_all(event, &self.segments);
         self.predict_all();
         Ok(())
@@ -426,7 +483,10 @@ impl Simulation {
         }
         let kin = self.kinematics();
         let horizon = seg.end.map_or(f64::INFINITY, |e| e - t);
-        let mut best = seg.end.map(|end| Pending { time: end, kind: PendingKind::Transition(id) });
+        let mut best = seg.end.map(|end| Pending {
+            time: end,
+            kind: PendingKind::Transition(id),
+        });
         if seg.state.motion.is_moving() {
             for c in Cushion::ALL {
                 let limit = match c {
@@ -434,7 +494,13 @@ impl Simulation {
                     Cushion::Left | Cushion::Right => self.bounds.y,
                 };
                 if let Some(tau) = detect::ball_cushion(seg, t, c, limit, horizon, kin) {
-                    best = earlier(best, Some(Pending { time: t + tau, kind: PendingKind::Cushion(id, c) }));
+                    best = earlier(
+                        best,
+                        Some(Pending {
+                            time: t + tau,
+                            kind: PendingKind::Cushion(id, c),
+                        }),
+                    );
                 }
             }
         }
@@ -448,7 +514,13 @@ impl Simulation {
             let h = best.map_or(h, |b| h.min(b.time - t));
             if let Some(tau) = detect::ball_ball(seg, other, t, r, h, kin) {
                 let (a, b) = (id.min(j), id.max(j));
-                best = earlier(best, Some(Pending { time: t + tau, kind: PendingKind::Pair(a, b) }));
+                best = earlier(
+                    best,
+                    Some(Pending {
+                        time: t + tau,
+                        kind: PendingKind::Pair(a, b),
+                    }),
+                );
             }
         }
         best
@@ -465,7 +537,8 @@ impl Simulation {
     fn repredict(&mut self, touched: &[BallId]) {
         let t = self.time;
         for id in 0..self.segments.len() {
-            let stale = touched.contains(&id) || self.cache[id].is_some_and(|p| touched.iter().any(|&b| p.involves(b)));
+            let stale = touched.contains(&id)
+                || self.cache[id].is_some_and(|p| touched.iter().any(|&b| p.involves(b)));
             if stale {
                 self.cache[id] = self.predict(id, t);
             }
@@ -477,7 +550,11 @@ impl Simulation {
         for (slot, id) in after.iter_mut().zip(kind.balls()) {
             *slot = self.segments[id].state;
         }
-        let event = Event { time: self.time, kind, after };
+        let event = Event {
+            time: self.time,
+            kind,
+            after,
+        };
         self.history.push(event, &self.segments);
     }
 
@@ -525,13 +602,19 @@ impl Simulation {
             }
             PendingKind::Pair(a, b) => {
                 let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
-                let n = (sb.position - sa.position).normalized().unwrap_or(Vec2::new(1.0, 0.0));
+                let n = (sb.position - sa.position)
+                    .normalized()
+                    .unwrap_or(Vec2::new(1.0, 0.0));
                 let perturbed = self.perturbation().map(|ang| n.rotated(ang));
                 let approaching = |(va, vb): &(Vec2, Vec2)| (*va - *vb).dot(n) <= 0.0;
                 let (va, vb) = perturbed
-                    .and_then(|np| resolve::equal_mass_restitution(sa.velocity, sb.velocity, np, model.e_ball))
+                    .and_then(|np| {
+                        resolve::equal_mass_restitution(sa.velocity, sb.velocity, np, model.e_ball)
+                    })
                     .filter(approaching)
-                    .or_else(|| resolve::equal_mass_restitution(sa.velocity, sb.velocity, n, model.e_ball))
+                    .or_else(|| {
+                        resolve::equal_mass_restitution(sa.velocity, sb.velocity, n, model.e_ball)
+                    })
                     .unwrap_or((sa.velocity, sb.velocity));
                 self.segments[a] = motion::segment_from(&self.params, t, sa.position, va);
                 self.segments[b] = motion::segment_from(&self.params, t, sb.position, vb);
@@ -553,7 +636,11 @@ fn check_overlaps(balls: &[BallSetup], r: f64) -> Result<(), SetupError> {
             }
             let overlap = 2.0 * r - (balls[j].position - balls[i].position).length();
             if overlap > PLACEMENT_TOLERANCE {
-                return Err(SetupError::Overlap { a: i.min(j), b: i.max(j), overlap });
+                return Err(SetupError::Overlap {
+                    a: i.min(j),
+                    b: i.max(j),
+                    overlap,
+                });
             }
         }
     }

@@ -157,7 +157,10 @@ impl Table {
 
     /// Half extents of the rectangle the ball centres may occupy.
     pub fn centre_bounds(&self, ball_radius: f64) -> Vec2 {
-        Vec2::new(0.5 * self.length - ball_radius, 0.5 * self.width - ball_radius)
+        Vec2::new(
+            0.5 * self.length - ball_radius,
+            0.5 * self.width - ball_radius,
+        )
     }
 
     /// How far a corner mouth reaches along each cushion from the corner (the mouth runs
@@ -188,9 +191,17 @@ impl Table {
             Cushion::Head | Cushion::Foot => {
                 let head = cushion == Cushion::Head;
                 if centre.y >= hy - leg {
-                    Some(if head { Pocket::HeadLeft } else { Pocket::FootLeft })
+                    Some(if head {
+                        Pocket::HeadLeft
+                    } else {
+                        Pocket::FootLeft
+                    })
                 } else if centre.y <= -(hy - leg) {
-                    Some(if head { Pocket::HeadRight } else { Pocket::FootRight })
+                    Some(if head {
+                        Pocket::HeadRight
+                    } else {
+                        Pocket::FootRight
+                    })
                 } else {
                     None
                 }
@@ -198,11 +209,23 @@ impl Table {
             Cushion::Left | Cushion::Right => {
                 let left = cushion == Cushion::Left;
                 if centre.x.abs() <= 0.5 * self.side_mouth {
-                    Some(if left { Pocket::SideLeft } else { Pocket::SideRight })
+                    Some(if left {
+                        Pocket::SideLeft
+                    } else {
+                        Pocket::SideRight
+                    })
                 } else if centre.x >= hx - leg {
-                    Some(if left { Pocket::FootLeft } else { Pocket::FootRight })
+                    Some(if left {
+                        Pocket::FootLeft
+                    } else {
+                        Pocket::FootRight
+                    })
                 } else if centre.x <= -(hx - leg) {
-                    Some(if left { Pocket::HeadLeft } else { Pocket::HeadRight })
+                    Some(if left {
+                        Pocket::HeadLeft
+                    } else {
+                        Pocket::HeadRight
+                    })
                 } else {
                     None
                 }

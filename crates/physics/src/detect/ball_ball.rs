@@ -44,6 +44,9 @@ pub fn ball_ball(
     ]);
     let h = horizon.min(root_bound(&f));
     // f' = 2 d · d' ≈ 2 (2R) × approach speed, so the speed tolerances scale by 4R.
-    let tol = ContactTolerance { slack: 2.0 * contact * RESTING_SPEED, separation: 2.0 * contact * SEPARATION };
+    let tol = ContactTolerance {
+        slack: 2.0 * contact * RESTING_SPEED,
+        separation: 2.0 * contact * SEPARATION,
+    };
     first_contact(&f, h, tol)
 }

@@ -33,6 +33,9 @@ pub fn ball_cushion(
     }
     let gap = Poly::new([limit + n.dot(p), vn, 0.5 * an, 0.0, 0.0]);
     let h = horizon.min(root_bound(&gap));
-    let tol = ContactTolerance { slack: RESTING_SPEED, separation: SEPARATION };
+    let tol = ContactTolerance {
+        slack: RESTING_SPEED,
+        separation: SEPARATION,
+    };
     first_contact(&gap, h, tol)
 }

@@ -25,14 +25,19 @@ mod tests {
 
     #[test]
     fn head_on_elastic_collision_exchanges_velocities_exactly() {
-        let (a, b) = equal_mass_restitution(Vec2::new(2.5, 0.0), Vec2::ZERO, Vec2::new(1.0, 0.0), 1.0).unwrap();
+        let (a, b) =
+            equal_mass_restitution(Vec2::new(2.5, 0.0), Vec2::ZERO, Vec2::new(1.0, 0.0), 1.0)
+                .unwrap();
         assert_eq!(a, Vec2::ZERO);
         assert_eq!(b, Vec2::new(2.5, 0.0));
     }
 
     #[test]
     fn separating_balls_are_left_alone() {
-        assert!(equal_mass_restitution(Vec2::new(-1.0, 0.0), Vec2::ZERO, Vec2::new(1.0, 0.0), 1.0).is_none());
+        assert!(
+            equal_mass_restitution(Vec2::new(-1.0, 0.0), Vec2::ZERO, Vec2::new(1.0, 0.0), 1.0)
+                .is_none()
+        );
     }
 
     #[test]
@@ -43,6 +48,8 @@ mod tests {
         let p0 = va + vb;
         let p1 = a + b;
         assert!((p0 - p1).length() < 1e-15);
-        assert!(a.length_squared() + b.length_squared() < va.length_squared() + vb.length_squared());
+        assert!(
+            a.length_squared() + b.length_squared() < va.length_squared() + vb.length_squared()
+        );
     }
 }
