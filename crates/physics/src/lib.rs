@@ -29,6 +29,7 @@ pub mod params;
 pub mod poly;
 pub mod racks;
 pub mod resolve;
+pub mod scene;
 pub mod sim;
 pub mod table;
 

@@ -56,10 +56,11 @@ impl Vec2 {
         self.dot(self)
     }
 
-    /// Length.
+    /// Length (plain `sqrt`, not `hypot`: magnitudes here are far from overflow and this is
+    /// on the hot path).
     #[inline]
     pub fn length(self) -> f64 {
-        self.x.hypot(self.y)
+        self.length_squared().sqrt()
     }
 
     /// The unit vector along `self`, or `None` for the zero vector.

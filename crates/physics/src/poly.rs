@@ -15,9 +15,6 @@ pub struct Poly {
     pub c: [f64; 5],
 }
 
-/// Most roots a polynomial of degree four can have.
-type Roots = ([f64; 4], usize);
-
 impl Poly {
     /// A polynomial from its coefficients, lowest degree first.
     pub const fn new(c: [f64; 5]) -> Self {
@@ -53,65 +50,55 @@ impl Poly {
         Self::new(self.c.map(|x| -x))
     }
 
-    /// All roots in the open interval `(a, b)` where the sign changes or touches, ascending.
-    fn roots_in(&self, a: f64, b: f64) -> Roots {
-        let mut out = ([0.0; 4], 0);
+    /// Visits the roots of this polynomial in the open interval `(a, b)` in ascending order
+    /// (sign changes, and exact zeros at critical points) until `visit` returns `true`; returns
+    /// whether it stopped early. Lazy, so a caller that needs only the first root pays only for
+    /// the critical points before it.
+    fn for_each_root(&self, a: f64, b: f64, visit: &mut dyn FnMut(f64) -> bool) -> bool {
         match self.degree() {
-            0 => {}
+            0 => false,
             1 => {
                 let t = -self.c[0] / self.c[1];
-                if t > a && t < b {
-                    push(&mut out, t);
-                }
+                t > a && t < b && visit(t)
             }
             2 => {
                 let (q0, q1, q2) = (self.c[0], self.c[1], self.c[2]);
                 let disc = q1 * q1 - 4.0 * q2 * q0;
-                if disc >= 0.0 {
-                    // Numerically stable pair (no cancellation between -b and sqrt(disc)).
-                    let q = -0.5 * (q1 + q1.signum() * disc.sqrt());
-                    let (mut r1, mut r2) = (q / q2, if q != 0.0 { q0 / q } else { q / q2 });
-                    if r1 > r2 {
-                        std::mem::swap(&mut r1, &mut r2);
-                    }
-                    for r in [r1, r2] {
-                        if r > a && r < b && (out.1 == 0 || out.0[out.1 - 1] != r) {
-                            push(&mut out, r);
-                        }
-                    }
+                if disc < 0.0 {
+                    return false;
                 }
+                // Numerically stable pair (no cancellation between -b and sqrt(disc)).
+                let q = -0.5 * (q1 + q1.signum() * disc.sqrt());
+                let (mut r1, mut r2) = (q / q2, if q != 0.0 { q0 / q } else { q / q2 });
+                if r1 > r2 {
+                    std::mem::swap(&mut r1, &mut r2);
+                }
+                (r1 > a && r1 < b && visit(r1)) || (r2 != r1 && r2 > a && r2 < b && visit(r2))
             }
             _ => {
-                let crit = self.derivative().roots_in(a, b);
                 let mut lo = a;
                 let mut flo = self.eval(a);
-                for &hi in crit.0[..crit.1].iter().chain(std::iter::once(&b)) {
-                    let fhi = self.eval(hi);
-                    if (flo > 0.0 && fhi < 0.0) || (flo < 0.0 && fhi > 0.0) {
-                        let r = if flo > 0.0 {
-                            refine(self, lo, hi)
+                let mut piece = |hi: f64, fhi: f64, lo: &mut f64, flo: &mut f64| -> bool {
+                    let stop = if (*flo > 0.0 && fhi < 0.0) || (*flo < 0.0 && fhi > 0.0) {
+                        let r = if *flo > 0.0 {
+                            refine(self, *lo, hi, *flo, fhi)
                         } else {
-                            refine(&self.negated(), lo, hi)
+                            refine(&self.negated(), *lo, hi, -*flo, -fhi)
                         };
-                        if r > a && r < b {
-                            push(&mut out, r);
-                        }
-                    } else if fhi == 0.0 && hi < b {
-                        push(&mut out, hi);
-                    }
-                    lo = hi;
-                    flo = fhi;
+                        r > a && r < b && visit(r)
+                    } else {
+                        fhi == 0.0 && hi < b && visit(hi)
+                    };
+                    *lo = hi;
+                    *flo = fhi;
+                    stop
+                };
+                if self.derivative().for_each_root(a, b, &mut |c| piece(c, self.eval(c), &mut lo, &mut flo)) {
+                    return true;
                 }
+                piece(b, self.eval(b), &mut lo, &mut flo)
             }
         }
-        out
-    }
-}
-
-fn push(r: &mut Roots, t: f64) {
-    if r.1 < 4 {
-        r.0[r.1] = t;
-        r.1 += 1;
     }
 }
 
@@ -120,29 +107,42 @@ fn push(r: &mut Roots, t: f64) {
 /// The answer is the upper end of a bracket no wider than a few ulps, so `p` at the returned
 /// time is never positive: a contact is never reported before it is reached.
 pub fn first_entry(p: &Poly, a: f64, b: f64) -> Option<f64> {
-    if p.eval(a) <= 0.0 {
+    let fa = p.eval(a);
+    if fa <= 0.0 {
         return Some(a);
     }
     if b.is_nan() || b <= a {
         return None;
     }
-    let crit = p.derivative().roots_in(a, b);
-    let mut lo = a;
-    for &hi in crit.0[..crit.1].iter().chain(std::iter::once(&b)) {
-        if p.eval(hi) <= 0.0 {
-            return Some(refine(p, lo, hi));
+    let (mut lo, mut flo) = (a, fa);
+    let mut found = None;
+    // Between consecutive critical points p is monotone: the first piece whose end is not
+    // positive holds the first root.
+    p.derivative().for_each_root(a, b, &mut |c| {
+        let fc = p.eval(c);
+        if fc <= 0.0 {
+            found = Some(refine(p, lo, c, flo, fc));
+            return true;
         }
-        lo = hi;
+        (lo, flo) = (c, fc);
+        false
+    });
+    if found.is_some() {
+        return found;
     }
-    None
+    let fb = p.eval(b);
+    (fb <= 0.0).then(|| refine(p, lo, b, flo, fb))
 }
 
-/// Refines a bracket with `p(lo) > 0 >= p(hi)`, `p` monotone on it, to a few ulps; returns the
-/// upper end (where `p <= 0`).
-fn refine(p: &Poly, mut lo: f64, mut hi: f64) -> f64 {
+/// Refines a bracket with `p(lo) = flo > 0 >= p(hi) = fhi`, `p` monotone on it, to a few ulps;
+/// returns the upper end (where `p <= 0`). Safeguarded Newton started from the secant point.
+fn refine(p: &Poly, mut lo: f64, mut hi: f64, flo: f64, fhi: f64) -> f64 {
     let dp = p.derivative();
     let tol = |lo: f64, hi: f64| (4.0 * f64::EPSILON * hi.abs().max(lo.abs())).max(1e-300);
-    let mut x = 0.5 * (lo + hi);
+    let mut x = lo + (hi - lo) * (flo / (flo - fhi));
+    if !(x > lo && x < hi) {
+        x = 0.5 * (lo + hi);
+    }
     for _ in 0..200 {
         let fx = p.eval(x);
         if fx > 0.0 {
@@ -251,9 +251,13 @@ mod tests {
             first_entry(&p, 0.0, 10.0).map(|t| (t - 0.5).abs() < 1e-15),
             Some(true)
         );
-        let r = p.roots_in(0.0, 10.0);
-        assert_eq!(r.1, 4);
-        for (got, want) in r.0.iter().zip([0.5, 1.25, 2.0, 3.0]) {
+        let mut r = Vec::new();
+        p.for_each_root(0.0, 10.0, &mut |t| {
+            r.push(t);
+            false
+        });
+        assert_eq!(r.len(), 4);
+        for (got, want) in r.iter().zip([0.5, 1.25, 2.0, 3.0]) {
             assert!((got - want).abs() < 1e-14, "{got} vs {want}");
         }
     }

@@ -9,6 +9,7 @@ pub const INCH: f64 = 0.0254;
 /// One of the four cushions. The head end is at `-x` (where the cue ball starts), the foot
 /// at `+x`; left is `+y` looking from head to foot.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Cushion {
     /// The short cushion at `x = -length/2`.
     Head,
@@ -37,6 +38,7 @@ impl Cushion {
 
 /// One of the six pockets.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Pocket {
     /// Corner at `(-L/2, +W/2)`.
     HeadLeft,

@@ -27,7 +27,8 @@ pub fn ball_ball(
     let contact = 2.0 * radius;
     let reach = a.reach(t, horizon) + b.reach(t, horizon);
     // Margin covers rounding in the reach bound itself.
-    if dp.length() - contact > reach * (1.0 + 1e-12) + 1e-12 {
+    let reach = reach * (1.0 + 1e-12) + 1e-12 + contact;
+    if dp.length_squared() > reach * reach {
         return None;
     }
     let dv = b.velocity_at(t) - a.velocity_at(t);
