@@ -10,7 +10,12 @@ use std::hint::black_box;
 fn struck_break(speed: f64) -> Simulation {
     let table = Table::wpa_8ft();
     let params = Params::default();
-    let mut sim = Simulation::new(table, params, &Rack::FifteenBall.layout(&table, &params.ball)).unwrap();
+    let mut sim = Simulation::new(
+        table,
+        params,
+        &Rack::FifteenBall.layout(&table, &params.ball),
+    )
+    .unwrap();
     sim.strike(0, Shot { angle: 0.0, speed }).unwrap();
     sim
 }
@@ -24,7 +29,11 @@ fn break_to_rest(c: &mut Criterion) {
         let events = probe.history().events().len() as u64;
         g.throughput(Throughput::Elements(events));
         g.bench_function(format!("paper_15_ball_{speed}mps"), |b| {
-            b.iter_batched(|| sim.clone(), |mut s| black_box(s.run_to_rest().unwrap()), BatchSize::SmallInput)
+            b.iter_batched(
+                || sim.clone(),
+                |mut s| black_box(s.run_to_rest().unwrap()),
+                BatchSize::SmallInput,
+            )
         });
     }
     g.finish();
@@ -35,9 +44,17 @@ fn break_to_rest(c: &mut Criterion) {
 /// collision and the scene never comes to rest.
 fn gas(n: usize) -> Simulation {
     let k = (n as f64 / 16.0).sqrt();
-    let table = Table { corner_mouth: 1e-6, side_mouth: 1e-6, ..Table::scaled(k) };
+    let table = Table {
+        corner_mouth: 1e-6,
+        side_mouth: 1e-6,
+        ..Table::scaled(k)
+    };
     let params = Params {
-        model: Model::Paper(PaperModel { mu_slide: 0.0, mu_roll: 0.0, ..PaperModel::default() }),
+        model: Model::Paper(PaperModel {
+            mu_slide: 0.0,
+            mu_roll: 0.0,
+            ..PaperModel::default()
+        }),
         ..Params::default()
     };
     Simulation::new(table, params, &scattered(&table, &params.ball, n, 2.0, 7)).unwrap()

@@ -21,8 +21,15 @@ fn main() -> ExitCode {
     };
     match Scene::from_json(&text).and_then(|s| s.run()) {
         Ok(result) => {
-            println!("{}", serde_json::to_string_pretty(&result).expect("results serialize"));
-            if result.error.is_some() { ExitCode::FAILURE } else { ExitCode::SUCCESS }
+            println!(
+                "{}",
+                serde_json::to_string_pretty(&result).expect("results serialize")
+            );
+            if result.error.is_some() {
+                ExitCode::FAILURE
+            } else {
+                ExitCode::SUCCESS
+            }
         }
         Err(e) => {
             eprintln!("{path}: {e}");

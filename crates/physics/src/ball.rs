@@ -63,21 +63,49 @@ pub struct Segment {
     /// Absolute time at which the motion state changes by itself (slide to roll, stop), if it
     /// ever does.
     pub end: Option<f64>,
+    /// Speed at `start` and magnitude of `acceleration`, cached for the culling bound
+    /// [`Segment::reach`] on the hot path.
+    pub speed: f64,
+    /// Magnitude of `acceleration`.
+    pub accel: f64,
+    /// The acceleration is zero or exactly opposed to the velocity (a straight decelerating
+    /// path, as in the paper's model).
+    pub straight: bool,
 }
 
 impl Segment {
     /// A segment at rest (or pocketed) from `start` on.
     pub fn at_rest(start: f64, position: Vec2, motion: Motion) -> Self {
+        let state = BallState {
+            position,
+            motion,
+            ..BallState::default()
+        };
+        Self::new(start, state, Vec2::ZERO, Vec3::ZERO, None)
+    }
+
+    /// A segment from its state at `start`, its constant accelerations and its end.
+    pub fn new(
+        start: f64,
+        state: BallState,
+        acceleration: Vec2,
+        angular_acceleration: Vec3,
+        end: Option<f64>,
+    ) -> Self {
+        let v = state.velocity;
+        let (speed, accel) = (v.length(), acceleration.length());
+        let straight = accel == 0.0
+            || (v.perp_dot(acceleration).abs() <= 1e-12 * speed * accel
+                && v.dot(acceleration) < 0.0);
         Self {
             start,
-            state: BallState {
-                position,
-                motion,
-                ..BallState::default()
-            },
-            acceleration: Vec2::ZERO,
-            angular_acceleration: Vec3::ZERO,
-            end: None,
+            state,
+            acceleration,
+            angular_acceleration,
+            end,
+            speed,
+            accel,
+            straight,
         }
     }
 
@@ -115,21 +143,23 @@ impl Segment {
         if !self.state.motion.is_moving() {
             return 0.0;
         }
-        let v = self.velocity_at(t);
-        let (s, a) = (v.length(), self.acceleration.length());
+        let tau = t - self.start;
         let h = match self.end {
             Some(end) => h.min(end - t),
             None => h,
         }
         .max(0.0);
-        if a == 0.0 {
-            return s * h;
+        if self.straight {
+            // Decelerating along the velocity: speed s - a tau, travelling at most s^2 / (2a).
+            let s = (self.speed - self.accel * tau).max(0.0);
+            let hs = if self.accel > 0.0 {
+                h.min(s / self.accel)
+            } else {
+                h
+            };
+            return s * hs - 0.5 * self.accel * hs * hs;
         }
-        // Deceleration along the velocity: the ball travels at most s^2 / (2a).
-        if v.perp_dot(self.acceleration).abs() <= 1e-12 * s * a && v.dot(self.acceleration) < 0.0 {
-            let hs = h.min(s / a);
-            return s * hs - 0.5 * a * hs * hs;
-        }
-        s * h + 0.5 * a * h * h
+        let s = self.speed + self.accel * tau;
+        s * h + 0.5 * self.accel * h * h
     }
 }

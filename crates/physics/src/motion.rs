@@ -38,18 +38,14 @@ fn paper_segment(
         _ => (m.mu_roll * params.gravity, 0.0),
     };
     let dir = velocity / speed;
-    Segment {
-        start,
-        state: BallState {
-            position,
-            velocity,
-            motion,
-            ..BallState::default()
-        },
-        acceleration: dir * -decel,
-        angular_acceleration: crate::Vec3::ZERO,
-        end: (decel > 0.0).then(|| start + (speed - end_speed) / decel),
-    }
+    let state = BallState {
+        position,
+        velocity,
+        motion,
+        ..BallState::default()
+    };
+    let end = (decel > 0.0).then(|| start + (speed - end_speed) / decel);
+    Segment::new(start, state, dir * -decel, crate::Vec3::ZERO, end)
 }
 
 /// The segment after `seg` reaches its end by itself: sliding turns to rolling at exactly the

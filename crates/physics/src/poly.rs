@@ -93,7 +93,10 @@ impl Poly {
                     *flo = fhi;
                     stop
                 };
-                if self.derivative().for_each_root(a, b, &mut |c| piece(c, self.eval(c), &mut lo, &mut flo)) {
+                if self
+                    .derivative()
+                    .for_each_root(a, b, &mut |c| piece(c, self.eval(c), &mut lo, &mut flo))
+                {
                     return true;
                 }
                 piece(b, self.eval(b), &mut lo, &mut flo)

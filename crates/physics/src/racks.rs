@@ -92,7 +92,13 @@ impl Rack {
 /// `count` balls on a jittered grid filling the table (never overlapping, clear of the
 /// cushions), each moving in a random direction at a speed up to `max_speed`; reproducible
 /// from `seed`. For benchmarks and stress tests.
-pub fn scattered(table: &Table, ball: &BallSpec, count: usize, max_speed: f64, seed: u64) -> Vec<BallSetup> {
+pub fn scattered(
+    table: &Table,
+    ball: &BallSpec,
+    count: usize,
+    max_speed: f64,
+    seed: u64,
+) -> Vec<BallSetup> {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
     let b = table.centre_bounds(ball.radius);
     // Grid cells of equal aspect to the table, enough for `count` balls.
@@ -100,14 +106,25 @@ pub fn scattered(table: &Table, ball: &BallSpec, count: usize, max_speed: f64, s
     let rows = count.div_ceil(cols).max(1);
     let (cw, ch) = (2.0 * b.x / cols as f64, 2.0 * b.y / rows as f64);
     // Each ball may move within its cell by the slack left after its diameter.
-    let (jx, jy) = ((cw - 2.0 * ball.radius).max(0.0) * 0.5, (ch - 2.0 * ball.radius).max(0.0) * 0.5);
+    let (jx, jy) = (
+        (cw - 2.0 * ball.radius).max(0.0) * 0.5,
+        (ch - 2.0 * ball.radius).max(0.0) * 0.5,
+    );
     (0..count)
         .map(|i| {
             let (c, r) = (i % cols, i / cols);
             let centre = Vec2::new(-b.x + (c as f64 + 0.5) * cw, -b.y + (r as f64 + 0.5) * ch);
-            let jitter = Vec2::new(rng.random_range(-1.0..=1.0) * jx, rng.random_range(-1.0..=1.0) * jy);
-            let v = Vec2::from_angle(rng.random_range(0.0..std::f64::consts::TAU)) * (max_speed * rng.random::<f64>());
-            BallSetup { number: (i % 16) as u8, position: centre + jitter, velocity: v }
+            let jitter = Vec2::new(
+                rng.random_range(-1.0..=1.0) * jx,
+                rng.random_range(-1.0..=1.0) * jy,
+            );
+            let v = Vec2::from_angle(rng.random_range(0.0..std::f64::consts::TAU))
+                * (max_speed * rng.random::<f64>());
+            BallSetup {
+                number: (i % 16) as u8,
+                position: centre + jitter,
+                velocity: v,
+            }
         })
         .collect()
 }

@@ -144,7 +144,9 @@ impl Default for Scene {
         Self {
             table: Table::default(),
             params: Params::default(),
-            layout: Layout::Balls { balls: vec![BallSetup::at(0, Vec2::ZERO)] },
+            layout: Layout::Balls {
+                balls: vec![BallSetup::at(0, Vec2::ZERO)],
+            },
             shots: Vec::new(),
             duration: Duration::UntilRest,
         }
