@@ -22,11 +22,13 @@
 pub mod ball;
 pub mod detect;
 pub mod event;
+pub mod grid;
 pub mod history;
 pub mod math;
 pub mod motion;
 pub mod params;
 pub mod poly;
+pub mod queue;
 pub mod racks;
 pub mod resolve;
 pub mod scene;

@@ -3,10 +3,12 @@
 use crate::ball::{BallId, BallState, Motion, Segment};
 use crate::detect::{self, Kinematics};
 use crate::event::{Event, EventKind, Shot};
+use crate::grid::{Grid, Side};
 use crate::history::History;
 use crate::math::Vec2;
 use crate::motion;
 use crate::params::{Model, ParamError, Params, Prediction};
+use crate::queue::Tournament;
 use crate::resolve;
 use crate::table::{Cushion, Table, TableError};
 use rand::{Rng, SeedableRng};
@@ -126,19 +128,23 @@ struct Pending {
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum PendingKind {
+    /// Internal: the ball leaves its grid cell (no physical effect, not recorded).
+    Crossing(BallId, Side),
     Transition(BallId),
     Cushion(BallId, Cushion),
     Pair(BallId, BallId),
 }
 
 impl Pending {
-    /// Tie order between events at equal times: state transitions, then cushions, then ball
+    /// Tie order between events at equal times: grid crossings (bookkeeping, so that a
+    /// contact at the same instant is seen), state transitions, then cushions, then ball
     /// pairs (after pooltool), each by ball index, then by cushion order.
     fn key(&self) -> (f64, u8, BallId, usize) {
         match self.kind {
-            PendingKind::Transition(b) => (self.time, 0, b, 0),
-            PendingKind::Cushion(b, c) => (self.time, 1, b, c as usize),
-            PendingKind::Pair(a, b) => (self.time, 2, a, b),
+            PendingKind::Crossing(b, s) => (self.time, 0, b, s as usize),
+            PendingKind::Transition(b) => (self.time, 1, b, 0),
+            PendingKind::Cushion(b, c) => (self.time, 2, b, c as usize),
+            PendingKind::Pair(a, b) => (self.time, 3, a, b),
         }
     }
 
@@ -149,9 +155,20 @@ impl Pending {
             == Ordering::Less
     }
 
+    /// The other ball of a pair event, seen from `id`.
+    fn partner(&self, id: BallId) -> Option<BallId> {
+        match self.kind {
+            PendingKind::Pair(a, b) if a == id => Some(b),
+            PendingKind::Pair(a, b) if b == id => Some(a),
+            _ => None,
+        }
+    }
+
     fn involves(&self, id: BallId) -> bool {
         match self.kind {
-            PendingKind::Transition(b) | PendingKind::Cushion(b, _) => b == id,
+            PendingKind::Crossing(b, _)
+            | PendingKind::Transition(b)
+            | PendingKind::Cushion(b, _) => b == id,
             PendingKind::Pair(a, b) => a == id || b == id,
         }
     }
@@ -176,7 +193,15 @@ pub struct Simulation {
     params: Params,
     numbers: Vec<u8>,
     segments: Vec<Segment>,
-    cache: Vec<Option<Pending>>,
+    /// Each ball's earliest predicted event, and the earliest of them all.
+    cache: Tournament<Pending>,
+    /// For each ball, the balls whose cached event is a contact with it (may hold stale
+    /// entries; checked before use).
+    dependents: Vec<Vec<BallId>>,
+    /// Stamp of the prediction round that last predicted each ball, and the current round.
+    stamps: Vec<u64>,
+    round: u64,
+    grid: Grid,
     time: f64,
     history: History,
     rng: Option<ChaCha8Rng>,
@@ -223,7 +248,11 @@ impl Simulation {
             params,
             numbers: balls.iter().map(|b| b.number).collect(),
             history: History::new(&segments),
-            cache: vec![None; segments.len()],
+            cache: Tournament::new(segments.len()),
+            dependents: vec![Vec::new(); segments.len()],
+            stamps: vec![0; segments.len()],
+            round: 0,
+            grid: Grid::new(bounds, r, segments.len()),
             segments,
             time: 0.0,
             rng: params
@@ -324,8 +353,12 @@ impl Simulation {
 
     /// Advances exactly to the next event and processes it (and only it); `None` at rest.
     pub fn step_event(&mut self) -> Option<Event> {
-        let p = self.next_pending()?;
-        self.process(p);
+        let before = self.history.events().len();
+        // Grid crossings are internal: keep going until a physical event is recorded.
+        while self.history.events().len() == before {
+            let p = self.next_pending()?;
+            self.process(p);
+        }
         self.history.events().last().copied()
     }
 
@@ -471,7 +504,24 @@ impl Simulation {
     }
 
     fn next_pending(&self) -> Option<Pending> {
-        self.cache.iter().fold(None, |acc, p| earlier(acc, *p))
+        self.cache.best().map(|(_, p)| p)
+    }
+
+    /// Stores ball `id`'s prediction and indexes it under its partner, if any.
+    fn set_cache(&mut self, id: BallId, p: Option<Pending>) {
+        self.stamps[id] = self.round;
+        self.cache.set(id, p, Pending::precedes);
+        if let Some(partner) = p.and_then(|p| p.partner(id)) {
+            let deps = &mut self.dependents[partner];
+            deps.push(id);
+            if deps.len() > 64 {
+                // Drop stale entries so the list stays short in long runs.
+                let cache = &self.cache;
+                deps.retain(|&m| cache.get(m).is_some_and(|q| q.involves(partner)));
+                deps.sort_unstable();
+                deps.dedup();
+            }
+        }
     }
 
     /// The earliest event of ball `id` from time `t` on: its own transition, a cushion, or a
@@ -504,8 +554,32 @@ impl Simulation {
                 }
             }
         }
+        if seg.state.motion.is_moving() && self.grid.is_split() {
+            for (side, at) in self.grid.exits(id) {
+                let (n, offset) = match side {
+                    Side::XPlus => (Vec2::new(-1.0, 0.0), at),
+                    Side::XMinus => (Vec2::new(1.0, 0.0), -at),
+                    Side::YPlus => (Vec2::new(0.0, -1.0), at),
+                    Side::YMinus => (Vec2::new(0.0, 1.0), -at),
+                };
+                // Crossings follow the real path even in the linear comparison mode.
+                if let Some(tau) = detect::ball_line(seg, t, n, offset, horizon, Kinematics::Exact)
+                {
+                    best = earlier(
+                        best,
+                        Some(Pending {
+                            time: t + tau,
+                            kind: PendingKind::Crossing(id, side),
+                        }),
+                    );
+                }
+            }
+        }
         let r = self.params.ball.radius;
-        for (j, other) in self.segments.iter().enumerate() {
+        let all = (!self.grid.is_split()).then(|| 0..self.segments.len());
+        let near = self.grid.is_split().then(|| self.grid.neighbours(id));
+        for j in all.into_iter().flatten().chain(near.into_iter().flatten()) {
+            let other = &self.segments[j];
             if j == id || !other.state.motion.on_table() {
                 continue;
             }
@@ -527,20 +601,42 @@ impl Simulation {
     }
 
     fn predict_all(&mut self) {
+        self.round += 1;
+        for deps in &mut self.dependents {
+            deps.clear();
+        }
         for id in 0..self.segments.len() {
-            self.cache[id] = self.predict(id, self.time);
+            let on_table = self.segments[id].state.motion.on_table();
+            self.grid.set(
+                id,
+                on_table.then(|| self.segments[id].position_at(self.time)),
+            );
+        }
+        for id in 0..self.segments.len() {
+            let p = self.predict(id, self.time);
+            self.set_cache(id, p);
         }
     }
 
-    /// Re-predicts the balls an event changed, and every ball whose cached event involved one
-    /// of them; all other predictions stay valid.
+    /// Re-predicts the balls an event changed, and every ball whose cached event was a contact
+    /// with one of them; all other predictions stay valid.
     fn repredict(&mut self, touched: &[BallId]) {
         let t = self.time;
-        for id in 0..self.segments.len() {
-            let stale = touched.contains(&id)
-                || self.cache[id].is_some_and(|p| touched.iter().any(|&b| p.involves(b)));
-            if stale {
-                self.cache[id] = self.predict(id, t);
+        self.round += 1;
+        for &id in touched {
+            let on_table = self.segments[id].state.motion.on_table();
+            self.grid
+                .set(id, on_table.then(|| self.segments[id].state.position));
+            let p = self.predict(id, t);
+            self.set_cache(id, p);
+        }
+        for &id in touched {
+            for m in std::mem::take(&mut self.dependents[id]) {
+                let stale = self.cache.get(m).is_some_and(|p| p.involves(id));
+                if self.stamps[m] != self.round && stale {
+                    let p = self.predict(m, t);
+                    self.set_cache(m, p);
+                }
             }
         }
     }
@@ -574,6 +670,12 @@ impl Simulation {
         let t = p.time;
         let Model::Paper(model) = self.params.model;
         match p.kind {
+            PendingKind::Crossing(id, side) => {
+                self.grid.cross(id, side);
+                self.round += 1;
+                let p = self.predict(id, t);
+                self.set_cache(id, p);
+            }
             PendingKind::Transition(id) => {
                 let from = self.segments[id].state.motion;
                 self.segments[id] = motion::after_transition(&self.params, &self.segments[id]);
@@ -585,7 +687,6 @@ impl Simulation {
                 let s = self.segments[id].state_at(t);
                 if let Some(pocket) = self.table.pocket_at(cushion, s.position) {
                     self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
-                    self.cache[id] = None;
                     self.record(EventKind::Pocketed { ball: id, pocket });
                 } else {
                     let n = cushion.inward_normal();

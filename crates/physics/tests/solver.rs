@@ -410,3 +410,23 @@ fn changing_friction_mid_shot_reaches_the_moving_balls() {
     let expect = x + (v * v - 0.25) / (2.0 * a) + 0.25 / (2.0 * 0.1 * G);
     assert!(rel(sim.ball(0).position.x, expect) < 1e-12);
 }
+
+#[test]
+fn hundreds_of_balls_on_a_large_table_never_overlap_or_escape() {
+    // Above 64 balls the solver tests only balls in neighbouring grid cells; a pair it failed
+    // to test would show up here as an overlap.
+    let n = 400;
+    let table = Table::scaled((n as f64 / 16.0).sqrt());
+    let p = Params::default();
+    let balls = billiards_physics::racks::scattered(&table, &p.ball, n, 3.0, 11);
+    let mut sim = Simulation::new(table, p, &balls).unwrap();
+    sim.run_to_rest().unwrap();
+    let collisions = sim
+        .history()
+        .events()
+        .iter()
+        .filter(|e| matches!(e.kind, EventKind::BallBall { .. }))
+        .count();
+    assert!(collisions > 100, "only {collisions} collisions");
+    assert_no_overlap_or_escape(&sim, 1e-9);
+}

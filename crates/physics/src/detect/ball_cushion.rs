@@ -19,7 +19,19 @@ pub fn ball_cushion(
     horizon: f64,
     kin: Kinematics,
 ) -> Option<f64> {
-    let n = cushion.inward_normal();
+    ball_line(seg, t, cushion.inward_normal(), limit, horizon, kin)
+}
+
+/// Time after `t` at which the centre of the ball of `seg` reaches the line where
+/// `offset + n·p = 0`, coming from the side where it is positive, within `horizon` seconds.
+pub fn ball_line(
+    seg: &Segment,
+    t: f64,
+    n: crate::Vec2,
+    offset: f64,
+    horizon: f64,
+    kin: Kinematics,
+) -> Option<f64> {
     let p = seg.position_at(t);
     let v = seg.velocity_at(t);
     let a = match kin {
@@ -31,7 +43,7 @@ pub fn ball_cushion(
     if vn >= 0.0 && an >= 0.0 {
         return None;
     }
-    let gap = Poly::new([limit + n.dot(p), vn, 0.5 * an, 0.0, 0.0]);
+    let gap = Poly::new([offset + n.dot(p), vn, 0.5 * an, 0.0, 0.0]);
     let h = horizon.min(root_bound(&gap));
     let tol = ContactTolerance {
         slack: RESTING_SPEED,

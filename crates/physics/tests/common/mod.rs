@@ -66,15 +66,24 @@ pub fn assert_no_overlap_or_escape(sim: &Simulation, tol: f64) {
                 e.time,
                 s.position
             );
-            for (j, o) in states.iter().enumerate().skip(i + 1) {
-                if o.motion.on_table() {
-                    let overlap = 2.0 * r - (o.position - s.position).length();
-                    assert!(
-                        overlap <= tol,
-                        "balls {i},{j} overlap by {overlap} at t = {}",
-                        e.time
-                    );
+        }
+        // Sweep along x: only balls within 2R in x can overlap.
+        let mut order: Vec<usize> = (0..states.len())
+            .filter(|&i| states[i].motion.on_table())
+            .collect();
+        order.sort_by(|&i, &j| states[i].position.x.total_cmp(&states[j].position.x));
+        for (k, &i) in order.iter().enumerate() {
+            for &j in &order[k + 1..] {
+                let (s, o) = (&states[i], &states[j]);
+                if o.position.x - s.position.x > 2.0 * r {
+                    break;
                 }
+                let overlap = 2.0 * r - (o.position - s.position).length();
+                assert!(
+                    overlap <= tol,
+                    "balls {i},{j} overlap by {overlap} at t = {}",
+                    e.time
+                );
             }
         }
     }
