@@ -117,6 +117,9 @@ pub fn first_entry(p: &Poly, a: f64, b: f64) -> Option<f64> {
     if b.is_nan() || b <= a {
         return None;
     }
+    if p.degree() <= 2 {
+        return first_entry_quadratic(p, a, b);
+    }
     let (mut lo, mut flo) = (a, fa);
     let mut found = None;
     // Between consecutive critical points p is monotone: the first piece whose end is not
@@ -135,6 +138,43 @@ pub fn first_entry(p: &Poly, a: f64, b: f64) -> Option<f64> {
     }
     let fb = p.eval(b);
     (fb <= 0.0).then(|| refine(p, lo, b, flo, fb))
+}
+
+/// [`first_entry`] for degree at most two, in closed form (`p(a) > 0`, `a < b`): the
+/// numerically stable root, then nudged up by ulps until `p` is not positive there, so the
+/// contact is never reported early.
+fn first_entry_quadratic(p: &Poly, a: f64, b: f64) -> Option<f64> {
+    let (c0, c1, c2) = (p.c[0], p.c[1], p.c[2]);
+    let root = if c2 == 0.0 {
+        (c1 < 0.0).then(|| -c0 / c1)?
+    } else {
+        let disc = c1 * c1 - 4.0 * c2 * c0;
+        if disc < 0.0 {
+            return None;
+        }
+        let q = -0.5 * (c1 + c1.signum() * disc.sqrt());
+        let (r1, r2) = (q / c2, c0 / q);
+        let (lo, hi) = (r1.min(r2), r1.max(r2));
+        // Opening upwards p <= 0 between the roots; downwards, outside them.
+        let r = if c2 > 0.0 { lo } else { hi };
+        if r.is_nan() || r < a {
+            return None;
+        }
+        r
+    };
+    if root.is_nan() || root > b {
+        return None;
+    }
+    let mut t = root.max(a);
+    for _ in 0..16 {
+        if p.eval(t) <= 0.0 {
+            return Some(t);
+        }
+        t = t.next_up();
+    }
+    // Rounding left the closed form further off than expected: bracket it properly.
+    let fb = p.eval(b);
+    (fb <= 0.0).then(|| refine(p, a, b, p.eval(a), fb))
 }
 
 /// Refines a bracket with `p(lo) = flo > 0 >= p(hi) = fhi`, `p` monotone on it, to a few ulps;

@@ -576,7 +576,7 @@ impl Simulation {
             }
         }
         let r = self.params.ball.radius;
-        let all = (!self.grid.is_split()).then(|| 0..self.segments.len());
+        let all = (!self.grid.is_split()).then_some(0..self.segments.len());
         let near = self.grid.is_split().then(|| self.grid.neighbours(id));
         for j in all.into_iter().flatten().chain(near.into_iter().flatten()) {
             let other = &self.segments[j];
