@@ -50,14 +50,7 @@ fn main() {
         &Rack::FifteenBall.layout(&table, &params.ball),
     )
     .unwrap();
-    sim.strike(
-        0,
-        Shot {
-            angle: 0.0,
-            speed: 9.0,
-        },
-    )
-    .unwrap();
+    sim.strike(0, Shot::new(0.0, 9.0)).unwrap();
     let start = Instant::now();
     let mut events = 0;
     for _ in 0..n {

@@ -9,8 +9,22 @@ use serde::{Deserialize, Serialize};
 pub struct Shot {
     /// Direction, radians from +x (towards the foot) towards +y.
     pub angle: f64,
-    /// Speed given to the ball, m/s.
+    /// Speed given to the ball by a centre hit, m/s.
     pub speed: f64,
+    /// Where the tip strikes (spin model only).
+    #[serde(default)]
+    pub tip: crate::resolve::cue::TipOffset,
+}
+
+impl Shot {
+    /// A centre-ball shot.
+    pub fn new(angle: f64, speed: f64) -> Self {
+        Self {
+            angle,
+            speed,
+            tip: Default::default(),
+        }
+    }
 }
 
 /// What happened at an event.

@@ -14,7 +14,7 @@
 //! let params = Params::default();
 //! let balls = Rack::FifteenBall.layout(&table, &params.ball);
 //! let mut sim = Simulation::new(table, params, &balls).unwrap();
-//! sim.strike(0, Shot { angle: 0.0, speed: 10.0 }).unwrap();
+//! sim.strike(0, Shot::new(0.0, 10.0)).unwrap();
 //! sim.run_to_rest().unwrap();
 //! assert!(sim.is_at_rest());
 //! ```

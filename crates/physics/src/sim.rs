@@ -5,9 +5,9 @@ use crate::detect::{self, Kinematics};
 use crate::event::{Event, EventKind, Shot};
 use crate::grid::{Grid, Side};
 use crate::history::History;
-use crate::math::Vec2;
+use crate::math::{Vec2, Vec3};
 use crate::motion;
-use crate::params::{Model, ParamError, Params, Prediction};
+use crate::params::{CushionModel, Model, ParamError, Params, Prediction};
 use crate::queue::Tournament;
 use crate::resolve;
 use crate::table::{Cushion, Table, TableError};
@@ -30,6 +30,9 @@ pub struct BallSetup {
     /// Velocity, m/s.
     #[serde(default)]
     pub velocity: Vec2,
+    /// Angular velocity, rad/s (ignored by the paper's model, which has no spin).
+    #[serde(default)]
+    pub spin: Vec3,
 }
 
 impl BallSetup {
@@ -39,6 +42,15 @@ impl BallSetup {
             number,
             position,
             velocity: Vec2::ZERO,
+            spin: Vec3::ZERO,
+        }
+    }
+
+    /// A ball moving with `velocity` and no spin.
+    pub fn moving(number: u8, position: Vec2, velocity: Vec2) -> Self {
+        Self {
+            velocity,
+            ..Self::at(number, position)
         }
     }
 }
@@ -86,6 +98,9 @@ pub enum SetupError {
     /// The ball has been pocketed.
     #[error("ball {0} is pocketed")]
     Pocketed(BallId),
+    /// The cue tip offset is beyond the miscue limit.
+    #[error(transparent)]
+    Miscue(#[from] resolve::cue::Miscue),
     /// A shot's angle or speed is NaN, infinite, or the speed negative.
     #[error("shot angle {angle} rad and speed {speed} m/s must be finite, speed >= 0")]
     BadShot {
@@ -241,7 +256,7 @@ impl Simulation {
         check_overlaps(balls, r)?;
         let segments: Vec<Segment> = balls
             .iter()
-            .map(|b| motion::segment_from(&params, 0.0, b.position, b.velocity))
+            .map(|b| motion::segment_from(&params, 0.0, b.position, b.velocity, b.spin))
             .collect();
         let mut sim = Self {
             table,
@@ -311,7 +326,7 @@ impl Simulation {
 
     /// No ball is moving.
     pub fn is_at_rest(&self) -> bool {
-        self.segments.iter().all(|s| !s.state.motion.is_moving())
+        self.segments.iter().all(|s| s.state.motion.is_at_rest())
     }
 
     /// Time of the next event, if any.
@@ -381,17 +396,27 @@ impl Simulation {
         })
     }
 
-    /// Strikes ball `id` now (the paper's cue: an angle and a magnitude).
+    /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
+    /// takes the tip offset (the paper's model has no spin and ignores it).
     pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
-        if !(shot.angle.is_finite() && shot.speed.is_finite() && shot.speed >= 0.0) {
+        let finite = shot.angle.is_finite()
+            && shot.speed.is_finite()
+            && shot.tip.side.is_finite()
+            && shot.tip.height.is_finite();
+        if !(finite && shot.speed >= 0.0) {
             return Err(SetupError::BadShot {
                 angle: shot.angle,
                 speed: shot.speed,
             });
         }
         let state = self.ball_checked(id)?;
-        let v = Vec2::from_angle(shot.angle) * shot.speed;
-        self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v);
+        let dir = Vec2::from_angle(shot.angle);
+        let (r, mass) = (self.params.ball.radius, self.params.ball.mass);
+        let (v, w) = match self.params.model {
+            Model::Paper(_) => (dir * shot.speed, Vec3::ZERO),
+            Model::Spin(m) => resolve::cue::strike(&m, mass, r, dir, shot.speed, shot.tip)?,
+        };
+        self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v, w);
         self.record(EventKind::Strike { ball: id, shot });
         self.repredict(&[id]);
         Ok(())
@@ -399,32 +424,24 @@ impl Simulation {
 
     /// Sets ball `id`'s position and velocity now (editing, respotting). The new position must
     /// be on the table and clear of the other balls.
-    pub fn place(&mut self, id: BallId, position: Vec2, velocity: Vec2) -> Result<(), SetupError> {
+    pub fn place(
+        &mut self,
+        id: BallId,
+        position: Vec2,
+        velocity: Vec2,
+        spin: Vec3,
+    ) -> Result<(), SetupError> {
         if id >= self.segments.len() {
             return Err(SetupError::NoSuchBall(id));
         }
-        let mut layout: Vec<BallSetup> = self
-            .balls()
-            .zip(&self.numbers)
-            .map(|(s, &n)| BallSetup {
-                number: n,
-                position: s.position,
-                velocity: s.velocity,
-            })
-            .collect();
-        layout[id].position = position;
-        layout[id].velocity = velocity;
-        if !position.is_finite() {
-            return Err(SetupError::NonFinite {
-                ball: id,
-                what: "position",
-            });
-        }
-        if !velocity.is_finite() {
-            return Err(SetupError::NonFinite {
-                ball: id,
-                what: "velocity",
-            });
+        for (what, ok) in [
+            ("position", position.is_finite()),
+            ("velocity", velocity.is_finite()),
+            ("spin", spin.is_finite()),
+        ] {
+            if !ok {
+                return Err(SetupError::NonFinite { ball: id, what });
+            }
         }
         if position.x.abs() > self.bounds.x + PLACEMENT_TOLERANCE
             || position.y.abs() > self.bounds.y + PLACEMENT_TOLERANCE
@@ -436,10 +453,9 @@ impl Simulation {
             });
         }
         let r = self.params.ball.radius;
-        for (j, other) in layout.iter().enumerate() {
-            let on_table = self.segments[j].state.motion.on_table();
-            if j != id && on_table {
-                let overlap = 2.0 * r - (other.position - position).length();
+        for (j, seg) in self.segments.iter().enumerate() {
+            if j != id && seg.state.motion.on_table() {
+                let overlap = 2.0 * r - (seg.position_at(self.time) - position).length();
                 if overlap > PLACEMENT_TOLERANCE {
                     return Err(SetupError::Overlap {
                         a: id.min(j),
@@ -449,7 +465,7 @@ impl Simulation {
                 }
             }
         }
-        self.segments[id] = motion::segment_from(&self.params, self.time, position, velocity);
+        self.segments[id] = motion::segment_from(&self.params, self.time, position, velocity, spin);
         self.record(EventKind::Placed { ball: id });
         self.repredict(&[id]);
         Ok(())
@@ -473,9 +489,15 @@ impl Simulation {
         }
         self.params = params;
         for seg in &mut self.segments {
-            if seg.state.motion.is_moving() {
+            if seg.state.motion.on_table() && !seg.state.motion.is_at_rest() {
                 let s = seg.state_at(self.time);
-                *seg = motion::segment_from(&params, self.time, s.position, s.velocity);
+                *seg = motion::segment_from(
+                    &params,
+                    self.time,
+                    s.position,
+                    s.velocity,
+                    s.angular_velocity,
+                );
             }
         }
         let event = Event {
@@ -668,7 +690,6 @@ impl Simulation {
         debug_assert!(p.time >= self.time, "time never goes back");
         self.time = p.time;
         let t = p.time;
-        let Model::Paper(model) = self.params.model;
         match p.kind {
             PendingKind::Crossing(id, side) => {
                 self.grid.cross(id, side);
@@ -689,14 +710,8 @@ impl Simulation {
                     self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
                     self.record(EventKind::Pocketed { ball: id, pocket });
                 } else {
-                    let n = cushion.inward_normal();
-                    let perturbed = self.perturbation().map(|a| n.rotated(a));
-                    let v = perturbed
-                        .and_then(|np| resolve::reflect(s.velocity, np, model.e_cushion))
-                        .filter(|v| v.dot(n) >= 0.0)
-                        .or_else(|| resolve::reflect(s.velocity, n, model.e_cushion))
-                        .unwrap_or(s.velocity);
-                    self.segments[id] = motion::segment_from(&self.params, t, s.position, v);
+                    let (v, w) = self.cushion_response(&s, cushion.inward_normal());
+                    self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                     self.record(EventKind::Cushion { ball: id, cushion });
                 }
                 self.repredict(&[id]);
@@ -706,23 +721,71 @@ impl Simulation {
                 let n = (sb.position - sa.position)
                     .normalized()
                     .unwrap_or(Vec2::new(1.0, 0.0));
-                let perturbed = self.perturbation().map(|ang| n.rotated(ang));
-                let approaching = |(va, vb): &(Vec2, Vec2)| (*va - *vb).dot(n) <= 0.0;
-                let (va, vb) = perturbed
-                    .and_then(|np| {
-                        resolve::equal_mass_restitution(sa.velocity, sb.velocity, np, model.e_ball)
-                    })
-                    .filter(approaching)
-                    .or_else(|| {
-                        resolve::equal_mass_restitution(sa.velocity, sb.velocity, n, model.e_ball)
-                    })
-                    .unwrap_or((sa.velocity, sb.velocity));
-                self.segments[a] = motion::segment_from(&self.params, t, sa.position, va);
-                self.segments[b] = motion::segment_from(&self.params, t, sb.position, vb);
+                let (na, nb) = self.pair_response(&sa, &sb, n);
+                self.segments[a] = motion::segment_from(
+                    &self.params,
+                    t,
+                    sa.position,
+                    na.velocity,
+                    na.angular_velocity,
+                );
+                self.segments[b] = motion::segment_from(
+                    &self.params,
+                    t,
+                    sb.position,
+                    nb.velocity,
+                    nb.angular_velocity,
+                );
                 self.record(EventKind::BallBall { a, b });
                 self.repredict(&[a, b]);
             }
         }
+    }
+
+    /// Velocity and spin after a cushion contact with inward normal `n`, under the model in
+    /// force; with randomization the normal is perturbed, unless that would send the ball out.
+    fn cushion_response(&mut self, s: &BallState, n: Vec2) -> (Vec2, Vec3) {
+        let (v, w, r) = (s.velocity, s.angular_velocity, self.params.ball.radius);
+        let model = self.params.model;
+        let respond = |n: Vec2| match model {
+            Model::Paper(m) => resolve::reflect(v, n, m.e_cushion).map(|v| (v, w)),
+            Model::Spin(m) => match m.cushion {
+                CushionModel::Reflect { e } => resolve::reflect(v, n, e).map(|v| (v, w)),
+                CushionModel::Han2005 { e, mu } => {
+                    resolve::han_2005(v, w, n, e, mu, r, 2.0 * r * m.cushion_height)
+                }
+            },
+        };
+        let perturbed = self.perturbation().map(|a| n.rotated(a));
+        perturbed
+            .and_then(respond)
+            .filter(|(v, _)| v.dot(n) >= 0.0)
+            .or_else(|| respond(n))
+            .unwrap_or((v, w))
+    }
+
+    /// States after a ball–ball contact along unit normal `n` (from `a` to `b`), under the
+    /// model in force; with randomization the normal is perturbed, unless that would leave the
+    /// balls approaching along the true normal.
+    fn pair_response(&mut self, a: &BallState, b: &BallState, n: Vec2) -> (BallState, BallState) {
+        let (r, model) = (self.params.ball.radius, self.params.model);
+        let respond = |n: Vec2| match model {
+            Model::Paper(m) => resolve::equal_mass_restitution(a.velocity, b.velocity, n, m.e_ball)
+                .map(|(va, vb)| {
+                    (
+                        BallState { velocity: va, ..*a },
+                        BallState { velocity: vb, ..*b },
+                    )
+                }),
+            Model::Spin(m) => resolve::frictional_spheres(a, b, n, m.e_ball, m.mu_ball, r),
+        };
+        let separating = |(x, y): &(BallState, BallState)| (x.velocity - y.velocity).dot(n) <= 0.0;
+        let perturbed = self.perturbation().map(|ang| n.rotated(ang));
+        perturbed
+            .and_then(respond)
+            .filter(separating)
+            .or_else(|| respond(n))
+            .unwrap_or((*a, *b))
     }
 }
 

@@ -10,16 +10,7 @@ pub fn huge_table() -> Table {
 
 /// One ball at the origin with velocity `v`.
 pub fn one_ball(table: Table, params: Params, v: Vec2) -> Simulation {
-    Simulation::new(
-        table,
-        params,
-        &[BallSetup {
-            number: 0,
-            position: Vec2::ZERO,
-            velocity: v,
-        }],
-    )
-    .unwrap()
+    Simulation::new(table, params, &[BallSetup::moving(0, Vec2::ZERO, v)]).unwrap()
 }
 
 /// Default parameters with the paper model `model`.
@@ -104,13 +95,6 @@ pub fn break_shot(rack: Rack, speed: f64, params: Params) -> Simulation {
     let balls = rack.layout(&table, &params.ball);
     let mut sim = Simulation::new(table, params, &balls).unwrap();
     // Slightly off the centre line so the break is not perfectly symmetric.
-    sim.strike(
-        0,
-        Shot {
-            angle: 0.002,
-            speed,
-        },
-    )
-    .unwrap();
+    sim.strike(0, Shot::new(0.002, speed)).unwrap();
     sim
 }
