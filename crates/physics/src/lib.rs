@@ -39,7 +39,11 @@ pub use ball::{BallId, BallState, Motion, Segment};
 pub use event::{Event, EventKind, Shot};
 pub use history::History;
 pub use math::{Vec2, Vec3};
-pub use params::{BallSpec, G, Model, PaperModel, ParamError, Params, Prediction, Randomization};
+pub use params::{
+    BallSpec, CushionModel, G, Model, PaperModel, ParamError, Params, Prediction, Randomization,
+    SpinModel,
+};
 pub use racks::Rack;
+pub use resolve::cue::{Miscue, TipOffset};
 pub use sim::{Advance, BallSetup, SetupError, SimError, Simulation};
 pub use table::{Cushion, Pocket, Table, TableError};

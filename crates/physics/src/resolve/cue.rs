@@ -42,7 +42,7 @@ pub fn strike(
     tip: TipOffset,
 ) -> Result<(Vec2, Vec3), Miscue> {
     let offset = (tip.side * tip.side + tip.height * tip.height).sqrt();
-    if !(offset <= model.miscue_limit) {
+    if offset.is_nan() || offset > model.miscue_limit {
         return Err(Miscue {
             offset,
             limit: model.miscue_limit,
