@@ -2,7 +2,8 @@
 //! per event; for profiling the solver (`perf record`, `valgrind --tool=callgrind`).
 //!
 //! ```text
-//! profile_break [breaks]          # 15-ball breaks at 9 m/s
+//! profile_break [breaks]          # 15-ball breaks at 9 m/s (paper model)
+//! profile_break spin9 [breaks]    # 9-ball breaks at 8 m/s (spin model)
 //! profile_break gas N EVENTS      # N balls, no friction, EVENTS events
 //! ```
 
@@ -41,16 +42,31 @@ fn main() {
         );
         return;
     }
-    let n: usize = args.first().and_then(|s| s.parse().ok()).unwrap_or(2000);
+    let spin = args.first().map(String::as_str) == Some("spin9");
+    let n: usize = args
+        .get(usize::from(spin))
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(2000);
     let table = Table::wpa_8ft();
-    let params = Params::default();
-    let mut sim = Simulation::new(
-        table,
-        params,
-        &Rack::FifteenBall.layout(&table, &params.ball),
-    )
-    .unwrap();
-    sim.strike(0, Shot::new(0.0, 9.0)).unwrap();
+    let sim = if spin {
+        // Issue 4's break: spin model, cue ball on the head string aimed at the 1-ball, 8 m/s.
+        let params = Params {
+            model: Model::Spin(SpinModel::default()),
+            ..Params::default()
+        };
+        let mut balls = Rack::NineBall.layout(&table, &params.ball);
+        balls[0].position = Vec2::new(-0.25 * table.length, 0.1);
+        let aim = (balls[1].position - balls[0].position).angle();
+        let mut sim = Simulation::new(table, params, &balls).unwrap();
+        sim.strike(0, Shot::new(aim, 8.0)).unwrap();
+        sim
+    } else {
+        let params = Params::default();
+        let balls = Rack::FifteenBall.layout(&table, &params.ball);
+        let mut sim = Simulation::new(table, params, &balls).unwrap();
+        sim.strike(0, Shot::new(0.0, 9.0)).unwrap();
+        sim
+    };
     let start = Instant::now();
     let mut events = 0;
     for _ in 0..n {
