@@ -61,6 +61,13 @@ pub enum EventKind {
         /// The cushion.
         cushion: Cushion,
     },
+    /// A ball hit the rounded end of a cushion at a pocket mouth and rebounded.
+    Jaw {
+        /// The ball.
+        ball: BallId,
+        /// The pocket whose jaw it hit.
+        pocket: Pocket,
+    },
     /// A ball reached a cushion inside a pocket mouth and left play.
     Pocketed {
         /// The ball.
@@ -85,6 +92,7 @@ impl EventKind {
             | EventKind::Placed { ball }
             | EventKind::Transition { ball, .. }
             | EventKind::Cushion { ball, .. }
+            | EventKind::Jaw { ball, .. }
             | EventKind::Pocketed { ball, .. } => (Some(ball), None),
             EventKind::BallBall { a, b } => (Some(a), Some(b)),
             EventKind::ParamsChanged => (None, None),
@@ -94,7 +102,10 @@ impl EventKind {
 
     /// Is this a collision (ball–ball or cushion)?
     pub fn is_collision(&self) -> bool {
-        matches!(self, EventKind::Cushion { .. } | EventKind::BallBall { .. })
+        matches!(
+            self,
+            EventKind::Cushion { .. } | EventKind::Jaw { .. } | EventKind::BallBall { .. }
+        )
     }
 }
 

@@ -46,4 +46,4 @@ pub use params::{
 pub use racks::Rack;
 pub use resolve::cue::{Miscue, TipOffset};
 pub use sim::{Advance, BallSetup, SetupError, SimError, Simulation};
-pub use table::{Cushion, Pocket, Table, TableError};
+pub use table::{Cushion, Jaw, Opening, Pocket, PocketShape, Table, TableError};

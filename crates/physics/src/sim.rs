@@ -10,7 +10,7 @@ use crate::motion;
 use crate::params::{CushionModel, Model, ParamError, Params, Prediction};
 use crate::queue::Tournament;
 use crate::resolve;
-use crate::table::{Cushion, Table, TableError};
+use crate::table::{Cushion, Jaw, Opening, PocketShape, Table, TableError};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
@@ -147,6 +147,10 @@ enum PendingKind {
     Crossing(BallId, Side),
     Transition(BallId),
     Cushion(BallId, Cushion),
+    /// Contact with jaw `k` of `Simulation::jaws`.
+    Jaw(BallId, usize),
+    /// The ball's centre crosses pocket opening `k` of `Simulation::openings`.
+    Opening(BallId, usize),
     Pair(BallId, BallId),
 }
 
@@ -158,8 +162,10 @@ impl Pending {
         match self.kind {
             PendingKind::Crossing(b, s) => (self.time, 0, b, s as usize),
             PendingKind::Transition(b) => (self.time, 1, b, 0),
-            PendingKind::Cushion(b, c) => (self.time, 2, b, c as usize),
-            PendingKind::Pair(a, b) => (self.time, 3, a, b),
+            PendingKind::Opening(b, k) => (self.time, 2, b, k),
+            PendingKind::Cushion(b, c) => (self.time, 3, b, c as usize),
+            PendingKind::Jaw(b, k) => (self.time, 4, b, k),
+            PendingKind::Pair(a, b) => (self.time, 5, a, b),
         }
     }
 
@@ -183,7 +189,9 @@ impl Pending {
         match self.kind {
             PendingKind::Crossing(b, _)
             | PendingKind::Transition(b)
-            | PendingKind::Cushion(b, _) => b == id,
+            | PendingKind::Cushion(b, _)
+            | PendingKind::Jaw(b, _)
+            | PendingKind::Opening(b, _) => b == id,
             PendingKind::Pair(a, b) => a == id || b == id,
         }
     }
@@ -217,6 +225,9 @@ pub struct Simulation {
     stamps: Vec<u64>,
     round: u64,
     grid: Grid,
+    /// Pocket jaws and openings (empty unless the table has jaws).
+    jaws: Vec<Jaw>,
+    openings: Vec<Opening>,
     time: f64,
     history: History,
     rng: Option<ChaCha8Rng>,
@@ -268,6 +279,11 @@ impl Simulation {
             stamps: vec![0; segments.len()],
             round: 0,
             grid: Grid::new(bounds, r, segments.len()),
+            jaws: table.jaws(),
+            openings: match table.pockets {
+                PocketShape::Mouth => Vec::new(),
+                PocketShape::Jaws { .. } => table.openings().to_vec(),
+            },
             segments,
             time: 0.0,
             rng: params
@@ -561,16 +577,41 @@ impl Simulation {
         });
         if seg.state.motion.is_moving() {
             for c in Cushion::ALL {
-                let limit = match c {
-                    Cushion::Head | Cushion::Foot => self.bounds.x,
-                    Cushion::Left | Cushion::Right => self.bounds.y,
-                };
-                if let Some(tau) = detect::ball_cushion(seg, t, c, limit, horizon, kin) {
+                if let Some(tau) = self.cushion_contact(seg, t, c, horizon, kin) {
+                    let kind = PendingKind::Cushion(id, c);
                     best = earlier(
                         best,
                         Some(Pending {
                             time: t + tau,
-                            kind: PendingKind::Cushion(id, c),
+                            kind,
+                        }),
+                    );
+                }
+            }
+            let jaw_contact = self.params.ball.radius + self.jaw_radius();
+            for (k, jaw) in self.jaws.iter().enumerate() {
+                let h = best.map_or(horizon, |b| horizon.min(b.time - t));
+                if let Some(tau) = detect::ball_jaw(seg, t, jaw.centre, jaw_contact, h, kin) {
+                    let kind = PendingKind::Jaw(id, k);
+                    best = earlier(
+                        best,
+                        Some(Pending {
+                            time: t + tau,
+                            kind,
+                        }),
+                    );
+                }
+            }
+            for (k, o) in self.openings.iter().enumerate() {
+                // The real path decides when a ball drops, even in the linear comparison mode.
+                let exact = Kinematics::Exact;
+                if let Some(tau) = detect::ball_line(seg, t, o.normal, o.offset, horizon, exact) {
+                    let kind = PendingKind::Opening(id, k);
+                    best = earlier(
+                        best,
+                        Some(Pending {
+                            time: t + tau,
+                            kind,
                         }),
                     );
                 }
@@ -620,6 +661,63 @@ impl Simulation {
             }
         }
         best
+    }
+
+    fn jaw_radius(&self) -> f64 {
+        match self.table.pockets {
+            PocketShape::Jaws { radius } => radius,
+            PocketShape::Mouth => 0.0,
+        }
+    }
+
+    /// When the ball of `seg` next touches `cushion`. With the paper's mouths, any contact
+    /// with the cushion line counts (a contact inside a mouth pockets the ball). With jaws,
+    /// only contacts on the cushion itself count: a root in a mouth means the ball crossed the
+    /// line's extension into the mouth, and the search goes on from where it comes back out.
+    fn cushion_contact(
+        &self,
+        seg: &Segment,
+        t: f64,
+        cushion: Cushion,
+        horizon: f64,
+        kin: Kinematics,
+    ) -> Option<f64> {
+        let limit = match cushion {
+            Cushion::Head | Cushion::Foot => self.bounds.x,
+            Cushion::Left | Cushion::Right => self.bounds.y,
+        };
+        let n = cushion.inward_normal();
+        let mut from = 0.0;
+        // A path is a parabola: it crosses a line at most twice, so two retries suffice.
+        for _ in 0..3 {
+            let tau = detect::ball_line(seg, t + from, n, limit, horizon - from, kin)? + from;
+            if self.table.pockets == PocketShape::Mouth
+                || self.table.on_cushion(cushion, seg.position_at(t + tau))
+            {
+                return Some(tau);
+            }
+            // In a mouth: skip to where the centre is back on the table side of the line.
+            let p = seg.position_at(t + tau);
+            let v = seg.velocity_at(t + tau);
+            let a = match kin {
+                Kinematics::Exact => seg.acceleration,
+                Kinematics::Linear => Vec2::ZERO,
+            };
+            let back = crate::poly::Poly::new([
+                -(limit + n.dot(p)) + detect::SEPARATION,
+                -n.dot(v),
+                -0.5 * n.dot(a),
+                0.0,
+                0.0,
+            ]);
+            let out = crate::poly::first_entry(
+                &back,
+                0.0,
+                (horizon - tau).min(crate::poly::root_bound(&back)),
+            )?;
+            from = tau + out.max(f64::EPSILON * (t + tau).abs());
+        }
+        None
     }
 
     fn predict_all(&mut self) {
@@ -704,9 +802,34 @@ impl Simulation {
                 self.record(EventKind::Transition { ball: id, from, to });
                 self.repredict(&[id]);
             }
+            PendingKind::Opening(id, k) => {
+                let s = self.segments[id].state_at(t);
+                let pocket = self.openings[k].pocket;
+                self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
+                self.record(EventKind::Pocketed { ball: id, pocket });
+                self.repredict(&[id]);
+            }
+            PendingKind::Jaw(id, k) => {
+                let s = self.segments[id].state_at(t);
+                let jaw = self.jaws[k];
+                let n = (s.position - jaw.centre)
+                    .normalized()
+                    .unwrap_or(Vec2::new(0.0, 1.0));
+                let (v, w) = self.cushion_response(&s, n);
+                self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
+                self.record(EventKind::Jaw {
+                    ball: id,
+                    pocket: jaw.pocket,
+                });
+                self.repredict(&[id]);
+            }
             PendingKind::Cushion(id, cushion) => {
                 let s = self.segments[id].state_at(t);
-                if let Some(pocket) = self.table.pocket_at(cushion, s.position) {
+                let mouth = match self.table.pockets {
+                    PocketShape::Mouth => self.table.pocket_at(cushion, s.position),
+                    PocketShape::Jaws { .. } => None,
+                };
+                if let Some(pocket) = mouth {
                     self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
                     self.record(EventKind::Pocketed { ball: id, pocket });
                 } else {

@@ -1,6 +1,6 @@
 //! Ball–cushion time of impact: the smallest valid root of a quadratic.
 
-use super::{Kinematics, RESTING_SPEED, SEPARATION};
+use super::{Kinematics, SEPARATION, resting_speed};
 use crate::ball::Segment;
 use crate::poly::{ContactTolerance, Poly, first_contact, root_bound};
 use crate::table::Cushion;
@@ -46,7 +46,7 @@ pub fn ball_line(
     let gap = Poly::new([offset + n.dot(p), vn, 0.5 * an, 0.0, 0.0]);
     let h = horizon.min(root_bound(&gap));
     let tol = ContactTolerance {
-        slack: RESTING_SPEED,
+        slack: resting_speed(an.abs()),
         separation: SEPARATION,
     };
     first_contact(&gap, h, tol)
