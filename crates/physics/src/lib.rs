@@ -30,6 +30,7 @@ pub mod params;
 pub mod poly;
 pub mod queue;
 pub mod racks;
+pub mod recording;
 pub mod resolve;
 pub mod scene;
 pub mod sim;

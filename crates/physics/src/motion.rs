@@ -59,6 +59,25 @@ pub fn segment_from(
     }
 }
 
+/// The segment for a state whose motion state is already decided (an event's recorded
+/// after-state): the same segment the solver built for it, without re-deriving the state.
+pub fn segment_with_motion(params: &Params, start: f64, state: &BallState) -> Segment {
+    let (p, v, w) = (state.position, state.velocity, state.angular_velocity);
+    match (params.model, state.motion) {
+        (_, Motion::Stationary | Motion::Pocketed(_)) => Segment::at_rest(start, p, state.motion),
+        (Model::Paper(_), motion) => paper_segment(params, start, p, v, motion),
+        (Model::Spin(m), Motion::Sliding) => sliding(
+            params,
+            &m,
+            start,
+            *state,
+            contact_velocity(state, params.ball.radius),
+        ),
+        (Model::Spin(m), Motion::Rolling) => rolling(params, &m, start, p, v, w.z),
+        (Model::Spin(m), Motion::Spinning) => spinning_or_still(params, &m, start, p, w.z),
+    }
+}
+
 /// Velocity of the ball's contact point with the cloth, `v + w x (-R z)`.
 pub fn contact_velocity(s: &BallState, radius: f64) -> Vec2 {
     let w = s.angular_velocity;
