@@ -134,9 +134,9 @@ pub enum Verdict {
         /// Index of the first differing event.
         index: usize,
         /// The recorded event there, if any.
-        recorded: Option<Event>,
+        recorded: Option<Box<Event>>,
         /// The re-simulated event there, if any.
-        replayed: Option<Event>,
+        replayed: Option<Box<Event>>,
     },
 }
 
