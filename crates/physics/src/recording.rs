@@ -193,8 +193,8 @@ impl Recording {
             if bits(a) != bits(b) {
                 return Ok(Verdict::Differs {
                     index,
-                    recorded: a.copied(),
-                    replayed: b.copied(),
+                    recorded: a.map(|e| Box::new(*e)),
+                    replayed: b.map(|e| Box::new(*e)),
                 });
             }
         }
