@@ -1,1 +1,50 @@
 //! Exact event-driven billiards physics.
+//!
+//! This crate implements Anderson's "Realistic Billiards Simulation with Variable Time-Step":
+//! the simulation never takes a fixed step; it advances exactly to the next event, resolves
+//! it, and continues with the time left. Unlike the paper, contact times are exact for the
+//! decelerating motion the balls really follow (quadratic roots for cushions, quartic for ball
+//! pairs); the paper's linear prediction is kept as [`Prediction::PaperLinear`] for comparison.
+//!
+//! Units are SI; the table plane is `x` (head to foot) by `y` (left positive), `z` up.
+//!
+//! ```
+//! use billiards_physics::{Params, Rack, Shot, Simulation, Table};
+//! let table = Table::wpa_8ft();
+//! let params = Params::default();
+//! let balls = Rack::FifteenBall.layout(&table, &params.ball);
+//! let mut sim = Simulation::new(table, params, &balls).unwrap();
+//! sim.strike(0, Shot::new(0.0, 10.0)).unwrap();
+//! sim.run_to_rest().unwrap();
+//! assert!(sim.is_at_rest());
+//! ```
+
+pub mod ball;
+pub mod detect;
+pub mod event;
+pub mod grid;
+pub mod history;
+pub mod math;
+pub mod motion;
+pub mod params;
+pub mod poly;
+pub mod queue;
+pub mod racks;
+pub mod recording;
+pub mod resolve;
+pub mod scene;
+pub mod sim;
+pub mod table;
+
+pub use ball::{BallId, BallState, Motion, Segment};
+pub use event::{Event, EventKind, Shot};
+pub use history::History;
+pub use math::{Vec2, Vec3};
+pub use params::{
+    BallSpec, CushionModel, G, Model, PaperModel, ParamError, Params, Prediction, Randomization,
+    SpinModel,
+};
+pub use racks::Rack;
+pub use resolve::cue::{Miscue, TipOffset};
+pub use sim::{Advance, BallSetup, SetupError, SimError, Simulation};
+pub use table::{Cushion, Jaw, Opening, Pocket, PocketShape, Table, TableError};

@@ -1,0 +1,84 @@
+//! Ball–ball time of impact: the smallest non-negative root of a quartic.
+
+use super::{Kinematics, SEPARATION, resting_speed};
+use crate::ball::Segment;
+use crate::math::Vec2;
+use crate::poly::{ContactTolerance, Poly, first_contact, root_bound};
+
+/// Time after `t` at which the balls of `a` and `b` touch, within `horizon` seconds.
+///
+/// With `dp`, `dv`, `da` the relative position, velocity and acceleration at `t`, contact is
+/// `|dp + dv τ + da τ²/2|² = (2R)²`, a quartic in τ (the paper's quadratic of 3.2 has
+/// `2 (dp · dv)` as its middle coefficient, slip 2, and omits `da`, slip 4).
+/// Pairs whose reachable discs cannot meet are culled before any polynomial is built.
+pub fn ball_ball(
+    a: &Segment,
+    b: &Segment,
+    t: f64,
+    radius: f64,
+    horizon: f64,
+    kin: Kinematics,
+) -> Option<f64> {
+    let (ma, mb) = (a.state.motion.is_moving(), b.state.motion.is_moving());
+    if !ma && !mb {
+        return None;
+    }
+    let dp = b.position_at(t) - a.position_at(t);
+    let contact = 2.0 * radius;
+    let reach = a.reach(t, horizon) + b.reach(t, horizon);
+    // Margin covers rounding in the reach bound itself.
+    let reach = reach * (1.0 + 1e-12) + 1e-12 + contact;
+    if dp.length_squared() > reach * reach {
+        return None;
+    }
+    let dv = b.velocity_at(t) - a.velocity_at(t);
+    let da = match kin {
+        Kinematics::Exact => b.acceleration - a.acceleration,
+        Kinematics::Linear => Vec2::ZERO,
+    };
+    contact_quartic(dp, dv, da, contact, horizon)
+}
+
+/// First time within `horizon` at which `|dp + dv τ + da τ²/2|` comes down to `contact`
+/// (a contact that starts; see [`first_contact`]).
+fn contact_quartic(dp: Vec2, dv: Vec2, da: Vec2, contact: f64, horizon: f64) -> Option<f64> {
+    let f = Poly::new([
+        dp.length_squared() - contact * contact,
+        2.0 * dp.dot(dv),
+        dv.length_squared() + dp.dot(da),
+        dv.dot(da),
+        0.25 * da.length_squared(),
+    ]);
+    let h = horizon.min(root_bound(&f));
+    // f' = 2 d · d' ≈ 2 (contact) × approach speed, so the speed tolerances scale by it.
+    let tol = ContactTolerance {
+        slack: 2.0 * contact * resting_speed(da.length()),
+        separation: 2.0 * contact * SEPARATION,
+    };
+    first_contact(&f, h, tol)
+}
+
+/// Time after `t` at which the ball of `seg` touches a fixed circle (a rounded pocket jaw)
+/// centred at `centre`, their centres then `contact` apart: the same quartic as two balls.
+pub fn ball_jaw(
+    seg: &Segment,
+    t: f64,
+    centre: Vec2,
+    contact: f64,
+    horizon: f64,
+    kin: Kinematics,
+) -> Option<f64> {
+    if !seg.state.motion.is_moving() {
+        return None;
+    }
+    let dp = seg.position_at(t) - centre;
+    let reach = seg.reach(t, horizon) * (1.0 + 1e-12) + 1e-12 + contact;
+    if dp.length_squared() > reach * reach {
+        return None;
+    }
+    let a = match kin {
+        Kinematics::Exact => seg.acceleration,
+        Kinematics::Linear => Vec2::ZERO,
+    };
+    contact_quartic(dp, seg.velocity_at(t), a, contact, horizon)
+}

@@ -1,0 +1,53 @@
+//! Ball–cushion time of impact: the smallest valid root of a quadratic.
+
+use super::{Kinematics, SEPARATION, resting_speed};
+use crate::ball::Segment;
+use crate::poly::{ContactTolerance, Poly, first_contact, root_bound};
+use crate::table::Cushion;
+
+/// Time after `t` at which the ball of `seg` reaches `cushion`, within `horizon` seconds.
+///
+/// `limit` is how far the centre may go from the table's centre line towards this cushion
+/// (half the length or width, minus the radius). The gap `limit + n·p(τ)` (n the inward
+/// normal) is quadratic in τ; the contact is its first root (paper 3.1, with the deceleration
+/// of 3.3 that the paper's linear ray test leaves out).
+pub fn ball_cushion(
+    seg: &Segment,
+    t: f64,
+    cushion: Cushion,
+    limit: f64,
+    horizon: f64,
+    kin: Kinematics,
+) -> Option<f64> {
+    ball_line(seg, t, cushion.inward_normal(), limit, horizon, kin)
+}
+
+/// Time after `t` at which the centre of the ball of `seg` reaches the line where
+/// `offset + n·p = 0`, coming from the side where it is positive, within `horizon` seconds.
+pub fn ball_line(
+    seg: &Segment,
+    t: f64,
+    n: crate::Vec2,
+    offset: f64,
+    horizon: f64,
+    kin: Kinematics,
+) -> Option<f64> {
+    let p = seg.position_at(t);
+    let v = seg.velocity_at(t);
+    let a = match kin {
+        Kinematics::Exact => seg.acceleration,
+        Kinematics::Linear => crate::Vec2::ZERO,
+    };
+    let (vn, an) = (n.dot(v), n.dot(a));
+    // Moving away and never turning back: no contact (the common case, decided without roots).
+    if vn >= 0.0 && an >= 0.0 {
+        return None;
+    }
+    let gap = Poly::new([offset + n.dot(p), vn, 0.5 * an, 0.0, 0.0]);
+    let h = horizon.min(root_bound(&gap));
+    let tol = ContactTolerance {
+        slack: resting_speed(an.abs()),
+        separation: SEPARATION,
+    };
+    first_contact(&gap, h, tol)
+}

@@ -1,0 +1,343 @@
+//! Physical parameters: the ball, the model and its constants, prediction and randomization.
+
+use serde::{Deserialize, Serialize};
+
+/// Standard gravity, m/s^2.
+pub const G: f64 = 9.80665;
+
+/// Ball size and mass (WPA: 2.25 in diameter; the paper writes "radius").
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BallSpec {
+    /// Radius, metres (half of 2.25 in: the paper's slip 1 corrected).
+    pub radius: f64,
+    /// Mass, kg (the paper's 5.5 oz).
+    pub mass: f64,
+}
+
+impl Default for BallSpec {
+    fn default() -> Self {
+        Self {
+            radius: 0.5 * 2.25 * crate::table::INCH,
+            mass: 5.5 * 0.028_349_523_125,
+        }
+    }
+}
+
+/// The paper's model: no spin; a ball slides (mu_s g deceleration) above a speed threshold and
+/// rolls (mu_r g) below it; reflection at cushions and equal-mass normal exchange between balls,
+/// each with a restitution factor (1 reproduces the paper).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct PaperModel {
+    /// Sliding friction coefficient ball–cloth (paper 3.4 "kinetic"), dimensionless.
+    pub mu_slide: f64,
+    /// Rolling resistance coefficient ball–cloth (paper 3.4 "static"), dimensionless.
+    pub mu_roll: f64,
+    /// Speed below which a ball rolls instead of sliding, m/s.
+    pub slide_roll_speed: f64,
+    /// Ball–ball restitution (1: the paper's exact exchange of normal components).
+    pub e_ball: f64,
+    /// Ball–cushion restitution (1: the paper's mirror reflection).
+    pub e_cushion: f64,
+}
+
+impl Default for PaperModel {
+    fn default() -> Self {
+        // Friction from the reference's typical values; the paper gives no threshold, so the
+        // slide/roll speed is a chosen 0.5 m/s (a medium shot slides for its first part).
+        Self {
+            mu_slide: 0.2,
+            mu_roll: 0.01,
+            slide_roll_speed: 0.5,
+            e_ball: 1.0,
+            e_cushion: 1.0,
+        }
+    }
+}
+
+/// How a ball rebounds from a cushion in the spin model.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum CushionModel {
+    /// Mirror reflection of the velocity with restitution `e`; spin untouched.
+    Reflect {
+        /// Restitution of the normal velocity.
+        e: f64,
+    },
+    /// Han (2005), "Dynamics in carom and three cushion billiards": an impulse at the cushion
+    /// nose (above the ball's centre) with restitution and Coulomb friction, so running and
+    /// reverse english change the rebound angle and the spin.
+    Han2005 {
+        /// Restitution along the contact normal.
+        e: f64,
+        /// Ball–cushion friction coefficient.
+        mu: f64,
+    },
+}
+
+impl Default for CushionModel {
+    fn default() -> Self {
+        CushionModel::Han2005 { e: 0.85, mu: 0.2 }
+    }
+}
+
+/// The realistic model with spin (Leckie & Greenspan's event-based model, as in pooltool and
+/// FastFiz): sliding and rolling friction acting at the contact point, spin about the vertical
+/// decaying on its own, frictional ball–ball collisions (throw) and a spin-aware cushion.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SpinModel {
+    /// Sliding friction ball–cloth.
+    pub mu_slide: f64,
+    /// Rolling resistance ball–cloth.
+    pub mu_roll: f64,
+    /// Friction of spin about the vertical: it decays at `5 mu_spin g / (2R)`.
+    pub mu_spin: f64,
+    /// Ball–ball restitution.
+    pub e_ball: f64,
+    /// Ball–ball friction (cut- and spin-induced throw).
+    pub mu_ball: f64,
+    /// The cushion model.
+    pub cushion: CushionModel,
+    /// Height of the cushion nose above the cloth as a fraction of the ball's diameter.
+    pub cushion_height: f64,
+    /// Mass of the cue stick, kg (sets how much of the cue's speed a tip offset costs).
+    pub cue_mass: f64,
+    /// Largest tip offset from the ball's centre, as a fraction of its radius, before a miscue.
+    pub miscue_limit: f64,
+}
+
+impl Default for SpinModel {
+    fn default() -> Self {
+        // The reference's typical values (pooltool, FastFiz, Alciatore); cushion nose at
+        // 63.5 % of the diameter (WPA).
+        Self {
+            mu_slide: 0.2,
+            mu_roll: 0.01,
+            mu_spin: 0.044,
+            e_ball: 0.95,
+            mu_ball: 0.05,
+            cushion: CushionModel::default(),
+            cushion_height: 0.635,
+            cue_mass: 0.54,
+            miscue_limit: 0.5,
+        }
+    }
+}
+
+/// Which physics model resolves the motion and the collisions.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Model {
+    /// Anderson's model (sections 3.1–3.4), slips corrected.
+    Paper(PaperModel),
+    /// Spin, tip offsets, throw and a spin-aware cushion.
+    Spin(SpinModel),
+}
+
+impl Model {
+    /// Sliding and rolling friction coefficients.
+    pub fn friction(&self) -> (f64, f64) {
+        match self {
+            Model::Paper(m) => (m.mu_slide, m.mu_roll),
+            Model::Spin(m) => (m.mu_slide, m.mu_roll),
+        }
+    }
+}
+
+impl Default for Model {
+    fn default() -> Self {
+        Model::Paper(PaperModel::default())
+    }
+}
+
+/// How collision times are predicted.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Prediction {
+    /// Exact roots for the motion the balls really follow (quadratic with friction).
+    #[default]
+    Exact,
+    /// The paper's own prediction (sections 3.1–3.2): straight lines at constant velocity,
+    /// although the balls decelerate. Kept only to measure what exact prediction buys; balls
+    /// may stop short of contacts or overlap in this mode.
+    PaperLinear,
+}
+
+/// Random perturbation of collision normals (paper 5, after Barzel et al.).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Randomization {
+    /// Standard deviation of the normal's rotation, radians (Gaussian).
+    pub spread: f64,
+    /// Seed of the portable generator (ChaCha8), so a run is reproducible.
+    pub seed: u64,
+}
+
+/// Everything physical about a simulation except the table and the balls' states.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Params {
+    /// Ball size and mass.
+    pub ball: BallSpec,
+    /// Gravity, m/s^2.
+    pub gravity: f64,
+    /// The physics model and its constants.
+    pub model: Model,
+    /// Exact or the paper's linear prediction.
+    pub prediction: Prediction,
+    /// Perturbation of collision normals; `None` is the exact deterministic result.
+    pub randomization: Option<Randomization>,
+    /// Most events one `advance` or `run_to_rest` call may process before it reports
+    /// [`crate::SimError::EventCap`] instead of spinning.
+    pub max_events: usize,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Self {
+            ball: BallSpec::default(),
+            gravity: G,
+            model: Model::default(),
+            prediction: Prediction::default(),
+            randomization: None,
+            max_events: 1_000_000,
+        }
+    }
+}
+
+/// A parameter outside its physical range.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("parameter {name} = {value} is invalid: {expected}")]
+pub struct ParamError {
+    /// Parameter name.
+    pub name: &'static str,
+    /// The value given.
+    pub value: f64,
+    /// What is allowed.
+    pub expected: &'static str,
+}
+
+fn check(
+    name: &'static str,
+    value: f64,
+    ok: bool,
+    expected: &'static str,
+) -> Result<(), ParamError> {
+    if value.is_finite() && ok {
+        Ok(())
+    } else {
+        Err(ParamError {
+            name,
+            value,
+            expected,
+        })
+    }
+}
+
+impl Params {
+    /// Checks that every parameter is finite and in its physical range.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        check(
+            "ball.radius",
+            self.ball.radius,
+            self.ball.radius > 0.0,
+            "positive, metres",
+        )?;
+        check(
+            "ball.mass",
+            self.ball.mass,
+            self.ball.mass > 0.0,
+            "positive, kg",
+        )?;
+        check(
+            "gravity",
+            self.gravity,
+            self.gravity >= 0.0,
+            "non-negative, m/s^2",
+        )?;
+        match self.model {
+            Model::Paper(m) => {
+                check("mu_slide", m.mu_slide, m.mu_slide >= 0.0, "non-negative")?;
+                check("mu_roll", m.mu_roll, m.mu_roll >= 0.0, "non-negative")?;
+                check(
+                    "slide_roll_speed",
+                    m.slide_roll_speed,
+                    m.slide_roll_speed >= 0.0,
+                    "non-negative, m/s",
+                )?;
+                check(
+                    "e_ball",
+                    m.e_ball,
+                    (0.0..=1.0).contains(&m.e_ball),
+                    "in [0, 1]",
+                )?;
+                check(
+                    "e_cushion",
+                    m.e_cushion,
+                    (0.0..=1.0).contains(&m.e_cushion),
+                    "in [0, 1]",
+                )?;
+            }
+            Model::Spin(m) => m.validate()?,
+        }
+        if let Some(r) = self.randomization {
+            check(
+                "randomization.spread",
+                r.spread,
+                (0.0..=0.5).contains(&r.spread),
+                "in [0, 0.5] rad",
+            )?;
+        }
+        if self.max_events == 0 {
+            return Err(ParamError {
+                name: "max_events",
+                value: 0.0,
+                expected: "at least 1",
+            });
+        }
+        Ok(())
+    }
+}
+
+impl SpinModel {
+    fn validate(&self) -> Result<(), ParamError> {
+        let unit = |v: f64| (0.0..=1.0).contains(&v);
+        check(
+            "mu_slide",
+            self.mu_slide,
+            self.mu_slide >= 0.0,
+            "non-negative",
+        )?;
+        check("mu_roll", self.mu_roll, self.mu_roll >= 0.0, "non-negative")?;
+        check("mu_spin", self.mu_spin, self.mu_spin >= 0.0, "non-negative")?;
+        check("e_ball", self.e_ball, unit(self.e_ball), "in [0, 1]")?;
+        check("mu_ball", self.mu_ball, self.mu_ball >= 0.0, "non-negative")?;
+        let h = self.cushion_height;
+        check(
+            "cushion_height",
+            h,
+            (0.5..1.0).contains(&h),
+            "in [0.5, 1) of the diameter",
+        )?;
+        check(
+            "cue_mass",
+            self.cue_mass,
+            self.cue_mass > 0.0,
+            "positive, kg",
+        )?;
+        let l = self.miscue_limit;
+        check(
+            "miscue_limit",
+            l,
+            (0.0..1.0).contains(&l),
+            "in [0, 1) of the radius",
+        )?;
+        match self.cushion {
+            CushionModel::Reflect { e } => check("cushion.e", e, unit(e), "in [0, 1]"),
+            CushionModel::Han2005 { e, mu } => {
+                check("cushion.e", e, unit(e), "in [0, 1]")?;
+                check("cushion.mu", mu, mu >= 0.0, "non-negative")
+            }
+        }
+    }
+}

@@ -1,0 +1,389 @@
+//! Real roots of polynomials of degree at most four on an interval.
+//!
+//! Contact times are first roots of low-degree polynomials (quadratic for cushions, quartic
+//! for ball pairs under constant deceleration). Closed-form cubic and quartic formulas lose
+//! precision near double roots and degenerate leading coefficients, so roots are isolated
+//! instead: the critical points (roots of the derivative, found recursively) split the
+//! interval into pieces where the polynomial is monotone, and each sign change is refined by
+//! a safeguarded Newton iteration that never leaves its bracket. A small leading coefficient
+//! then simply makes a flat piece, never a division by almost zero.
+
+/// A polynomial `c[0] + c[1] t + c[2] t^2 + c[3] t^3 + c[4] t^4`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Poly {
+    /// Coefficients, lowest degree first.
+    pub c: [f64; 5],
+}
+
+impl Poly {
+    /// A polynomial from its coefficients, lowest degree first.
+    pub const fn new(c: [f64; 5]) -> Self {
+        Self { c }
+    }
+
+    /// Index of the highest non-zero coefficient (0 for constants, including zero).
+    fn degree(&self) -> usize {
+        (1..5).rev().find(|&k| self.c[k] != 0.0).unwrap_or(0)
+    }
+
+    /// Value at `t` (Horner).
+    #[inline]
+    pub fn eval(&self, t: f64) -> f64 {
+        let c = &self.c;
+        (((c[4] * t + c[3]) * t + c[2]) * t + c[1]) * t + c[0]
+    }
+
+    /// The derivative.
+    pub fn derivative(&self) -> Self {
+        let c = &self.c;
+        Self::new([c[1], 2.0 * c[2], 3.0 * c[3], 4.0 * c[4], 0.0])
+    }
+
+    /// This polynomial plus a constant.
+    pub fn shifted(mut self, k: f64) -> Self {
+        self.c[0] += k;
+        self
+    }
+
+    /// The negated polynomial.
+    pub fn negated(self) -> Self {
+        Self::new(self.c.map(|x| -x))
+    }
+
+    /// Visits the roots of this polynomial in the open interval `(a, b)` in ascending order
+    /// (sign changes, and exact zeros at critical points) until `visit` returns `true`; returns
+    /// whether it stopped early. Lazy, so a caller that needs only the first root pays only for
+    /// the critical points before it.
+    fn for_each_root(&self, a: f64, b: f64, visit: &mut dyn FnMut(f64) -> bool) -> bool {
+        match self.degree() {
+            0 => false,
+            1 => {
+                let t = -self.c[0] / self.c[1];
+                t > a && t < b && visit(t)
+            }
+            2 => {
+                let (q0, q1, q2) = (self.c[0], self.c[1], self.c[2]);
+                let disc = q1 * q1 - 4.0 * q2 * q0;
+                if disc < 0.0 {
+                    return false;
+                }
+                // Numerically stable pair (no cancellation between -b and sqrt(disc)).
+                let q = -0.5 * (q1 + q1.signum() * disc.sqrt());
+                let (mut r1, mut r2) = (q / q2, if q != 0.0 { q0 / q } else { q / q2 });
+                if r1 > r2 {
+                    std::mem::swap(&mut r1, &mut r2);
+                }
+                (r1 > a && r1 < b && visit(r1)) || (r2 != r1 && r2 > a && r2 < b && visit(r2))
+            }
+            _ => {
+                let mut lo = a;
+                let mut flo = self.eval(a);
+                let mut piece = |hi: f64, fhi: f64, lo: &mut f64, flo: &mut f64| -> bool {
+                    let stop = if (*flo > 0.0 && fhi < 0.0) || (*flo < 0.0 && fhi > 0.0) {
+                        let r = if *flo > 0.0 {
+                            refine(self, *lo, hi, *flo, fhi)
+                        } else {
+                            refine(&self.negated(), *lo, hi, -*flo, -fhi)
+                        };
+                        r > a && r < b && visit(r)
+                    } else {
+                        fhi == 0.0 && hi < b && visit(hi)
+                    };
+                    *lo = hi;
+                    *flo = fhi;
+                    stop
+                };
+                if self
+                    .derivative()
+                    .for_each_root(a, b, &mut |c| piece(c, self.eval(c), &mut lo, &mut flo))
+                {
+                    return true;
+                }
+                piece(b, self.eval(b), &mut lo, &mut flo)
+            }
+        }
+    }
+}
+
+/// Smallest `t` in `[a, b]` with `p(t) <= 0`, or `None` if `p > 0` on the whole interval.
+///
+/// The answer is the upper end of a bracket no wider than a few ulps, so `p` at the returned
+/// time is never positive: a contact is never reported before it is reached.
+pub fn first_entry(p: &Poly, a: f64, b: f64) -> Option<f64> {
+    let fa = p.eval(a);
+    if fa <= 0.0 {
+        return Some(a);
+    }
+    if b.is_nan() || b <= a {
+        return None;
+    }
+    if p.degree() <= 2 {
+        return first_entry_quadratic(p, a, b);
+    }
+    let (mut lo, mut flo) = (a, fa);
+    let mut found = None;
+    // Between consecutive critical points p is monotone: the first piece whose end is not
+    // positive holds the first root.
+    p.derivative().for_each_root(a, b, &mut |c| {
+        let fc = p.eval(c);
+        if fc <= 0.0 {
+            found = Some(refine(p, lo, c, flo, fc));
+            return true;
+        }
+        (lo, flo) = (c, fc);
+        false
+    });
+    if found.is_some() {
+        return found;
+    }
+    let fb = p.eval(b);
+    (fb <= 0.0).then(|| refine(p, lo, b, flo, fb))
+}
+
+/// [`first_entry`] for degree at most two, in closed form (`p(a) > 0`, `a < b`): the
+/// numerically stable root, then nudged up by ulps until `p` is not positive there, so the
+/// contact is never reported early.
+fn first_entry_quadratic(p: &Poly, a: f64, b: f64) -> Option<f64> {
+    let (c0, c1, c2) = (p.c[0], p.c[1], p.c[2]);
+    let root = if c2 == 0.0 {
+        (c1 < 0.0).then(|| -c0 / c1)?
+    } else {
+        let disc = c1 * c1 - 4.0 * c2 * c0;
+        if disc < 0.0 {
+            return None;
+        }
+        let q = -0.5 * (c1 + c1.signum() * disc.sqrt());
+        let (r1, r2) = (q / c2, c0 / q);
+        let (lo, hi) = (r1.min(r2), r1.max(r2));
+        // Opening upwards p <= 0 between the roots; downwards, outside them.
+        let r = if c2 > 0.0 { lo } else { hi };
+        if r.is_nan() || r < a {
+            return None;
+        }
+        r
+    };
+    if root.is_nan() || root > b {
+        return None;
+    }
+    let mut t = root.max(a);
+    for _ in 0..16 {
+        if p.eval(t) <= 0.0 {
+            return Some(t);
+        }
+        t = t.next_up();
+    }
+    // Rounding left the closed form further off than expected: bracket it properly.
+    let fb = p.eval(b);
+    (fb <= 0.0).then(|| refine(p, a, b, p.eval(a), fb))
+}
+
+/// Refines a bracket with `p(lo) = flo > 0 >= p(hi) = fhi`, `p` monotone on it, to a few ulps;
+/// returns the upper end (where `p <= 0`). Safeguarded Newton started from the secant point.
+fn refine(p: &Poly, mut lo: f64, mut hi: f64, flo: f64, fhi: f64) -> f64 {
+    let dp = p.derivative();
+    let tol = |lo: f64, hi: f64| (4.0 * f64::EPSILON * hi.abs().max(lo.abs())).max(1e-300);
+    let mut x = lo + (hi - lo) * (flo / (flo - fhi));
+    if !(x > lo && x < hi) {
+        x = 0.5 * (lo + hi);
+    }
+    for _ in 0..200 {
+        let fx = p.eval(x);
+        if fx > 0.0 {
+            lo = x;
+        } else {
+            hi = x;
+        }
+        let width_tol = tol(lo, hi);
+        if hi - lo <= width_tol {
+            break;
+        }
+        let d = dp.eval(x);
+        let mut next = x - fx / d;
+        if !(next > lo && next < hi) {
+            next = 0.5 * (lo + hi);
+        } else if (next - x).abs() < 0.5 * width_tol {
+            // Newton has converged: close the bracket around its answer.
+            let (a, b) = ((next - width_tol).max(lo), (next + width_tol).min(hi));
+            if p.eval(a) > 0.0 {
+                lo = a;
+            }
+            if p.eval(b) <= 0.0 {
+                hi = b;
+            }
+            if hi - lo <= 2.0 * width_tol {
+                break;
+            }
+            next = 0.5 * (lo + hi);
+        }
+        if next <= lo || next >= hi {
+            break;
+        }
+        x = next;
+    }
+    hi
+}
+
+/// Which way a contact function must move for a contact to count.
+///
+/// A contact function is positive while two things are apart and non-positive while they touch
+/// (gap to a cushion, or squared distance minus squared contact distance).
+#[derive(Clone, Copy, Debug)]
+pub struct ContactTolerance {
+    /// Rate of decrease of the contact function below which a touching pair counts as resting,
+    /// not approaching; keeps a pair that was just resolved from colliding again at once.
+    pub slack: f64,
+    /// Value of the contact function above which a touching pair counts as separated.
+    pub separation: f64,
+}
+
+/// First time in `[0, h]` at which the contact function `f` starts a contact.
+///
+/// Apart now (`f(0) > 0`): the first root. Touching now: `0` if approaching faster than the
+/// slack; otherwise the first moment the approach becomes significant while still touching, or,
+/// after the pair separates, the first root after that. Separating pairs get no false root.
+pub fn first_contact(f: &Poly, h: f64, tol: ContactTolerance) -> Option<f64> {
+    if f.c[0] > 0.0 {
+        return first_entry(f, 0.0, h);
+    }
+    let df = f.derivative();
+    if df.c[0] < -tol.slack {
+        return Some(0.0);
+    }
+    let approach = first_entry(&df.shifted(tol.slack), 0.0, h);
+    let separate = first_entry(&f.negated().shifted(tol.separation), 0.0, h);
+    match (approach, separate) {
+        (Some(ta), Some(ts)) if ta < ts => Some(ta),
+        (Some(ta), None) => Some(ta),
+        (_, Some(ts)) => first_entry(f, ts, h),
+        (None, None) => None,
+    }
+}
+
+/// An upper bound on the magnitude of every real root (Cauchy), for an unbounded horizon.
+pub fn root_bound(p: &Poly) -> f64 {
+    let n = p.degree();
+    if n == 0 {
+        return 0.0;
+    }
+    let lead = p.c[n].abs();
+    1.0 + p.c[..n].iter().map(|c| c.abs() / lead).fold(0.0, f64::max)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn from_roots(r: &[f64]) -> Poly {
+        let mut c = [0.0; 5];
+        c[0] = 1.0;
+        for &root in r {
+            let mut n = [0.0; 5];
+            for k in 0..4 {
+                n[k + 1] += c[k];
+                n[k] -= root * c[k];
+            }
+            c = n;
+        }
+        Poly::new(c)
+    }
+
+    #[test]
+    fn quartic_with_four_simple_roots_finds_the_smallest_in_range() {
+        let p = from_roots(&[0.5, 1.25, 2.0, 3.0]);
+        assert_eq!(
+            first_entry(&p, 0.0, 10.0).map(|t| (t - 0.5).abs() < 1e-15),
+            Some(true)
+        );
+        let mut r = Vec::new();
+        p.for_each_root(0.0, 10.0, &mut |t| {
+            r.push(t);
+            false
+        });
+        assert_eq!(r.len(), 4);
+        for (got, want) in r.iter().zip([0.5, 1.25, 2.0, 3.0]) {
+            assert!((got - want).abs() < 1e-14, "{got} vs {want}");
+        }
+    }
+
+    #[test]
+    fn first_entry_skips_a_root_before_the_interval() {
+        let p = from_roots(&[0.5, 1.25, 2.0, 3.0]);
+        let t = first_entry(&p.negated(), 0.6, 10.0).unwrap();
+        assert!((t - 1.25).abs() < 1e-14);
+    }
+
+    #[test]
+    fn double_root_tangency_is_found_when_reached_and_missed_when_not() {
+        // (t - 1)^2 touches zero at t = 1 only.
+        // Near a double root p is below rounding over about sqrt(eps) around it, so the time
+        // is good to ~1e-8 there (harmless: the approach speed vanishes at a graze).
+        let p = from_roots(&[1.0, 1.0]);
+        let t = first_entry(&p, 0.0, 2.0).unwrap();
+        assert!((t - 1.0).abs() < 2e-8 && p.eval(t) <= 0.0, "{t}");
+        // Lifted by a hair it never reaches zero.
+        assert_eq!(first_entry(&p.shifted(1e-12), 0.0, 2.0), None);
+    }
+
+    #[test]
+    fn vanishing_leading_coefficient_degrades_to_lower_degree() {
+        // 1e-30 t^4 - t + 0.5: in [0, 1] it is the line with root 0.5.
+        let p = Poly::new([0.5, -1.0, 0.0, 0.0, 1e-30]);
+        let t = first_entry(&p, 0.0, 1.0).unwrap();
+        assert!((t - 0.5).abs() < 1e-15);
+    }
+
+    #[test]
+    fn returned_time_never_precedes_the_contact() {
+        let p = from_roots(&[0.1 + 1e-9, 7.0]);
+        let t = first_entry(&p, 0.0, 1.0).unwrap();
+        assert!(p.eval(t) <= 0.0);
+        assert!(t - (0.1 + 1e-9) < 1e-15);
+    }
+
+    #[test]
+    fn separating_touching_pair_has_no_false_root() {
+        // f(t) = t (apart and moving apart from exact contact).
+        let tol = ContactTolerance {
+            slack: 1e-12,
+            separation: 1e-15,
+        };
+        assert_eq!(
+            first_contact(&Poly::new([0.0, 1.0, 0.0, 0.0, 0.0]), 5.0, tol),
+            None
+        );
+        // Slightly overlapping by rounding, separating: still none.
+        assert_eq!(
+            first_contact(&Poly::new([-1e-19, 1.0, 0.0, 0.0, 0.0]), 5.0, tol),
+            None
+        );
+    }
+
+    #[test]
+    fn touching_pair_that_approaches_collides_at_zero() {
+        let tol = ContactTolerance {
+            slack: 1e-12,
+            separation: 1e-15,
+        };
+        assert_eq!(
+            first_contact(&Poly::new([0.0, -1.0, 0.0, 0.0, 0.0]), 5.0, tol),
+            Some(0.0)
+        );
+    }
+
+    #[test]
+    fn separating_pair_that_comes_back_collides_at_its_return() {
+        // f = t (2 - t): apart on (0, 2), back in contact at 2.
+        let tol = ContactTolerance {
+            slack: 1e-12,
+            separation: 1e-15,
+        };
+        let t = first_contact(&Poly::new([0.0, 2.0, -1.0, 0.0, 0.0]), 5.0, tol).unwrap();
+        assert!((t - 2.0).abs() < 1e-12, "{t}");
+    }
+
+    #[test]
+    fn root_bound_contains_all_roots() {
+        let p = from_roots(&[-40.0, 0.5, 3.0, 17.0]);
+        assert!(root_bound(&p) >= 40.0);
+    }
+}

@@ -1,0 +1,83 @@
+//! Ball–cushion collision of the paper's model (3.1): reflection about the cushion normal.
+
+use crate::math::{Vec2, Vec3};
+
+/// Velocity after a cushion contact with unit inward normal `n` and restitution `e`:
+/// `R = v − (1 + e) n (v·n)`; `e = 1` is the paper's mirror reflection `v − 2 n (v·n)`.
+/// Returns `None` if the ball is not moving into the cushion.
+pub fn reflect(v: Vec2, n: Vec2, e: f64) -> Option<Vec2> {
+    let vn = v.dot(n);
+    (vn < 0.0).then(|| v - n * ((1.0 + e) * vn))
+}
+
+/// Han (2005), "Dynamics in carom and three cushion billiards" (J. Mech. Sci. Tech. 19):
+/// the cushion touches the ball at its nose, at angle `theta` above the ball's centre
+/// (`sin theta = h/R - 1`). The compression impulse along the contact normal is
+/// `(1 + e) m c`, with `c` the normal approach speed there; the tangential impulse opposes the
+/// slip `s` of the contact point, sticking if `|s| / A <= mu P_n` (`A = 7/(2m)`), sliding
+/// with `mu P_n` otherwise (Han's eqs. 14–22). Impulses are applied to `v` (in the plane) and
+/// to `w`. `n` is the unit inward normal, `height` the nose height above the cloth.
+/// Returns `None` if the ball is not moving into the cushion.
+pub fn han_2005(
+    v: Vec2,
+    w: Vec3,
+    n: Vec2,
+    e: f64,
+    mu: f64,
+    radius: f64,
+    height: f64,
+) -> Option<(Vec2, Vec3)> {
+    // Cushion frame: x towards the cushion, y along it, z up (right-handed).
+    let (ex, ey) = (-n, (-n).perp());
+    let (vx, vy) = (v.dot(ex), v.dot(ey));
+    if vx <= 0.0 {
+        return None;
+    }
+    let (wx, wy, wz) = (w.xy().dot(ex), w.xy().dot(ey), w.z);
+    let sin_t = (height / radius - 1.0).clamp(-1.0, 1.0);
+    let cos_t = (1.0 - sin_t * sin_t).sqrt();
+    // Per unit mass throughout (m = 1): A = 7/2, B = 1.
+    let sx = vx * sin_t + radius * wy;
+    let sy = -vy - radius * wz * cos_t + radius * wx * sin_t;
+    let c = vx * cos_t;
+    let pz = (1.0 + e) * c;
+    let slip = (sx * sx + sy * sy).sqrt();
+    let (px, py) = if slip / 3.5 <= mu * pz {
+        (sx / 3.5, sy / 3.5)
+    } else {
+        (mu * pz * sx / slip, mu * pz * sy / slip)
+    };
+    // Back from the contact frame to the cushion frame.
+    let big_x = -px * sin_t - pz * cos_t;
+    let big_y = py;
+    let big_z = px * cos_t - pz * sin_t;
+    let k = 2.5 / radius; // R / I per unit mass
+    let (vx2, vy2) = (vx + big_x, vy + big_y);
+    let wx2 = wx - k * big_y * sin_t;
+    let wy2 = wy + k * (big_x * sin_t - big_z * cos_t);
+    let wz2 = wz + k * big_y * cos_t;
+    Some((
+        ex * vx2 + ey * vy2,
+        (ex * wx2 + ey * wy2).extend() + Vec3::new(0.0, 0.0, wz2),
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn elastic_reflection_mirrors_the_angle_of_incidence() {
+        let v = Vec2::from_angle(-0.7) * 1.5;
+        let r = reflect(v, Vec2::new(0.0, 1.0), 1.0).unwrap();
+        assert!((r.angle() - 0.7).abs() < 1e-15);
+        assert!((r.length() - 1.5).abs() < 1e-15);
+    }
+
+    #[test]
+    fn restitution_scales_only_the_normal_component() {
+        let r = reflect(Vec2::new(0.4, -2.0), Vec2::new(0.0, 1.0), 0.85).unwrap();
+        assert_eq!(r.x, 0.4);
+        assert!((r.y - 1.7).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,9 @@
+//! Resolution: what a contact does to the velocities. One model per collision kind, named
+//! after its source.
+
+mod ball_ball;
+mod ball_cushion;
+pub mod cue;
+
+pub use ball_ball::{equal_mass_restitution, frictional_spheres};
+pub use ball_cushion::{han_2005, reflect};

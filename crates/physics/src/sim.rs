@@ -1,0 +1,935 @@
+//! The event loop: the paper's `Progress(T)` (section 4.2) as a loop over exact events.
+
+use crate::ball::{BallId, BallState, Motion, Segment};
+use crate::detect::{self, Kinematics};
+use crate::event::{Event, EventKind, Shot};
+use crate::grid::{Grid, Side};
+use crate::history::History;
+use crate::math::{Vec2, Vec3};
+use crate::motion;
+use crate::params::{CushionModel, Model, ParamError, Params, Prediction};
+use crate::queue::Tournament;
+use crate::resolve;
+use crate::table::{Cushion, Jaw, Opening, PocketShape, Table, TableError};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
+use std::cmp::Ordering;
+
+/// How far two balls may overlap, or a ball cross a cushion line, in a valid starting layout
+/// (metres): exactly touching layouts computed in floating point land within rounding of it.
+pub const PLACEMENT_TOLERANCE: f64 = 1e-9;
+
+/// A ball as given to [`Simulation::new`].
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BallSetup {
+    /// Number painted on the ball (0 for the cue ball).
+    pub number: u8,
+    /// Centre, metres.
+    pub position: Vec2,
+    /// Velocity, m/s.
+    #[serde(default)]
+    pub velocity: Vec2,
+    /// Angular velocity, rad/s (ignored by the paper's model, which has no spin).
+    #[serde(default)]
+    pub spin: Vec3,
+}
+
+impl BallSetup {
+    /// A ball at rest.
+    pub fn at(number: u8, position: Vec2) -> Self {
+        Self {
+            number,
+            position,
+            velocity: Vec2::ZERO,
+            spin: Vec3::ZERO,
+        }
+    }
+
+    /// A ball moving with `velocity` and no spin.
+    pub fn moving(number: u8, position: Vec2, velocity: Vec2) -> Self {
+        Self {
+            velocity,
+            ..Self::at(number, position)
+        }
+    }
+}
+
+/// Why a simulation could not be built or changed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum SetupError {
+    /// A parameter is out of range.
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    /// The table is malformed.
+    #[error(transparent)]
+    Table(#[from] TableError),
+    /// A ball's position or velocity is NaN or infinite.
+    #[error("ball {ball} has a non-finite {what}")]
+    NonFinite {
+        /// Ball index.
+        ball: BallId,
+        /// "position" or "velocity".
+        what: &'static str,
+    },
+    /// A ball's centre is outside the area its centre may occupy.
+    #[error("ball {ball} at ({x}, {y}) is outside the table")]
+    OutsideTable {
+        /// Ball index.
+        ball: BallId,
+        /// Its x.
+        x: f64,
+        /// Its y.
+        y: f64,
+    },
+    /// Two balls overlap.
+    #[error("balls {a} and {b} overlap by {overlap} m")]
+    Overlap {
+        /// First ball.
+        a: BallId,
+        /// Second ball.
+        b: BallId,
+        /// Depth of the overlap, metres.
+        overlap: f64,
+    },
+    /// There is no ball with this index.
+    #[error("there is no ball {0}")]
+    NoSuchBall(BallId),
+    /// The ball has been pocketed.
+    #[error("ball {0} is pocketed")]
+    Pocketed(BallId),
+    /// The cue tip offset is beyond the miscue limit.
+    #[error(transparent)]
+    Miscue(#[from] resolve::cue::Miscue),
+    /// A shot's angle or speed is NaN, infinite, or the speed negative.
+    #[error("shot angle {angle} rad and speed {speed} m/s must be finite, speed >= 0")]
+    BadShot {
+        /// Angle given.
+        angle: f64,
+        /// Speed given.
+        speed: f64,
+    },
+}
+
+/// Why the simulation stopped short of the requested time.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum SimError {
+    /// More events than `Params::max_events` in one call: the state is valid, at `time`.
+    #[error("event cap of {cap} reached at t = {time} s without coming to rest")]
+    EventCap {
+        /// The cap.
+        cap: usize,
+        /// Simulation time reached.
+        time: f64,
+    },
+    /// A step with negative or non-finite length.
+    #[error("cannot advance by {0} s: time steps must be finite and non-negative")]
+    BadStep(f64),
+}
+
+/// What one [`Simulation::advance`] did.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Advance {
+    /// Index range of the events it processed, into [`History::events`].
+    pub events: std::ops::Range<usize>,
+}
+
+/// A predicted event, cached per ball until one of its balls changes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Pending {
+    time: f64,
+    kind: PendingKind,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum PendingKind {
+    /// Internal: the ball leaves its grid cell (no physical effect, not recorded).
+    Crossing(BallId, Side),
+    Transition(BallId),
+    Cushion(BallId, Cushion),
+    /// Contact with jaw `k` of `Simulation::jaws`.
+    Jaw(BallId, usize),
+    /// The ball's centre crosses pocket opening `k` of `Simulation::openings`.
+    Opening(BallId, usize),
+    Pair(BallId, BallId),
+}
+
+impl Pending {
+    /// Tie order between events at equal times: grid crossings (bookkeeping, so that a
+    /// contact at the same instant is seen), state transitions, then cushions, then ball
+    /// pairs (after pooltool), each by ball index, then by cushion order.
+    fn key(&self) -> (f64, u8, BallId, usize) {
+        match self.kind {
+            PendingKind::Crossing(b, s) => (self.time, 0, b, s as usize),
+            PendingKind::Transition(b) => (self.time, 1, b, 0),
+            PendingKind::Opening(b, k) => (self.time, 2, b, k),
+            PendingKind::Cushion(b, c) => (self.time, 3, b, c as usize),
+            PendingKind::Jaw(b, k) => (self.time, 4, b, k),
+            PendingKind::Pair(a, b) => (self.time, 5, a, b),
+        }
+    }
+
+    fn precedes(&self, other: &Pending) -> bool {
+        let (a, b) = (self.key(), other.key());
+        a.0.total_cmp(&b.0)
+            .then((a.1, a.2, a.3).cmp(&(b.1, b.2, b.3)))
+            == Ordering::Less
+    }
+
+    /// The other ball of a pair event, seen from `id`.
+    fn partner(&self, id: BallId) -> Option<BallId> {
+        match self.kind {
+            PendingKind::Pair(a, b) if a == id => Some(b),
+            PendingKind::Pair(a, b) if b == id => Some(a),
+            _ => None,
+        }
+    }
+
+    fn involves(&self, id: BallId) -> bool {
+        match self.kind {
+            PendingKind::Crossing(b, _)
+            | PendingKind::Transition(b)
+            | PendingKind::Cushion(b, _)
+            | PendingKind::Jaw(b, _)
+            | PendingKind::Opening(b, _) => b == id,
+            PendingKind::Pair(a, b) => a == id || b == id,
+        }
+    }
+}
+
+fn earlier(a: Option<Pending>, b: Option<Pending>) -> Option<Pending> {
+    match (a, b) {
+        (Some(x), Some(y)) => Some(if y.precedes(&x) { y } else { x }),
+        (x, None) => x,
+        (None, y) => y,
+    }
+}
+
+/// An exact, event-driven billiards simulation.
+///
+/// Each ball follows a closed-form segment from its last event; positions are always evaluated
+/// from there, never accumulated per step, so the trajectory does not depend on how time is
+/// sliced. Predictions are cached per ball and redone only for the balls an event touched.
+#[derive(Clone, Debug)]
+pub struct Simulation {
+    table: Table,
+    params: Params,
+    numbers: Vec<u8>,
+    segments: Vec<Segment>,
+    /// Each ball's earliest predicted event, and the earliest of them all.
+    cache: Tournament<Pending>,
+    /// For each ball, the balls whose cached event is a contact with it (may hold stale
+    /// entries; checked before use).
+    dependents: Vec<Vec<BallId>>,
+    /// Stamp of the prediction round that last predicted each ball, and the current round.
+    stamps: Vec<u64>,
+    round: u64,
+    grid: Grid,
+    /// Pocket jaws and openings (empty unless the table has jaws).
+    jaws: Vec<Jaw>,
+    openings: Vec<Opening>,
+    time: f64,
+    history: History,
+    rng: Option<ChaCha8Rng>,
+    bounds: Vec2,
+}
+
+impl Simulation {
+    /// Builds a simulation at time 0, checking the table, the parameters and the layout.
+    pub fn new(table: Table, params: Params, balls: &[BallSetup]) -> Result<Self, SetupError> {
+        params.validate()?;
+        let r = params.ball.radius;
+        table.validate(r)?;
+        let bounds = table.centre_bounds(r);
+        for (id, b) in balls.iter().enumerate() {
+            if !b.position.is_finite() {
+                return Err(SetupError::NonFinite {
+                    ball: id,
+                    what: "position",
+                });
+            }
+            if !b.velocity.is_finite() {
+                return Err(SetupError::NonFinite {
+                    ball: id,
+                    what: "velocity",
+                });
+            }
+            if b.position.x.abs() > bounds.x + PLACEMENT_TOLERANCE
+                || b.position.y.abs() > bounds.y + PLACEMENT_TOLERANCE
+            {
+                return Err(SetupError::OutsideTable {
+                    ball: id,
+                    x: b.position.x,
+                    y: b.position.y,
+                });
+            }
+        }
+        check_overlaps(balls, r)?;
+        let segments: Vec<Segment> = balls
+            .iter()
+            .map(|b| motion::segment_from(&params, 0.0, b.position, b.velocity, b.spin))
+            .collect();
+        let mut sim = Self {
+            table,
+            params,
+            numbers: balls.iter().map(|b| b.number).collect(),
+            history: History::new(&segments),
+            cache: Tournament::new(segments.len()),
+            dependents: vec![Vec::new(); segments.len()],
+            stamps: vec![0; segments.len()],
+            round: 0,
+            grid: Grid::new(bounds, r, segments.len()),
+            jaws: table.jaws(),
+            openings: match table.pockets {
+                PocketShape::Mouth => Vec::new(),
+                PocketShape::Jaws { .. } => table.openings().to_vec(),
+            },
+            segments,
+            time: 0.0,
+            rng: params
+                .randomization
+                .map(|r| ChaCha8Rng::seed_from_u64(r.seed)),
+            bounds,
+        };
+        sim.predict_all();
+        Ok(sim)
+    }
+
+    /// Current simulation time, seconds.
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// The table.
+    pub fn table(&self) -> &Table {
+        &self.table
+    }
+
+    /// The parameters in force.
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+
+    /// Number of balls (pocketed ones included).
+    pub fn ball_count(&self) -> usize {
+        self.segments.len()
+    }
+
+    /// The number painted on each ball.
+    pub fn numbers(&self) -> &[u8] {
+        &self.numbers
+    }
+
+    /// Ball `id`'s state now.
+    pub fn ball(&self, id: BallId) -> BallState {
+        self.segments[id].state_at(self.time)
+    }
+
+    /// Every ball's state now.
+    pub fn balls(&self) -> impl ExactSizeIterator<Item = BallState> + '_ {
+        self.segments.iter().map(|s| s.state_at(self.time))
+    }
+
+    /// Ball `id`'s current closed-form segment.
+    pub fn segment(&self, id: BallId) -> &Segment {
+        &self.segments[id]
+    }
+
+    /// The event history.
+    pub fn history(&self) -> &History {
+        &self.history
+    }
+
+    /// No ball is moving.
+    pub fn is_at_rest(&self) -> bool {
+        self.segments.iter().all(|s| s.state.motion.is_at_rest())
+    }
+
+    /// Time of the next event, if any.
+    pub fn next_event_time(&self) -> Option<f64> {
+        self.next_pending().map(|p| p.time)
+    }
+
+    /// The paper's `Progress(T)`: processes every event up to `time + dt` in time order, then
+    /// leaves the state at `time + dt`.
+    pub fn advance(&mut self, dt: f64) -> Result<Advance, SimError> {
+        if !(dt.is_finite() && dt >= 0.0) {
+            return Err(SimError::BadStep(dt));
+        }
+        self.advance_to(self.time + dt)
+    }
+
+    /// Processes every event up to absolute time `t`, then sets the clock to `t`.
+    pub fn advance_to(&mut self, t: f64) -> Result<Advance, SimError> {
+        if !(t.is_finite() && t >= self.time) {
+            return Err(SimError::BadStep(t - self.time));
+        }
+        let first = self.history.events().len();
+        let mut count = 0;
+        while let Some(p) = self.next_pending().filter(|p| p.time <= t) {
+            if count == self.params.max_events {
+                return Err(SimError::EventCap {
+                    cap: count,
+                    time: self.time,
+                });
+            }
+            self.process(p);
+            count += 1;
+        }
+        self.time = t;
+        Ok(Advance {
+            events: first..self.history.events().len(),
+        })
+    }
+
+    /// Advances exactly to the next event and processes it (and only it); `None` at rest.
+    pub fn step_event(&mut self) -> Option<Event> {
+        let before = self.history.events().len();
+        // Grid crossings are internal: keep going until a physical event is recorded.
+        while self.history.events().len() == before {
+            let p = self.next_pending()?;
+            self.process(p);
+        }
+        self.history.events().last().copied()
+    }
+
+    /// Runs until every ball rests; the clock ends at the last event.
+    pub fn run_to_rest(&mut self) -> Result<Advance, SimError> {
+        let first = self.history.events().len();
+        let mut count = 0;
+        while let Some(p) = self.next_pending() {
+            if count == self.params.max_events {
+                return Err(SimError::EventCap {
+                    cap: count,
+                    time: self.time,
+                });
+            }
+            self.process(p);
+            count += 1;
+        }
+        Ok(Advance {
+            events: first..self.history.events().len(),
+        })
+    }
+
+    /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
+    /// takes the tip offset (the paper's model has no spin and ignores it).
+    pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
+        let finite = shot.angle.is_finite()
+            && shot.speed.is_finite()
+            && shot.tip.side.is_finite()
+            && shot.tip.height.is_finite();
+        if !(finite && shot.speed >= 0.0) {
+            return Err(SetupError::BadShot {
+                angle: shot.angle,
+                speed: shot.speed,
+            });
+        }
+        let state = self.ball_checked(id)?;
+        let dir = Vec2::from_angle(shot.angle);
+        let (r, mass) = (self.params.ball.radius, self.params.ball.mass);
+        let (v, w) = match self.params.model {
+            Model::Paper(_) => (dir * shot.speed, Vec3::ZERO),
+            Model::Spin(m) => resolve::cue::strike(&m, mass, r, dir, shot.speed, shot.tip)?,
+        };
+        self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v, w);
+        self.record(EventKind::Strike { ball: id, shot });
+        self.repredict(&[id]);
+        Ok(())
+    }
+
+    /// Sets ball `id`'s position and velocity now (editing, respotting). The new position must
+    /// be on the table and clear of the other balls.
+    pub fn place(
+        &mut self,
+        id: BallId,
+        position: Vec2,
+        velocity: Vec2,
+        spin: Vec3,
+    ) -> Result<(), SetupError> {
+        if id >= self.segments.len() {
+            return Err(SetupError::NoSuchBall(id));
+        }
+        for (what, ok) in [
+            ("position", position.is_finite()),
+            ("velocity", velocity.is_finite()),
+            ("spin", spin.is_finite()),
+        ] {
+            if !ok {
+                return Err(SetupError::NonFinite { ball: id, what });
+            }
+        }
+        if position.x.abs() > self.bounds.x + PLACEMENT_TOLERANCE
+            || position.y.abs() > self.bounds.y + PLACEMENT_TOLERANCE
+        {
+            return Err(SetupError::OutsideTable {
+                ball: id,
+                x: position.x,
+                y: position.y,
+            });
+        }
+        let r = self.params.ball.radius;
+        for (j, seg) in self.segments.iter().enumerate() {
+            if j != id && seg.state.motion.on_table() {
+                let overlap = 2.0 * r - (seg.position_at(self.time) - position).length();
+                if overlap > PLACEMENT_TOLERANCE {
+                    return Err(SetupError::Overlap {
+                        a: id.min(j),
+                        b: id.max(j),
+                        overlap,
+                    });
+                }
+            }
+        }
+        self.segments[id] = motion::segment_from(&self.params, self.time, position, velocity, spin);
+        self.record(EventKind::Placed { ball: id });
+        self.repredict(&[id]);
+        Ok(())
+    }
+
+    /// Replaces the parameters now; moving balls continue from their current state under the
+    /// new ones. The ball size cannot change mid-game.
+    pub fn set_params(&mut self, params: Params) -> Result<(), SetupError> {
+        params.validate()?;
+        if params.ball != self.params.ball {
+            return Err(SetupError::Param(ParamError {
+                name: "ball",
+                value: params.ball.radius,
+                expected: "unchanged while balls are on the table",
+            }));
+        }
+        if params.randomization != self.params.randomization {
+            self.rng = params
+                .randomization
+                .map(|r| ChaCha8Rng::seed_from_u64(r.seed));
+        }
+        self.params = params;
+        for seg in &mut self.segments {
+            if seg.state.motion.on_table() && !seg.state.motion.is_at_rest() {
+                let s = seg.state_at(self.time);
+                *seg = motion::segment_from(
+                    &params,
+                    self.time,
+                    s.position,
+                    s.velocity,
+                    s.angular_velocity,
+                );
+            }
+        }
+        let event = Event {
+            time: self.time,
+            kind: EventKind::ParamsChanged,
+            after: Default::default(),
+        };
+        self.history.push_all(event, &self.segments);
+        self.predict_all();
+        Ok(())
+    }
+
+    fn ball_checked(&self, id: BallId) -> Result<BallState, SetupError> {
+        let seg = self.segments.get(id).ok_or(SetupError::NoSuchBall(id))?;
+        if !seg.state.motion.on_table() {
+            return Err(SetupError::Pocketed(id));
+        }
+        Ok(self.ball(id))
+    }
+
+    fn kinematics(&self) -> Kinematics {
+        match self.params.prediction {
+            Prediction::Exact => Kinematics::Exact,
+            Prediction::PaperLinear => Kinematics::Linear,
+        }
+    }
+
+    fn next_pending(&self) -> Option<Pending> {
+        self.cache.best().map(|(_, p)| p)
+    }
+
+    /// Stores ball `id`'s prediction and indexes it under its partner, if any.
+    fn set_cache(&mut self, id: BallId, p: Option<Pending>) {
+        self.stamps[id] = self.round;
+        self.cache.set(id, p, Pending::precedes);
+        if let Some(partner) = p.and_then(|p| p.partner(id)) {
+            let deps = &mut self.dependents[partner];
+            deps.push(id);
+            if deps.len() > 64 {
+                // Drop stale entries so the list stays short in long runs.
+                let cache = &self.cache;
+                deps.retain(|&m| cache.get(m).is_some_and(|q| q.involves(partner)));
+                deps.sort_unstable();
+                deps.dedup();
+            }
+        }
+    }
+
+    /// The earliest event of ball `id` from time `t` on: its own transition, a cushion, or a
+    /// contact with any other ball in play.
+    fn predict(&self, id: BallId, t: f64) -> Option<Pending> {
+        let seg = &self.segments[id];
+        if !seg.state.motion.on_table() {
+            return None;
+        }
+        let kin = self.kinematics();
+        let horizon = seg.end.map_or(f64::INFINITY, |e| e - t);
+        let mut best = seg.end.map(|end| Pending {
+            time: end,
+            kind: PendingKind::Transition(id),
+        });
+        if seg.state.motion.is_moving() {
+            for c in Cushion::ALL {
+                if let Some(tau) = self.cushion_contact(seg, t, c, horizon, kin) {
+                    let kind = PendingKind::Cushion(id, c);
+                    best = earlier(
+                        best,
+                        Some(Pending {
+                            time: t + tau,
+                            kind,
+                        }),
+                    );
+                }
+            }
+            let jaw_contact = self.params.ball.radius + self.jaw_radius();
+            for (k, jaw) in self.jaws.iter().enumerate() {
+                let h = best.map_or(horizon, |b| horizon.min(b.time - t));
+                if let Some(tau) = detect::ball_jaw(seg, t, jaw.centre, jaw_contact, h, kin) {
+                    let kind = PendingKind::Jaw(id, k);
+                    best = earlier(
+                        best,
+                        Some(Pending {
+                            time: t + tau,
+                            kind,
+                        }),
+                    );
+                }
+            }
+            for (k, o) in self.openings.iter().enumerate() {
+                // The real path decides when a ball drops, even in the linear comparison mode.
+                let exact = Kinematics::Exact;
+                if let Some(tau) = detect::ball_line(seg, t, o.normal, o.offset, horizon, exact) {
+                    let kind = PendingKind::Opening(id, k);
+                    best = earlier(
+                        best,
+                        Some(Pending {
+                            time: t + tau,
+                            kind,
+                        }),
+                    );
+                }
+            }
+        }
+        if seg.state.motion.is_moving() && self.grid.is_split() {
+            for (side, at) in self.grid.exits(id) {
+                let (n, offset) = match side {
+                    Side::XPlus => (Vec2::new(-1.0, 0.0), at),
+                    Side::XMinus => (Vec2::new(1.0, 0.0), -at),
+                    Side::YPlus => (Vec2::new(0.0, -1.0), at),
+                    Side::YMinus => (Vec2::new(0.0, 1.0), -at),
+                };
+                // Crossings follow the real path even in the linear comparison mode.
+                if let Some(tau) = detect::ball_line(seg, t, n, offset, horizon, Kinematics::Exact)
+                {
+                    best = earlier(
+                        best,
+                        Some(Pending {
+                            time: t + tau,
+                            kind: PendingKind::Crossing(id, side),
+                        }),
+                    );
+                }
+            }
+        }
+        let r = self.params.ball.radius;
+        let all = (!self.grid.is_split()).then_some(0..self.segments.len());
+        let near = self.grid.is_split().then(|| self.grid.neighbours(id));
+        for j in all.into_iter().flatten().chain(near.into_iter().flatten()) {
+            let other = &self.segments[j];
+            if j == id || !other.state.motion.on_table() {
+                continue;
+            }
+            let h = other.end.map_or(horizon, |e| horizon.min(e - t));
+            // Only a pair that could be earlier than the best so far is worth solving.
+            let h = best.map_or(h, |b| h.min(b.time - t));
+            if let Some(tau) = detect::ball_ball(seg, other, t, r, h, kin) {
+                let (a, b) = (id.min(j), id.max(j));
+                best = earlier(
+                    best,
+                    Some(Pending {
+                        time: t + tau,
+                        kind: PendingKind::Pair(a, b),
+                    }),
+                );
+            }
+        }
+        best
+    }
+
+    fn jaw_radius(&self) -> f64 {
+        match self.table.pockets {
+            PocketShape::Jaws { radius } => radius,
+            PocketShape::Mouth => 0.0,
+        }
+    }
+
+    /// When the ball of `seg` next touches `cushion`. With the paper's mouths, any contact
+    /// with the cushion line counts (a contact inside a mouth pockets the ball). With jaws,
+    /// only contacts on the cushion itself count: a root in a mouth means the ball crossed the
+    /// line's extension into the mouth, and the search goes on from where it comes back out.
+    fn cushion_contact(
+        &self,
+        seg: &Segment,
+        t: f64,
+        cushion: Cushion,
+        horizon: f64,
+        kin: Kinematics,
+    ) -> Option<f64> {
+        let limit = match cushion {
+            Cushion::Head | Cushion::Foot => self.bounds.x,
+            Cushion::Left | Cushion::Right => self.bounds.y,
+        };
+        let n = cushion.inward_normal();
+        let mut from = 0.0;
+        // A path is a parabola: it crosses a line at most twice, so two retries suffice.
+        for _ in 0..3 {
+            let tau = detect::ball_line(seg, t + from, n, limit, horizon - from, kin)? + from;
+            if self.table.pockets == PocketShape::Mouth
+                || self.table.on_cushion(cushion, seg.position_at(t + tau))
+            {
+                return Some(tau);
+            }
+            // In a mouth: skip to where the centre is back on the table side of the line.
+            let p = seg.position_at(t + tau);
+            let v = seg.velocity_at(t + tau);
+            let a = match kin {
+                Kinematics::Exact => seg.acceleration,
+                Kinematics::Linear => Vec2::ZERO,
+            };
+            let back = crate::poly::Poly::new([
+                -(limit + n.dot(p)) + detect::SEPARATION,
+                -n.dot(v),
+                -0.5 * n.dot(a),
+                0.0,
+                0.0,
+            ]);
+            let out = crate::poly::first_entry(
+                &back,
+                0.0,
+                (horizon - tau).min(crate::poly::root_bound(&back)),
+            )?;
+            from = tau + out.max(f64::EPSILON * (t + tau).abs());
+        }
+        None
+    }
+
+    fn predict_all(&mut self) {
+        self.round += 1;
+        for deps in &mut self.dependents {
+            deps.clear();
+        }
+        for id in 0..self.segments.len() {
+            let on_table = self.segments[id].state.motion.on_table();
+            self.grid.set(
+                id,
+                on_table.then(|| self.segments[id].position_at(self.time)),
+            );
+        }
+        for id in 0..self.segments.len() {
+            let p = self.predict(id, self.time);
+            self.set_cache(id, p);
+        }
+    }
+
+    /// Re-predicts the balls an event changed, and every ball whose cached event was a contact
+    /// with one of them; all other predictions stay valid.
+    fn repredict(&mut self, touched: &[BallId]) {
+        let t = self.time;
+        self.round += 1;
+        for &id in touched {
+            let on_table = self.segments[id].state.motion.on_table();
+            self.grid
+                .set(id, on_table.then(|| self.segments[id].state.position));
+            let p = self.predict(id, t);
+            self.set_cache(id, p);
+        }
+        for &id in touched {
+            for m in std::mem::take(&mut self.dependents[id]) {
+                let stale = self.cache.get(m).is_some_and(|p| p.involves(id));
+                if self.stamps[m] != self.round && stale {
+                    let p = self.predict(m, t);
+                    self.set_cache(m, p);
+                }
+            }
+        }
+    }
+
+    fn record(&mut self, kind: EventKind) {
+        let mut after = [BallState::default(); 2];
+        for (slot, id) in after.iter_mut().zip(kind.balls()) {
+            *slot = self.segments[id].state;
+        }
+        let event = Event {
+            time: self.time,
+            kind,
+            after,
+        };
+        self.history.push(event, &self.segments);
+    }
+
+    /// A Gaussian rotation of a collision normal (paper 5), if randomization is on.
+    fn perturbation(&mut self) -> Option<f64> {
+        let spread = self.params.randomization?.spread;
+        let rng = self.rng.as_mut()?;
+        // Box–Muller from two uniforms in (0, 1].
+        let u1: f64 = 1.0 - rng.random::<f64>();
+        let u2: f64 = rng.random::<f64>();
+        Some(spread * (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos())
+    }
+
+    fn process(&mut self, p: Pending) {
+        debug_assert!(p.time >= self.time, "time never goes back");
+        self.time = p.time;
+        let t = p.time;
+        match p.kind {
+            PendingKind::Crossing(id, side) => {
+                self.grid.cross(id, side);
+                self.round += 1;
+                let p = self.predict(id, t);
+                self.set_cache(id, p);
+            }
+            PendingKind::Transition(id) => {
+                let from = self.segments[id].state.motion;
+                self.segments[id] = motion::after_transition(&self.params, &self.segments[id]);
+                let to = self.segments[id].state.motion;
+                self.record(EventKind::Transition { ball: id, from, to });
+                self.repredict(&[id]);
+            }
+            PendingKind::Opening(id, k) => {
+                let s = self.segments[id].state_at(t);
+                let pocket = self.openings[k].pocket;
+                self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
+                self.record(EventKind::Pocketed { ball: id, pocket });
+                self.repredict(&[id]);
+            }
+            PendingKind::Jaw(id, k) => {
+                let s = self.segments[id].state_at(t);
+                let jaw = self.jaws[k];
+                let n = (s.position - jaw.centre)
+                    .normalized()
+                    .unwrap_or(Vec2::new(0.0, 1.0));
+                let (v, w) = self.cushion_response(&s, n);
+                self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
+                self.record(EventKind::Jaw {
+                    ball: id,
+                    pocket: jaw.pocket,
+                });
+                self.repredict(&[id]);
+            }
+            PendingKind::Cushion(id, cushion) => {
+                let s = self.segments[id].state_at(t);
+                let mouth = match self.table.pockets {
+                    PocketShape::Mouth => self.table.pocket_at(cushion, s.position),
+                    PocketShape::Jaws { .. } => None,
+                };
+                if let Some(pocket) = mouth {
+                    self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
+                    self.record(EventKind::Pocketed { ball: id, pocket });
+                } else {
+                    let (v, w) = self.cushion_response(&s, cushion.inward_normal());
+                    self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
+                    self.record(EventKind::Cushion { ball: id, cushion });
+                }
+                self.repredict(&[id]);
+            }
+            PendingKind::Pair(a, b) => {
+                let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
+                let n = (sb.position - sa.position)
+                    .normalized()
+                    .unwrap_or(Vec2::new(1.0, 0.0));
+                let (na, nb) = self.pair_response(&sa, &sb, n);
+                self.segments[a] = motion::segment_from(
+                    &self.params,
+                    t,
+                    sa.position,
+                    na.velocity,
+                    na.angular_velocity,
+                );
+                self.segments[b] = motion::segment_from(
+                    &self.params,
+                    t,
+                    sb.position,
+                    nb.velocity,
+                    nb.angular_velocity,
+                );
+                self.record(EventKind::BallBall { a, b });
+                self.repredict(&[a, b]);
+            }
+        }
+    }
+
+    /// Velocity and spin after a cushion contact with inward normal `n`, under the model in
+    /// force; with randomization the normal is perturbed, unless that would send the ball out.
+    fn cushion_response(&mut self, s: &BallState, n: Vec2) -> (Vec2, Vec3) {
+        let (v, w, r) = (s.velocity, s.angular_velocity, self.params.ball.radius);
+        let model = self.params.model;
+        let respond = |n: Vec2| match model {
+            Model::Paper(m) => resolve::reflect(v, n, m.e_cushion).map(|v| (v, w)),
+            Model::Spin(m) => match m.cushion {
+                CushionModel::Reflect { e } => resolve::reflect(v, n, e).map(|v| (v, w)),
+                CushionModel::Han2005 { e, mu } => {
+                    resolve::han_2005(v, w, n, e, mu, r, 2.0 * r * m.cushion_height)
+                }
+            },
+        };
+        let perturbed = self.perturbation().map(|a| n.rotated(a));
+        perturbed
+            .and_then(respond)
+            .filter(|(v, _)| v.dot(n) >= 0.0)
+            .or_else(|| respond(n))
+            .unwrap_or((v, w))
+    }
+
+    /// States after a ball–ball contact along unit normal `n` (from `a` to `b`), under the
+    /// model in force; with randomization the normal is perturbed, unless that would leave the
+    /// balls approaching along the true normal.
+    fn pair_response(&mut self, a: &BallState, b: &BallState, n: Vec2) -> (BallState, BallState) {
+        let (r, model) = (self.params.ball.radius, self.params.model);
+        let respond = |n: Vec2| match model {
+            Model::Paper(m) => resolve::equal_mass_restitution(a.velocity, b.velocity, n, m.e_ball)
+                .map(|(va, vb)| {
+                    (
+                        BallState { velocity: va, ..*a },
+                        BallState { velocity: vb, ..*b },
+                    )
+                }),
+            Model::Spin(m) => resolve::frictional_spheres(a, b, n, m.e_ball, m.mu_ball, r),
+        };
+        let separating = |(x, y): &(BallState, BallState)| (x.velocity - y.velocity).dot(n) <= 0.0;
+        let perturbed = self.perturbation().map(|ang| n.rotated(ang));
+        perturbed
+            .and_then(respond)
+            .filter(separating)
+            .or_else(|| respond(n))
+            .unwrap_or((*a, *b))
+    }
+}
+
+fn check_overlaps(balls: &[BallSetup], r: f64) -> Result<(), SetupError> {
+    // Sort by x so only neighbours within 2R in x are compared (large layouts stay fast).
+    let mut order: Vec<usize> = (0..balls.len()).collect();
+    order.sort_by(|&i, &j| balls[i].position.x.total_cmp(&balls[j].position.x));
+    for (k, &i) in order.iter().enumerate() {
+        for &j in &order[k + 1..] {
+            if balls[j].position.x - balls[i].position.x >= 2.0 * r {
+                break;
+            }
+            let overlap = 2.0 * r - (balls[j].position - balls[i].position).length();
+            if overlap > PLACEMENT_TOLERANCE {
+                return Err(SetupError::Overlap {
+                    a: i.min(j),
+                    b: i.max(j),
+                    overlap,
+                });
+            }
+        }
+    }
+    Ok(())
+}
