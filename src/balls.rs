@@ -14,9 +14,12 @@ use bevy::{
 use crate::geometry::{TableSpec, table_dir_to_world};
 
 /// Adds ball visuals and the writeback from [`BallMotion`] to [`Transform`].
-pub(crate) fn plugin(app: &mut App) {
+pub fn plugin(app: &mut App) {
     app.add_systems(Startup, create_ball_assets)
-        .add_systems(Update, (attach_visuals, hide_pocketed))
+        .add_systems(
+            Update,
+            (attach_visuals, start_pocket_drops, animate_pocket_drops, restore_respotted),
+        )
         .add_systems(PostUpdate, draw_ball_motion.before(TransformSystems::Propagate));
 }
 
@@ -87,7 +90,10 @@ pub struct BallMotion {
 
 /// Marks a ball that has dropped into a pocket and left play.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Pocketed;
+pub struct Pocketed {
+    /// The pocket it dropped into.
+    pub pocket: billiards_physics::Pocket,
+}
 
 /// The standard colours of balls 1-8 (9-15 repeat 1-7 as stripes), in sRGB.
 pub fn ball_colour(number: u8) -> Color {
@@ -156,9 +162,73 @@ fn attach_visuals(
     }
 }
 
-fn hide_pocketed(mut balls: Query<&mut Visibility, (With<Ball>, Added<Pocketed>)>) {
-    for mut visibility in &mut balls {
-        *visibility = Visibility::Hidden;
+/// A pocketed ball on its way down: it rolls over the hole's centre and sinks out of sight.
+#[derive(Component, Debug, Clone, Copy, PartialEq)]
+struct PocketDrop {
+    /// Where the ball was when it left play.
+    from: Vec3,
+    /// The centre of the hole at cloth level.
+    over: Vec3,
+    /// Seconds since the drop started.
+    elapsed: f32,
+}
+
+/// How long a pocketed ball takes to disappear.
+const DROP_SECONDS: f32 = 0.35;
+
+fn start_pocket_drops(
+    mut commands: Commands,
+    spec: Res<TableSpec>,
+    balls: Query<(Entity, &Pocketed, &Transform), (With<Ball>, Added<Pocketed>)>,
+) {
+    for (entity, pocketed, transform) in &balls {
+        let hole = spec.pocket(pocketed.pocket).centre;
+        commands.entity(entity).insert(PocketDrop {
+            from: transform.translation,
+            over: spec.ball_world_position(hole),
+            elapsed: 0.0,
+        });
+    }
+}
+
+/// Moves dropping balls over the hole (first half) and down into it (second half), then hides
+/// them. Uses virtual time, so the drop pauses with the game.
+fn animate_pocket_drops(
+    mut commands: Commands,
+    time: Res<Time>,
+    spec: Res<TableSpec>,
+    mut balls: Query<(Entity, &mut PocketDrop, &mut Transform, &mut Visibility)>,
+    mut redraw: MessageWriter<bevy::window::RequestRedraw>,
+) {
+    for (entity, mut drop, mut transform, mut visibility) in &mut balls {
+        drop.elapsed += time.delta_secs();
+        let t = (drop.elapsed / DROP_SECONDS).min(1.0);
+        let depth = 3.0 * spec.ball_radius as f32;
+        transform.translation = if t < 0.5 {
+            drop.from.lerp(drop.over, t * 2.0)
+        } else {
+            drop.over - Vec3::Y * depth * (t * 2.0 - 1.0).powi(2)
+        };
+        if t >= 1.0 {
+            *visibility = Visibility::Hidden;
+            commands.entity(entity).remove::<PocketDrop>();
+        } else {
+            redraw.write(bevy::window::RequestRedraw);
+        }
+    }
+}
+
+/// A ball taken out of a pocket (a respotted cue ball) is shown again.
+fn restore_respotted(
+    mut commands: Commands,
+    mut respotted: RemovedComponents<Pocketed>,
+    mut balls: Query<&mut Visibility, With<Ball>>,
+) {
+    for entity in respotted.read() {
+        if let Ok(mut visibility) = balls.get_mut(entity) {
+            *visibility = Visibility::Inherited;
+            commands.entity(entity).remove::<PocketDrop>();
+        }
     }
 }
 
@@ -168,7 +238,10 @@ fn hide_pocketed(mut balls: Query<&mut Visibility, (With<Ball>, Added<Pocketed>)
 /// respotted) is moved without turning.
 fn draw_ball_motion(
     spec: Res<TableSpec>,
-    mut balls: Query<(&BallMotion, &mut Transform), (With<Ball>, Changed<BallMotion>)>,
+    mut balls: Query<
+        (&BallMotion, &mut Transform),
+        (With<Ball>, Without<Pocketed>, Changed<BallMotion>),
+    >,
 ) {
     for (motion, mut transform) in &mut balls {
         let target = spec.ball_world_position(motion.position);

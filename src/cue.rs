@@ -23,7 +23,7 @@ use crate::{
 };
 
 /// Registers the cue stick and its controls.
-pub(crate) fn plugin(app: &mut App) {
+pub fn plugin(app: &mut App) {
     app.add_systems(Startup, spawn_cue)
         .add_systems(
             Update,

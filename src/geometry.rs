@@ -177,6 +177,20 @@ impl TableSpec {
         ]
     }
 
+    /// The hole of one of the solver's pockets.
+    pub fn pocket(&self, pocket: billiards_physics::Pocket) -> Pocket {
+        use billiards_physics::Pocket as P;
+        let index = match pocket {
+            P::HeadLeft => 0,
+            P::HeadRight => 1,
+            P::FootLeft => 2,
+            P::FootRight => 3,
+            P::SideLeft => 4,
+            P::SideRight => 5,
+        };
+        self.pockets()[index]
+    }
+
     /// The six cushions between the pockets.
     pub fn cushions(&self) -> [CushionSegment; 6] {
         let h = self.half_extents();
@@ -222,6 +236,17 @@ impl TableSpec {
         p.x.abs() <= limit.x && p.y.abs() <= limit.y
     }
 
+    /// The solver's table with these dimensions.
+    pub fn physics_table(&self) -> billiards_physics::Table {
+        billiards_physics::Table {
+            length: self.length,
+            width: self.width,
+            corner_mouth: self.corner_mouth,
+            side_mouth: self.side_mouth,
+            ..billiards_physics::Table::wpa_8ft()
+        }
+    }
+
     /// Where a ball resting at table position `p` is drawn.
     pub fn ball_world_position(&self, p: DVec2) -> Vec3 {
         to_world(p.extend(self.ball_radius))
@@ -259,6 +284,14 @@ mod tests {
     }
 
     #[test]
+    fn the_solver_table_has_the_same_dimensions() {
+        let spec = TableSpec::default();
+        assert_eq!(spec.physics_table(), billiards_physics::Table::wpa_8ft());
+        let ball = billiards_physics::BallSpec::default();
+        assert!((ball.radius - spec.ball_radius).abs() < 1e-15);
+    }
+
+    #[test]
     fn mapping_round_trips_and_keeps_left_on_plus_y() {
         let p = DVec2::new(0.5, 0.25);
         let w = to_world(p.extend(0.0));
@@ -279,6 +312,17 @@ mod tests {
         assert!((a.distance(b) - t.corner_mouth).abs() < 1e-12);
         // Left side pocket.
         assert!((cushions[1].start - cushions[0].end - t.side_mouth).abs() < 1e-12);
+    }
+
+    #[test]
+    fn solver_pockets_map_to_the_holes_at_their_positions() {
+        let spec = TableSpec::default();
+        let table = spec.physics_table();
+        for pocket in billiards_physics::Pocket::ALL {
+            let corner = table.pocket_position(pocket);
+            let hole = spec.pocket(pocket);
+            assert!(hole.centre.distance(DVec2::new(corner.x, corner.y)) < hole.radius + 0.01);
+        }
     }
 
     #[test]

@@ -3,7 +3,7 @@
 use bevy::prelude::*;
 
 /// Spawns the lights.
-pub(crate) fn plugin(app: &mut App) {
+pub fn plugin(app: &mut App) {
     app.insert_resource(ClearColor(Color::srgb(0.03, 0.03, 0.035)))
         .insert_resource(GlobalAmbientLight {
             color: Color::srgb(1.0, 0.95, 0.88),

@@ -7,9 +7,10 @@
 use std::{f64::consts::TAU, fmt};
 
 use bevy::prelude::*;
+use billiards_physics::Prediction;
 
 /// Registers the settings resources.
-pub(crate) fn plugin(app: &mut App) {
+pub fn plugin(app: &mut App) {
     app.init_resource::<ShotSettings>()
         .init_resource::<PhysicsSettings>()
         .init_resource::<ViewSettings>()
@@ -135,28 +136,41 @@ impl ShotSettings {
     }
 }
 
-/// Which prediction of contact times the solver uses.
+/// Which physics model the solver runs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum PhysicsModel {
-    /// Exact: contact times are roots of the quadratic/quartic the decelerating motion gives.
+    /// The paper's model: no spin, sliding friction above the slide/roll threshold speed and
+    /// rolling friction below it.
     #[default]
-    Exact,
-    /// The paper's linear prediction (constant velocity between events), kept for comparison.
-    PaperLinear,
+    Paper,
+    /// Spin (Leckie and Greenspan): sliding turns into rolling by friction at the contact
+    /// point, throw between balls, a spin-aware cushion. The slide/roll threshold is unused.
+    Spin,
 }
 
 impl PhysicsModel {
     /// Every model, in the order the panel lists them.
-    pub const ALL: [Self; 2] = [Self::Exact, Self::PaperLinear];
+    pub const ALL: [Self; 2] = [Self::Paper, Self::Spin];
 
     /// The name shown to the player.
     pub fn label(self) -> &'static str {
         match self {
-            Self::Exact => "exact (quartic contact times)",
-            Self::PaperLinear => "paper (linear prediction)",
+            Self::Paper => "paper (no spin)",
+            Self::Spin => "spin (Leckie & Greenspan)",
         }
     }
 }
+
+/// The name of a contact-time prediction, as shown to the player.
+pub fn prediction_label(prediction: Prediction) -> &'static str {
+    match prediction {
+        Prediction::Exact => "exact (roots of the real motion)",
+        Prediction::PaperLinear => "paper's linear prediction",
+    }
+}
+
+/// Every prediction, in the order the panel lists them.
+pub const PREDICTIONS: [Prediction; 2] = [Prediction::Exact, Prediction::PaperLinear];
 
 /// Random perturbation of collision normals (the paper's section 5).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -195,8 +209,10 @@ pub struct PhysicsSettings {
     pub e_cushion: f64,
     /// Perturbation of collision normals.
     pub randomization: Randomization,
-    /// Contact-time prediction model.
+    /// Physics model.
     pub model: PhysicsModel,
+    /// How contact times are predicted.
+    pub prediction: Prediction,
     /// Simulated seconds per real second.
     pub time_scale: f64,
     /// Whether the simulation clock is stopped.
@@ -214,6 +230,7 @@ impl Default for PhysicsSettings {
             e_cushion: 0.85,
             randomization: Randomization::default(),
             model: PhysicsModel::default(),
+            prediction: Prediction::Exact,
             time_scale: 1.0,
             paused: false,
         }
@@ -249,11 +266,11 @@ impl PhysicsSettings {
         max: 1.0,
         unit: "",
     };
-    /// Ball-cushion restitution of real rubber cushions.
+    /// Ball-cushion restitution: real rubber cushions are 0.6-0.9; 1 is the paper's mirror.
     pub const E_CUSHION: ParamRange = ParamRange {
         label: "cushion restitution",
         min: 0.6,
-        max: 0.95,
+        max: 1.0,
         unit: "",
     };
     /// Spread of the normal perturbation: beyond a few degrees play stops looking plausible.

@@ -1,65 +1,95 @@
-//! The simulation's interface to the rest of the game, and (for now) a placeholder for it.
+//! The simulation: `billiards-physics` inside the ECS.
 //!
-//! The interface stays: [`Rack`], the request messages ([`RackRequested`], [`ShotRequested`],
-//! [`StepRequested`]), the [`SimStatus`] resource and the clock settings (pause, time scale).
+//! One frame, in [`Update`]:
+//! 1. [`SimSystems::Step`]: one exclusive system advances the solver by the frame's virtual
+//!    time (so pause and time scale apply), or by exactly one event when the paused player
+//!    asks for a step. It writes back only the balls whose state changed and turns the
+//!    solver's events into messages ([`BallContact`], [`CushionHit`], [`BallPocketed`],
+//!    [`ShotFinished`]). When every ball rests it does nothing at all.
+//! 2. [`SimSystems::Flow`]: the game's reaction to a finished shot (respotting after a scratch).
+//! 3. [`SimSystems::Commands`]: requests for the next frame: rack, settings changes, edited
+//!    balls (found by change detection, so only those are re-predicted), the shot.
 //!
-//! PLACEHOLDER: until `billiards-physics` lands, [`plugin`] only spawns the balls of a rack
-//! at their positions and never moves them. A shot or a step request is answered with a note
-//! in [`SimStatus`] saying that no solver is connected. The rack layouts below stand in for
-//! the library's `racks` module and go away with this placeholder.
+//! Running the requests after the step means a shot starts with the next frame's delta, not
+//! with whatever idle time the reactive window accumulated before the key press.
 
-use bevy::{math::DVec2, prelude::*};
+use std::{ops::Range, time::Instant};
 
-use crate::{
-    balls::{Ball, BallMotion, MotionState},
-    geometry::{INCH, TableSpec},
-    settings::PhysicsSettings,
+use bevy::{math::DVec2, prelude::*, window::RequestRedraw};
+use billiards_physics::{
+    self as physics, BallState, CushionModel, EventKind, Model, Motion, PaperModel, Params,
+    Rack, Shot, Simulation, SpinModel,
 };
 
-/// Registers the simulation interface and the placeholder systems.
-pub(crate) fn plugin(app: &mut App) {
+use crate::{
+    balls::{Ball, BallMotion, MotionState, Pocketed},
+    geometry::TableSpec,
+    settings::{PhysicsModel, PhysicsSettings},
+};
+
+/// Registers the solver, its messages and the game-flow systems. Needs no rendering, so it
+/// runs headless under `MinimalPlugins` too (together with [`crate::settings::plugin`]).
+pub fn plugin(app: &mut App) {
     app.add_message::<RackRequested>()
         .add_message::<ShotRequested>()
         .add_message::<StepRequested>()
+        .add_message::<BallContact>()
+        .add_message::<CushionHit>()
+        .add_message::<BallPocketed>()
+        .add_message::<ShotFinished>()
+        .add_message::<RequestRedraw>()
+        .init_resource::<TableSpec>()
         .init_resource::<SimStatus>()
+        .configure_sets(
+            Update,
+            (SimSystems::Step, SimSystems::Flow, SimSystems::Commands).chain(),
+        )
         .add_systems(Startup, request_default_rack)
         .add_systems(
             Update,
             (
-                apply_clock_settings,
-                rack_balls,
-                answer_without_solver,
+                advance_solver.in_set(SimSystems::Step),
+                respot_after_scratch.in_set(SimSystems::Flow),
+                (
+                    apply_clock_settings,
+                    rack_balls,
+                    apply_physics_settings,
+                    place_edited_balls,
+                    strike_cue_ball,
+                )
+                    .chain()
+                    .in_set(SimSystems::Commands),
             ),
         );
 }
 
-/// The ball layouts the player can rack.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Rack {
-    /// The paper's default layout: the cue ball on the head spot and 15 balls racked 1/10 in
-    /// apart with the apex on the foot spot.
-    #[default]
-    PaperDefault,
-    /// A tight 15-ball (eight-ball) rack: 8 in the centre, a solid and a stripe in the back
-    /// corners.
-    FifteenBall,
-    /// A tight nine-ball diamond: 1 at the apex, 9 in the centre.
-    NineBall,
+/// The phases of the simulation within a frame, in order.
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SimSystems {
+    /// The exclusive solver step and its writeback.
+    Step,
+    /// Game flow reacting to what the step reported.
+    Flow,
+    /// Requests that take effect from the next step on.
+    Commands,
 }
 
-impl Rack {
-    /// Every rack, in the order the panel lists them.
-    pub const ALL: [Self; 3] = [Self::PaperDefault, Self::FifteenBall, Self::NineBall];
+/// The racks the panel offers, in its order.
+pub const RACKS: [Rack; 4] = [Rack::PaperDefault, Rack::FifteenBall, Rack::Tight, Rack::NineBall];
 
-    /// The name shown to the player.
-    pub fn label(self) -> &'static str {
-        match self {
-            Self::PaperDefault => "Paper default",
-            Self::FifteenBall => "15-ball rack",
-            Self::NineBall => "9-ball rack",
-        }
+/// The name of a rack shown to the player.
+pub fn rack_label(rack: Rack) -> &'static str {
+    match rack {
+        Rack::PaperDefault => "Paper default",
+        Rack::FifteenBall => "15-ball rack",
+        Rack::Tight => "Tight 15",
+        Rack::NineBall => "9-ball rack",
     }
 }
+
+/// The rack on the table when the game starts: the paper's 15 balls 1/10 in apart, with the
+/// cue ball on the head spot.
+pub const STARTING_RACK: Rack = Rack::FifteenBall;
 
 /// Asks for the table to be cleared and racked anew.
 #[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
@@ -78,6 +108,57 @@ pub struct ShotRequested {
 #[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
 pub struct StepRequested;
 
+/// Two balls collided.
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub struct BallContact {
+    /// The ball with the lower solver index.
+    pub a: Entity,
+    /// The other ball.
+    pub b: Entity,
+    /// Simulation time of the contact, seconds.
+    pub time: f64,
+}
+
+/// What part of the table's edge a ball hit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CushionPart {
+    /// The straight nose of a cushion.
+    Cushion(physics::Cushion),
+    /// The rounded jaw at the mouth of a pocket.
+    Jaw(physics::Pocket),
+}
+
+/// A ball hit a cushion or a pocket jaw.
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub struct CushionHit {
+    /// The ball.
+    pub ball: Entity,
+    /// What it hit.
+    pub part: CushionPart,
+    /// Simulation time of the hit, seconds.
+    pub time: f64,
+}
+
+/// A ball dropped into a pocket.
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub struct BallPocketed {
+    /// The ball.
+    pub ball: Entity,
+    /// Its number.
+    pub number: u8,
+    /// The pocket.
+    pub pocket: physics::Pocket,
+    /// Simulation time, seconds.
+    pub time: f64,
+}
+
+/// Every ball has come to rest after a shot.
+#[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ShotFinished {
+    /// Whether the cue ball went into a pocket.
+    pub scratch: bool,
+}
+
 /// What the simulation reports to the HUD and to the game flow.
 #[derive(Resource, Debug, Clone, PartialEq, Default)]
 pub struct SimStatus {
@@ -87,12 +168,105 @@ pub struct SimStatus {
     pub shots: u32,
     /// Simulated time since the last rack, seconds.
     pub sim_time: f64,
-    /// Events the solver resolved during the current (or last) shot.
-    pub events_this_shot: u32,
+    /// Events the solver resolved since the last strike (the strike itself not counted).
+    pub events_this_shot: usize,
     /// Wall time the solver took in the last frame that ran it, seconds.
     pub solver_seconds_last_frame: f64,
     /// A message for the player about the simulation's state, if any.
     pub note: Option<String>,
+}
+
+/// The solver and the entity of each of its balls.
+#[derive(Resource, Debug)]
+pub struct Solver {
+    sim: Simulation,
+    entities: Vec<Entity>,
+}
+
+impl Solver {
+    /// The simulation, for reading.
+    pub fn simulation(&self) -> &Simulation {
+        &self.sim
+    }
+
+    /// The entity of solver ball `id`.
+    pub fn entity(&self, id: usize) -> Option<Entity> {
+        self.entities.get(id).copied()
+    }
+
+    /// The solver index of the cue ball, if it is in the layout.
+    pub fn cue_ball(&self) -> Option<usize> {
+        self.sim.numbers().iter().position(|&n| n == 0)
+    }
+}
+
+/// The solver's parameters for the player's settings.
+pub fn params_from(settings: &PhysicsSettings) -> Params {
+    let model = match settings.model {
+        PhysicsModel::Paper => Model::Paper(PaperModel {
+            mu_slide: settings.mu_slide,
+            mu_roll: settings.mu_roll,
+            slide_roll_speed: settings.slide_roll_speed,
+            e_ball: settings.e_ball,
+            e_cushion: settings.e_cushion,
+        }),
+        PhysicsModel::Spin => {
+            let defaults = SpinModel::default();
+            // Keep the library's cushion friction; only the restitution is a setting.
+            let cushion = match defaults.cushion {
+                CushionModel::Han2005 { mu, .. } => CushionModel::Han2005 {
+                    e: settings.e_cushion,
+                    mu,
+                },
+                CushionModel::Reflect { .. } => CushionModel::Reflect {
+                    e: settings.e_cushion,
+                },
+            };
+            Model::Spin(SpinModel {
+                mu_slide: settings.mu_slide,
+                mu_roll: settings.mu_roll,
+                e_ball: settings.e_ball,
+                cushion,
+                ..defaults
+            })
+        }
+    };
+    Params {
+        model,
+        prediction: settings.prediction,
+        randomization: settings
+            .randomization
+            .enabled
+            .then(|| physics::Randomization {
+                spread: settings.randomization.spread_degrees.to_radians(),
+                seed: settings.randomization.seed,
+            }),
+        ..Params::default()
+    }
+}
+
+fn to_dvec2(v: physics::Vec2) -> DVec2 {
+    DVec2::new(v.x, v.y)
+}
+
+fn to_vec2(v: DVec2) -> physics::Vec2 {
+    physics::Vec2::new(v.x, v.y)
+}
+
+/// The component form of a solver ball state.
+pub fn ball_motion(state: &BallState) -> BallMotion {
+    BallMotion {
+        position: to_dvec2(state.position),
+        velocity: to_dvec2(state.velocity),
+        state: match state.motion {
+            Motion::Sliding => MotionState::Sliding,
+            Motion::Rolling => MotionState::Rolling,
+            // Spinning in place: the centre does not move, so nothing to roll.
+            Motion::Stationary | Motion::Spinning | Motion::Pocketed(_) => {
+                MotionState::Stationary
+            }
+        },
+    }
 }
 
 /// Applies the pause and time-scale settings to the virtual clock the solver advances by.
@@ -109,133 +283,316 @@ fn apply_clock_settings(settings: Res<PhysicsSettings>, mut time: ResMut<Time<Vi
 }
 
 fn request_default_rack(mut racks: MessageWriter<RackRequested>) {
-    racks.write(RackRequested(Rack::default()));
+    racks.write(RackRequested(STARTING_RACK));
 }
 
-/// PLACEHOLDER: despawns every ball and spawns the requested layout at rest.
+/// The solver step (see the module docs). Exclusive: it needs the solver, the ball
+/// components and the message queues at once, and nothing else may run beside it anyway.
+fn advance_solver(world: &mut World) {
+    let step_requested = world
+        .resource_mut::<Messages<StepRequested>>()
+        .drain()
+        .count()
+        > 0;
+    if !world.contains_resource::<Solver>() {
+        return;
+    }
+    let dt = world.resource::<Time>().delta_secs_f64();
+    let paused = world.resource::<Time<Virtual>>().is_paused();
+    world.resource_scope(|world, mut solver: Mut<Solver>| {
+        if solver.sim.is_at_rest() {
+            return;
+        }
+        let started = Instant::now();
+        let outcome: Result<Range<usize>, String> = if paused {
+            if !step_requested {
+                return;
+            }
+            let before = solver.sim.history().events().len();
+            solver.sim.step_event();
+            Ok(before..solver.sim.history().events().len())
+        } else if dt > 0.0 {
+            solver
+                .sim
+                .advance(dt)
+                .map(|advance| advance.events)
+                .map_err(|error| error.to_string())
+        } else {
+            return;
+        };
+        let cost = started.elapsed().as_secs_f64();
+        write_back(world, &solver);
+        let events = match outcome {
+            Ok(range) => range,
+            Err(error) => {
+                // The solver's state is valid where it stopped; show why it stopped.
+                world.resource_mut::<SimStatus>().note = Some(format!("solver: {error}"));
+                0..0
+            }
+        };
+        send_event_messages(world, &solver, events.clone());
+        let at_rest = solver.sim.is_at_rest();
+        {
+            let mut status = world.resource_mut::<SimStatus>();
+            status.at_rest = at_rest;
+            status.sim_time = solver.sim.time();
+            status.events_this_shot += events.len();
+            status.solver_seconds_last_frame = cost;
+        }
+        if at_rest {
+            let scratch = solver
+                .cue_ball()
+                .is_some_and(|id| !solver.sim.ball(id).motion.on_table());
+            world.write_message(ShotFinished { scratch });
+        } else {
+            // The window only redraws on demand; moving balls demand it.
+            world.write_message(RequestRedraw);
+        }
+    });
+}
+
+/// Copies changed solver states to the ball components (`set_if_neq`: a ball at rest is not
+/// touched, so change detection downstream sees only what moved).
+fn write_back(world: &mut World, solver: &Solver) {
+    for (id, &entity) in solver.entities.iter().enumerate() {
+        let state = solver.sim.ball(id);
+        let Ok(mut ball) = world.get_entity_mut(entity) else {
+            continue;
+        };
+        if let Some(mut motion) = ball.get_mut::<BallMotion>() {
+            motion.set_if_neq(ball_motion(&state));
+        }
+        if let Motion::Pocketed(pocket) = state.motion
+            && !ball.contains::<Pocketed>()
+        {
+            ball.insert(Pocketed { pocket });
+        }
+    }
+}
+
+fn send_event_messages(world: &mut World, solver: &Solver, events: Range<usize>) {
+    let entity = |id: usize| solver.entities[id];
+    for event in &solver.sim.history().events()[events] {
+        let time = event.time;
+        match event.kind {
+            EventKind::BallBall { a, b } => {
+                world.write_message(BallContact {
+                    a: entity(a),
+                    b: entity(b),
+                    time,
+                });
+            }
+            EventKind::Cushion { ball, cushion } => {
+                world.write_message(CushionHit {
+                    ball: entity(ball),
+                    part: CushionPart::Cushion(cushion),
+                    time,
+                });
+            }
+            EventKind::Jaw { ball, pocket } => {
+                world.write_message(CushionHit {
+                    ball: entity(ball),
+                    part: CushionPart::Jaw(pocket),
+                    time,
+                });
+            }
+            EventKind::Pocketed { ball, pocket } => {
+                world.write_message(BallPocketed {
+                    ball: entity(ball),
+                    number: solver.sim.numbers()[ball],
+                    pocket,
+                    time,
+                });
+            }
+            EventKind::Strike { .. }
+            | EventKind::Placed { .. }
+            | EventKind::ParamsChanged
+            | EventKind::Transition { .. } => {}
+        }
+    }
+}
+
+/// Clears the table and racks anew: a new solver and new ball entities.
 fn rack_balls(
     mut commands: Commands,
     mut requests: MessageReader<RackRequested>,
     spec: Res<TableSpec>,
+    settings: Res<PhysicsSettings>,
     balls: Query<Entity, With<Ball>>,
     mut status: ResMut<SimStatus>,
 ) {
     let Some(&RackRequested(rack)) = requests.read().last() else {
         return;
     };
+    let table = spec.physics_table();
+    let params = params_from(&settings);
+    let layout = rack.layout(&table, &params.ball);
+    let sim = match Simulation::new(table, params, &layout) {
+        Ok(sim) => sim,
+        Err(error) => {
+            status.note = Some(format!("cannot rack: {error}"));
+            return;
+        }
+    };
     for entity in &balls {
         commands.entity(entity).despawn();
     }
-    for (id, (number, position)) in rack_layout(rack, &spec).into_iter().enumerate() {
-        commands.spawn((
-            Ball { id, number },
-            BallMotion {
-                position,
-                velocity: DVec2::ZERO,
-                state: MotionState::Stationary,
-            },
-            Transform::from_translation(spec.ball_world_position(position)),
-            Name::new(format!("Ball {number}")),
-        ));
-    }
+    let entities = sim
+        .balls()
+        .zip(sim.numbers())
+        .enumerate()
+        .map(|(id, (state, &number))| {
+            let motion = ball_motion(&state);
+            commands
+                .spawn((
+                    Ball { id, number },
+                    motion,
+                    Transform::from_translation(spec.ball_world_position(motion.position)),
+                    Name::new(format!("Ball {number}")),
+                ))
+                .id()
+        })
+        .collect();
+    commands.insert_resource(Solver { sim, entities });
     *status = SimStatus {
         at_rest: true,
         ..default()
     };
 }
 
-/// PLACEHOLDER: there is no solver to strike or step yet; say so instead of pretending.
-fn answer_without_solver(
-    mut shots: MessageReader<ShotRequested>,
-    mut steps: MessageReader<StepRequested>,
+/// A settings change reaches the solver: moving balls continue under the new parameters.
+fn apply_physics_settings(
+    settings: Res<PhysicsSettings>,
+    solver: Option<ResMut<Solver>>,
     mut status: ResMut<SimStatus>,
 ) {
-    let shot = shots.read().count() > 0;
-    let step = steps.read().count() > 0;
-    if shot || step {
-        let note = "No physics solver is connected yet: balls stay where they are.";
-        warn!("{note}");
-        status.note = Some(note.to_owned());
+    let Some(mut solver) = solver else { return };
+    let params = params_from(&settings);
+    // Compare with what the solver has rather than trusting change detection alone: the
+    // clock settings (pause, time scale) change the resource too but not the physics.
+    if !settings.is_changed() || *solver.sim.params() == params {
+        return;
+    }
+    if let Err(error) = solver.sim.set_params(params) {
+        status.note = Some(format!("settings not applied: {error}"));
     }
 }
 
-/// PLACEHOLDER for the library's `racks`: ball numbers and table-plane positions of a rack,
-/// the cue ball (number 0) first.
-pub fn rack_layout(rack: Rack, spec: &TableSpec) -> Vec<(u8, DVec2)> {
-    // Rows of ball numbers, from the apex toward the foot rail, listed from +y to -y.
-    let (rows, gap): (&[&[u8]], f64) = match rack {
-        Rack::PaperDefault => (
-            &[
-                &[1],
-                &[2, 3],
-                &[4, 5, 6],
-                &[7, 8, 9, 10],
-                &[11, 12, 13, 14, 15],
-            ],
-            0.1 * INCH,
-        ),
-        Rack::FifteenBall => (
-            &[
-                &[1],
-                &[9, 2],
-                &[10, 8, 3],
-                &[11, 4, 12, 5],
-                &[6, 13, 14, 7, 15],
-            ],
-            TIGHT_GAP,
-        ),
-        Rack::NineBall => (&[&[1], &[2, 3], &[4, 9, 5], &[6, 7], &[8]], TIGHT_GAP),
+/// Balls whose [`BallMotion`] was edited outside the solver (respot, ball in hand, tools)
+/// are placed in the solver; only they are re-predicted. An edit the solver rejects (off the
+/// table, overlapping) is undone.
+fn place_edited_balls(
+    solver: Option<ResMut<Solver>>,
+    mut balls: Query<(&Ball, &mut BallMotion), Changed<BallMotion>>,
+    mut status: ResMut<SimStatus>,
+) {
+    let Some(mut solver) = solver else { return };
+    for (ball, mut motion) in &mut balls {
+        if ball.id >= solver.sim.ball_count() {
+            continue;
+        }
+        let state = solver.sim.ball(ball.id);
+        // The solver's own writeback also marks the component changed; it matches exactly.
+        let current = ball_motion(&state);
+        if motion.position == current.position && motion.velocity == current.velocity {
+            continue;
+        }
+        // A ball put down by hand carries no spin.
+        let result = solver.sim.place(
+            ball.id,
+            to_vec2(motion.position),
+            to_vec2(motion.velocity),
+            physics::Vec3::ZERO,
+        );
+        if let Err(error) = result {
+            status.note = Some(format!("ball {} not moved: {error}", ball.number));
+        }
+        // Either way the component now says what the solver has; already marked changed.
+        *motion.bypass_change_detection() = ball_motion(&solver.sim.ball(ball.id));
+        status.at_rest = solver.sim.is_at_rest();
+    }
+}
+
+/// Strikes the cue ball when every ball rests.
+fn strike_cue_ball(
+    mut shots: MessageReader<ShotRequested>,
+    solver: Option<ResMut<Solver>>,
+    mut status: ResMut<SimStatus>,
+    mut redraw: MessageWriter<RequestRedraw>,
+) {
+    let Some(&request) = shots.read().last() else {
+        return;
     };
-    let pitch = 2.0 * spec.ball_radius + gap;
-    let row_spacing = pitch * 3f64.sqrt() / 2.0;
-    let mut layout = vec![(0, spec.head_spot())];
-    for (k, row) in rows.iter().enumerate() {
-        let x = spec.foot_spot().x + k as f64 * row_spacing;
-        let half_span = (row.len() - 1) as f64 / 2.0;
-        for (j, &number) in row.iter().enumerate() {
-            let y = (half_span - j as f64) * pitch;
-            layout.push((number, DVec2::new(x, y)));
-        }
+    let Some(mut solver) = solver else { return };
+    if !solver.sim.is_at_rest() {
+        status.note = Some("wait until every ball rests".to_owned());
+        return;
     }
-    layout
+    let Some(cue_ball) = solver.cue_ball() else {
+        status.note = Some("there is no cue ball in this layout".to_owned());
+        return;
+    };
+    let shot = Shot::new(request.angle, request.speed);
+    match solver.sim.strike(cue_ball, shot) {
+        Ok(()) => {
+            status.shots += 1;
+            status.events_this_shot = 0;
+            status.at_rest = solver.sim.is_at_rest();
+            status.note = None;
+            redraw.write(RequestRedraw);
+        }
+        Err(error) => status.note = Some(format!("no shot: {error}")),
+    }
 }
 
-/// Space left between racked balls in a "tight" rack, so that no two balls start exactly in
-/// contact (an exactly touching pair is a degenerate case for any contact solver).
-const TIGHT_GAP: f64 = 1e-4;
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn racks_are_on_the_table_and_do_not_overlap() {
-        let spec = TableSpec::default();
-        for rack in Rack::ALL {
-            let layout = rack_layout(rack, &spec);
-            let expected = if rack == Rack::NineBall { 10 } else { 16 };
-            assert_eq!(layout.len(), expected, "{rack:?}");
-            assert_eq!(layout[0], (0, spec.head_spot()));
-            for (i, &(number, p)) in layout.iter().enumerate() {
-                assert!(spec.contains_ball_centre(p), "{rack:?} ball {number} at {p}");
-                for &(_, q) in &layout[i + 1..] {
-                    assert!(p.distance(q) > 2.0 * spec.ball_radius, "{rack:?}");
-                }
-            }
-            let mut numbers: Vec<u8> = layout.iter().map(|&(n, _)| n).collect();
-            numbers.sort_unstable();
-            numbers.dedup();
-            assert_eq!(numbers.len(), layout.len(), "{rack:?}: numbers repeat");
-        }
+/// After a scratch the cue ball goes back on the head string: the head spot, or the nearest
+/// free point along the string. The edit reaches the solver like any other (change detection).
+fn respot_after_scratch(
+    mut commands: Commands,
+    mut finished: MessageReader<ShotFinished>,
+    solver: Option<Res<Solver>>,
+    spec: Res<TableSpec>,
+    mut balls: Query<&mut BallMotion>,
+    mut status: ResMut<SimStatus>,
+) {
+    if !finished.read().any(|shot| shot.scratch) {
+        return;
     }
-
-    #[test]
-    fn eight_sits_in_the_middle_of_the_fifteen_ball_rack() {
-        let spec = TableSpec::default();
-        let layout = rack_layout(Rack::FifteenBall, &spec);
-        let (_, eight) = layout.iter().find(|&&(n, _)| n == 8).copied().unwrap();
-        let apex = spec.foot_spot();
-        assert_eq!(eight.y, 0.0);
-        assert!(eight.x > apex.x);
+    let Some(solver) = solver else { return };
+    let Some(cue) = solver.cue_ball() else { return };
+    let others: Vec<DVec2> = (0..solver.sim.ball_count())
+        .filter(|&id| id != cue)
+        .map(|id| solver.sim.ball(id))
+        .filter(|state| state.motion.on_table())
+        .map(|state| to_dvec2(state.position))
+        .collect();
+    let Some(spot) = head_string_spot(&spec, &others) else {
+        status.note = Some("no free spot on the head string for the cue ball".to_owned());
+        return;
+    };
+    let entity = solver.entities[cue];
+    if let Ok(mut motion) = balls.get_mut(entity) {
+        *motion = BallMotion {
+            position: spot,
+            velocity: DVec2::ZERO,
+            state: MotionState::Stationary,
+        };
+        commands.entity(entity).remove::<Pocketed>();
+        status.note = Some("scratch: the cue ball is back on the head string".to_owned());
     }
+}
+
+/// The free point on the head string (x = -L/4) nearest the head spot, if any: a ball there
+/// must clear every other ball by a millimetre.
+pub fn head_string_spot(spec: &TableSpec, others: &[DVec2]) -> Option<DVec2> {
+    let clearance = 2.0 * spec.ball_radius + 1e-3;
+    let limit = spec.width / 2.0 - spec.ball_radius;
+    let step = spec.ball_radius / 4.0;
+    let free = |p: DVec2| others.iter().all(|o| o.distance(p) >= clearance);
+    (0u32..)
+        .map(|k| f64::from(k) * step)
+        .take_while(|&offset| offset <= limit)
+        .flat_map(|offset| [offset, -offset])
+        .map(|y| DVec2::new(spec.head_spot().x, y))
+        .find(|&p| free(p))
 }

@@ -8,7 +8,7 @@ use crate::{
 };
 
 /// Spawns the table from the [`TableSpec`] resource.
-pub(crate) fn plugin(app: &mut App) {
+pub fn plugin(app: &mut App) {
     app.init_resource::<TableSpec>()
         .add_systems(Startup, spawn_table);
 }

@@ -383,13 +383,22 @@ mod tests {
     }
 
     #[test]
-    fn every_face_of_a_closed_cushion_points_outward() {
+    fn every_face_of_a_cushion_points_outward() {
         let spec = TableSpec::default();
-        let mut builder = MeshBuilder::default();
-        let segment = spec.cushions()[4];
-        add_cushion(&mut builder, &spec, &segment);
-        // 5 quads and 2 pentagons: 5 * 2 + 2 * 3 triangles.
-        assert_eq!(builder.triangle_count(), 16);
+        for segment in spec.cushions() {
+            let mut builder = MeshBuilder::default();
+            add_cushion(&mut builder, &spec, &segment);
+            // 5 quads and 2 pentagons: 5 * 2 + 2 * 3 triangles.
+            assert_eq!(builder.triangle_count(), 16);
+            let points: Vec<Vec3> = builder.positions.iter().map(|&p| p.into()).collect();
+            let centre = points.iter().sum::<Vec3>() / points.len() as f32;
+            for triangle in builder.indices.chunks(3) {
+                let [a, b, c] = [0, 1, 2].map(|k| points[triangle[k] as usize]);
+                let normal = (b - a).cross(c - a);
+                let middle = (a + b + c) / 3.0;
+                assert!(normal.dot(middle - centre) > 0.0, "{segment:?}: inward face");
+            }
+        }
     }
 
     #[test]

@@ -19,13 +19,14 @@ use crate::{
     camera::{CameraMode, OrbitCamera, TableCamera},
     cue::apply_shot_edit,
     settings::{
-        ClampReport, ParamRange, PhysicsModel, PhysicsSettings, ShotSettings, ViewSettings,
+        ClampReport, PREDICTIONS, ParamRange, PhysicsModel, PhysicsSettings, ShotSettings,
+        ViewSettings, prediction_label,
     },
-    sim::{Rack, RackRequested, SimStatus, StepRequested},
+    sim::{RACKS, RackRequested, SimStatus, StepRequested, rack_label},
 };
 
 /// Registers the panels.
-pub(crate) fn plugin(app: &mut App) {
+pub fn plugin(app: &mut App) {
     app.add_systems(Startup, spawn_ui_camera)
         .add_systems(EguiPrimaryContextPass, panels);
 }
@@ -104,7 +105,11 @@ fn fit_viewport(window: &Window, camera: &mut Camera, panel_width: f32) {
         physical_size: UVec2::new(window.physical_width() - left, window.physical_height().max(1)),
         ..default()
     };
-    if camera.viewport.as_ref() != Some(&viewport) {
+    let unchanged = camera.viewport.as_ref().is_some_and(|current| {
+        current.physical_position == viewport.physical_position
+            && current.physical_size == viewport.physical_size
+    });
+    if !unchanged {
         camera.viewport = Some(viewport);
     }
 }
@@ -132,7 +137,10 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
         let mut next = *state.physics;
         param_slider(ui, &mut next.mu_slide, PhysicsSettings::MU_SLIDE);
         param_slider(ui, &mut next.mu_roll, PhysicsSettings::MU_ROLL);
-        param_slider(ui, &mut next.slide_roll_speed, PhysicsSettings::SLIDE_ROLL_SPEED);
+        // Only the paper's model switches friction at a threshold speed.
+        ui.add_enabled_ui(next.model == PhysicsModel::Paper, |ui| {
+            param_slider(ui, &mut next.slide_roll_speed, PhysicsSettings::SLIDE_ROLL_SPEED);
+        });
         param_slider(ui, &mut next.e_ball, PhysicsSettings::E_BALL);
         param_slider(ui, &mut next.e_cushion, PhysicsSettings::E_CUSHION);
         ui.separator();
@@ -156,6 +164,13 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
                     ui.selectable_value(&mut next.model, model, model.label());
                 }
             });
+        egui::ComboBox::from_label("contact times")
+            .selected_text(prediction_label(next.prediction))
+            .show_ui(ui, |ui| {
+                for prediction in PREDICTIONS {
+                    ui.selectable_value(&mut next.prediction, prediction, prediction_label(prediction));
+                }
+            });
         apply_physics_edit(next, state);
     });
 
@@ -174,8 +189,8 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
         });
         apply_physics_edit(next, state);
         ui.horizontal_wrapped(|ui| {
-            for rack in Rack::ALL {
-                if ui.button(rack.label()).clicked() {
+            for rack in RACKS {
+                if ui.button(rack_label(rack)).clicked() {
                     state.racks.write(RackRequested(rack));
                 }
             }
