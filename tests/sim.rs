@@ -8,7 +8,7 @@ use billiards::{
     balls::{Ball, BallMotion, Pocketed},
     geometry::TableSpec,
     settings::{self, PhysicsSettings},
-    sim::{self, RackRequested, ShotFinished, ShotRequested, SimStatus, Solver, params_from},
+    sim::{self, BallPocketed, RackRequested, ShotFinished, ShotRequested, SimStatus, Solver, params_from},
 };
 use billiards_physics::{Motion, Rack, Shot, Simulation};
 
@@ -94,37 +94,77 @@ fn a_break_ends_bit_identical_to_the_library_however_frames_are_sliced() {
     }
 }
 
+/// Runs frames until every ball rests, collecting the numbers of pocketed balls and whether a
+/// finished shot was a scratch.
+fn run_collecting(app: &mut App) -> (Vec<u8>, bool) {
+    let mut pocketed = Vec::new();
+    let mut scratch = false;
+    for i in 0..5_000 {
+        app.update();
+        let world = app.world();
+        pocketed.extend(
+            world
+                .resource::<Messages<BallPocketed>>()
+                .iter_current_update_messages()
+                .map(|m| m.number),
+        );
+        scratch |= world
+            .resource::<Messages<ShotFinished>>()
+            .iter_current_update_messages()
+            .any(|m| m.scratch);
+        if i > 0 && world.resource::<SimStatus>().at_rest {
+            return (pocketed, scratch);
+        }
+    }
+    panic!("balls still moving");
+}
+
 #[test]
-fn pocketed_balls_leave_play_and_a_scratch_respots_the_cue_ball() {
+fn a_pocketed_ball_leaves_play() {
+    let mut app = game(Rack::NineBall);
+    let spec = TableSpec::default();
+    // Put the 1 between the cue ball and the foot-left corner, through the same component
+    // edit any tool would use, then shoot it in.
+    let head = spec.head_spot();
+    let corner = DVec2::new(spec.length / 2.0, spec.width / 2.0);
+    let line = (corner - head).normalize();
+    let mut query = app.world_mut().query::<(&Ball, &mut BallMotion)>();
+    for (ball, mut motion) in query.iter_mut(app.world_mut()) {
+        if ball.number == 1 {
+            motion.position = corner - 0.3 * line;
+        }
+    }
+    app.update();
+    shoot(&mut app, line.to_angle(), 2.5);
+    let (pocketed, scratch) = run_collecting(&mut app);
+    assert_eq!(pocketed, vec![1]);
+    assert!(!scratch);
+    let (one, pocketed_component) = app
+        .world_mut()
+        .query::<(&Ball, Has<Pocketed>)>()
+        .iter(app.world())
+        .find(|(ball, _)| ball.number == 1)
+        .map(|(ball, pocketed)| (*ball, pocketed))
+        .unwrap();
+    assert!(pocketed_component);
+    let solver = app.world().resource::<Solver>();
+    assert!(!solver.simulation().ball(one.id).motion.on_table());
+}
+
+#[test]
+fn a_scratch_respots_the_cue_ball_on_the_head_spot() {
     let mut app = game(Rack::PaperDefault);
     let spec = TableSpec::default();
     // From the head spot straight into the foot-left corner pocket.
     let head = spec.head_spot();
     let corner = DVec2::new(spec.length / 2.0, spec.width / 2.0);
-    let angle = (corner - head).to_angle();
-    shoot(&mut app, angle, 3.0);
-    let mut pocketed_seen = false;
-    let mut scratch_seen = false;
-    for _ in 0..2_000 {
-        app.update();
-        pocketed_seen |= app
-            .world_mut()
-            .query_filtered::<(), (With<Ball>, With<Pocketed>)>()
-            .iter(app.world())
-            .count()
-            > 0;
-        let finished = app.world().resource::<Messages<ShotFinished>>();
-        scratch_seen |= finished.iter_current_update_messages().any(|m| m.scratch);
-        if app.world().resource::<SimStatus>().at_rest {
-            break;
-        }
-    }
-    assert!(pocketed_seen, "the cue ball never left play");
-    assert!(scratch_seen, "no scratch reported");
-    // The respot is applied in the frame the shot finishes; one more frame settles commands.
+    shoot(&mut app, (corner - head).to_angle(), 3.0);
+    let (pocketed, scratch) = run_collecting(&mut app);
+    assert_eq!(pocketed, vec![0]);
+    assert!(scratch, "no scratch reported");
+    // The respot edit reaches the solver in the same frame; one more settles the commands.
     app.update();
-    let balls = ecs_balls(&mut app);
-    assert_eq!(balls, vec![(0, head, false)]);
+    assert_eq!(ecs_balls(&mut app), vec![(0, head, false)]);
     let solver = app.world().resource::<Solver>();
     let cue = solver.simulation().ball(0);
     assert_eq!(cue.motion, Motion::Stationary);
