@@ -18,9 +18,17 @@ pub fn plugin(app: &mut App) {
     app.add_systems(Startup, create_ball_assets)
         .add_systems(
             Update,
-            (attach_visuals, start_pocket_drops, animate_pocket_drops, restore_respotted),
+            (
+                attach_visuals,
+                start_pocket_drops,
+                animate_pocket_drops,
+                restore_respotted,
+            ),
         )
-        .add_systems(PostUpdate, draw_ball_motion.before(TransformSystems::Propagate));
+        .add_systems(
+            PostUpdate,
+            draw_ball_motion.before(TransformSystems::Propagate),
+        );
 }
 
 /// A pool ball. Spawned by the simulation together with [`BallMotion`].

@@ -84,7 +84,12 @@ fn spawn_cue(
     let shaft = piece(0.035, 0.80, SHAFT_COLOUR, 0.35);
     let ring = piece(0.80, 0.82, Color::srgb(0.05, 0.05, 0.05), 0.2);
     let butt = piece(0.82, CUE_LENGTH - 0.03, Color::srgb(0.22, 0.07, 0.03), 0.3);
-    let cap = piece(CUE_LENGTH - 0.03, CUE_LENGTH, Color::srgb(0.05, 0.05, 0.05), 0.5);
+    let cap = piece(
+        CUE_LENGTH - 0.03,
+        CUE_LENGTH,
+        Color::srgb(0.05, 0.05, 0.05),
+        0.5,
+    );
     commands.spawn((
         CueStick,
         Name::new("Cue stick"),
@@ -135,10 +140,8 @@ fn aim_with_mouse(
                 .ok()
                 .and_then(|ray| {
                     let plane_height = spec.ball_radius as f32;
-                    let distance = ray.intersect_plane(
-                        Vec3::Y * plane_height,
-                        InfinitePlane3d::new(Vec3::Y),
-                    )?;
+                    let distance =
+                        ray.intersect_plane(Vec3::Y * plane_height, InfinitePlane3d::new(Vec3::Y))?;
                     Some(to_table_plane(ray.get_point(distance)))
                 });
             if let Some(target) = target

@@ -208,12 +208,48 @@ impl TableSpec {
             end_jaw_slope,
         };
         [
-            long(Rail::Left, -h.x + corner_gap, -side_gap, corner_slope, side_slope),
-            long(Rail::Left, side_gap, h.x - corner_gap, side_slope, corner_slope),
-            long(Rail::Right, -h.x + corner_gap, -side_gap, corner_slope, side_slope),
-            long(Rail::Right, side_gap, h.x - corner_gap, side_slope, corner_slope),
-            long(Rail::Head, -h.y + corner_gap, h.y - corner_gap, corner_slope, corner_slope),
-            long(Rail::Foot, -h.y + corner_gap, h.y - corner_gap, corner_slope, corner_slope),
+            long(
+                Rail::Left,
+                -h.x + corner_gap,
+                -side_gap,
+                corner_slope,
+                side_slope,
+            ),
+            long(
+                Rail::Left,
+                side_gap,
+                h.x - corner_gap,
+                side_slope,
+                corner_slope,
+            ),
+            long(
+                Rail::Right,
+                -h.x + corner_gap,
+                -side_gap,
+                corner_slope,
+                side_slope,
+            ),
+            long(
+                Rail::Right,
+                side_gap,
+                h.x - corner_gap,
+                side_slope,
+                corner_slope,
+            ),
+            long(
+                Rail::Head,
+                -h.y + corner_gap,
+                h.y - corner_gap,
+                corner_slope,
+                corner_slope,
+            ),
+            long(
+                Rail::Foot,
+                -h.y + corner_gap,
+                h.y - corner_gap,
+                corner_slope,
+                corner_slope,
+            ),
         ]
     }
 
@@ -332,7 +368,8 @@ mod tests {
         for pocket in t.pockets() {
             match pocket.kind {
                 PocketKind::Corner => {
-                    let corner = DVec2::new(h.x.copysign(pocket.centre.x), h.y.copysign(pocket.centre.y));
+                    let corner =
+                        DVec2::new(h.x.copysign(pocket.centre.x), h.y.copysign(pocket.centre.y));
                     // The hole covers the playing-surface corner but not the table centre.
                     assert!(pocket.centre.distance(corner) < pocket.radius);
                     assert!(pocket.centre.length() > h.length());

@@ -120,7 +120,11 @@ fn capture_when_drawn(
     let waiting = progress.0.waiting.load(Ordering::Relaxed);
     // A new pipeline appearing restarts the wait: it may belong to something not yet drawn.
     let ready = total > 0 && waiting == 0 && total == pipelines;
-    let ready_since = if ready { ready_since.or(Some(now)) } else { None };
+    let ready_since = if ready {
+        ready_since.or(Some(now))
+    } else {
+        None
+    };
     if let Some(since) = ready_since
         && now - since >= capture.settle
     {
@@ -156,7 +160,9 @@ fn capture_when_drawn(
         return;
     }
     if now > TIMEOUT {
-        error!("render pipelines still compiling after {TIMEOUT:?} ({waiting} of {total}): giving up");
+        error!(
+            "render pipelines still compiling after {TIMEOUT:?} ({waiting} of {total}): giving up"
+        );
         exit.write(AppExit::from_code(3));
         return;
     }

@@ -17,8 +17,8 @@ use std::{ops::Range, time::Instant};
 
 use bevy::{math::DVec2, prelude::*, window::RequestRedraw};
 use billiards_physics::{
-    self as physics, BallState, CushionModel, EventKind, Model, Motion, PaperModel, Params,
-    Rack, Shot, Simulation, SpinModel,
+    self as physics, BallState, CushionModel, EventKind, Model, Motion, PaperModel, Params, Rack,
+    Shot, Simulation, SpinModel,
 };
 
 use crate::{
@@ -75,7 +75,12 @@ pub enum SimSystems {
 }
 
 /// The racks the panel offers, in its order.
-pub const RACKS: [Rack; 4] = [Rack::PaperDefault, Rack::FifteenBall, Rack::Tight, Rack::NineBall];
+pub const RACKS: [Rack; 4] = [
+    Rack::PaperDefault,
+    Rack::FifteenBall,
+    Rack::Tight,
+    Rack::NineBall,
+];
 
 /// The name of a rack shown to the player.
 pub fn rack_label(rack: Rack) -> &'static str {
@@ -262,9 +267,7 @@ pub fn ball_motion(state: &BallState) -> BallMotion {
             Motion::Sliding => MotionState::Sliding,
             Motion::Rolling => MotionState::Rolling,
             // Spinning in place: the centre does not move, so nothing to roll.
-            Motion::Stationary | Motion::Spinning | Motion::Pocketed(_) => {
-                MotionState::Stationary
-            }
+            Motion::Stationary | Motion::Spinning | Motion::Pocketed(_) => MotionState::Stationary,
         },
     }
 }

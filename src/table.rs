@@ -98,8 +98,9 @@ fn spawn_table(
             Mesh3d(diamond.clone()),
             MeshMaterial3d(pearl.clone()),
             NotShadowCaster,
-            Transform::from_translation(to_world(position + DVec3::Z * 5e-4))
-                .with_rotation(Quat::from_rotation_y(across) * Quat::from_rotation_x(-std::f32::consts::FRAC_PI_2)),
+            Transform::from_translation(to_world(position + DVec3::Z * 5e-4)).with_rotation(
+                Quat::from_rotation_y(across) * Quat::from_rotation_x(-std::f32::consts::FRAC_PI_2),
+            ),
         ));
     }
 

@@ -304,7 +304,12 @@ pub fn pocket_liners(spec: &TableSpec, depth: f64) -> Mesh {
             let top = wall_top(a).min(wall_top(b));
             let inward = (pocket.centre - (a + b) / 2.0).extend(0.0);
             builder.polygon_facing(
-                &[a.extend(-depth), b.extend(-depth), b.extend(top), a.extend(top)],
+                &[
+                    a.extend(-depth),
+                    b.extend(-depth),
+                    b.extend(top),
+                    a.extend(top),
+                ],
                 inward,
             );
         }
@@ -360,7 +365,10 @@ mod tests {
         for pocket in spec.pockets() {
             for p in &points {
                 let d = crate::geometry::to_table_plane(*p).distance(pocket.centre);
-                assert!(d > pocket.radius - 1e-6, "cloth vertex {p} inside {pocket:?}");
+                assert!(
+                    d > pocket.radius - 1e-6,
+                    "cloth vertex {p} inside {pocket:?}"
+                );
             }
         }
     }
@@ -396,7 +404,10 @@ mod tests {
                 let [a, b, c] = [0, 1, 2].map(|k| points[triangle[k] as usize]);
                 let normal = (b - a).cross(c - a);
                 let middle = (a + b + c) / 3.0;
-                assert!(normal.dot(middle - centre) > 0.0, "{segment:?}: inward face");
+                assert!(
+                    normal.dot(middle - centre) > 0.0,
+                    "{segment:?}: inward face"
+                );
             }
         }
     }

@@ -102,7 +102,10 @@ fn fit_viewport(window: &Window, camera: &mut Camera, panel_width: f32) {
     let left = ((panel_width * window.scale_factor()) as u32).min(window.physical_width() - 1);
     let viewport = Viewport {
         physical_position: UVec2::new(left, 0),
-        physical_size: UVec2::new(window.physical_width() - left, window.physical_height().max(1)),
+        physical_size: UVec2::new(
+            window.physical_width() - left,
+            window.physical_height().max(1),
+        ),
         ..default()
     };
     let unchanged = camera.viewport.as_ref().is_some_and(|current| {
@@ -139,12 +142,19 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
         param_slider(ui, &mut next.mu_roll, PhysicsSettings::MU_ROLL);
         // Only the paper's model switches friction at a threshold speed.
         ui.add_enabled_ui(next.model == PhysicsModel::Paper, |ui| {
-            param_slider(ui, &mut next.slide_roll_speed, PhysicsSettings::SLIDE_ROLL_SPEED);
+            param_slider(
+                ui,
+                &mut next.slide_roll_speed,
+                PhysicsSettings::SLIDE_ROLL_SPEED,
+            );
         });
         param_slider(ui, &mut next.e_ball, PhysicsSettings::E_BALL);
         param_slider(ui, &mut next.e_cushion, PhysicsSettings::E_CUSHION);
         ui.separator();
-        ui.checkbox(&mut next.randomization.enabled, "randomize collision normals");
+        ui.checkbox(
+            &mut next.randomization.enabled,
+            "randomize collision normals",
+        );
         ui.add_enabled_ui(next.randomization.enabled, |ui| {
             param_slider(
                 ui,
@@ -168,7 +178,11 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
             .selected_text(prediction_label(next.prediction))
             .show_ui(ui, |ui| {
                 for prediction in PREDICTIONS {
-                    ui.selectable_value(&mut next.prediction, prediction, prediction_label(prediction));
+                    ui.selectable_value(
+                        &mut next.prediction,
+                        prediction,
+                        prediction_label(prediction),
+                    );
                 }
             });
         apply_physics_edit(next, state);
@@ -198,7 +212,10 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
     });
 
     section(ui, "View", |ui| {
-        ui.checkbox(&mut state.view.show_vectors, "show vectors (cue red, velocity blue)");
+        ui.checkbox(
+            &mut state.view.show_vectors,
+            "show vectors (cue red, velocity blue)",
+        );
         ui.horizontal(|ui| {
             let mut mode = state.orbit.mode;
             ui.selectable_value(&mut mode, CameraMode::Free, "orbit");
@@ -292,7 +309,13 @@ fn hud(ctx: &egui::Context, state: &PanelState) {
             } else {
                 pocketed
                     .iter()
-                    .map(|n| if *n == 0 { "cue".to_owned() } else { n.to_string() })
+                    .map(|n| {
+                        if *n == 0 {
+                            "cue".to_owned()
+                        } else {
+                            n.to_string()
+                        }
+                    })
                     .collect::<Vec<_>>()
                     .join(", ")
             };

@@ -19,9 +19,8 @@ const ICD_DIRS: [&str; 3] = [
 ];
 
 fn on_path(program: &str) -> bool {
-    env::var_os("PATH").is_some_and(|paths| {
-        env::split_paths(&paths).any(|dir| dir.join(program).is_file())
-    })
+    env::var_os("PATH")
+        .is_some_and(|paths| env::split_paths(&paths).any(|dir| dir.join(program).is_file()))
 }
 
 fn vulkan_driver_installed() -> bool {
@@ -98,7 +97,14 @@ fn table_balls_and_cue_are_drawn() {
     let runtime_dir = env::var_os("XDG_RUNTIME_DIR").unwrap_or_else(|| env::temp_dir().into());
     // `timeout` (coreutils) ends the run with SIGTERM, so xvfb-run can stop its X server.
     let output = Command::new("timeout")
-        .args(["--kill-after=10", "300", "xvfb-run", "-a", "-s", "-screen 0 1280x720x24"])
+        .args([
+            "--kill-after=10",
+            "300",
+            "xvfb-run",
+            "-a",
+            "-s",
+            "-screen 0 1280x720x24",
+        ])
         .arg(env!("CARGO_BIN_EXE_billiards"))
         .arg("--screenshot")
         .arg(&out)
@@ -122,18 +128,26 @@ fn table_balls_and_cue_are_drawn() {
     let red = shot.count(|[r, g, b]| r > 140 && g < 60 && b < 60);
     let blue = shot.count(|[r, g, b]| b > 110 && r < 60 && g < 110);
     let maple = shot.count(|[r, g, b]| r > 170 && g > 120 && b > 70 && r - b > 60 && r >= g);
-    let mean_brightness =
-        shot.table_view().map(|p| p.iter().map(|&c| u64::from(c)).sum::<u64>()).sum::<u64>()
-            / (3 * total as u64);
+    let mean_brightness = shot
+        .table_view()
+        .map(|p| p.iter().map(|&c| u64::from(c)).sum::<u64>())
+        .sum::<u64>()
+        / (3 * total as u64);
     let report = format!(
         "view {total} px, mean {mean_brightness}: cloth {cloth}, white {white}, yellow {yellow}, \
          red {red}, blue {blue}, maple {maple}"
     );
     eprintln!("{report}");
 
-    assert!(mean_brightness > 20, "the frame is (nearly) black: {report}");
+    assert!(
+        mean_brightness > 20,
+        "the frame is (nearly) black: {report}"
+    );
     assert!(cloth > total / 5, "too little cloth: {report}");
     assert!(white > 60, "no cue ball: {report}");
-    assert!(yellow > 20 && red > 20 && blue > 20, "coloured balls missing: {report}");
+    assert!(
+        yellow > 20 && red > 20 && blue > 20,
+        "coloured balls missing: {report}"
+    );
     assert!(maple > 150, "no cue stick: {report}");
 }

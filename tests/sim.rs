@@ -8,7 +8,10 @@ use billiards::{
     balls::{Ball, BallMotion, Pocketed},
     geometry::TableSpec,
     settings::{self, PhysicsSettings},
-    sim::{self, BallPocketed, RackRequested, ShotFinished, ShotRequested, SimStatus, Solver, params_from},
+    sim::{
+        self, BallPocketed, RackRequested, ShotFinished, ShotRequested, SimStatus, Solver,
+        params_from,
+    },
 };
 use billiards_physics::{Motion, Rack, Shot, Simulation};
 
@@ -16,7 +19,9 @@ use billiards_physics::{Motion, Rack, Shot, Simulation};
 fn game(rack: Rack) -> App {
     let mut app = App::new();
     app.add_plugins((MinimalPlugins, settings::plugin, sim::plugin));
-    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(16)));
+    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
+        16,
+    )));
     app.update();
     app.world_mut().write_message(RackRequested(rack));
     app.update();
@@ -79,7 +84,9 @@ fn a_break_ends_bit_identical_to_the_library_however_frames_are_sliced() {
         ("alternating", |i| {
             Duration::from_micros(if i % 2 == 0 { 1_000 } else { 200_000 })
         }),
-        ("jittery", |i| Duration::from_micros(3_000 + (i as u64 * 7_919) % 90_000)),
+        ("jittery", |i| {
+            Duration::from_micros(3_000 + (i as u64 * 7_919) % 90_000)
+        }),
     ];
     for (name, pattern) in patterns {
         let mut app = game(Rack::FifteenBall);
