@@ -170,6 +170,12 @@ fn attach_visuals(
     }
 }
 
+/// Balls that left play this frame.
+type NewlyPocketed = (With<Ball>, Added<Pocketed>);
+
+/// Balls in play whose table state changed.
+type MovedOnTable = (With<Ball>, Without<Pocketed>, Changed<BallMotion>);
+
 /// A pocketed ball on its way down: it rolls over the hole's centre and sinks out of sight.
 #[derive(Component, Debug, Clone, Copy, PartialEq)]
 struct PocketDrop {
@@ -187,7 +193,7 @@ const DROP_SECONDS: f32 = 0.35;
 fn start_pocket_drops(
     mut commands: Commands,
     spec: Res<TableSpec>,
-    balls: Query<(Entity, &Pocketed, &Transform), (With<Ball>, Added<Pocketed>)>,
+    balls: Query<(Entity, &Pocketed, &Transform), NewlyPocketed>,
 ) {
     for (entity, pocketed, transform) in &balls {
         let hole = spec.pocket(pocketed.pocket).centre;
@@ -246,10 +252,7 @@ fn restore_respotted(
 /// respotted) is moved without turning.
 fn draw_ball_motion(
     spec: Res<TableSpec>,
-    mut balls: Query<
-        (&BallMotion, &mut Transform),
-        (With<Ball>, Without<Pocketed>, Changed<BallMotion>),
-    >,
+    mut balls: Query<(&BallMotion, &mut Transform), MovedOnTable>,
 ) {
     for (motion, mut transform) in &mut balls {
         let target = spec.ball_world_position(motion.position);
@@ -274,17 +277,66 @@ pub fn world_velocity(motion: &BallMotion) -> Vec3 {
 const TEXTURE_WIDTH: usize = 512;
 const TEXTURE_HEIGHT: usize = TEXTURE_WIDTH / 2;
 
+/// How one ball is painted: what [`ball_texture`] samples at every texel.
+#[derive(Debug, Clone, PartialEq)]
+struct BallPaint {
+    kind: BallKind,
+    /// The number as text ("" for the cue ball).
+    label: String,
+    /// The ball's colour, sRGB.
+    colour: [f32; 3],
+    /// The white of stripes and number circles, sRGB.
+    white: [f32; 3],
+    /// Angular radius of the number circles, radians.
+    circle_radius: f32,
+    /// Half the angular width of a stripe's band, radians.
+    stripe_half_width: f32,
+}
+
+impl BallPaint {
+    fn new(number: u8) -> Self {
+        let colour = ball_colour(number).to_srgba();
+        Self {
+            kind: BallKind::of(number),
+            label: number.to_string(),
+            colour: [colour.red, colour.green, colour.blue],
+            white: [0.97, 0.96, 0.92],
+            // The number circle is about 1 inch across on a 2.25 inch ball.
+            circle_radius: 25f32.to_radians(),
+            stripe_half_width: 36f32.to_radians(),
+        }
+    }
+
+    /// The colour at texture coordinates (u, v) of Bevy's UV sphere: u runs around the
+    /// equator, v from the top pole (0) to the bottom pole (1).
+    fn colour_at(&self, u: f32, v: f32) -> [f32; 3] {
+        use std::f32::consts::{PI, TAU};
+        let latitude = (0.5 - v) * PI;
+        let base = match self.kind {
+            BallKind::Cue => return self.colour,
+            BallKind::Solid | BallKind::Eight => self.colour,
+            BallKind::Stripe if latitude.abs() < self.stripe_half_width => self.colour,
+            BallKind::Stripe => self.white,
+        };
+        // Number circles centred on the equator at u = 1/4 and u = 3/4.
+        for centre_u in [0.25f32, 0.75] {
+            let dx = (u - centre_u) * TAU; // radians of longitude (= arc length on the equator)
+            let dy = -latitude; // radians, growing downward like v
+            if (dx * dx + dy * dy).sqrt() < self.circle_radius {
+                // Digits fill 65 % of the circle's height.
+                let glyph_height = 1.3 * self.circle_radius;
+                let covered = text_covers(&self.label, dx / glyph_height, dy / glyph_height + 0.5);
+                return if covered { [0.05; 3] } else { self.white };
+            }
+        }
+        base
+    }
+}
+
 /// Paints ball `number`'s texture: its colour (all over for solids, a band for stripes) and
 /// two white circles with the number, on opposite sides of the equator.
 pub fn ball_texture(number: u8) -> Image {
-    let colour = ball_colour(number).to_srgba();
-    let colour = [colour.red, colour.green, colour.blue];
-    let white = [0.97, 0.96, 0.92];
-    let kind = BallKind::of(number);
-    let label = number.to_string();
-    // The number circle is about 1 inch across on a 2.25 inch ball: 25 degrees of radius.
-    let circle_radius = 25.0f32.to_radians();
-    let stripe_half_width = 36.0f32.to_radians();
+    let paint = BallPaint::new(number);
     let mut data = Vec::with_capacity(TEXTURE_WIDTH * TEXTURE_HEIGHT * 4);
     for row in 0..TEXTURE_HEIGHT {
         for column in 0..TEXTURE_WIDTH {
@@ -294,17 +346,7 @@ pub fn ball_texture(number: u8) -> Image {
                 for sx in 0..3 {
                     let u = (column as f32 + (sx as f32 + 0.5) / 3.0) / TEXTURE_WIDTH as f32;
                     let v = (row as f32 + (sy as f32 + 0.5) / 3.0) / TEXTURE_HEIGHT as f32;
-                    let c = ball_surface_colour(
-                        kind,
-                        &label,
-                        colour,
-                        white,
-                        u,
-                        v,
-                        circle_radius,
-                        stripe_half_width,
-                    );
-                    for (s, c) in sum.iter_mut().zip(c) {
+                    for (s, c) in sum.iter_mut().zip(paint.colour_at(u, v)) {
                         *s += c / 9.0;
                     }
                 }
@@ -324,46 +366,6 @@ pub fn ball_texture(number: u8) -> Image {
         TextureFormat::Rgba8UnormSrgb,
         RenderAssetUsages::RENDER_WORLD,
     )
-}
-
-/// The colour of one point of the ball surface, at texture coordinates (u, v).
-#[allow(clippy::too_many_arguments)]
-fn ball_surface_colour(
-    kind: BallKind,
-    label: &str,
-    colour: [f32; 3],
-    white: [f32; 3],
-    u: f32,
-    v: f32,
-    circle_radius: f32,
-    stripe_half_width: f32,
-) -> [f32; 3] {
-    use std::f32::consts::{PI, TAU};
-    let latitude = (0.5 - v) * PI;
-    let base = match kind {
-        BallKind::Cue => return colour,
-        BallKind::Solid | BallKind::Eight => colour,
-        BallKind::Stripe if latitude.abs() < stripe_half_width => colour,
-        BallKind::Stripe => white,
-    };
-    // Number circles centred on the equator at u = 1/4 and u = 3/4.
-    for centre_u in [0.25f32, 0.75] {
-        let dx = (u - centre_u) * TAU; // radians of longitude (= arc length on the equator)
-        let dy = -latitude; // radians, growing downward like v
-        let r = (dx * dx + dy * dy).sqrt();
-        if r < circle_radius {
-            // Digits fill 65 % of the circle's height.
-            let glyph_height = 1.3 * circle_radius;
-            let x = dx / glyph_height;
-            let y = dy / glyph_height + 0.5;
-            return if text_covers(label, x, y) {
-                [0.05, 0.05, 0.05]
-            } else {
-                white
-            };
-        }
-    }
-    base
 }
 
 /// 5x7 bitmap digits, one row per byte, most significant of the low five bits on the left.

@@ -70,10 +70,10 @@ impl Default for OrbitCamera {
     fn default() -> Self {
         // Standing behind the head rail, a little to the right, looking up the table.
         Self {
-            focus: Vec3::new(0.15, 0.0, 0.0),
+            focus: Vec3::new(0.1, 0.0, 0.0),
             yaw: -1.25,
-            pitch: -0.62,
-            distance: 2.75,
+            pitch: -0.66,
+            distance: 3.2,
             mode: CameraMode::Free,
         }
     }
@@ -92,7 +92,7 @@ impl OrbitCamera {
             focus: Vec3::ZERO,
             yaw: 0.0,
             pitch: Self::PITCH_MIN,
-            distance: 2.6,
+            distance: 3.1,
             mode: CameraMode::Top,
         }
     }

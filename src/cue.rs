@@ -107,14 +107,32 @@ fn cue_ball_position(balls: &Query<(&Ball, &BallMotion), Without<Pocketed>>) -> 
         .map(|(_, motion)| motion.position)
 }
 
+/// The mouse, the modifier keys and what the pointer is over.
+#[derive(bevy::ecs::system::SystemParam)]
+struct PointerInput<'w, 's> {
+    buttons: Res<'w, ButtonInput<MouseButton>>,
+    keys: Res<'w, ButtonInput<KeyCode>>,
+    motion: Res<'w, AccumulatedMouseMotion>,
+    scroll: Res<'w, AccumulatedMouseScroll>,
+    window: Single<'w, 's, &'static Window, With<PrimaryWindow>>,
+    camera: Single<'w, 's, (&'static Camera, &'static GlobalTransform), With<TableCamera>>,
+}
+
+impl PointerInput<'_, '_> {
+    /// The table-plane point under the pointer, on the horizontal plane `height` above the
+    /// cloth (Bevy world units).
+    fn table_point(&self, height: f32) -> Option<DVec2> {
+        let cursor = self.window.cursor_position()?;
+        let (camera, camera_transform) = *self.camera;
+        let ray = camera.viewport_to_world(camera_transform, cursor).ok()?;
+        let distance = ray.intersect_plane(Vec3::Y * height, InfinitePlane3d::new(Vec3::Y))?;
+        Some(to_table_plane(ray.get_point(distance)))
+    }
+}
+
 /// Left drag aims at the pointer; with Shift, dragging down (or the wheel) sets the power.
 fn aim_with_mouse(
-    buttons: Res<ButtonInput<MouseButton>>,
-    keys: Res<ButtonInput<KeyCode>>,
-    motion: Res<AccumulatedMouseMotion>,
-    scroll: Res<AccumulatedMouseScroll>,
-    window: Single<&Window, With<PrimaryWindow>>,
-    camera: Single<(&Camera, &GlobalTransform), With<TableCamera>>,
+    input: PointerInput,
     spec: Res<TableSpec>,
     balls: Query<(&Ball, &BallMotion), Without<Pocketed>>,
     status: Res<SimStatus>,
@@ -127,23 +145,17 @@ fn aim_with_mouse(
     let Some(cue_ball) = cue_ball_position(&balls) else {
         return;
     };
-    let shift = keys.any_pressed([KeyCode::ShiftLeft, KeyCode::ShiftRight]);
+    let shift = input
+        .keys
+        .any_pressed([KeyCode::ShiftLeft, KeyCode::ShiftRight]);
     let mut next = *shot;
-    if buttons.pressed(MouseButton::Left) {
+    if input.buttons.pressed(MouseButton::Left) {
         if shift {
             // Pulling the mouse toward the player pulls the cue back: 2 cm/s per pixel.
-            next.power += f64::from(motion.delta.y) * 0.02;
-        } else if let Some(cursor) = window.cursor_position() {
-            let (camera, camera_transform) = *camera;
-            let target = camera
-                .viewport_to_world(camera_transform, cursor)
-                .ok()
-                .and_then(|ray| {
-                    let plane_height = spec.ball_radius as f32;
-                    let distance =
-                        ray.intersect_plane(Vec3::Y * plane_height, InfinitePlane3d::new(Vec3::Y))?;
-                    Some(to_table_plane(ray.get_point(distance)))
-                });
+            next.power += f64::from(input.motion.delta.y) * 0.02;
+        } else {
+            // Aim from the ball's centre height, so the cue ball heads for the pointer.
+            let target = input.table_point(spec.ball_radius as f32);
             if let Some(target) = target
                 && target.distance(cue_ball) > 1e-3
             {
@@ -151,10 +163,10 @@ fn aim_with_mouse(
             }
         }
     }
-    if shift && scroll.delta.y != 0.0 {
-        let notches = match scroll.unit {
-            MouseScrollUnit::Line => scroll.delta.y,
-            MouseScrollUnit::Pixel => scroll.delta.y / 40.0,
+    if shift && input.scroll.delta.y != 0.0 {
+        let notches = match input.scroll.unit {
+            MouseScrollUnit::Line => input.scroll.delta.y,
+            MouseScrollUnit::Pixel => input.scroll.delta.y / 40.0,
         };
         next.power += f64::from(notches) * 0.25;
     }

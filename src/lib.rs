@@ -48,6 +48,9 @@ impl Plugin for GamePlugin {
             lighting::plugin,
             ui::plugin,
         ));
+        if self.options.top_view {
+            app.insert_resource(camera::OrbitCamera::top_view());
+        }
         match &self.options.screenshot {
             Some(path) => {
                 app.add_plugins(screenshot::ScreenshotPlugin {

@@ -9,6 +9,8 @@ pub struct LaunchOptions {
     pub screenshot: Option<PathBuf>,
     /// How long the scene must have been fully drawn before the capture (wall time).
     pub screenshot_settle: Duration,
+    /// Start with the camera straight above the table.
+    pub top_view: bool,
     /// Print the usage text and exit.
     pub show_help: bool,
 }
@@ -44,11 +46,12 @@ impl std::error::Error for ArgsError {}
 impl LaunchOptions {
     /// The usage text printed by `--help` and after a command-line error.
     pub const USAGE: &'static str = "\
-usage: billiards [--screenshot PATH [--settle SECONDS]]
+usage: billiards [--top-view] [--screenshot PATH [--settle SECONDS]]
 
   --screenshot PATH   wait until the scene has been drawn, save it as PNG to PATH, exit
   --settle SECONDS    how long every render pipeline must have been ready before the
                       capture (default 2)
+  --top-view          start with the camera straight above the table (T toggles it)
   -h, --help          print this text";
 
     /// Wall time the scene must have been fully drawn before a screenshot, unless overridden.
@@ -78,6 +81,7 @@ usage: billiards [--screenshot PATH [--settle SECONDS]]
                             value,
                         })?;
                 }
+                "--top-view" => options.top_view = true,
                 "-h" | "--help" => options.show_help = true,
                 _ => return Err(ArgsError::UnknownArgument(arg)),
             }
@@ -104,7 +108,8 @@ mod tests {
 
     #[test]
     fn screenshot_and_settle_are_read() {
-        let options = parse(&["--screenshot", "out.png", "--settle", "0.5"]).unwrap();
+        let options = parse(&["--screenshot", "out.png", "--settle", "0.5", "--top-view"]).unwrap();
+        assert!(options.top_view);
         assert_eq!(options.screenshot, Some(PathBuf::from("out.png")));
         assert_eq!(options.screenshot_settle, Duration::from_millis(500));
     }

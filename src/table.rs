@@ -46,14 +46,16 @@ fn spawn_table(
         ..default()
     });
     let wood = materials.add(StandardMaterial {
-        base_color: Color::srgb(0.30, 0.12, 0.04),
+        base_color: Color::srgb(0.20, 0.08, 0.03),
         perceptual_roughness: 0.35,
         reflectance: 0.4,
         ..default()
     });
+    // Unlit: the inside of a pocket is out of the lamps' light, and lit walls would read as
+    // grey shapes on the cloth rather than as holes.
     let liner = materials.add(StandardMaterial {
-        base_color: Color::srgb(0.015, 0.015, 0.015),
-        perceptual_roughness: 0.8,
+        base_color: Color::srgb(0.012, 0.012, 0.012),
+        unlit: true,
         ..default()
     });
     let pearl = materials.add(StandardMaterial {

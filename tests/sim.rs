@@ -58,6 +58,9 @@ fn shoot(app: &mut App, angle: f64, speed: f64) {
         .write_message(ShotRequested { angle, speed });
 }
 
+/// The duration of frame `i`.
+type FramePattern = fn(usize) -> Duration;
+
 #[test]
 fn a_break_ends_bit_identical_to_the_library_however_frames_are_sliced() {
     let (angle, speed) = (0.012, 9.0);
@@ -78,7 +81,7 @@ fn a_break_ends_bit_identical_to_the_library_however_frames_are_sliced() {
         })
         .collect();
 
-    let patterns: [(&str, fn(usize) -> Duration); 4] = [
+    let patterns: [(&str, FramePattern); 4] = [
         ("60 Hz", |_| Duration::from_micros(16_667)),
         ("slow 7 Hz", |_| Duration::from_millis(143)),
         ("alternating", |i| {
