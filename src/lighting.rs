@@ -24,7 +24,7 @@ fn spawn_lamps(mut commands: Commands) {
             Name::new("Lamp"),
             SpotLight {
                 color: Color::srgb(1.0, 0.96, 0.88),
-                intensity: 450_000.0,
+                intensity: 200_000.0,
                 range: 4.0,
                 radius: 0.05,
                 shadow_maps_enabled: true,
