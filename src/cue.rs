@@ -19,23 +19,28 @@ use crate::{
     camera::{CameraSystems, TableCamera},
     geometry::{TableSpec, table_dir_to_world, to_table_plane},
     settings::{ClampReport, ShotSettings, ViewSettings},
-    sim::{ShotRequested, SimStatus},
+    sim::{ShotRequested, SimStatus, SimSystems},
 };
 
 /// Registers the cue stick and its controls.
 pub fn plugin(app: &mut App) {
     app.add_systems(Startup, spawn_cue)
+        // Input before the simulation's commands, so a shot is struck in the same frame;
+        // drawing after them, so the cue and the vectors show this frame's state.
         .add_systems(
             Update,
             (
                 aim_with_mouse.run_if(not(egui_wants_any_pointer_input)),
                 cue_keys.run_if(not(egui_wants_any_keyboard_input)),
-                place_cue,
             )
                 .chain()
-                .after(CameraSystems),
+                .after(CameraSystems)
+                .before(SimSystems::Commands),
         )
-        .add_systems(Update, draw_vectors);
+        .add_systems(
+            Update,
+            (place_cue, draw_vectors).after(SimSystems::Commands),
+        );
 }
 
 /// The cue stick.

@@ -520,6 +520,7 @@ fn place_edited_balls(
 fn strike_cue_ball(
     mut shots: MessageReader<ShotRequested>,
     solver: Option<ResMut<Solver>>,
+    mut balls: Query<&mut BallMotion>,
     mut status: ResMut<SimStatus>,
     mut redraw: MessageWriter<RequestRedraw>,
 ) {
@@ -538,6 +539,10 @@ fn strike_cue_ball(
     let shot = Shot::new(request.angle, request.speed);
     match solver.sim.strike(cue_ball, shot) {
         Ok(()) => {
+            // Show the struck ball's new velocity now rather than after the next step.
+            if let Ok(mut motion) = balls.get_mut(solver.entities[cue_ball]) {
+                *motion = ball_motion(&solver.sim.ball(cue_ball));
+            }
             status.shots += 1;
             status.events_this_shot = 0;
             status.at_rest = solver.sim.is_at_rest();

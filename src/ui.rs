@@ -22,7 +22,7 @@ use crate::{
         ClampReport, PREDICTIONS, ParamRange, PhysicsModel, PhysicsSettings, ShotSettings,
         ViewSettings, prediction_label,
     },
-    sim::{RACKS, RackRequested, SimStatus, StepRequested, rack_label},
+    sim::{RACKS, RackRequested, ShotRequested, SimStatus, StepRequested, rack_label},
 };
 
 /// Registers the panels.
@@ -66,6 +66,7 @@ struct PanelState<'w, 's> {
     status: Res<'w, SimStatus>,
     racks: MessageWriter<'w, RackRequested>,
     steps: MessageWriter<'w, StepRequested>,
+    shots: MessageWriter<'w, ShotRequested>,
     pocketed: Query<'w, 's, &'static Ball, With<Pocketed>>,
 }
 
@@ -132,8 +133,17 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
         );
         next.angle = degrees.to_radians();
         param_slider(ui, &mut next.power, ShotSettings::POWER);
-        ui.label(RichText::new("Space shoots; shots only when every ball rests.").weak());
         apply_shot_edit(next, &mut state.shot, &mut state.report);
+        ui.horizontal(|ui| {
+            let shoot = ui.add_enabled(state.status.at_rest, egui::Button::new("Shoot (Space)"));
+            if shoot.clicked() {
+                state.shots.write(ShotRequested {
+                    angle: state.shot.angle,
+                    speed: state.shot.power,
+                });
+            }
+            ui.label(RichText::new("when every ball rests").weak());
+        });
     });
 
     section(ui, "Friction and restitution", |ui| {
