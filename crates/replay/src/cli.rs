@@ -368,7 +368,7 @@ fn batch(
     Ok(())
 }
 
-fn verify(file: &PathBuf) -> Result<(), String> {
+fn verify(file: &std::path::Path) -> Result<(), String> {
     let rec = Recording::load(file).map_err(|e| e.to_string())?;
     match rec
         .verify()
