@@ -753,7 +753,15 @@ impl Simulation {
         for &id in touched {
             for m in std::mem::take(&mut self.dependents[id]) {
                 let stale = self.cache.get(m).is_some_and(|p| p.involves(id));
-                if self.stamps[m] != self.round && stale {
+                if !stale {
+                    continue;
+                }
+                if self.stamps[m] == self.round {
+                    // Re-predicted earlier in this round (say, as a dependent of another
+                    // touched ball) and now waiting on `id`: keep the link, or the next change
+                    // of `id` leaves `m`'s pair event stale and it fires at a gap.
+                    self.dependents[id].push(m);
+                } else {
                     let p = self.predict(m, t);
                     self.set_cache(m, p);
                 }
