@@ -1,0 +1,134 @@
+//! Measuring a run against the reference: position and energy errors, matched contacts,
+//! outcomes, and run time.
+
+use crate::trace::{Contact, Sample, kinetic_energy};
+use std::time::Instant;
+
+/// How a run differs from the reference.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Errors {
+    /// Largest distance between a ball and its reference position at any sample time up to
+    /// the horizon, metres.
+    pub position: f64,
+    /// Largest kinetic energy difference at any sample time up to the horizon, relative to
+    /// the reference's starting energy.
+    pub energy: f64,
+    /// Largest distance between a ball and its reference position at the end of the run,
+    /// metres (after the horizon of a chaotic scene this says little about the solver).
+    pub final_position: f64,
+    /// Balls pocketed in a different pocket, or pocketed in one run only, at the end.
+    pub pocket_differences: usize,
+}
+
+/// Compares the samples of `run` with those of `reference` up to sample index `horizon`
+/// (position and energy) and at their last common sample (outcomes).
+pub fn errors(reference: &[Vec<Sample>], run: &[Vec<Sample>], horizon: usize, mass: f64) -> Errors {
+    let e0 = kinetic_energy(&reference[0], mass).max(f64::MIN_POSITIVE);
+    let distance = |a: &[Sample], b: &[Sample]| {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x.position - y.position).length())
+            .fold(0.0, f64::max)
+    };
+    let mut e = Errors::default();
+    for (r, s) in reference.iter().zip(run).take(horizon + 1) {
+        e.position = e.position.max(distance(r, s));
+        let de = (kinetic_energy(r, mass) - kinetic_energy(s, mass)).abs() / e0;
+        e.energy = e.energy.max(de);
+    }
+    let last = reference.len().min(run.len()) - 1;
+    e.final_position = distance(&reference[last], &run[last]);
+    e.pocket_differences = reference[last]
+        .iter()
+        .zip(&run[last])
+        .filter(|(a, b)| a.pocketed != b.pocketed)
+        .count();
+    // NaN (a solver that blew up) must not read as zero error.
+    if !e.position.is_finite() {
+        e.position = f64::INFINITY;
+    }
+    e
+}
+
+/// How many contacts of the reference a run reproduced.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ContactMatch {
+    /// Reference contacts up to the horizon.
+    pub reference: usize,
+    /// The run's contacts up to the horizon (consecutive reports of one contact merged).
+    pub run: usize,
+    /// Reference contacts with no contact of the same bodies in the run within the window.
+    pub missed: usize,
+    /// Run contacts with no reference contact of the same bodies within the window.
+    pub extra: usize,
+}
+
+/// Matches contacts of `run` to those of `reference` with the same bodies and times within
+/// `window` seconds, up to time `horizon`. A fixed-step solver with soft contacts (Rapier) may
+/// report one contact in several consecutive steps; reports of the same bodies within
+/// `repeat` seconds of the previous one count once (pass 1.5 time steps, or 0).
+pub fn match_contacts(
+    reference: &[Contact],
+    run: &[Contact],
+    window: f64,
+    repeat: f64,
+    horizon: f64,
+) -> ContactMatch {
+    let within = |c: &&Contact| c.time <= horizon;
+    let reference: Vec<Contact> = reference.iter().filter(within).copied().collect();
+    let mut merged: Vec<Contact> = Vec::new();
+    for c in run.iter().filter(within) {
+        let repeat = merged
+            .iter()
+            .rev()
+            .take_while(|m| c.time - m.time <= repeat)
+            .any(|m| m.key == c.key);
+        if !repeat {
+            merged.push(*c);
+        }
+    }
+    let mut used = vec![false; merged.len()];
+    let mut missed = 0;
+    for r in &reference {
+        let found = merged
+            .iter()
+            .enumerate()
+            .find(|(k, m)| !used[*k] && m.key == r.key && (m.time - r.time).abs() <= window);
+        match found {
+            Some((k, _)) => used[k] = true,
+            None => missed += 1,
+        }
+    }
+    ContactMatch {
+        reference: reference.len(),
+        run: merged.len(),
+        missed,
+        extra: used.iter().filter(|u| !**u).count(),
+    }
+}
+
+/// Median wall-clock time of repeated runs of `f`, and how many timed runs it took.
+///
+/// One untimed warm-up run decides the repetitions: enough to fill about `budget` seconds,
+/// at least `min_reps` and at most 25.
+pub fn median_time<T>(budget: f64, min_reps: usize, mut f: impl FnMut() -> T) -> (f64, usize) {
+    let t0 = Instant::now();
+    std::hint::black_box(f());
+    let first = t0.elapsed().as_secs_f64();
+    let reps = ((budget / first.max(1e-9)) as usize).clamp(min_reps.max(1), 25);
+    let mut times: Vec<f64> = (0..reps)
+        .map(|_| {
+            let t = Instant::now();
+            std::hint::black_box(f());
+            t.elapsed().as_secs_f64()
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    let mid = times.len() / 2;
+    let median = if times.len() % 2 == 1 {
+        times[mid]
+    } else {
+        0.5 * (times[mid - 1] + times[mid])
+    };
+    (median, reps)
+}
