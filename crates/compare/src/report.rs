@@ -4,7 +4,7 @@ use crate::bench::Report;
 use std::fmt::Write as _;
 
 /// Column names of the CSV, in order.
-pub const HEADER: &str = "scene,solver,parameter,dt_s,runtime_s,reps,simulated_s,position_error_m,\
+pub const HEADER: &str = "scene,solver,parameter,dt_s,runtime_s,reps,simulated_s,checked_s,position_error_m,\
 energy_error_rel,final_position_error_m,pocket_differences,contacts_exact,contacts_solver,\
 missed_collisions,extra_collisions,tunnelled,overlaps,max_overlap_m,off_table,note";
 
@@ -18,7 +18,7 @@ pub fn csv(report: &Report) -> String {
         let note = format!("\"{}\"", r.note.replace('"', "\"\""));
         let _ = writeln!(
             out,
-            "{},{},{},{},{:e},{},{},{:e},{:e},{:e},{},{},{},{},{},{},{},{:e},{},{}",
+            "{},{},{},{},{:e},{},{},{},{:e},{:e},{:e},{},{},{},{},{},{},{},{:e},{},{}",
             r.scene,
             r.solver.name(),
             r.parameter,
@@ -26,6 +26,7 @@ pub fn csv(report: &Report) -> String {
             r.runtime,
             r.reps,
             r.horizon,
+            r.checked,
             r.errors.position,
             r.errors.energy,
             r.errors.final_position,
