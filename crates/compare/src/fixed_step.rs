@@ -214,15 +214,23 @@ impl FixedStep {
         }
         // Cushions last, so no ball is left outside them by a push.
         for i in 0..self.bodies.len() {
+            let b = self.bodies[i];
+            if b.pocketed.is_some() {
+                continue;
+            }
+            // Push back inside onto the nearest point of the allowed rectangle (both axes at
+            // once, so a ball past a corner is judged where it meets the cushions, not at the
+            // depth it reached), then decide pocket or rebound there for each cushion crossed.
+            let inside = Vec2::new(
+                b.position.x.clamp(-self.bounds.x, self.bounds.x),
+                b.position.y.clamp(-self.bounds.y, self.bounds.y),
+            );
+            if inside == b.position {
+                continue;
+            }
+            self.bodies[i].position = inside;
             for c in Cushion::ALL {
-                let b = self.bodies[i];
-                if b.pocketed.is_some() {
-                    break;
-                }
-                let gap = self.cushion_gap(&b, c);
-                if gap < 0.0 {
-                    // Push back onto the cushion line, then decide pocket or rebound there.
-                    self.bodies[i].position -= c.inward_normal() * gap;
+                if self.cushion_gap(&b, c) < 0.0 && self.bodies[i].pocketed.is_none() {
                     self.cushion_contact(i, c, end);
                 }
             }

@@ -89,11 +89,13 @@ pub fn draw(report: &Report, path: &Path) -> Result<(), Box<dyn Error>> {
             // Label the time steps on the discrete curve, so the sweep can be read off.
             if *solver == Solver::EulerDiscrete {
                 chart.draw_series(points.iter().map(|p| {
-                    Text::new(
-                        p.2.trim_start_matches("dt ").to_string(),
-                        (p.0, p.1),
-                        ("sans-serif", 12).into_font().color(&colour),
-                    )
+                    // Offset right of the marker so the marker does not hide the label.
+                    EmptyElement::at((p.0, p.1))
+                        + Text::new(
+                            p.2.trim_start_matches("dt ").to_string(),
+                            (7, -4),
+                            ("sans-serif", 12).into_font().color(&colour),
+                        )
                 }))?;
             }
         }
@@ -101,7 +103,7 @@ pub fn draw(report: &Report, path: &Path) -> Result<(), Box<dyn Error>> {
             .configure_series_labels()
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
+            .position(SeriesLabelPosition::UpperLeft)
             .draw()?;
     }
     root.present()?;

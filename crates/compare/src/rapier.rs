@@ -144,9 +144,14 @@ impl RapierWorld {
         let slack = self.world.integration_parameters.prediction_distance();
         let time = self.steps as f64 * dt;
         let states: Vec<(Vec2, Vec2)> = (0..n).map(|i| self.state(i)).collect();
-        for i in 0..n {
-            self.hit[i] = (states[i].1 - self.last_velocity[i]).length() > HIT_SPEED;
-            self.last_velocity[i] = states[i].1;
+        for ((hit, last), (_, v)) in self
+            .hit
+            .iter_mut()
+            .zip(&mut self.last_velocity)
+            .zip(&states)
+        {
+            *hit = (*v - *last).length() > HIT_SPEED;
+            *last = *v;
         }
         for i in (0..n).filter(|&i| self.hit[i]) {
             let (p, v) = states[i];
