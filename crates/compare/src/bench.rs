@@ -183,6 +183,7 @@ pub fn scenes(quick: bool) -> Vec<Scene> {
         scene::cut(),
         scene::billiard(if quick { 5.0 } else { 20.0 }),
         scene::break_shot(),
+        scene::elastic_break(if quick { 2.0 } else { 10.0 }),
     ]
 }
 

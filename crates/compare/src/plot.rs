@@ -23,9 +23,10 @@ const COLOURS: [RGBColor; 5] = [
 
 /// Draws the plot as an SVG file (no system font or image library is needed).
 pub fn draw(report: &Report, path: &Path) -> Result<(), Box<dyn Error>> {
-    let root = SVGBackend::new(path, (1400, 1000)).into_drawing_area();
+    let rows = report.scenes.len().div_ceil(2);
+    let root = SVGBackend::new(path, (1400, 500 * rows as u32)).into_drawing_area();
     root.fill(&WHITE)?;
-    let panels = root.split_evenly((2, 2));
+    let panels = root.split_evenly((rows, 2));
     for (area, scene) in panels.iter().zip(&report.scenes) {
         let rows: Vec<_> = report
             .rows

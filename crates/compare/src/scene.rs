@@ -163,6 +163,30 @@ pub fn break_shot() -> Scene {
     }
 }
 
+/// The same rack broken at [`BREAK_SPEED`] on a closed table with no friction and elastic
+/// collisions: the break as Rapier's model can play it, and the fastest collisions of any
+/// scene. Chaotic. `end` is the run length.
+pub fn elastic_break(end: f64) -> Scene {
+    let table = closed_table();
+    let params = Params {
+        max_events: 10_000_000,
+        ..paper(0.0, 0.0)
+    };
+    let mut balls = Rack::FifteenBall.layout(&table, &params.ball);
+    balls[0].velocity = Vec2::from_angle(0.002) * BREAK_SPEED;
+    Scene {
+        name: "elastic-break",
+        description: "the same break with no friction, no pockets, elastic (chaotic)",
+        table,
+        params,
+        balls,
+        end: Some(end),
+        sample_interval: 0.1,
+        frictionless: true,
+        reference: Reference::Chaotic,
+    }
+}
+
 impl Scene {
     /// The same scene with ball `id` moved across the table by one unit in the last place of
     /// a coordinate of order one metre (2.2e-16 m): what a single rounding error does.

@@ -13,7 +13,7 @@ fn quick_mode_runs_every_solver_and_the_exact_solver_stays_below_a_nanometre() {
             solver.name()
         );
     }
-    assert_eq!(report.scenes.len(), 4);
+    assert_eq!(report.scenes.len(), 5);
     let worst = report.exact_max_error();
     assert!(
         worst <= bench::EXACT_ERROR_LIMIT,
