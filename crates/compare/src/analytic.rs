@@ -186,3 +186,39 @@ impl Solution {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene;
+
+    #[test]
+    fn a_sliding_ball_stops_after_the_two_phase_distance() {
+        let s = scene::stop();
+        let b = s.balls[0];
+        let path = Path::new(&s, 0.0, b.position, b.velocity);
+        let Model::Paper(m) = s.params.model;
+        let (g, v0, vs) = (s.params.gravity, b.velocity.length(), m.slide_roll_speed);
+        let d = (v0 * v0 - vs * vs) / (2.0 * m.mu_slide * g) + vs * vs / (2.0 * m.mu_roll * g);
+        let end = path.at(path.stop_time() + 1.0);
+        assert!(((end.position - b.position).length() - d).abs() < 1e-12);
+        assert_eq!(end.velocity, Vec2::ZERO);
+    }
+
+    #[test]
+    fn the_cut_sends_the_balls_off_at_right_angles() {
+        let Some(Solution::Cut {
+            cue_after,
+            object_after,
+            contact,
+            ..
+        }) = Solution::of(&scene::cut())
+        else {
+            panic!("the cut scene has a closed form");
+        };
+        let (a, b) = (cue_after.at(contact), object_after.at(contact));
+        assert!(a.velocity.dot(b.velocity).abs() < 1e-12);
+        let cut = (scene::CUT_OFFSET / (2.0 * scene::cut().radius())).asin();
+        assert!((b.velocity.angle() - cut).abs() < 1e-12);
+    }
+}

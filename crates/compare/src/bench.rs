@@ -525,8 +525,8 @@ const CONTACT_WINDOW: f64 = 0.01;
 fn diagnostic_steps(solver: Solver) -> f64 {
     match solver {
         // Rapier's steps cost about a hundred times more than the integrators' here.
-        Solver::Rapier => 1e5,
-        _ => 2e6,
+        Solver::Rapier => 5e4,
+        _ => 5e5,
     }
 }
 

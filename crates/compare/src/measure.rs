@@ -152,3 +152,53 @@ pub fn median_time<T>(budget: f64, min_reps: usize, mut f: impl FnMut() -> T) ->
     };
     (median, reps, out)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::ContactKey;
+
+    fn c(time: f64, key: ContactKey) -> Contact {
+        Contact { time, key }
+    }
+
+    #[test]
+    fn contacts_match_by_bodies_within_the_window() {
+        let reference = [
+            c(0.10, ContactKey::pair(0, 1)),
+            c(0.50, ContactKey::Cushion(1)),
+        ];
+        let run = [
+            c(0.12, ContactKey::pair(1, 0)),
+            c(0.13, ContactKey::pair(0, 1)), // a soft contact reported again next step
+            c(0.90, ContactKey::Cushion(1)), // too late: the reference's is missed
+        ];
+        let m = match_contacts(&reference, &run, 0.05, 0.015, 1.0);
+        assert_eq!(
+            m,
+            ContactMatch {
+                reference: 2,
+                run: 2,
+                missed: 1,
+                extra: 1
+            }
+        );
+        // Without merging repeats, the second report is an extra contact.
+        assert_eq!(match_contacts(&reference, &run, 0.05, 0.0, 1.0).extra, 2);
+    }
+
+    #[test]
+    fn errors_take_the_worst_ball_and_sample_up_to_the_horizon() {
+        let s = |x: f64, v: f64| Sample {
+            position: billiards_physics::Vec2::new(x, 0.0),
+            velocity: billiards_physics::Vec2::new(v, 0.0),
+            pocketed: None,
+        };
+        let reference = vec![vec![s(0.0, 1.0)], vec![s(1.0, 1.0)], vec![s(2.0, 1.0)]];
+        let run = vec![vec![s(0.0, 1.0)], vec![s(1.1, 1.0)], vec![s(5.0, 0.0)]];
+        let e = errors(&reference, &run, 1, 1, 2.0);
+        assert!((e.position - 0.1).abs() < 1e-12);
+        assert_eq!(e.energy, 0.0);
+        assert_eq!(e.final_position, 3.0);
+    }
+}

@@ -41,6 +41,16 @@ fn quick_mode_runs_every_solver_and_the_exact_solver_stays_below_a_nanometre() {
             r.scene
         );
     }
+    // At a game's 1/60 s step, discrete detection lets break-speed balls pass through each
+    // other; swept detection and the exact solver never do.
+    let at_60 = |solver: Solver| {
+        report
+            .rows
+            .iter()
+            .filter(move |r| r.solver == solver && r.dt == Some(1.0 / 60.0))
+    };
+    assert!(at_60(Solver::EulerDiscrete).any(|r| r.diagnostics.tunnelled > 0));
+    assert!(at_60(Solver::EulerSwept).all(|r| r.diagnostics.tunnelled == 0));
     let csv = billiards_compare::report::csv(&report);
     assert_eq!(csv.lines().count(), report.rows.len() + 1);
 }
