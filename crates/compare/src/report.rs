@@ -18,7 +18,7 @@ pub fn csv(report: &Report) -> String {
         let note = format!("\"{}\"", r.note.replace('"', "\"\""));
         let _ = writeln!(
             out,
-            "{},{},{},{},{:e},{},{},{},{:e},{:e},{:e},{},{},{},{},{},{},{},{:e},{},{}",
+            "{},{},{},{},{:e},{},{:.3},{:.3},{:e},{:e},{:e},{},{},{},{},{},{},{},{:e},{},{}",
             r.scene,
             r.solver.name(),
             r.parameter,
