@@ -3,7 +3,7 @@
 
 use crate::scene::Scene;
 use crate::trace::Sample;
-use billiards_physics::{Model, Vec2, resolve};
+use billiards_physics::{Vec2, resolve};
 
 /// A ball moving in a straight line with the paper's piecewise constant deceleration: sliding
 /// at `a_s` down to the threshold speed, then rolling at `a_r` to a stop.
@@ -21,7 +21,7 @@ pub struct Path {
 impl Path {
     /// A path from `origin` at time `start` with velocity `velocity`, under `scene`'s model.
     pub fn new(scene: &Scene, start: f64, origin: Vec2, velocity: Vec2) -> Self {
-        let Model::Paper(m) = scene.params.model;
+        let m = scene.paper_model();
         let g = scene.params.gravity;
         let speed = velocity.length();
         Self {
@@ -124,7 +124,7 @@ impl Solution {
             1 => Some(Solution::Single(before)),
             2 => {
                 let object = scene.balls[1].position;
-                let Model::Paper(m) = scene.params.model;
+                let m = scene.paper_model();
                 // Contact where the line of the cue ball passes 2R from the object ball.
                 let rel = object - cue.position;
                 let along = rel.dot(before.dir);
@@ -197,7 +197,7 @@ mod tests {
         let s = scene::stop();
         let b = s.balls[0];
         let path = Path::new(&s, 0.0, b.position, b.velocity);
-        let Model::Paper(m) = s.params.model;
+        let m = s.paper_model();
         let (g, v0, vs) = (s.params.gravity, b.velocity.length(), m.slide_roll_speed);
         let d = (v0 * v0 - vs * vs) / (2.0 * m.mu_slide * g) + vs * vs / (2.0 * m.mu_roll * g);
         let end = path.at(path.stop_time() + 1.0);

@@ -466,10 +466,8 @@ fn reversal_error(s: &Scene, horizon: f64) -> Result<f64, Box<dyn Error>> {
     let turned: Vec<_> = sim
         .balls()
         .zip(&s.balls)
-        .map(|(state, setup)| billiards_physics::BallSetup {
-            number: setup.number,
-            position: state.position,
-            velocity: -state.velocity,
+        .map(|(state, setup)| {
+            billiards_physics::BallSetup::moving(setup.number, state.position, -state.velocity)
         })
         .collect();
     let mut back = Simulation::new(s.table, s.params, &turned)?;

@@ -11,7 +11,7 @@
 
 use crate::scene::Scene;
 use crate::trace::{Contact, ContactKey, OVERLAP_TOLERANCE, OverlapWatch, Sample, Trace};
-use billiards_physics::{Cushion, Model, Pocket, Table, Vec2, resolve};
+use billiards_physics::{Cushion, Pocket, Table, Vec2, resolve};
 
 /// How a fixed-step integrator finds collisions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -71,7 +71,7 @@ pub struct FixedStep {
 impl FixedStep {
     /// An integrator for `scene` stepping by `dt` seconds.
     pub fn new(scene: &Scene, dt: f64, collisions: Collisions) -> Self {
-        let Model::Paper(m) = scene.params.model;
+        let m = scene.paper_model();
         let g = scene.params.gravity;
         Self {
             dt,
@@ -474,11 +474,7 @@ mod tests {
         // Head-on at 11 m/s, 1/30 s steps: 37 cm per step against a 5.7 cm diameter.
         let mut s = scene::billiard(1.0);
         s.balls = vec![
-            billiards_physics::BallSetup {
-                number: 0,
-                position: Vec2::new(-0.3, 0.0),
-                velocity: Vec2::new(11.0, 0.0),
-            },
+            billiards_physics::BallSetup::moving(0, Vec2::new(-0.3, 0.0), Vec2::new(11.0, 0.0)),
             billiards_physics::BallSetup::at(1, Vec2::new(-0.1, 0.0)),
         ];
         let discrete = run(

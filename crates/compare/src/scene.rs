@@ -77,11 +77,11 @@ pub fn stop() -> Scene {
         description: "one ball at 1.2 m/s slides, rolls and stops (closed form)",
         table,
         params: Params::default(),
-        balls: vec![BallSetup {
-            number: 0,
-            position: Vec2::new(-0.9, 0.1),
-            velocity: Vec2::from_angle(-0.05) * 1.2,
-        }],
+        balls: vec![BallSetup::moving(
+            0,
+            Vec2::new(-0.9, 0.1),
+            Vec2::from_angle(-0.05) * 1.2,
+        )],
         end: None,
         sample_interval: 0.1,
         frictionless: false,
@@ -103,11 +103,7 @@ pub fn cut() -> Scene {
         table,
         params: Params::default(),
         balls: vec![
-            BallSetup {
-                number: 0,
-                position: Vec2::new(-0.5, 0.0),
-                velocity: Vec2::new(1.5, 0.0),
-            },
+            BallSetup::moving(0, Vec2::new(-0.5, 0.0), Vec2::new(1.5, 0.0)),
             BallSetup::at(1, Vec2::new(0.2, CUT_OFFSET)),
         ],
         end: None,
@@ -203,6 +199,19 @@ impl Scene {
         let mut s = self.clone();
         s.balls[id].position.y += delta;
         s
+    }
+
+    /// The constants of the paper's model, which every scene uses.
+    ///
+    /// # Panics
+    ///
+    /// If the scene was given the spin model: the fixed-step integrators and the closed forms
+    /// here implement the paper's model only.
+    pub fn paper_model(&self) -> PaperModel {
+        match self.params.model {
+            Model::Paper(m) => m,
+            Model::Spin(_) => panic!("scene {} uses the spin model", self.name),
+        }
     }
 
     /// Ball radius, metres.
