@@ -106,12 +106,13 @@ pub struct Report {
 }
 
 impl Report {
-    /// The largest error the exact solver showed anywhere up to a horizon, metres.
+    /// The largest error the exact solver showed anywhere, metres: its position error up to
+    /// a horizon, or the distance from touching at which it resolved a collision.
     pub fn exact_max_error(&self) -> f64 {
         self.rows
             .iter()
             .filter(|r| r.solver == Solver::Exact)
-            .map(|r| r.errors.position)
+            .map(|r| r.errors.position.max(r.diagnostics.max_contact_gap))
             .fold(0.0, f64::max)
     }
 }
@@ -332,7 +333,7 @@ fn rapier_min_dt(quick: bool) -> f64 {
 /// One line about a row, for the progress log.
 pub fn describe(r: &Row) -> String {
     format!(
-        "  {:<15} {:<12} {:>10.3e} s  pos err {:>9.2e} m  energy err {:>9.2e}  missed {:>3}/{:<3} tunnelled {:>3} overlaps {:>4} off {:>2} pockets {:>2}",
+        "  {:<15} {:<12} {:>10.3e} s  pos err {:>9.2e} m  energy err {:>9.2e}  missed {:>3}/{:<3} tunnelled {:>3} overlaps {:>4} gap contacts {:>3} off {:>2} pockets {:>2}",
         r.solver.name(),
         r.parameter,
         r.runtime,
@@ -342,6 +343,7 @@ pub fn describe(r: &Row) -> String {
         r.contacts.reference,
         r.diagnostics.tunnelled,
         r.diagnostics.overlaps,
+        r.diagnostics.gap_contacts,
         r.diagnostics.off_table,
         r.errors.pocket_differences,
     )

@@ -2,7 +2,7 @@
 //! `billiards-physics`.
 
 use crate::scene::Scene;
-use crate::trace::{Contact, ContactKey, OverlapWatch, Sample, Trace};
+use crate::trace::{CONTACT_TOLERANCE, Contact, ContactKey, OverlapWatch, Sample, Trace};
 use billiards_physics::{BallState, EventKind, Motion, Prediction, Simulation};
 use std::error::Error;
 
@@ -133,5 +133,18 @@ fn diagnose_history(
     }
     let mut d = watch.diagnostics;
     d.tunnelled = tunnelled;
+    // Where each collision was resolved: an event-driven solver resolves a contact exactly
+    // at touching; anything else is a wrong prediction (or, in linear prediction, the
+    // paper's slip 4).
+    for e in sim.history().events() {
+        if let EventKind::BallBall { .. } = e.kind {
+            let gap =
+                ((e.after[1].position - e.after[0].position).length() - 2.0 * scene.radius()).abs();
+            d.max_contact_gap = d.max_contact_gap.max(gap);
+            if gap > CONTACT_TOLERANCE {
+                d.gap_contacts += 1;
+            }
+        }
+    }
     d
 }

@@ -10,7 +10,9 @@
 //! exact solver come only from the time stepping.
 
 use crate::scene::Scene;
-use crate::trace::{Contact, ContactKey, OVERLAP_TOLERANCE, OverlapWatch, Sample, Trace};
+use crate::trace::{
+    CONTACT_TOLERANCE, Contact, ContactKey, OVERLAP_TOLERANCE, OverlapWatch, Sample, Trace,
+};
 use billiards_physics::{Cushion, Pocket, Table, Vec2, resolve};
 
 /// How a fixed-step integrator finds collisions.
@@ -35,6 +37,10 @@ pub trait Stepper {
     fn hit(&self) -> &[bool];
     /// The contacts resolved since the last call.
     fn take_contacts(&mut self) -> Vec<Contact>;
+    /// Ball–ball collisions resolved more than [`CONTACT_TOLERANCE`] from touching, and the
+    /// largest distance from touching at a resolved collision (NaN if the solver does not
+    /// expose it).
+    fn contact_gaps(&self) -> (usize, f64);
 }
 
 /// Most collisions one swept step resolves before it gives up and moves on; only a cluster
@@ -66,6 +72,8 @@ pub struct FixedStep {
     steps: u64,
     hit: Vec<bool>,
     contacts: Vec<Contact>,
+    gap_contacts: usize,
+    max_contact_gap: f64,
 }
 
 impl FixedStep {
@@ -96,6 +104,8 @@ impl FixedStep {
             steps: 0,
             hit: vec![false; scene.balls.len()],
             contacts: Vec::new(),
+            gap_contacts: 0,
+            max_contact_gap: 0.0,
         }
     }
 
@@ -172,6 +182,12 @@ impl FixedStep {
             .unwrap_or(Vec2::new(1.0, 0.0));
         match resolve::equal_mass_restitution(a.velocity, b.velocity, n, self.e_ball) {
             Some((va, vb)) => {
+                // Discrete detection resolves at whatever overlap the step ended with.
+                let gap = ((b.position - a.position).length() - 2.0 * self.radius).abs();
+                self.max_contact_gap = self.max_contact_gap.max(gap);
+                if gap > CONTACT_TOLERANCE {
+                    self.gap_contacts += 1;
+                }
                 self.bodies[i].velocity = va;
                 self.bodies[j].velocity = vb;
                 self.hit[i] = true;
@@ -355,6 +371,10 @@ impl Stepper for FixedStep {
     fn take_contacts(&mut self) -> Vec<Contact> {
         std::mem::take(&mut self.contacts)
     }
+
+    fn contact_gaps(&self) -> (usize, f64) {
+        (self.gap_contacts, self.max_contact_gap)
+    }
 }
 
 /// Runs a fixed-step solver over `scene` until `end`, sampling every ball at the scene's
@@ -401,6 +421,10 @@ pub fn run<S: Stepper>(solver: &mut S, scene: &Scene, end: f64, diagnose: bool) 
     if diagnose {
         trace.diagnostics = watch.diagnostics;
         trace.diagnostics.tunnelled = tunnelled;
+        (
+            trace.diagnostics.gap_contacts,
+            trace.diagnostics.max_contact_gap,
+        ) = solver.contact_gaps();
     }
     trace
 }

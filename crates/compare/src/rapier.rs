@@ -208,4 +208,9 @@ impl Stepper for RapierWorld {
     fn take_contacts(&mut self) -> Vec<Contact> {
         std::mem::take(&mut self.contacts)
     }
+
+    fn contact_gaps(&self) -> (usize, f64) {
+        // Soft contacts act over a distance by design (speculative contacts, slop).
+        (0, f64::NAN)
+    }
 }

@@ -53,6 +53,12 @@ pub struct Diagnostics {
     pub overlaps: usize,
     /// Deepest overlap seen in the output states, metres.
     pub max_overlap: f64,
+    /// Ball–ball collisions resolved while the balls were not touching: apart by more than
+    /// [`CONTACT_TOLERANCE`] (an impulse at a distance) or overlapping by more.
+    pub gap_contacts: usize,
+    /// Largest distance from touching (gap or overlap) at which a ball–ball collision was
+    /// resolved, metres; NaN where the solver does not say where it resolved (Rapier).
+    pub max_contact_gap: f64,
     /// Balls seen off the table while in play: centre beyond the cushion nose, so at least
     /// half the ball is through the cushion (or the position is not finite).
     pub off_table: usize,
@@ -61,6 +67,10 @@ pub struct Diagnostics {
 /// Penetration (metres) below which two balls or a ball and a cushion count as touching, not
 /// overlapping: far above rounding, far below anything a player could see.
 pub const OVERLAP_TOLERANCE: f64 = 1e-6;
+
+/// Distance from touching (metres) within which a collision counts as resolved at contact:
+/// rounding of positions of order one metre is about 1e-16 m.
+pub const CONTACT_TOLERANCE: f64 = 1e-9;
 
 /// The record of one solver run.
 #[derive(Clone, Debug, Default)]
