@@ -133,7 +133,7 @@ impl Settings {
     pub fn full() -> Self {
         Self {
             quick: false,
-            budget: 0.4,
+            budget: 0.3,
             min_reps: 3,
         }
     }

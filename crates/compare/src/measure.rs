@@ -120,6 +120,9 @@ pub fn match_contacts(
     }
 }
 
+/// Most timed runs per configuration.
+pub const MAX_REPS: usize = 1000;
+
 /// Run time above which the warm-up run counts as a timed run, seconds: caches and the
 /// allocator are warm long before it ends.
 const LONG_RUN: f64 = 1.0;
@@ -128,12 +131,14 @@ const LONG_RUN: f64 = 1.0;
 /// run's output.
 ///
 /// A first run decides the repetitions: enough to fill about `budget` seconds, at least
-/// `min_reps` and at most 25. It is a warm-up, untimed, unless it took over a second.
+/// `min_reps` and at most [`MAX_REPS`] (many runs of a fast configuration make its median
+/// robust against colleagues' builds on a shared machine). It is a warm-up, untimed, unless it
+/// took over a second.
 pub fn median_time<T>(budget: f64, min_reps: usize, mut f: impl FnMut() -> T) -> (f64, usize, T) {
     let t0 = Instant::now();
     let mut out = f();
     let first = t0.elapsed().as_secs_f64();
-    let reps = ((budget / first.max(1e-9)) as usize).clamp(min_reps.max(1), 25);
+    let reps = ((budget / first.max(1e-9)) as usize).clamp(min_reps.max(1), MAX_REPS);
     let mut times = Vec::with_capacity(reps);
     if first > LONG_RUN {
         times.push(first);
