@@ -20,6 +20,7 @@
 //! ```
 
 pub mod ball;
+pub mod check;
 pub mod detect;
 pub mod event;
 pub mod history;
@@ -31,6 +32,7 @@ pub mod racks;
 pub mod resolve;
 pub mod scene;
 pub mod sim;
+pub mod soak;
 pub mod table;
 
 pub use ball::{BallId, BallState, Motion, Segment};

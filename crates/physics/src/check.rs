@@ -1,0 +1,497 @@
+//! Invariant checking, event by event: the stability contract of the solver, as code.
+//!
+//! A [`Monitor`] drives a [`Simulation`] one event at a time and checks, at each event:
+//!
+//! - no NaN or infinity in any ball's state;
+//! - time never goes back;
+//! - no two balls in play overlap by more than [`Tolerances::overlap`], just before the event,
+//!   just after it, and at [`Tolerances::interior_samples`] instants between it and the
+//!   previous event (so a pair that passed through each other between events is caught too);
+//! - no ball in play is outside the cushion lines (`Table::centre_bounds`) by more than
+//!   [`Tolerances::outside`];
+//! - no event moves a ball (only [`EventKind::Placed`] may);
+//! - the kinetic energy (translational plus rotational) never increases, neither between
+//!   events nor at one, except at a [`EventKind::Strike`], [`EventKind::Placed`] or
+//!   [`EventKind::ParamsChanged`];
+//! - momentum is conserved by every ball–ball contact to rounding;
+//! - a run to rest ends within the event cap, with every ball at rest.
+//!
+//! Stability invariants hold for [`crate::Prediction::Exact`] only: the paper's linear
+//! prediction is a deliberately inexact comparison mode.
+
+use crate::ball::{BallId, BallState};
+use crate::event::{Event, EventKind, Shot};
+use crate::math::Vec2;
+use crate::sim::{SetupError, Simulation};
+
+/// How much rounding each invariant allows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tolerances {
+    /// Largest allowed overlap of two balls in play, metres.
+    pub overlap: f64,
+    /// Largest allowed distance of a ball's centre beyond its cushion line, metres.
+    pub outside: f64,
+    /// Largest allowed relative kinetic-energy gain (of the energy before) at or between events.
+    pub energy: f64,
+    /// Largest allowed change of the pair's momentum at a ball–ball contact, relative to
+    /// `|v_a| + |v_b|` before it.
+    pub momentum: f64,
+    /// Largest allowed jump of a ball's position at an event, metres.
+    pub jump: f64,
+    /// Instants checked for overlaps strictly between consecutive events (evenly spaced).
+    pub interior_samples: usize,
+    /// Two events closer than this (seconds) belong to the same burst; the longest burst is
+    /// reported in [`Stats::longest_burst`] (a Zeno cascade shows up as a huge burst).
+    pub burst_window: f64,
+}
+
+impl Default for Tolerances {
+    fn default() -> Self {
+        Self {
+            overlap: 1e-9,
+            outside: 1e-9,
+            energy: 1e-12,
+            momentum: 1e-12,
+            jump: 1e-12,
+            interior_samples: 1,
+            burst_window: 1e-9,
+        }
+    }
+}
+
+/// A broken invariant: what, where and when.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum Violation {
+    /// A ball's state holds NaN or infinity.
+    #[error("ball {ball} has a non-finite state at t = {time}: {state:?}")]
+    NonFinite {
+        /// Time.
+        time: f64,
+        /// Ball.
+        ball: BallId,
+        /// Its state.
+        state: BallState,
+    },
+    /// An event is earlier than the one before it.
+    #[error("time went back from {before} to {after}")]
+    TimeBack {
+        /// Time of the previous event.
+        before: f64,
+        /// Time of this one.
+        after: f64,
+    },
+    /// Two balls overlap.
+    #[error("balls {a} and {b} overlap by {depth:e} m at t = {time} ({when})")]
+    Overlap {
+        /// Time.
+        time: f64,
+        /// Lower ball index.
+        a: BallId,
+        /// Higher ball index.
+        b: BallId,
+        /// Depth, metres.
+        depth: f64,
+        /// "before", "after" or "between" the event.
+        when: &'static str,
+    },
+    /// A ball is beyond a cushion line.
+    #[error("ball {ball} is {by:e} m beyond the cushions at t = {time}: {position:?}")]
+    Outside {
+        /// Time.
+        time: f64,
+        /// Ball.
+        ball: BallId,
+        /// Its centre.
+        position: Vec2,
+        /// How far beyond, metres.
+        by: f64,
+    },
+    /// An event moved a ball.
+    #[error("ball {ball} jumped by {by:e} m at {event:?}")]
+    Jump {
+        /// The event.
+        event: Event,
+        /// Ball.
+        ball: BallId,
+        /// Distance, metres.
+        by: f64,
+    },
+    /// The kinetic energy rose.
+    #[error("kinetic energy rose from {before} J to {after} J at t = {time} ({what})")]
+    EnergyGain {
+        /// Time.
+        time: f64,
+        /// Energy before, joules.
+        before: f64,
+        /// Energy after, joules.
+        after: f64,
+        /// "at <event>" or "between events".
+        what: String,
+    },
+    /// A ball–ball contact changed the pair's momentum.
+    #[error("momentum of balls {a},{b} changed by {change:e} (relative) at t = {time}")]
+    Momentum {
+        /// Time.
+        time: f64,
+        /// Lower ball.
+        a: BallId,
+        /// Higher ball.
+        b: BallId,
+        /// Relative change.
+        change: f64,
+    },
+    /// The run hit the event cap.
+    #[error("{events} events without coming to rest (cap {cap}), at t = {time}")]
+    EventCap {
+        /// Events processed in the run.
+        events: usize,
+        /// The cap.
+        cap: usize,
+        /// Simulation time reached.
+        time: f64,
+    },
+    /// No event is pending but a ball still moves.
+    #[error("no event is pending but ball {ball} still moves at t = {time}")]
+    MovingForever {
+        /// Time.
+        time: f64,
+        /// Ball.
+        ball: BallId,
+    },
+}
+
+/// What a checked run measured.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Events processed.
+    pub events: usize,
+    /// Deepest overlap seen, metres (0 if none).
+    pub worst_overlap: f64,
+    /// Largest relative kinetic-energy gain seen where energy may not rise (0 if none).
+    pub worst_energy_gain: f64,
+    /// Largest relative momentum change at a ball–ball contact.
+    pub worst_momentum: f64,
+    /// Most events in one burst (consecutive events within `burst_window` of each other).
+    pub longest_burst: usize,
+    /// Simulation time at the end.
+    pub time: f64,
+}
+
+impl Stats {
+    /// Combines the figures of two runs (sums counts, keeps the worst of each measure).
+    pub fn merge(&mut self, o: &Stats) {
+        self.events += o.events;
+        self.worst_overlap = self.worst_overlap.max(o.worst_overlap);
+        self.worst_energy_gain = self.worst_energy_gain.max(o.worst_energy_gain);
+        self.worst_momentum = self.worst_momentum.max(o.worst_momentum);
+        self.longest_burst = self.longest_burst.max(o.longest_burst);
+        self.time = self.time.max(o.time);
+    }
+}
+
+/// Kinetic energy of the balls in play, translational plus rotational (solid spheres,
+/// `I = 2/5 m R^2`), joules.
+pub fn kinetic_energy(states: &[BallState], mass: f64, radius: f64) -> f64 {
+    let inertia = 0.4 * mass * radius * radius;
+    states
+        .iter()
+        .filter(|s| s.motion.on_table())
+        .map(|s| {
+            let w = s.angular_velocity;
+            0.5 * mass * s.velocity.length_squared() + 0.5 * inertia * w.dot(w)
+        })
+        .sum()
+}
+
+/// The deepest overlap among the balls in play (pair and depth), if any pair is closer than
+/// `2 radius`. Sweeps along x, so large layouts stay fast.
+pub fn deepest_overlap(states: &[BallState], radius: f64) -> Option<(BallId, BallId, f64)> {
+    let mut order: Vec<BallId> = (0..states.len())
+        .filter(|&i| states[i].motion.on_table())
+        .collect();
+    order.sort_by(|&i, &j| states[i].position.x.total_cmp(&states[j].position.x));
+    let contact = 2.0 * radius;
+    let mut worst: Option<(BallId, BallId, f64)> = None;
+    for (k, &i) in order.iter().enumerate() {
+        let pi = states[i].position;
+        for &j in &order[k + 1..] {
+            let pj = states[j].position;
+            if pj.x - pi.x >= contact {
+                break;
+            }
+            let depth = contact - (pj - pi).length();
+            if depth > 0.0 && worst.is_none_or(|w| depth > w.2) {
+                worst = Some((i.min(j), i.max(j), depth));
+            }
+        }
+    }
+    worst
+}
+
+/// Drives a simulation event by event and checks every invariant of the module docs.
+#[derive(Clone, Debug)]
+pub struct Monitor {
+    tol: Tolerances,
+    stats: Stats,
+    last_time: f64,
+    burst: usize,
+    /// Kinetic energy just after the last event (or at the start).
+    energy: f64,
+}
+
+impl Monitor {
+    /// Starts monitoring `sim` from its current state, which is checked at once.
+    pub fn new(sim: &Simulation, tol: Tolerances) -> Result<Self, Violation> {
+        let states: Vec<BallState> = sim.balls().collect();
+        let mut m = Self {
+            tol,
+            stats: Stats {
+                time: sim.time(),
+                ..Stats::default()
+            },
+            last_time: sim.time(),
+            burst: 0,
+            energy: 0.0,
+        };
+        m.check_states(sim, &states, sim.time(), "after")?;
+        m.energy = m.energy_of(sim, &states);
+        Ok(m)
+    }
+
+    /// The figures so far.
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+
+    fn energy_of(&self, sim: &Simulation, states: &[BallState]) -> f64 {
+        let b = sim.params().ball;
+        kinetic_energy(states, b.mass, b.radius)
+    }
+
+    /// NaN, escape and overlap checks on one snapshot.
+    fn check_states(
+        &mut self,
+        sim: &Simulation,
+        states: &[BallState],
+        time: f64,
+        when: &'static str,
+    ) -> Result<(), Violation> {
+        let r = sim.params().ball.radius;
+        let bounds = sim.table().centre_bounds(r);
+        for (ball, s) in states.iter().enumerate() {
+            let finite =
+                s.position.is_finite() && s.velocity.is_finite() && s.angular_velocity.is_finite();
+            if !finite {
+                return Err(Violation::NonFinite {
+                    time,
+                    ball,
+                    state: *s,
+                });
+            }
+            if s.motion.on_table() {
+                let by = (s.position.x.abs() - bounds.x).max(s.position.y.abs() - bounds.y);
+                if by > self.tol.outside {
+                    return Err(Violation::Outside {
+                        time,
+                        ball,
+                        position: s.position,
+                        by,
+                    });
+                }
+            }
+        }
+        if let Some((a, b, depth)) = deepest_overlap(states, r) {
+            self.stats.worst_overlap = self.stats.worst_overlap.max(depth);
+            if depth > self.tol.overlap {
+                return Err(Violation::Overlap {
+                    time,
+                    a,
+                    b,
+                    depth,
+                    when,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    fn energy_check(
+        &mut self,
+        before: f64,
+        after: f64,
+        time: f64,
+        what: impl FnOnce() -> String,
+    ) -> Result<(), Violation> {
+        let gain = (after - before) / before.max(f64::MIN_POSITIVE);
+        if after > before {
+            self.stats.worst_energy_gain = self.stats.worst_energy_gain.max(gain);
+            if gain > self.tol.energy {
+                return Err(Violation::EnergyGain {
+                    time,
+                    before,
+                    after,
+                    what: what(),
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// Processes the next event of `sim` (like [`Simulation::step_event`]) and checks it;
+    /// `Ok(None)` when nothing is pending.
+    pub fn step(&mut self, sim: &mut Simulation) -> Result<Option<Event>, Violation> {
+        let Some(t) = sim.next_event_time() else {
+            if let Some(ball) = (0..sim.ball_count()).find(|&i| sim.ball(i).motion.is_moving()) {
+                return Err(Violation::MovingForever {
+                    time: sim.time(),
+                    ball,
+                });
+            }
+            return Ok(None);
+        };
+        if !(t >= self.last_time) {
+            return Err(Violation::TimeBack {
+                before: self.last_time,
+                after: t,
+            });
+        }
+        let n = sim.ball_count();
+        // Between the previous event and this one: overlaps, and energy never rising.
+        let t0 = sim.time();
+        let samples = self.tol.interior_samples;
+        for k in 1..=samples {
+            let ts = t0 + (t - t0) * k as f64 / (samples + 1) as f64;
+            if ts > t0 && ts < t {
+                let states: Vec<BallState> = (0..n).map(|i| sim.segment(i).state_at(ts)).collect();
+                self.check_states(sim, &states, ts, "between")?;
+            }
+        }
+        let before: Vec<BallState> = (0..n).map(|i| sim.segment(i).state_at(t)).collect();
+        self.check_states(sim, &before, t, "before")?;
+        let e_before = self.energy_of(sim, &before);
+        self.energy_check(self.energy, e_before, t, || "between events".into())?;
+
+        let event = sim
+            .step_event()
+            .expect("an event was pending, so one is processed");
+        if !(event.time >= self.last_time) {
+            return Err(Violation::TimeBack {
+                before: self.last_time,
+                after: event.time,
+            });
+        }
+        let after: Vec<BallState> = sim.balls().collect();
+        self.check_states(sim, &after, event.time, "after")?;
+        for ball in event.kind.balls() {
+            let by = (after[ball].position - before[ball].position).length();
+            if by > self.tol.jump && !matches!(event.kind, EventKind::Placed { .. }) {
+                return Err(Violation::Jump { event, ball, by });
+            }
+        }
+        let e_after = self.energy_of(sim, &after);
+        let input = matches!(
+            event.kind,
+            EventKind::Strike { .. } | EventKind::Placed { .. } | EventKind::ParamsChanged
+        );
+        if !input {
+            self.energy_check(e_before, e_after, event.time, || {
+                format!("at {:?}", event.kind)
+            })?;
+        }
+        if let EventKind::BallBall { a, b } = event.kind {
+            let p0 = before[a].velocity + before[b].velocity;
+            let p1 = after[a].velocity + after[b].velocity;
+            let scale = before[a].velocity.length() + before[b].velocity.length();
+            let change = (p1 - p0).length() / scale.max(f64::MIN_POSITIVE);
+            self.stats.worst_momentum = self.stats.worst_momentum.max(change);
+            if change > self.tol.momentum {
+                return Err(Violation::Momentum {
+                    time: event.time,
+                    a,
+                    b,
+                    change,
+                });
+            }
+        }
+        if self.stats.events > 0 && event.time - self.last_time <= self.tol.burst_window {
+            self.burst += 1;
+        } else {
+            self.burst = 1;
+        }
+        self.stats.longest_burst = self.stats.longest_burst.max(self.burst);
+        self.stats.events += 1;
+        self.stats.time = event.time;
+        self.last_time = event.time;
+        self.energy = e_after;
+        Ok(Some(event))
+    }
+
+    /// Strikes `ball` through the monitor (a strike is the one event allowed to add energy).
+    pub fn strike(
+        &mut self,
+        sim: &mut Simulation,
+        ball: BallId,
+        shot: Shot,
+    ) -> Result<(), SetupError> {
+        sim.strike(ball, shot)?;
+        let states: Vec<BallState> = sim.balls().collect();
+        self.energy = self.energy_of(sim, &states);
+        self.last_time = sim.time();
+        Ok(())
+    }
+
+    /// Runs `sim` to rest, checking every event; at most `params().max_events` events in this
+    /// call, as [`Simulation::run_to_rest`].
+    pub fn run_to_rest(&mut self, sim: &mut Simulation) -> Result<Stats, Violation> {
+        let cap = sim.params().max_events;
+        let mut count = 0;
+        loop {
+            if count == cap && sim.next_event_time().is_some() {
+                return Err(Violation::EventCap {
+                    events: count,
+                    cap,
+                    time: sim.time(),
+                });
+            }
+            if self.step(sim)?.is_none() {
+                return Ok(self.stats);
+            }
+            count += 1;
+        }
+    }
+
+    /// Runs `sim` up to absolute time `t` (for scenes that never rest, such as frictionless
+    /// ones), checking every event; at most `params().max_events` events in this call, as
+    /// [`Simulation::advance_to`]. The clock ends at `t`.
+    pub fn run_until(&mut self, sim: &mut Simulation, t: f64) -> Result<Stats, Violation> {
+        let cap = sim.params().max_events;
+        let mut count = 0;
+        while sim.next_event_time().is_some_and(|te| te <= t) {
+            if count == cap {
+                return Err(Violation::EventCap {
+                    events: count,
+                    cap,
+                    time: sim.time(),
+                });
+            }
+            self.step(sim)?;
+            count += 1;
+        }
+        // The state at `t` itself, after the last event.
+        let states: Vec<BallState> = (0..sim.ball_count())
+            .map(|i| sim.segment(i).state_at(t.max(sim.segment(i).start)))
+            .collect();
+        self.check_states(sim, &states, t, "between")?;
+        let e = self.energy_of(sim, &states);
+        self.energy_check(self.energy, e, t, || "between events".into())?;
+        self.energy = e;
+        sim.advance_to(t).expect("no event is left before t");
+        self.stats.time = t;
+        Ok(self.stats)
+    }
+}
+
+/// Checks a whole run to rest of `sim` with default tolerances: the one-line form for tests.
+pub fn run_to_rest_checked(sim: &mut Simulation) -> Result<Stats, Violation> {
+    Monitor::new(sim, Tolerances::default())?.run_to_rest(sim)
+}
