@@ -11,7 +11,7 @@
 //! (default: all cores), `--seed S` (run only scene S and print it in full).
 
 use billiards_physics::check::Tolerances;
-use billiards_physics::soak::{SoakConfig, run_scenario, scenario, soak};
+use billiards_physics::soak::{SoakConfig, run_scenario_traced, scenario, soak};
 use std::io::Write;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::{Duration, Instant};
@@ -44,12 +44,25 @@ fn replay(seed: u64) -> ! {
     for shot in &s.shots {
         println!("shot {shot:?}");
     }
-    match run_scenario(&s, Tolerances::default()) {
+    // Keep the last events, printed if the scene fails.
+    let keep = 40;
+    let mut last = std::collections::VecDeque::new();
+    let result = run_scenario_traced(&s, Tolerances::default(), &mut |e| {
+        if last.len() == keep {
+            last.pop_front();
+        }
+        last.push_back(*e);
+    });
+    match result {
         Ok(st) => {
             println!("ok: {st:?}");
             std::process::exit(0)
         }
         Err(v) => {
+            println!("last {} events:", last.len());
+            for e in &last {
+                println!("  t = {:.17e} {:?} after {:?}", e.time, e.kind, e.after);
+            }
             println!("FAILED: {v}");
             std::process::exit(1)
         }

@@ -7,7 +7,7 @@
 
 use crate::ball::BallId;
 use crate::check::{Monitor, Stats, Tolerances, Violation};
-use crate::event::Shot;
+use crate::event::{Event, Shot};
 use crate::params::{Model, PaperModel, Params, Randomization};
 use crate::racks::{Rack, scattered};
 use crate::sim::{BallSetup, Simulation};
@@ -233,6 +233,15 @@ pub struct SceneStats {
 
 /// Runs scene `s` with every event checked.
 pub fn run_scenario(s: &Scenario, tol: Tolerances) -> Result<SceneStats, Violation> {
+    run_scenario_traced(s, tol, &mut |_| {})
+}
+
+/// [`run_scenario`], calling `trace` with every event processed (for replays).
+pub fn run_scenario_traced(
+    s: &Scenario,
+    tol: Tolerances,
+    trace: &mut dyn FnMut(&Event),
+) -> Result<SceneStats, Violation> {
     let mut sim = Simulation::new(s.table, s.params, &s.balls)
         .unwrap_or_else(|e| panic!("scene {} cannot be built: {e}", s.seed));
     let mut monitor = Monitor::new(&sim, tol)?;
@@ -243,13 +252,29 @@ pub fn run_scenario(s: &Scenario, tol: Tolerances) -> Result<SceneStats, Violati
             .strike(&mut sim, ball, *shot)
             .expect("a valid shot on a ball in play");
         let before = monitor.stats().events;
-        match s.duration {
-            None => monitor.run_to_rest(&mut sim)?,
-            Some(d) => {
-                let until = sim.time() + d;
-                monitor.run_until(&mut sim, until)?
+        let until = s.duration.map_or(f64::INFINITY, |d| sim.time() + d);
+        let mut count = 0;
+        while sim.next_event_time().is_some_and(|t| t <= until) {
+            if count == s.params.max_events {
+                return Err(Violation::EventCap {
+                    events: count,
+                    cap: count,
+                    time: sim.time(),
+                });
             }
-        };
+            if let Some(e) = monitor.step(&mut sim)? {
+                trace(&e);
+            }
+            count += 1;
+        }
+        if until.is_finite() {
+            monitor.run_until(&mut sim, until)?;
+        } else if let Some(ball) = (0..sim.ball_count()).find(|&i| sim.ball(i).motion.is_moving()) {
+            return Err(Violation::MovingForever {
+                time: sim.time(),
+                ball,
+            });
+        }
         stats.shots += 1;
         stats.most_events = stats.most_events.max(monitor.stats().events - before);
     }
