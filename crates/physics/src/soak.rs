@@ -74,6 +74,18 @@ pub fn vary(params: Params, v: &Variation) -> Params {
     }
 }
 
+/// `params` with every friction coefficient of its model multiplied by `k` (0: frictionless).
+pub fn scale_friction(params: Params, k: f64) -> Params {
+    let model = match params.model {
+        Model::Paper(m) => Model::Paper(PaperModel {
+            mu_slide: m.mu_slide * k,
+            mu_roll: m.mu_roll * k,
+            ..m
+        }),
+    };
+    Params { model, ..params }
+}
+
 /// Whether a model's balls ever come to rest by themselves (some friction somewhere).
 pub fn has_friction(params: &Params) -> bool {
     match params.model {
