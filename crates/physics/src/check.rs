@@ -317,7 +317,7 @@ impl Monitor {
     }
 
     /// Energy that rounding alone can add when velocities are evaluated at `t`: a velocity
-    /// `v0 + a tau` is good to about `4 eps (|v0| + |a| tau)`, which is large against a small
+    /// `v0 + a tau` is good to about `4 eps (|v0| + |a| (tau + 2 |t|))`, which is large against a small
     /// final speed (a ball set to exactly its slide/roll threshold after decelerating from a
     /// much higher speed, for instance).
     fn rounding_energy(&self, sim: &Simulation, t: f64) -> f64 {
@@ -326,8 +326,9 @@ impl Monitor {
             .map(|i| sim.segment(i))
             .filter(|s| s.state.motion.is_moving())
             .map(|s| {
+                // The elapsed time itself is only known to an ulp or so of the absolute time.
                 let tau = (t - s.start).max(0.0);
-                let scale = s.speed + s.accel * tau;
+                let scale = s.speed + s.accel * (tau + 2.0 * t.abs());
                 m * s.velocity_at(t).length() * 4.0 * f64::EPSILON * scale
             })
             .sum()
