@@ -108,10 +108,12 @@ pub enum Violation {
         by: f64,
     },
     /// An event moved a ball.
-    #[error("ball {ball} jumped by {by:e} m at {event:?}")]
+    #[error("ball {ball} jumped by {by:e} m at t = {time} ({kind:?})")]
     Jump {
-        /// The event.
-        event: Event,
+        /// Time.
+        time: f64,
+        /// What happened.
+        kind: EventKind,
         /// Ball.
         ball: BallId,
         /// Distance, metres.
@@ -369,7 +371,7 @@ impl Monitor {
             }
             return Ok(None);
         };
-        if !(t >= self.last_time) {
+        if t.is_nan() || t < self.last_time {
             return Err(Violation::TimeBack {
                 before: self.last_time,
                 after: t,
@@ -397,7 +399,7 @@ impl Monitor {
         let event = sim
             .step_event()
             .expect("an event was pending, so one is processed");
-        if !(event.time >= self.last_time) {
+        if event.time.is_nan() || event.time < self.last_time {
             return Err(Violation::TimeBack {
                 before: self.last_time,
                 after: event.time,
@@ -408,7 +410,12 @@ impl Monitor {
         for ball in event.kind.balls() {
             let by = (after[ball].position - before[ball].position).length();
             if by > self.tol.jump && !matches!(event.kind, EventKind::Placed { .. }) {
-                return Err(Violation::Jump { event, ball, by });
+                return Err(Violation::Jump {
+                    time: event.time,
+                    kind: event.kind,
+                    ball,
+                    by,
+                });
             }
         }
         let e_after = self.energy_of(sim, &after);
