@@ -589,12 +589,23 @@ impl Simulation {
                     self.record(EventKind::Pocketed { ball: id, pocket });
                 } else {
                     let n = cushion.inward_normal();
-                    let perturbed = self.perturbation().map(|a| n.rotated(a));
-                    let v = perturbed
-                        .and_then(|np| resolve::reflect(s.velocity, np, model.e_cushion))
-                        .filter(|v| v.dot(n) >= 0.0)
-                        .or_else(|| resolve::reflect(s.velocity, n, model.e_cushion))
-                        .unwrap_or(s.velocity);
+                    let limit = match cushion {
+                        Cushion::Head | Cushion::Foot => self.bounds.x,
+                        Cushion::Left | Cushion::Right => self.bounds.y,
+                    };
+                    let depth = -(limit + n.dot(s.position));
+                    let pressing = -self.segments[id].acceleration.dot(n);
+                    let approach = -s.velocity.dot(n);
+                    let v = if resting(depth, approach, pressing) {
+                        resolve::resting_reflect(s.velocity, n, pressing, detect::RESTING_DEPTH)
+                    } else {
+                        let perturbed = self.perturbation().map(|a| n.rotated(a));
+                        perturbed
+                            .and_then(|np| resolve::reflect(s.velocity, np, model.e_cushion))
+                            .filter(|v| v.dot(n) >= 0.0)
+                            .or_else(|| resolve::reflect(s.velocity, n, model.e_cushion))
+                            .unwrap_or(s.velocity)
+                    };
                     self.segments[id] = motion::segment_from(&self.params, t, s.position, v);
                     self.record(EventKind::Cushion { ball: id, cushion });
                 }
@@ -602,20 +613,47 @@ impl Simulation {
             }
             PendingKind::Pair(a, b) => {
                 let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
-                let n = (sb.position - sa.position)
-                    .normalized()
-                    .unwrap_or(Vec2::new(1.0, 0.0));
-                let perturbed = self.perturbation().map(|ang| n.rotated(ang));
-                let approaching = |(va, vb): &(Vec2, Vec2)| (*va - *vb).dot(n) <= 0.0;
-                let (va, vb) = perturbed
-                    .and_then(|np| {
-                        resolve::equal_mass_restitution(sa.velocity, sb.velocity, np, model.e_ball)
-                    })
-                    .filter(approaching)
-                    .or_else(|| {
-                        resolve::equal_mass_restitution(sa.velocity, sb.velocity, n, model.e_ball)
-                    })
-                    .unwrap_or((sa.velocity, sb.velocity));
+                let d = sb.position - sa.position;
+                let n = d.normalized().unwrap_or(Vec2::new(1.0, 0.0));
+                let depth = 2.0 * self.params.ball.radius - d.length();
+                let dv = sb.velocity - sa.velocity;
+                let da = self.segments[b].acceleration - self.segments[a].acceleration;
+                // Normal relative acceleration pushing the pair together, less the centripetal
+                // term of their relative sliding past each other (which pulls them apart).
+                let pressing =
+                    -da.dot(n) - dv.perp_dot(n).powi(2) / d.length().max(f64::MIN_POSITIVE);
+                let approach = -dv.dot(n);
+                let (va, vb) = if resting(depth, approach, pressing) {
+                    resolve::resting_contact(
+                        sa.velocity,
+                        sb.velocity,
+                        n,
+                        pressing,
+                        detect::RESTING_DEPTH,
+                    )
+                } else {
+                    let perturbed = self.perturbation().map(|ang| n.rotated(ang));
+                    let approaching = |(va, vb): &(Vec2, Vec2)| (*va - *vb).dot(n) <= 0.0;
+                    perturbed
+                        .and_then(|np| {
+                            resolve::equal_mass_restitution(
+                                sa.velocity,
+                                sb.velocity,
+                                np,
+                                model.e_ball,
+                            )
+                        })
+                        .filter(approaching)
+                        .or_else(|| {
+                            resolve::equal_mass_restitution(
+                                sa.velocity,
+                                sb.velocity,
+                                n,
+                                model.e_ball,
+                            )
+                        })
+                        .unwrap_or((sa.velocity, sb.velocity))
+                };
                 self.segments[a] = motion::segment_from(&self.params, t, sa.position, va);
                 self.segments[b] = motion::segment_from(&self.params, t, sb.position, vb);
                 self.record(EventKind::BallBall { a, b });
@@ -623,6 +661,16 @@ impl Simulation {
             }
         }
     }
+}
+
+/// Is a contact a resting one (resolved by [`resolve::resting_contact`]): sunk past half the
+/// resting depth, or pressed together and approaching too slowly to hop apart by the resting
+/// depth on its own? Such contacts bounce elastically with a minimum hop, so that neither a
+/// pressed pair (a Zeno cascade of ever smaller bounces) nor an inelastic collapse can make
+/// unboundedly many events per second.
+fn resting(depth: f64, approach: f64, pressing: f64) -> bool {
+    depth > 0.5 * detect::RESTING_DEPTH
+        || (pressing > 0.0 && approach * approach < 8.0 * pressing * detect::RESTING_DEPTH)
 }
 
 fn check_overlaps(balls: &[BallSetup], r: f64) -> Result<(), SetupError> {

@@ -1,6 +1,6 @@
 //! Ball–ball time of impact: the smallest non-negative root of a quartic.
 
-use super::{Kinematics, RESTING_SPEED, SEPARATION};
+use super::{Kinematics, RESTING_DEPTH, RESTING_SPEED, SEPARATION};
 use crate::ball::Segment;
 use crate::math::Vec2;
 use crate::poly::{ContactTolerance, Poly, first_contact, root_bound};
@@ -48,6 +48,8 @@ pub fn ball_ball(
     let tol = ContactTolerance {
         slack: 2.0 * contact * RESTING_SPEED,
         separation: 2.0 * contact * SEPARATION,
+        // |d|^2 - (2R)^2 at a depth of RESTING_DEPTH, to first order.
+        depth: 2.0 * contact * RESTING_DEPTH,
     };
     first_contact(&f, h, tol)
 }

@@ -1,6 +1,6 @@
 //! Ball–cushion time of impact: the smallest valid root of a quadratic.
 
-use super::{Kinematics, RESTING_SPEED, SEPARATION};
+use super::{Kinematics, RESTING_DEPTH, RESTING_SPEED, SEPARATION};
 use crate::ball::Segment;
 use crate::poly::{ContactTolerance, Poly, first_contact, root_bound};
 use crate::table::Cushion;
@@ -36,6 +36,7 @@ pub fn ball_cushion(
     let tol = ContactTolerance {
         slack: RESTING_SPEED,
         separation: SEPARATION,
+        depth: RESTING_DEPTH,
     };
     first_contact(&gap, h, tol)
 }

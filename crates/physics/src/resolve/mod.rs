@@ -4,5 +4,5 @@
 mod ball_ball;
 mod ball_cushion;
 
-pub use ball_ball::equal_mass_restitution;
-pub use ball_cushion::reflect;
+pub use ball_ball::{equal_mass_restitution, resting_contact};
+pub use ball_cushion::{reflect, resting_reflect};
