@@ -16,19 +16,37 @@ fn struck_break(speed: f64) -> Simulation {
         &Rack::FifteenBall.layout(&table, &params.ball),
     )
     .unwrap();
-    sim.strike(0, Shot { angle: 0.0, speed }).unwrap();
+    sim.strike(0, Shot::new(0.0, speed)).unwrap();
+    sim
+}
+
+/// The 9-ball break of issue 4: spin model, cue ball on the head string aimed at the 1-ball.
+fn nine_ball_spin_break(speed: f64) -> Simulation {
+    let table = Table::wpa_8ft();
+    let params = Params {
+        model: Model::Spin(SpinModel::default()),
+        ..Params::default()
+    };
+    let mut balls = Rack::NineBall.layout(&table, &params.ball);
+    balls[0].position = Vec2::new(-0.25 * table.length, 0.1);
+    let aim = (balls[1].position - balls[0].position).angle();
+    let mut sim = Simulation::new(table, params, &balls).unwrap();
+    sim.strike(0, Shot::new(aim, speed)).unwrap();
     sim
 }
 
 fn break_to_rest(c: &mut Criterion) {
     let mut g = c.benchmark_group("break_to_rest");
-    for speed in [8.0, 11.0] {
-        let sim = struck_break(speed);
+    let scenes = [
+        ("paper_15_ball_8mps", struck_break(8.0)),
+        ("paper_15_ball_11mps", struck_break(11.0)),
+        ("spin_9_ball_8mps", nine_ball_spin_break(8.0)),
+    ];
+    for (name, sim) in scenes {
         let mut probe = sim.clone();
         probe.run_to_rest().unwrap();
-        let events = probe.history().events().len() as u64;
-        g.throughput(Throughput::Elements(events));
-        g.bench_function(format!("paper_15_ball_{speed}mps"), |b| {
+        g.throughput(Throughput::Elements(probe.history().events().len() as u64));
+        g.bench_function(name, |b| {
             b.iter_batched(
                 || sim.clone(),
                 |mut s| black_box(s.run_to_rest().unwrap()),

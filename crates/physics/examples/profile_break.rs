@@ -1,29 +1,73 @@
-//! Runs many 15-ball breaks to rest, for profiling the solver (`perf record`).
+//! Runs many 15-ball breaks to rest, or a frictionless gas of `n` balls, and prints the cost
+//! per event; for profiling the solver (`perf record`, `valgrind --tool=callgrind`).
+//!
+//! ```text
+//! profile_break [breaks]          # 15-ball breaks at 9 m/s (paper model)
+//! profile_break spin9 [breaks]    # 9-ball breaks at 8 m/s (spin model)
+//! profile_break gas N EVENTS      # N balls, no friction, EVENTS events
+//! ```
 
 use billiards_physics::*;
+use std::time::Instant;
 
 fn main() {
-    let n: usize = std::env::args()
-        .nth(1)
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.first().map(String::as_str) == Some("gas") {
+        let n: usize = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(16);
+        let events: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(100_000);
+        let k = (n as f64 / 16.0).sqrt();
+        let table = Table {
+            corner_mouth: 1e-6,
+            side_mouth: 1e-6,
+            ..Table::scaled(k)
+        };
+        let params = Params {
+            model: Model::Paper(PaperModel {
+                mu_slide: 0.0,
+                mu_roll: 0.0,
+                ..PaperModel::default()
+            }),
+            ..Params::default()
+        };
+        let balls = racks::scattered(&table, &params.ball, n, 2.0, 7);
+        let mut sim = Simulation::new(table, params, &balls).unwrap();
+        let start = Instant::now();
+        for _ in 0..events {
+            sim.step_event();
+        }
+        let el = start.elapsed().as_secs_f64();
+        println!(
+            "gas of {n}: {events} events, {:.0} ns per event",
+            el / events as f64 * 1e9
+        );
+        return;
+    }
+    let spin = args.first().map(String::as_str) == Some("spin9");
+    let n: usize = args
+        .get(usize::from(spin))
         .and_then(|s| s.parse().ok())
         .unwrap_or(2000);
     let table = Table::wpa_8ft();
-    let params = Params::default();
-    let mut sim = Simulation::new(
-        table,
-        params,
-        &Rack::FifteenBall.layout(&table, &params.ball),
-    )
-    .unwrap();
-    sim.strike(
-        0,
-        Shot {
-            angle: 0.0,
-            speed: 9.0,
-        },
-    )
-    .unwrap();
-    let start = std::time::Instant::now();
+    let sim = if spin {
+        // Issue 4's break: spin model, cue ball on the head string aimed at the 1-ball, 8 m/s.
+        let params = Params {
+            model: Model::Spin(SpinModel::default()),
+            ..Params::default()
+        };
+        let mut balls = Rack::NineBall.layout(&table, &params.ball);
+        balls[0].position = Vec2::new(-0.25 * table.length, 0.1);
+        let aim = (balls[1].position - balls[0].position).angle();
+        let mut sim = Simulation::new(table, params, &balls).unwrap();
+        sim.strike(0, Shot::new(aim, 8.0)).unwrap();
+        sim
+    } else {
+        let params = Params::default();
+        let balls = Rack::FifteenBall.layout(&table, &params.ball);
+        let mut sim = Simulation::new(table, params, &balls).unwrap();
+        sim.strike(0, Shot::new(0.0, 9.0)).unwrap();
+        sim
+    };
+    let start = Instant::now();
     let mut events = 0;
     for _ in 0..n {
         let mut s = sim.clone();

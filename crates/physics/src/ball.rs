@@ -15,6 +15,8 @@ pub enum Motion {
     /// At rest.
     #[default]
     Stationary,
+    /// Turning about the vertical in place (spin model), not moving.
+    Spinning,
     /// Decelerating at the sliding rate.
     Sliding,
     /// Decelerating at the rolling rate.
@@ -32,6 +34,11 @@ impl Motion {
     /// In play (not pocketed).
     pub fn on_table(self) -> bool {
         !matches!(self, Motion::Pocketed(_))
+    }
+
+    /// Nothing about the ball will change until something hits it.
+    pub fn is_at_rest(self) -> bool {
+        matches!(self, Motion::Stationary | Motion::Pocketed(_))
     }
 }
 
@@ -123,16 +130,33 @@ impl Segment {
         self.state.velocity + self.acceleration * (t - self.start)
     }
 
+    /// Angular velocity at absolute time `t`. The vertical component decays towards zero and
+    /// stays there (spin friction about the vertical), so it needs no event of its own while
+    /// the ball moves.
+    pub fn angular_velocity_at(&self, t: f64) -> Vec3 {
+        let tau = t - self.start;
+        let w0 = self.state.angular_velocity;
+        let w = w0 + self.angular_acceleration * tau;
+        let z = if w.z * w0.z <= 0.0 { 0.0 } else { w.z };
+        Vec3::new(w.x, w.y, z)
+    }
+
     /// Full state at absolute time `t` (the motion state is the segment's).
     pub fn state_at(&self, t: f64) -> BallState {
+        if self.state.motion == Motion::Spinning {
+            let angular_velocity = self.angular_velocity_at(t);
+            return BallState {
+                angular_velocity,
+                ..self.state
+            };
+        }
         if !self.state.motion.is_moving() {
             return self.state;
         }
-        let tau = t - self.start;
         BallState {
             position: self.position_at(t),
             velocity: self.velocity_at(t),
-            angular_velocity: self.state.angular_velocity + self.angular_acceleration * tau,
+            angular_velocity: self.angular_velocity_at(t),
             motion: self.state.motion,
         }
     }

@@ -9,8 +9,22 @@ use serde::{Deserialize, Serialize};
 pub struct Shot {
     /// Direction, radians from +x (towards the foot) towards +y.
     pub angle: f64,
-    /// Speed given to the ball, m/s.
+    /// Speed given to the ball by a centre hit, m/s.
     pub speed: f64,
+    /// Where the tip strikes (spin model only).
+    #[serde(default)]
+    pub tip: crate::resolve::cue::TipOffset,
+}
+
+impl Shot {
+    /// A centre-ball shot.
+    pub fn new(angle: f64, speed: f64) -> Self {
+        Self {
+            angle,
+            speed,
+            tip: Default::default(),
+        }
+    }
 }
 
 /// What happened at an event.
@@ -47,6 +61,13 @@ pub enum EventKind {
         /// The cushion.
         cushion: Cushion,
     },
+    /// A ball hit the rounded end of a cushion at a pocket mouth and rebounded.
+    Jaw {
+        /// The ball.
+        ball: BallId,
+        /// The pocket whose jaw it hit.
+        pocket: Pocket,
+    },
     /// A ball reached a cushion inside a pocket mouth and left play.
     Pocketed {
         /// The ball.
@@ -71,6 +92,7 @@ impl EventKind {
             | EventKind::Placed { ball }
             | EventKind::Transition { ball, .. }
             | EventKind::Cushion { ball, .. }
+            | EventKind::Jaw { ball, .. }
             | EventKind::Pocketed { ball, .. } => (Some(ball), None),
             EventKind::BallBall { a, b } => (Some(a), Some(b)),
             EventKind::ParamsChanged => (None, None),
@@ -80,7 +102,10 @@ impl EventKind {
 
     /// Is this a collision (ball–ball or cushion)?
     pub fn is_collision(&self) -> bool {
-        matches!(self, EventKind::Cushion { .. } | EventKind::BallBall { .. })
+        matches!(
+            self,
+            EventKind::Cushion { .. } | EventKind::Jaw { .. } | EventKind::BallBall { .. }
+        )
     }
 }
 

@@ -14,21 +14,24 @@ pub struct History {
 }
 
 impl History {
-    pub(crate) fn new(initial: &[Segment]) -> Self {
+    /// A history that starts with these segments and no events.
+    pub fn new(initial: &[Segment]) -> Self {
         Self {
             events: Vec::new(),
             tracks: initial.iter().map(|s| vec![*s]).collect(),
         }
     }
 
-    pub(crate) fn push(&mut self, event: Event, segments: &[Segment]) {
+    /// Appends an event; the balls it names continue with their segments in `segments`.
+    pub fn push(&mut self, event: Event, segments: &[Segment]) {
         for id in event.kind.balls() {
             self.tracks[id].push(segments[id]);
         }
         self.events.push(event);
     }
 
-    pub(crate) fn push_all(&mut self, event: Event, segments: &[Segment]) {
+    /// Appends an event after which every ball continues with its segment in `segments`.
+    pub fn push_all(&mut self, event: Event, segments: &[Segment]) {
         for (track, seg) in self.tracks.iter_mut().zip(segments) {
             if track.last() != Some(seg) {
                 track.push(*seg);

@@ -14,7 +14,7 @@
 //! let params = Params::default();
 //! let balls = Rack::FifteenBall.layout(&table, &params.ball);
 //! let mut sim = Simulation::new(table, params, &balls).unwrap();
-//! sim.strike(0, Shot { angle: 0.0, speed: 10.0 }).unwrap();
+//! sim.strike(0, Shot::new(0.0, 10.0)).unwrap();
 //! sim.run_to_rest().unwrap();
 //! assert!(sim.is_at_rest());
 //! ```
@@ -23,12 +23,15 @@ pub mod ball;
 pub mod check;
 pub mod detect;
 pub mod event;
+pub mod grid;
 pub mod history;
 pub mod math;
 pub mod motion;
 pub mod params;
 pub mod poly;
+pub mod queue;
 pub mod racks;
+pub mod recording;
 pub mod resolve;
 pub mod scene;
 pub mod sim;
@@ -39,7 +42,11 @@ pub use ball::{BallId, BallState, Motion, Segment};
 pub use event::{Event, EventKind, Shot};
 pub use history::History;
 pub use math::{Vec2, Vec3};
-pub use params::{BallSpec, G, Model, PaperModel, ParamError, Params, Prediction, Randomization};
+pub use params::{
+    BallSpec, CushionModel, G, Model, PaperModel, ParamError, Params, Prediction, Randomization,
+    SpinModel,
+};
 pub use racks::Rack;
+pub use resolve::cue::{Miscue, TipOffset};
 pub use sim::{Advance, BallSetup, SetupError, SimError, Simulation};
-pub use table::{Cushion, Pocket, Table, TableError};
+pub use table::{Cushion, Jaw, Opening, Pocket, PocketShape, Table, TableError};

@@ -55,12 +55,94 @@ impl Default for PaperModel {
     }
 }
 
+/// How a ball rebounds from a cushion in the spin model.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum CushionModel {
+    /// Mirror reflection of the velocity with restitution `e`; spin untouched.
+    Reflect {
+        /// Restitution of the normal velocity.
+        e: f64,
+    },
+    /// Han (2005), "Dynamics in carom and three cushion billiards": an impulse at the cushion
+    /// nose (above the ball's centre) with restitution and Coulomb friction, so running and
+    /// reverse english change the rebound angle and the spin.
+    Han2005 {
+        /// Restitution along the contact normal.
+        e: f64,
+        /// Ball–cushion friction coefficient.
+        mu: f64,
+    },
+}
+
+impl Default for CushionModel {
+    fn default() -> Self {
+        CushionModel::Han2005 { e: 0.85, mu: 0.2 }
+    }
+}
+
+/// The realistic model with spin (Leckie & Greenspan's event-based model, as in pooltool and
+/// FastFiz): sliding and rolling friction acting at the contact point, spin about the vertical
+/// decaying on its own, frictional ball–ball collisions (throw) and a spin-aware cushion.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SpinModel {
+    /// Sliding friction ball–cloth.
+    pub mu_slide: f64,
+    /// Rolling resistance ball–cloth.
+    pub mu_roll: f64,
+    /// Friction of spin about the vertical: it decays at `5 mu_spin g / (2R)`.
+    pub mu_spin: f64,
+    /// Ball–ball restitution.
+    pub e_ball: f64,
+    /// Ball–ball friction (cut- and spin-induced throw).
+    pub mu_ball: f64,
+    /// The cushion model.
+    pub cushion: CushionModel,
+    /// Height of the cushion nose above the cloth as a fraction of the ball's diameter.
+    pub cushion_height: f64,
+    /// Mass of the cue stick, kg (sets how much of the cue's speed a tip offset costs).
+    pub cue_mass: f64,
+    /// Largest tip offset from the ball's centre, as a fraction of its radius, before a miscue.
+    pub miscue_limit: f64,
+}
+
+impl Default for SpinModel {
+    fn default() -> Self {
+        // The reference's typical values (pooltool, FastFiz, Alciatore); cushion nose at
+        // 63.5 % of the diameter (WPA).
+        Self {
+            mu_slide: 0.2,
+            mu_roll: 0.01,
+            mu_spin: 0.044,
+            e_ball: 0.95,
+            mu_ball: 0.05,
+            cushion: CushionModel::default(),
+            cushion_height: 0.635,
+            cue_mass: 0.54,
+            miscue_limit: 0.5,
+        }
+    }
+}
+
 /// Which physics model resolves the motion and the collisions.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Model {
     /// Anderson's model (sections 3.1–3.4), slips corrected.
     Paper(PaperModel),
+    /// Spin, tip offsets, throw and a spin-aware cushion.
+    Spin(SpinModel),
+}
+
+impl Model {
+    /// Sliding and rolling friction coefficients.
+    pub fn friction(&self) -> (f64, f64) {
+        match self {
+            Model::Paper(m) => (m.mu_slide, m.mu_roll),
+            Model::Spin(m) => (m.mu_slide, m.mu_roll),
+        }
+    }
 }
 
 impl Default for Model {
@@ -196,6 +278,7 @@ impl Params {
                     "in [0, 1]",
                 )?;
             }
+            Model::Spin(m) => m.validate()?,
         }
         if let Some(r) = self.randomization {
             check(
@@ -213,5 +296,48 @@ impl Params {
             });
         }
         Ok(())
+    }
+}
+
+impl SpinModel {
+    fn validate(&self) -> Result<(), ParamError> {
+        let unit = |v: f64| (0.0..=1.0).contains(&v);
+        check(
+            "mu_slide",
+            self.mu_slide,
+            self.mu_slide >= 0.0,
+            "non-negative",
+        )?;
+        check("mu_roll", self.mu_roll, self.mu_roll >= 0.0, "non-negative")?;
+        check("mu_spin", self.mu_spin, self.mu_spin >= 0.0, "non-negative")?;
+        check("e_ball", self.e_ball, unit(self.e_ball), "in [0, 1]")?;
+        check("mu_ball", self.mu_ball, self.mu_ball >= 0.0, "non-negative")?;
+        let h = self.cushion_height;
+        check(
+            "cushion_height",
+            h,
+            (0.5..1.0).contains(&h),
+            "in [0.5, 1) of the diameter",
+        )?;
+        check(
+            "cue_mass",
+            self.cue_mass,
+            self.cue_mass > 0.0,
+            "positive, kg",
+        )?;
+        let l = self.miscue_limit;
+        check(
+            "miscue_limit",
+            l,
+            (0.0..1.0).contains(&l),
+            "in [0, 1) of the radius",
+        )?;
+        match self.cushion {
+            CushionModel::Reflect { e } => check("cushion.e", e, unit(e), "in [0, 1]"),
+            CushionModel::Han2005 { e, mu } => {
+                check("cushion.e", e, unit(e), "in [0, 1]")?;
+                check("cushion.mu", mu, mu >= 0.0, "non-negative")
+            }
+        }
     }
 }

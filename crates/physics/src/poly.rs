@@ -117,6 +117,9 @@ pub fn first_entry(p: &Poly, a: f64, b: f64) -> Option<f64> {
     if b.is_nan() || b <= a {
         return None;
     }
+    if p.degree() <= 2 {
+        return first_entry_quadratic(p, a, b);
+    }
     let (mut lo, mut flo) = (a, fa);
     let mut found = None;
     // Between consecutive critical points p is monotone: the first piece whose end is not
@@ -135,6 +138,43 @@ pub fn first_entry(p: &Poly, a: f64, b: f64) -> Option<f64> {
     }
     let fb = p.eval(b);
     (fb <= 0.0).then(|| refine(p, lo, b, flo, fb))
+}
+
+/// [`first_entry`] for degree at most two, in closed form (`p(a) > 0`, `a < b`): the
+/// numerically stable root, then nudged up by ulps until `p` is not positive there, so the
+/// contact is never reported early.
+fn first_entry_quadratic(p: &Poly, a: f64, b: f64) -> Option<f64> {
+    let (c0, c1, c2) = (p.c[0], p.c[1], p.c[2]);
+    let root = if c2 == 0.0 {
+        (c1 < 0.0).then(|| -c0 / c1)?
+    } else {
+        let disc = c1 * c1 - 4.0 * c2 * c0;
+        if disc < 0.0 {
+            return None;
+        }
+        let q = -0.5 * (c1 + c1.signum() * disc.sqrt());
+        let (r1, r2) = (q / c2, c0 / q);
+        let (lo, hi) = (r1.min(r2), r1.max(r2));
+        // Opening upwards p <= 0 between the roots; downwards, outside them.
+        let r = if c2 > 0.0 { lo } else { hi };
+        if r.is_nan() || r < a {
+            return None;
+        }
+        r
+    };
+    if root.is_nan() || root > b {
+        return None;
+    }
+    let mut t = root.max(a);
+    for _ in 0..16 {
+        if p.eval(t) <= 0.0 {
+            return Some(t);
+        }
+        t = t.next_up();
+    }
+    // Rounding left the closed form further off than expected: bracket it properly.
+    let fb = p.eval(b);
+    (fb <= 0.0).then(|| refine(p, a, b, p.eval(a), fb))
 }
 
 /// Refines a bracket with `p(lo) = flo > 0 >= p(hi) = fhi`, `p` monotone on it, to a few ulps;
@@ -194,22 +234,13 @@ pub struct ContactTolerance {
     pub slack: f64,
     /// Value of the contact function above which a touching pair counts as separated.
     pub separation: f64,
-    /// How far below zero the contact function of a resting pair may sink before the contact
-    /// counts (a resting contact); it is counted again only after the pair has risen back
-    /// above half of it, or separated.
-    pub depth: f64,
 }
 
 /// First time in `[0, h]` at which the contact function `f` starts a contact.
 ///
-/// Apart now (`f(0) > 0`): the first root. Touching now and approaching faster than the slack:
-/// `0`. Touching and resting (approaching slower than the slack, or pressed together by their
-/// accelerations): the first moment, while approaching at all (faster than a thousandth of the
-/// slack), that `f` has sunk to `-depth`: a resting contact, which the caller resolves so that
-/// the pair hops apart by about `depth` (see [`crate::resolve::resting_contact`]); a pressed
-/// pair then touches a finite number of times per second instead of in a Zeno cascade, and a
-/// pair drifting together slower than the slack cannot sink deeper than `depth`. A pair that
-/// separates first gets the first root after it. Separating pairs get no false root.
+/// Apart now (`f(0) > 0`): the first root. Touching now: `0` if approaching faster than the
+/// slack; otherwise the first moment the approach becomes significant while still touching, or,
+/// after the pair separates, the first root after that. Separating pairs get no false root.
 pub fn first_contact(f: &Poly, h: f64, tol: ContactTolerance) -> Option<f64> {
     if f.c[0] > 0.0 {
         return first_entry(f, 0.0, h);
@@ -218,12 +249,11 @@ pub fn first_contact(f: &Poly, h: f64, tol: ContactTolerance) -> Option<f64> {
     if df.c[0] < -tol.slack {
         return Some(0.0);
     }
+    let approach = first_entry(&df.shifted(tol.slack), 0.0, h);
     let separate = first_entry(&f.negated().shifted(tol.separation), 0.0, h);
-    let approaching = first_entry(&df.shifted(1e-3 * tol.slack), 0.0, h);
-    let sink = approaching.and_then(|ta| first_entry(&f.shifted(tol.depth), ta, h));
-    match (sink, separate) {
-        (Some(tc), Some(ts)) if tc < ts => Some(tc),
-        (Some(tc), None) => Some(tc),
+    match (approach, separate) {
+        (Some(ta), Some(ts)) if ta < ts => Some(ta),
+        (Some(ta), None) => Some(ta),
         (_, Some(ts)) => first_entry(f, ts, h),
         (None, None) => None,
     }
@@ -316,7 +346,6 @@ mod tests {
         let tol = ContactTolerance {
             slack: 1e-12,
             separation: 1e-15,
-            depth: 1e-10,
         };
         assert_eq!(
             first_contact(&Poly::new([0.0, 1.0, 0.0, 0.0, 0.0]), 5.0, tol),
@@ -334,7 +363,6 @@ mod tests {
         let tol = ContactTolerance {
             slack: 1e-12,
             separation: 1e-15,
-            depth: 1e-10,
         };
         assert_eq!(
             first_contact(&Poly::new([0.0, -1.0, 0.0, 0.0, 0.0]), 5.0, tol),
@@ -348,7 +376,6 @@ mod tests {
         let tol = ContactTolerance {
             slack: 1e-12,
             separation: 1e-15,
-            depth: 1e-10,
         };
         let t = first_contact(&Poly::new([0.0, 2.0, -1.0, 0.0, 0.0]), 5.0, tol).unwrap();
         assert!((t - 2.0).abs() < 1e-12, "{t}");

@@ -120,11 +120,7 @@ pub fn scattered(
             );
             let v = Vec2::from_angle(rng.random_range(0.0..std::f64::consts::TAU))
                 * (max_speed * rng.random::<f64>());
-            BallSetup {
-                number: (i % 16) as u8,
-                position: centre + jitter,
-                velocity: v,
-            }
+            BallSetup::moving((i % 16) as u8, centre + jitter, v)
         })
         .collect()
 }

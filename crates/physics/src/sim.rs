@@ -3,12 +3,14 @@
 use crate::ball::{BallId, BallState, Motion, Segment};
 use crate::detect::{self, Kinematics};
 use crate::event::{Event, EventKind, Shot};
+use crate::grid::{Grid, Side};
 use crate::history::History;
-use crate::math::Vec2;
+use crate::math::{Vec2, Vec3};
 use crate::motion;
-use crate::params::{Model, ParamError, Params, Prediction};
+use crate::params::{CushionModel, Model, ParamError, Params, Prediction};
+use crate::queue::Tournament;
 use crate::resolve;
-use crate::table::{Cushion, Table, TableError};
+use crate::table::{Cushion, Jaw, Opening, PocketShape, Table, TableError};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
@@ -28,6 +30,9 @@ pub struct BallSetup {
     /// Velocity, m/s.
     #[serde(default)]
     pub velocity: Vec2,
+    /// Angular velocity, rad/s (ignored by the paper's model, which has no spin).
+    #[serde(default)]
+    pub spin: Vec3,
 }
 
 impl BallSetup {
@@ -37,6 +42,15 @@ impl BallSetup {
             number,
             position,
             velocity: Vec2::ZERO,
+            spin: Vec3::ZERO,
+        }
+    }
+
+    /// A ball moving with `velocity` and no spin.
+    pub fn moving(number: u8, position: Vec2, velocity: Vec2) -> Self {
+        Self {
+            velocity,
+            ..Self::at(number, position)
         }
     }
 }
@@ -84,6 +98,9 @@ pub enum SetupError {
     /// The ball has been pocketed.
     #[error("ball {0} is pocketed")]
     Pocketed(BallId),
+    /// The cue tip offset is beyond the miscue limit.
+    #[error(transparent)]
+    Miscue(#[from] resolve::cue::Miscue),
     /// A shot's angle or speed is NaN, infinite, or the speed negative.
     #[error("shot angle {angle} rad and speed {speed} m/s must be finite, speed >= 0")]
     BadShot {
@@ -126,19 +143,29 @@ struct Pending {
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum PendingKind {
+    /// Internal: the ball leaves its grid cell (no physical effect, not recorded).
+    Crossing(BallId, Side),
     Transition(BallId),
     Cushion(BallId, Cushion),
+    /// Contact with jaw `k` of `Simulation::jaws`.
+    Jaw(BallId, usize),
+    /// The ball's centre crosses pocket opening `k` of `Simulation::openings`.
+    Opening(BallId, usize),
     Pair(BallId, BallId),
 }
 
 impl Pending {
-    /// Tie order between events at equal times: state transitions, then cushions, then ball
+    /// Tie order between events at equal times: grid crossings (bookkeeping, so that a
+    /// contact at the same instant is seen), state transitions, then cushions, then ball
     /// pairs (after pooltool), each by ball index, then by cushion order.
     fn key(&self) -> (f64, u8, BallId, usize) {
         match self.kind {
-            PendingKind::Transition(b) => (self.time, 0, b, 0),
-            PendingKind::Cushion(b, c) => (self.time, 1, b, c as usize),
-            PendingKind::Pair(a, b) => (self.time, 2, a, b),
+            PendingKind::Crossing(b, s) => (self.time, 0, b, s as usize),
+            PendingKind::Transition(b) => (self.time, 1, b, 0),
+            PendingKind::Opening(b, k) => (self.time, 2, b, k),
+            PendingKind::Cushion(b, c) => (self.time, 3, b, c as usize),
+            PendingKind::Jaw(b, k) => (self.time, 4, b, k),
+            PendingKind::Pair(a, b) => (self.time, 5, a, b),
         }
     }
 
@@ -149,9 +176,22 @@ impl Pending {
             == Ordering::Less
     }
 
+    /// The other ball of a pair event, seen from `id`.
+    fn partner(&self, id: BallId) -> Option<BallId> {
+        match self.kind {
+            PendingKind::Pair(a, b) if a == id => Some(b),
+            PendingKind::Pair(a, b) if b == id => Some(a),
+            _ => None,
+        }
+    }
+
     fn involves(&self, id: BallId) -> bool {
         match self.kind {
-            PendingKind::Transition(b) | PendingKind::Cushion(b, _) => b == id,
+            PendingKind::Crossing(b, _)
+            | PendingKind::Transition(b)
+            | PendingKind::Cushion(b, _)
+            | PendingKind::Jaw(b, _)
+            | PendingKind::Opening(b, _) => b == id,
             PendingKind::Pair(a, b) => a == id || b == id,
         }
     }
@@ -176,7 +216,18 @@ pub struct Simulation {
     params: Params,
     numbers: Vec<u8>,
     segments: Vec<Segment>,
-    cache: Vec<Option<Pending>>,
+    /// Each ball's earliest predicted event, and the earliest of them all.
+    cache: Tournament<Pending>,
+    /// For each ball, the balls whose cached event is a contact with it (may hold stale
+    /// entries; checked before use).
+    dependents: Vec<Vec<BallId>>,
+    /// Stamp of the prediction round that last predicted each ball, and the current round.
+    stamps: Vec<u64>,
+    round: u64,
+    grid: Grid,
+    /// Pocket jaws and openings (empty unless the table has jaws).
+    jaws: Vec<Jaw>,
+    openings: Vec<Opening>,
     time: f64,
     history: History,
     rng: Option<ChaCha8Rng>,
@@ -216,14 +267,23 @@ impl Simulation {
         check_overlaps(balls, r)?;
         let segments: Vec<Segment> = balls
             .iter()
-            .map(|b| motion::segment_from(&params, 0.0, b.position, b.velocity))
+            .map(|b| motion::segment_from(&params, 0.0, b.position, b.velocity, b.spin))
             .collect();
         let mut sim = Self {
             table,
             params,
             numbers: balls.iter().map(|b| b.number).collect(),
             history: History::new(&segments),
-            cache: vec![None; segments.len()],
+            cache: Tournament::new(segments.len()),
+            dependents: vec![Vec::new(); segments.len()],
+            stamps: vec![0; segments.len()],
+            round: 0,
+            grid: Grid::new(bounds, r, segments.len()),
+            jaws: table.jaws(),
+            openings: match table.pockets {
+                PocketShape::Mouth => Vec::new(),
+                PocketShape::Jaws { .. } => table.openings().to_vec(),
+            },
             segments,
             time: 0.0,
             rng: params
@@ -282,7 +342,7 @@ impl Simulation {
 
     /// No ball is moving.
     pub fn is_at_rest(&self) -> bool {
-        self.segments.iter().all(|s| !s.state.motion.is_moving())
+        self.segments.iter().all(|s| s.state.motion.is_at_rest())
     }
 
     /// Time of the next event, if any.
@@ -324,8 +384,12 @@ impl Simulation {
 
     /// Advances exactly to the next event and processes it (and only it); `None` at rest.
     pub fn step_event(&mut self) -> Option<Event> {
-        let p = self.next_pending()?;
-        self.process(p);
+        let before = self.history.events().len();
+        // Grid crossings are internal: keep going until a physical event is recorded.
+        while self.history.events().len() == before {
+            let p = self.next_pending()?;
+            self.process(p);
+        }
         self.history.events().last().copied()
     }
 
@@ -348,17 +412,27 @@ impl Simulation {
         })
     }
 
-    /// Strikes ball `id` now (the paper's cue: an angle and a magnitude).
+    /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
+    /// takes the tip offset (the paper's model has no spin and ignores it).
     pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
-        if !(shot.angle.is_finite() && shot.speed.is_finite() && shot.speed >= 0.0) {
+        let finite = shot.angle.is_finite()
+            && shot.speed.is_finite()
+            && shot.tip.side.is_finite()
+            && shot.tip.height.is_finite();
+        if !(finite && shot.speed >= 0.0) {
             return Err(SetupError::BadShot {
                 angle: shot.angle,
                 speed: shot.speed,
             });
         }
         let state = self.ball_checked(id)?;
-        let v = Vec2::from_angle(shot.angle) * shot.speed;
-        self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v);
+        let dir = Vec2::from_angle(shot.angle);
+        let (r, mass) = (self.params.ball.radius, self.params.ball.mass);
+        let (v, w) = match self.params.model {
+            Model::Paper(_) => (dir * shot.speed, Vec3::ZERO),
+            Model::Spin(m) => resolve::cue::strike(&m, mass, r, dir, shot.speed, shot.tip)?,
+        };
+        self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v, w);
         self.record(EventKind::Strike { ball: id, shot });
         self.repredict(&[id]);
         Ok(())
@@ -366,32 +440,24 @@ impl Simulation {
 
     /// Sets ball `id`'s position and velocity now (editing, respotting). The new position must
     /// be on the table and clear of the other balls.
-    pub fn place(&mut self, id: BallId, position: Vec2, velocity: Vec2) -> Result<(), SetupError> {
+    pub fn place(
+        &mut self,
+        id: BallId,
+        position: Vec2,
+        velocity: Vec2,
+        spin: Vec3,
+    ) -> Result<(), SetupError> {
         if id >= self.segments.len() {
             return Err(SetupError::NoSuchBall(id));
         }
-        let mut layout: Vec<BallSetup> = self
-            .balls()
-            .zip(&self.numbers)
-            .map(|(s, &n)| BallSetup {
-                number: n,
-                position: s.position,
-                velocity: s.velocity,
-            })
-            .collect();
-        layout[id].position = position;
-        layout[id].velocity = velocity;
-        if !position.is_finite() {
-            return Err(SetupError::NonFinite {
-                ball: id,
-                what: "position",
-            });
-        }
-        if !velocity.is_finite() {
-            return Err(SetupError::NonFinite {
-                ball: id,
-                what: "velocity",
-            });
+        for (what, ok) in [
+            ("position", position.is_finite()),
+            ("velocity", velocity.is_finite()),
+            ("spin", spin.is_finite()),
+        ] {
+            if !ok {
+                return Err(SetupError::NonFinite { ball: id, what });
+            }
         }
         if position.x.abs() > self.bounds.x + PLACEMENT_TOLERANCE
             || position.y.abs() > self.bounds.y + PLACEMENT_TOLERANCE
@@ -403,10 +469,9 @@ impl Simulation {
             });
         }
         let r = self.params.ball.radius;
-        for (j, other) in layout.iter().enumerate() {
-            let on_table = self.segments[j].state.motion.on_table();
-            if j != id && on_table {
-                let overlap = 2.0 * r - (other.position - position).length();
+        for (j, seg) in self.segments.iter().enumerate() {
+            if j != id && seg.state.motion.on_table() {
+                let overlap = 2.0 * r - (seg.position_at(self.time) - position).length();
                 if overlap > PLACEMENT_TOLERANCE {
                     return Err(SetupError::Overlap {
                         a: id.min(j),
@@ -416,7 +481,7 @@ impl Simulation {
                 }
             }
         }
-        self.segments[id] = motion::segment_from(&self.params, self.time, position, velocity);
+        self.segments[id] = motion::segment_from(&self.params, self.time, position, velocity, spin);
         self.record(EventKind::Placed { ball: id });
         self.repredict(&[id]);
         Ok(())
@@ -440,9 +505,15 @@ impl Simulation {
         }
         self.params = params;
         for seg in &mut self.segments {
-            if seg.state.motion.is_moving() {
+            if seg.state.motion.on_table() && !seg.state.motion.is_at_rest() {
                 let s = seg.state_at(self.time);
-                *seg = motion::segment_from(&params, self.time, s.position, s.velocity);
+                *seg = motion::segment_from(
+                    &params,
+                    self.time,
+                    s.position,
+                    s.velocity,
+                    s.angular_velocity,
+                );
             }
         }
         let event = Event {
@@ -471,7 +542,24 @@ impl Simulation {
     }
 
     fn next_pending(&self) -> Option<Pending> {
-        self.cache.iter().fold(None, |acc, p| earlier(acc, *p))
+        self.cache.best().map(|(_, p)| p)
+    }
+
+    /// Stores ball `id`'s prediction and indexes it under its partner, if any.
+    fn set_cache(&mut self, id: BallId, p: Option<Pending>) {
+        self.stamps[id] = self.round;
+        self.cache.set(id, p, Pending::precedes);
+        if let Some(partner) = p.and_then(|p| p.partner(id)) {
+            let deps = &mut self.dependents[partner];
+            deps.push(id);
+            if deps.len() > 64 {
+                // Drop stale entries so the list stays short in long runs.
+                let cache = &self.cache;
+                deps.retain(|&m| cache.get(m).is_some_and(|q| q.involves(partner)));
+                deps.sort_unstable();
+                deps.dedup();
+            }
+        }
     }
 
     /// The earliest event of ball `id` from time `t` on: its own transition, a cushion, or a
@@ -489,23 +577,72 @@ impl Simulation {
         });
         if seg.state.motion.is_moving() {
             for c in Cushion::ALL {
-                let limit = match c {
-                    Cushion::Head | Cushion::Foot => self.bounds.x,
-                    Cushion::Left | Cushion::Right => self.bounds.y,
-                };
-                if let Some(tau) = detect::ball_cushion(seg, t, c, limit, horizon, kin) {
+                if let Some(tau) = self.cushion_contact(seg, t, c, horizon, kin) {
+                    let kind = PendingKind::Cushion(id, c);
                     best = earlier(
                         best,
                         Some(Pending {
                             time: t + tau,
-                            kind: PendingKind::Cushion(id, c),
+                            kind,
+                        }),
+                    );
+                }
+            }
+            let jaw_contact = self.params.ball.radius + self.jaw_radius();
+            for (k, jaw) in self.jaws.iter().enumerate() {
+                let h = best.map_or(horizon, |b| horizon.min(b.time - t));
+                if let Some(tau) = detect::ball_jaw(seg, t, jaw.centre, jaw_contact, h, kin) {
+                    let kind = PendingKind::Jaw(id, k);
+                    best = earlier(
+                        best,
+                        Some(Pending {
+                            time: t + tau,
+                            kind,
+                        }),
+                    );
+                }
+            }
+            for (k, o) in self.openings.iter().enumerate() {
+                // The real path decides when a ball drops, even in the linear comparison mode.
+                let exact = Kinematics::Exact;
+                if let Some(tau) = detect::ball_line(seg, t, o.normal, o.offset, horizon, exact) {
+                    let kind = PendingKind::Opening(id, k);
+                    best = earlier(
+                        best,
+                        Some(Pending {
+                            time: t + tau,
+                            kind,
+                        }),
+                    );
+                }
+            }
+        }
+        if seg.state.motion.is_moving() && self.grid.is_split() {
+            for (side, at) in self.grid.exits(id) {
+                let (n, offset) = match side {
+                    Side::XPlus => (Vec2::new(-1.0, 0.0), at),
+                    Side::XMinus => (Vec2::new(1.0, 0.0), -at),
+                    Side::YPlus => (Vec2::new(0.0, -1.0), at),
+                    Side::YMinus => (Vec2::new(0.0, 1.0), -at),
+                };
+                // Crossings follow the real path even in the linear comparison mode.
+                if let Some(tau) = detect::ball_line(seg, t, n, offset, horizon, Kinematics::Exact)
+                {
+                    best = earlier(
+                        best,
+                        Some(Pending {
+                            time: t + tau,
+                            kind: PendingKind::Crossing(id, side),
                         }),
                     );
                 }
             }
         }
         let r = self.params.ball.radius;
-        for (j, other) in self.segments.iter().enumerate() {
+        let all = (!self.grid.is_split()).then_some(0..self.segments.len());
+        let near = self.grid.is_split().then(|| self.grid.neighbours(id));
+        for j in all.into_iter().flatten().chain(near.into_iter().flatten()) {
+            let other = &self.segments[j];
             if j == id || !other.state.motion.on_table() {
                 continue;
             }
@@ -526,21 +663,100 @@ impl Simulation {
         best
     }
 
-    fn predict_all(&mut self) {
-        for id in 0..self.segments.len() {
-            self.cache[id] = self.predict(id, self.time);
+    fn jaw_radius(&self) -> f64 {
+        match self.table.pockets {
+            PocketShape::Jaws { radius } => radius,
+            PocketShape::Mouth => 0.0,
         }
     }
 
-    /// Re-predicts the balls an event changed, and every ball whose cached event involved one
-    /// of them; all other predictions stay valid.
+    /// When the ball of `seg` next touches `cushion`. With the paper's mouths, any contact
+    /// with the cushion line counts (a contact inside a mouth pockets the ball). With jaws,
+    /// only contacts on the cushion itself count: a root in a mouth means the ball crossed the
+    /// line's extension into the mouth, and the search goes on from where it comes back out.
+    fn cushion_contact(
+        &self,
+        seg: &Segment,
+        t: f64,
+        cushion: Cushion,
+        horizon: f64,
+        kin: Kinematics,
+    ) -> Option<f64> {
+        let limit = match cushion {
+            Cushion::Head | Cushion::Foot => self.bounds.x,
+            Cushion::Left | Cushion::Right => self.bounds.y,
+        };
+        let n = cushion.inward_normal();
+        let mut from = 0.0;
+        // A path is a parabola: it crosses a line at most twice, so two retries suffice.
+        for _ in 0..3 {
+            let tau = detect::ball_line(seg, t + from, n, limit, horizon - from, kin)? + from;
+            if self.table.pockets == PocketShape::Mouth
+                || self.table.on_cushion(cushion, seg.position_at(t + tau))
+            {
+                return Some(tau);
+            }
+            // In a mouth: skip to where the centre is back on the table side of the line.
+            let p = seg.position_at(t + tau);
+            let v = seg.velocity_at(t + tau);
+            let a = match kin {
+                Kinematics::Exact => seg.acceleration,
+                Kinematics::Linear => Vec2::ZERO,
+            };
+            let back = crate::poly::Poly::new([
+                -(limit + n.dot(p)) + detect::SEPARATION,
+                -n.dot(v),
+                -0.5 * n.dot(a),
+                0.0,
+                0.0,
+            ]);
+            let out = crate::poly::first_entry(
+                &back,
+                0.0,
+                (horizon - tau).min(crate::poly::root_bound(&back)),
+            )?;
+            from = tau + out.max(f64::EPSILON * (t + tau).abs());
+        }
+        None
+    }
+
+    fn predict_all(&mut self) {
+        self.round += 1;
+        for deps in &mut self.dependents {
+            deps.clear();
+        }
+        for id in 0..self.segments.len() {
+            let on_table = self.segments[id].state.motion.on_table();
+            self.grid.set(
+                id,
+                on_table.then(|| self.segments[id].position_at(self.time)),
+            );
+        }
+        for id in 0..self.segments.len() {
+            let p = self.predict(id, self.time);
+            self.set_cache(id, p);
+        }
+    }
+
+    /// Re-predicts the balls an event changed, and every ball whose cached event was a contact
+    /// with one of them; all other predictions stay valid.
     fn repredict(&mut self, touched: &[BallId]) {
         let t = self.time;
-        for id in 0..self.segments.len() {
-            let stale = touched.contains(&id)
-                || self.cache[id].is_some_and(|p| touched.iter().any(|&b| p.involves(b)));
-            if stale {
-                self.cache[id] = self.predict(id, t);
+        self.round += 1;
+        for &id in touched {
+            let on_table = self.segments[id].state.motion.on_table();
+            self.grid
+                .set(id, on_table.then(|| self.segments[id].state.position));
+            let p = self.predict(id, t);
+            self.set_cache(id, p);
+        }
+        for &id in touched {
+            for m in std::mem::take(&mut self.dependents[id]) {
+                let stale = self.cache.get(m).is_some_and(|p| p.involves(id));
+                if self.stamps[m] != self.round && stale {
+                    let p = self.predict(m, t);
+                    self.set_cache(m, p);
+                }
             }
         }
     }
@@ -572,8 +788,13 @@ impl Simulation {
         debug_assert!(p.time >= self.time, "time never goes back");
         self.time = p.time;
         let t = p.time;
-        let Model::Paper(model) = self.params.model;
         match p.kind {
+            PendingKind::Crossing(id, side) => {
+                self.grid.cross(id, side);
+                self.round += 1;
+                let p = self.predict(id, t);
+                self.set_cache(id, p);
+            }
             PendingKind::Transition(id) => {
                 let from = self.segments[id].state.motion;
                 self.segments[id] = motion::after_transition(&self.params, &self.segments[id]);
@@ -581,96 +802,114 @@ impl Simulation {
                 self.record(EventKind::Transition { ball: id, from, to });
                 self.repredict(&[id]);
             }
+            PendingKind::Opening(id, k) => {
+                let s = self.segments[id].state_at(t);
+                let pocket = self.openings[k].pocket;
+                self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
+                self.record(EventKind::Pocketed { ball: id, pocket });
+                self.repredict(&[id]);
+            }
+            PendingKind::Jaw(id, k) => {
+                let s = self.segments[id].state_at(t);
+                let jaw = self.jaws[k];
+                let n = (s.position - jaw.centre)
+                    .normalized()
+                    .unwrap_or(Vec2::new(0.0, 1.0));
+                let (v, w) = self.cushion_response(&s, n);
+                self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
+                self.record(EventKind::Jaw {
+                    ball: id,
+                    pocket: jaw.pocket,
+                });
+                self.repredict(&[id]);
+            }
             PendingKind::Cushion(id, cushion) => {
                 let s = self.segments[id].state_at(t);
-                if let Some(pocket) = self.table.pocket_at(cushion, s.position) {
+                let mouth = match self.table.pockets {
+                    PocketShape::Mouth => self.table.pocket_at(cushion, s.position),
+                    PocketShape::Jaws { .. } => None,
+                };
+                if let Some(pocket) = mouth {
                     self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
-                    self.cache[id] = None;
                     self.record(EventKind::Pocketed { ball: id, pocket });
                 } else {
-                    let n = cushion.inward_normal();
-                    let limit = match cushion {
-                        Cushion::Head | Cushion::Foot => self.bounds.x,
-                        Cushion::Left | Cushion::Right => self.bounds.y,
-                    };
-                    let depth = -(limit + n.dot(s.position));
-                    let pressing = -self.segments[id].acceleration.dot(n);
-                    let approach = -s.velocity.dot(n);
-                    let v = if resting(depth, approach, pressing) {
-                        resolve::resting_reflect(s.velocity, n, pressing, detect::RESTING_DEPTH)
-                    } else {
-                        let perturbed = self.perturbation().map(|a| n.rotated(a));
-                        perturbed
-                            .and_then(|np| resolve::reflect(s.velocity, np, model.e_cushion))
-                            .filter(|v| v.dot(n) >= 0.0)
-                            .or_else(|| resolve::reflect(s.velocity, n, model.e_cushion))
-                            .unwrap_or(s.velocity)
-                    };
-                    self.segments[id] = motion::segment_from(&self.params, t, s.position, v);
+                    let (v, w) = self.cushion_response(&s, cushion.inward_normal());
+                    self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                     self.record(EventKind::Cushion { ball: id, cushion });
                 }
                 self.repredict(&[id]);
             }
             PendingKind::Pair(a, b) => {
                 let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
-                let d = sb.position - sa.position;
-                let n = d.normalized().unwrap_or(Vec2::new(1.0, 0.0));
-                let depth = 2.0 * self.params.ball.radius - d.length();
-                let dv = sb.velocity - sa.velocity;
-                let da = self.segments[b].acceleration - self.segments[a].acceleration;
-                // Normal relative acceleration pushing the pair together, less the centripetal
-                // term of their relative sliding past each other (which pulls them apart).
-                let pressing =
-                    -da.dot(n) - dv.perp_dot(n).powi(2) / d.length().max(f64::MIN_POSITIVE);
-                let approach = -dv.dot(n);
-                let (va, vb) = if resting(depth, approach, pressing) {
-                    resolve::resting_contact(
-                        sa.velocity,
-                        sb.velocity,
-                        n,
-                        pressing,
-                        detect::RESTING_DEPTH,
-                    )
-                } else {
-                    let perturbed = self.perturbation().map(|ang| n.rotated(ang));
-                    let approaching = |(va, vb): &(Vec2, Vec2)| (*va - *vb).dot(n) <= 0.0;
-                    perturbed
-                        .and_then(|np| {
-                            resolve::equal_mass_restitution(
-                                sa.velocity,
-                                sb.velocity,
-                                np,
-                                model.e_ball,
-                            )
-                        })
-                        .filter(approaching)
-                        .or_else(|| {
-                            resolve::equal_mass_restitution(
-                                sa.velocity,
-                                sb.velocity,
-                                n,
-                                model.e_ball,
-                            )
-                        })
-                        .unwrap_or((sa.velocity, sb.velocity))
-                };
-                self.segments[a] = motion::segment_from(&self.params, t, sa.position, va);
-                self.segments[b] = motion::segment_from(&self.params, t, sb.position, vb);
+                let n = (sb.position - sa.position)
+                    .normalized()
+                    .unwrap_or(Vec2::new(1.0, 0.0));
+                let (na, nb) = self.pair_response(&sa, &sb, n);
+                self.segments[a] = motion::segment_from(
+                    &self.params,
+                    t,
+                    sa.position,
+                    na.velocity,
+                    na.angular_velocity,
+                );
+                self.segments[b] = motion::segment_from(
+                    &self.params,
+                    t,
+                    sb.position,
+                    nb.velocity,
+                    nb.angular_velocity,
+                );
                 self.record(EventKind::BallBall { a, b });
                 self.repredict(&[a, b]);
             }
         }
     }
-}
 
-/// Is a contact a resting one (resolved by [`resolve::resting_contact`]): sunk past half the
-/// resting depth, or pressed together and approaching too slowly to hop apart by the resting
-/// depth on its own? Such contacts bounce elastically with a minimum hop, so that neither a
-/// pressed pair (a Zeno cascade of ever smaller bounces) nor an inelastic collapse can make
-/// unboundedly many events per second.
-fn resting(depth: f64, approach: f64, pressing: f64) -> bool {
-    depth > 0.5 * detect::RESTING_DEPTH
-        || (pressing > 0.0 && approach * approach < 8.0 * pressing * detect::RESTING_DEPTH)
+    /// Velocity and spin after a cushion contact with inward normal `n`, under the model in
+    /// force; with randomization the normal is perturbed, unless that would send the ball out.
+    fn cushion_response(&mut self, s: &BallState, n: Vec2) -> (Vec2, Vec3) {
+        let (v, w, r) = (s.velocity, s.angular_velocity, self.params.ball.radius);
+        let model = self.params.model;
+        let respond = |n: Vec2| match model {
+            Model::Paper(m) => resolve::reflect(v, n, m.e_cushion).map(|v| (v, w)),
+            Model::Spin(m) => match m.cushion {
+                CushionModel::Reflect { e } => resolve::reflect(v, n, e).map(|v| (v, w)),
+                CushionModel::Han2005 { e, mu } => {
+                    resolve::han_2005(v, w, n, e, mu, r, 2.0 * r * m.cushion_height)
+                }
+            },
+        };
+        let perturbed = self.perturbation().map(|a| n.rotated(a));
+        perturbed
+            .and_then(respond)
+            .filter(|(v, _)| v.dot(n) >= 0.0)
+            .or_else(|| respond(n))
+            .unwrap_or((v, w))
+    }
+
+    /// States after a ball–ball contact along unit normal `n` (from `a` to `b`), under the
+    /// model in force; with randomization the normal is perturbed, unless that would leave the
+    /// balls approaching along the true normal.
+    fn pair_response(&mut self, a: &BallState, b: &BallState, n: Vec2) -> (BallState, BallState) {
+        let (r, model) = (self.params.ball.radius, self.params.model);
+        let respond = |n: Vec2| match model {
+            Model::Paper(m) => resolve::equal_mass_restitution(a.velocity, b.velocity, n, m.e_ball)
+                .map(|(va, vb)| {
+                    (
+                        BallState { velocity: va, ..*a },
+                        BallState { velocity: vb, ..*b },
+                    )
+                }),
+            Model::Spin(m) => resolve::frictional_spheres(a, b, n, m.e_ball, m.mu_ball, r),
+        };
+        let separating = |(x, y): &(BallState, BallState)| (x.velocity - y.velocity).dot(n) <= 0.0;
+        let perturbed = self.perturbation().map(|ang| n.rotated(ang));
+        perturbed
+            .and_then(respond)
+            .filter(separating)
+            .or_else(|| respond(n))
+            .unwrap_or((*a, *b))
+    }
 }
 
 fn check_overlaps(balls: &[BallSetup], r: f64) -> Result<(), SetupError> {

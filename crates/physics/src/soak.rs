@@ -8,8 +8,9 @@
 use crate::ball::BallId;
 use crate::check::{Monitor, Stats, Tolerances, Violation};
 use crate::event::{Event, Shot};
-use crate::params::{Model, PaperModel, Params, Randomization};
+use crate::params::{CushionModel, Model, PaperModel, Params, Randomization, SpinModel};
 use crate::racks::{Rack, scattered};
+use crate::resolve::cue::TipOffset;
 use crate::sim::{BallSetup, Simulation};
 use crate::table::Table;
 use rand::{Rng, SeedableRng};
@@ -37,6 +38,14 @@ pub fn models() -> Vec<(&'static str, Params)> {
                 ..PaperModel::default()
             }),
         ),
+        // Spin, throw and Han's cushion with the reference's typical constants.
+        (
+            "spin",
+            Params {
+                model: Model::Spin(SpinModel::default()),
+                ..Params::default()
+            },
+        ),
     ]
 }
 
@@ -50,7 +59,7 @@ pub struct Variation {
     pub e_ball: f64,
     /// Ball–cushion restitution.
     pub e_cushion: f64,
-    /// Factor on the slide/roll threshold speed.
+    /// Factor on the slide/roll threshold speed (the paper's model; the spin model has none).
     pub threshold: f64,
     /// Perturbation of collision normals.
     pub randomization: Option<Randomization>,
@@ -65,6 +74,17 @@ pub fn vary(params: Params, v: &Variation) -> Params {
             slide_roll_speed: m.slide_roll_speed * v.threshold,
             e_ball: v.e_ball,
             e_cushion: v.e_cushion,
+        }),
+        Model::Spin(m) => Model::Spin(SpinModel {
+            mu_slide: m.mu_slide * v.friction,
+            mu_roll: m.mu_roll * v.friction,
+            mu_spin: m.mu_spin * v.friction,
+            e_ball: v.e_ball,
+            cushion: match m.cushion {
+                CushionModel::Reflect { .. } => CushionModel::Reflect { e: v.e_cushion },
+                CushionModel::Han2005 { mu, .. } => CushionModel::Han2005 { e: v.e_cushion, mu },
+            },
+            ..m
         }),
     };
     Params {
@@ -82,6 +102,12 @@ pub fn scale_friction(params: Params, k: f64) -> Params {
             mu_roll: m.mu_roll * k,
             ..m
         }),
+        Model::Spin(m) => Model::Spin(SpinModel {
+            mu_slide: m.mu_slide * k,
+            mu_roll: m.mu_roll * k,
+            mu_spin: m.mu_spin * k,
+            ..m
+        }),
     };
     Params { model, ..params }
 }
@@ -89,7 +115,10 @@ pub fn scale_friction(params: Params, k: f64) -> Params {
 /// Whether a model's balls ever come to rest by themselves (some friction somewhere).
 pub fn has_friction(params: &Params) -> bool {
     match params.model {
-        Model::Paper(m) => m.mu_roll > 0.0 && params.gravity > 0.0,
+        Model::Paper(m) => m.mu_slide > 0.0 && m.mu_roll > 0.0 && params.gravity > 0.0,
+        Model::Spin(m) => {
+            m.mu_slide > 0.0 && m.mu_roll > 0.0 && m.mu_spin > 0.0 && params.gravity > 0.0
+        }
     }
 }
 
@@ -131,6 +160,22 @@ fn restitution(rng: &mut ChaCha8Rng) -> f64 {
     }
 }
 
+/// A cue tip offset: half the time the centre, otherwise anywhere within 0.45 R of it (inside
+/// the default miscue limit). Only the spin model uses it.
+fn tip(rng: &mut ChaCha8Rng) -> TipOffset {
+    if rng.random_bool(0.5) {
+        return TipOffset::default();
+    }
+    let (a, r) = (
+        rng.random_range(0.0..std::f64::consts::TAU),
+        0.45 * rng.random::<f64>().sqrt(),
+    );
+    TipOffset {
+        side: r * a.cos(),
+        height: r * a.sin(),
+    }
+}
+
 /// The scene for `seed`.
 pub fn scenario(seed: u64) -> Scenario {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
@@ -164,6 +209,12 @@ pub fn scenario(seed: u64) -> Scenario {
     } else {
         Table::scaled(rng.random_range(1.0..3.0))
     };
+    // Pockets as the paper's mouths, or with rounded jaws a ball can rattle between.
+    let table = if rng.random_bool(0.5) {
+        table
+    } else {
+        table.with_jaws(rng.random_range(0.005..0.03))
+    };
     let speed = |rng: &mut ChaCha8Rng| {
         if rng.random_bool(0.2) {
             log_uniform(rng, 1e-9, 100.0)
@@ -188,6 +239,7 @@ pub fn scenario(seed: u64) -> Scenario {
                 } else {
                     speed(&mut rng)
                 },
+                tip: tip(&mut rng),
             };
             ("break", balls, first)
         }
@@ -203,6 +255,7 @@ pub fn scenario(seed: u64) -> Scenario {
             let first = Shot {
                 angle: rng.random_range(-std::f64::consts::PI..std::f64::consts::PI),
                 speed: speed(&mut rng),
+                tip: tip(&mut rng),
             };
             (if moving { "moving" } else { "shot" }, balls, first)
         }
@@ -212,6 +265,7 @@ pub fn scenario(seed: u64) -> Scenario {
         shots.push(Shot {
             angle: rng.random_range(-std::f64::consts::PI..std::f64::consts::PI),
             speed: speed(&mut rng),
+            tip: tip(&mut rng),
         });
     }
     let duration = (!has_friction(&params)).then_some(3.0);

@@ -83,6 +83,46 @@ pub struct Table {
     pub corner_mouth: f64,
     /// Side pocket mouth, metres.
     pub side_mouth: f64,
+    /// How the cushions end at the pocket mouths.
+    #[serde(default)]
+    pub pockets: PocketShape,
+}
+
+/// How the cushions end at the pocket mouths.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum PocketShape {
+    /// The paper's rule (4.2, `HitPocket`): the cushion lines run on across the mouths, and a
+    /// ball that reaches a cushion line inside a mouth is pocketed.
+    #[default]
+    Mouth,
+    /// Cushions stop at the mouths and end in rounded jaws (circular arcs of `radius`, tangent
+    /// to the cushion nose); a ball can rattle between them and is pocketed when its centre
+    /// crosses the pocket opening (the line across the mouth between the cushion noses).
+    Jaws {
+        /// Radius of the rounded cushion end, metres.
+        radius: f64,
+    },
+}
+
+/// A rounded cushion end at a pocket mouth.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Jaw {
+    /// The pocket it guards.
+    pub pocket: Pocket,
+    /// Centre of the arc.
+    pub centre: Vec2,
+}
+
+/// The line across a pocket's opening: `offset + normal · p` is positive on the table side.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Opening {
+    /// The pocket.
+    pub pocket: Pocket,
+    /// Unit normal pointing onto the table.
+    pub normal: Vec2,
+    /// Offset of the line.
+    pub offset: f64,
 }
 
 impl Default for Table {
@@ -118,7 +158,99 @@ impl Table {
             width: 46.0 * INCH,
             corner_mouth: 4.5 * INCH,
             side_mouth: 5.0 * INCH,
+            pockets: PocketShape::Mouth,
         }
+    }
+
+    /// The same table with rounded jaws of `radius` at the pocket mouths.
+    pub fn with_jaws(self, radius: f64) -> Self {
+        Self {
+            pockets: PocketShape::Jaws { radius },
+            ..self
+        }
+    }
+
+    /// The twelve jaws (two per pocket), if the table has them.
+    pub fn jaws(&self) -> Vec<Jaw> {
+        let PocketShape::Jaws { radius: rho } = self.pockets else {
+            return Vec::new();
+        };
+        let (hx, hy, leg, half_side) = (
+            0.5 * self.length,
+            0.5 * self.width,
+            self.corner_leg(),
+            0.5 * self.side_mouth,
+        );
+        let mut out = Vec::with_capacity(12);
+        for (sx, sy) in [(-1.0, 1.0), (-1.0, -1.0), (1.0, 1.0), (1.0, -1.0)] {
+            let pocket = self.corner_at(sx, sy);
+            // Ends of the long and of the short cushion, each arc just outside its nose line.
+            out.push(Jaw {
+                pocket,
+                centre: Vec2::new(sx * (hx - leg), sy * (hy + rho)),
+            });
+            out.push(Jaw {
+                pocket,
+                centre: Vec2::new(sx * (hx + rho), sy * (hy - leg)),
+            });
+        }
+        for (sy, pocket) in [(1.0, Pocket::SideLeft), (-1.0, Pocket::SideRight)] {
+            out.push(Jaw {
+                pocket,
+                centre: Vec2::new(-half_side, sy * (hy + rho)),
+            });
+            out.push(Jaw {
+                pocket,
+                centre: Vec2::new(half_side, sy * (hy + rho)),
+            });
+        }
+        out
+    }
+
+    fn corner_at(&self, sx: f64, sy: f64) -> Pocket {
+        match (sx > 0.0, sy > 0.0) {
+            (false, true) => Pocket::HeadLeft,
+            (false, false) => Pocket::HeadRight,
+            (true, true) => Pocket::FootLeft,
+            (true, false) => Pocket::FootRight,
+        }
+    }
+
+    /// The six pocket openings (used with jaws).
+    pub fn openings(&self) -> [Opening; 6] {
+        let (hx, hy, leg) = (0.5 * self.length, 0.5 * self.width, self.corner_leg());
+        let corner = |sx: f64, sy: f64| {
+            // Through (sx (hx - leg), sy hy) and (sx hx, sy (hy - leg)).
+            let normal = Vec2::new(-sx, -sy) / std::f64::consts::SQRT_2;
+            let offset = (hx - leg + hy) / std::f64::consts::SQRT_2;
+            Opening {
+                pocket: self.corner_at(sx, sy),
+                normal,
+                offset,
+            }
+        };
+        [
+            corner(-1.0, 1.0),
+            corner(-1.0, -1.0),
+            Opening {
+                pocket: Pocket::SideLeft,
+                normal: Vec2::new(0.0, -1.0),
+                offset: hy,
+            },
+            Opening {
+                pocket: Pocket::SideRight,
+                normal: Vec2::new(0.0, 1.0),
+                offset: hy,
+            },
+            corner(1.0, 1.0),
+            corner(1.0, -1.0),
+        ]
+    }
+
+    /// With jaws: does a ball centred at `centre` touching `cushion`'s nose line touch the
+    /// cushion itself (not the gap of a mouth)?
+    pub fn on_cushion(&self, cushion: Cushion, centre: Vec2) -> bool {
+        self.pocket_at(cushion, centre).is_none()
     }
 
     /// The WPA table scaled by `k` in length and width (pocket mouths unchanged).
@@ -142,6 +274,14 @@ impl Table {
             if !(value.is_finite() && value > 0.0) {
                 return Err(TableError::BadDimension { name, value });
             }
+        }
+        if let PocketShape::Jaws { radius } = self.pockets
+            && !(radius.is_finite() && radius > 0.0)
+        {
+            return Err(TableError::BadDimension {
+                name: "jaw radius",
+                value: radius,
+            });
         }
         if self.width <= 2.0 * ball_radius || self.length <= 2.0 * ball_radius {
             return Err(TableError::Inconsistent {

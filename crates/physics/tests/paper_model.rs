@@ -76,11 +76,7 @@ fn slow_ball_rolls_from_the_start_and_stops_after_v_over_mu_r_g() {
 fn two_in_line(params: Params, v: f64, gap: f64) -> Simulation {
     let r = params.ball.radius;
     let balls = [
-        BallSetup {
-            number: 0,
-            position: Vec2::ZERO,
-            velocity: Vec2::new(v, 0.0),
-        },
+        BallSetup::moving(0, Vec2::ZERO, Vec2::new(v, 0.0)),
         BallSetup::at(1, Vec2::new(2.0 * r + gap, 0.0)),
     ];
     Simulation::new(huge_table(), params, &balls).unwrap()
@@ -142,11 +138,7 @@ fn stun_cut_shot_leaves_at_ninety_degrees() {
     // Aim so that the line of centres at contact makes angle phi with the velocity.
     let b = 2.0 * r * phi.sin();
     let balls = [
-        BallSetup {
-            number: 0,
-            position: Vec2::new(-0.5, -b),
-            velocity: Vec2::new(1.0, 0.0),
-        },
+        BallSetup::moving(0, Vec2::new(-0.5, -b), Vec2::new(1.0, 0.0)),
         BallSetup::at(1, Vec2::ZERO),
     ];
     let mut sim = Simulation::new(Table::wpa_8ft(), p, &balls).unwrap();

@@ -99,14 +99,7 @@ fn build(s: &Scene) -> Simulation {
         }
     };
     let mut sim = Simulation::new(table, params, &balls).unwrap();
-    sim.strike(
-        0,
-        Shot {
-            angle: s.angle,
-            speed: s.speed,
-        },
-    )
-    .unwrap();
+    sim.strike(0, Shot::new(s.angle, s.speed)).unwrap();
     sim
 }
 

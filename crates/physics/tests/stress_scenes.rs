@@ -18,9 +18,8 @@ fn sim(table: Table, params: Params, balls: &[BallSetup]) -> Simulation {
 
 fn moving(number: u8, position: Vec2, velocity: Vec2) -> BallSetup {
     BallSetup {
-        number,
-        position,
         velocity,
+        ..BallSetup::at(number, position)
     }
 }
 
@@ -35,7 +34,7 @@ fn tight_rack_with_every_ball_exactly_touching_breaks_without_overlap() {
                     let t = Table::wpa_8ft();
                     let balls = rack.layout(&t, &p.ball);
                     let mut s = sim(t, p, &balls);
-                    s.strike(0, Shot { angle, speed }).unwrap();
+                    s.strike(0, Shot::new(angle, speed)).unwrap();
                     checked_to_rest(&mut s, &format!("{name} {rack:?} {speed} m/s {angle} rad"));
                 }
             }
@@ -59,19 +58,12 @@ fn newtons_cradle_lines_of_2_to_15_balls_pass_the_velocity_along() {
                 balls[0].position.x -= 0.3;
                 let what = format!("{name}, {n} balls, friction x{friction}");
                 let mut s = sim(Table::wpa_8ft(), p, &balls);
-                s.strike(
-                    0,
-                    Shot {
-                        angle: 0.0,
-                        speed: 1.0,
-                    },
-                )
-                .unwrap();
+                s.strike(0, Shot::new(0.0, 1.0)).unwrap();
                 if friction == 0.0 {
                     // Up to just before the last ball reaches the foot cushion.
                     checked_for(&mut s, 0.5, &what);
-                    let Model::Paper(m) = p.model;
-                    if m.e_ball == 1.0 {
+                    // The paper's exact exchange (the spin model's balls slide and throw).
+                    if matches!(p.model, Model::Paper(m) if m.e_ball == 1.0) {
                         let v: Vec<f64> = s.balls().map(|b| b.velocity.x).collect();
                         let mut want = vec![0.0; n];
                         want[n - 1] = 1.0;
@@ -136,7 +128,7 @@ fn ball_hitting_two_touching_balls_at_exactly_the_same_time() {
                 BallSetup::at(2, Vec2::new(0.2, -r())),
             ];
             let mut s = sim(Table::wpa_8ft(), p, &balls);
-            s.strike(0, Shot { angle: 0.0, speed }).unwrap();
+            s.strike(0, Shot::new(0.0, speed)).unwrap();
             checked_to_rest(&mut s, &format!("{name} {speed} m/s"));
             let first: Vec<&Event> = s
                 .history()
@@ -162,7 +154,7 @@ fn symmetric_breaks_dead_straight_into_every_rack() {
             for speed in [4.0, 9.0, 13.0] {
                 let t = Table::wpa_8ft();
                 let mut s = sim(t, p, &rack.layout(&t, &p.ball));
-                s.strike(0, Shot { angle: 0.0, speed }).unwrap();
+                s.strike(0, Shot::new(0.0, speed)).unwrap();
                 let st = checked_to_rest(&mut s, &format!("{name} {rack:?} {speed} m/s"));
                 assert!(st.events > 20);
             }
@@ -186,7 +178,7 @@ fn ball_rolling_along_a_cushion_stays_on_the_table() {
                     (Vec2::new(-b.x, -0.2), -FRAC_PI_2 + tilt),
                 ] {
                     let mut s = sim(t, p, &[BallSetup::at(0, pos)]);
-                    s.strike(0, Shot { angle, speed }).unwrap();
+                    s.strike(0, Shot::new(angle, speed)).unwrap();
                     checked_to_rest(
                         &mut s,
                         &format!("{name} at {pos:?} angle {angle} {speed} m/s"),
@@ -229,14 +221,7 @@ fn pocket_jaws_hit_at_every_angle_never_let_a_ball_escape() {
                         continue;
                     }
                     let mut s = sim(t, p, &[BallSetup::at(0, start)]);
-                    s.strike(
-                        0,
-                        Shot {
-                            angle: into.angle(),
-                            speed: 2.5,
-                        },
-                    )
-                    .unwrap();
+                    s.strike(0, Shot::new(into.angle(), 2.5)).unwrap();
                     checked_to_rest(&mut s, &format!("{name} jaw {edge:?}+{off} dir {k}"));
                 }
             }
@@ -257,14 +242,7 @@ fn speeds_from_1e_9_to_100_metres_per_second() {
                 }
                 for rack in [Rack::FifteenBall, Rack::Tight, Rack::PaperDefault] {
                     let mut s = sim(t, p, &rack.layout(&t, &p.ball));
-                    s.strike(
-                        0,
-                        Shot {
-                            angle: 0.003,
-                            speed,
-                        },
-                    )
-                    .unwrap();
+                    s.strike(0, Shot::new(0.003, speed)).unwrap();
                     checked_to_rest(&mut s, &format!("{name} {rack:?} {speed} m/s"));
                 }
             }
@@ -280,25 +258,11 @@ fn friction_zero_and_friction_large() {
     for (name, p) in models() {
         for rack in [Rack::FifteenBall, Rack::Tight] {
             let mut s = sim(t, with_friction(p, 0.0), &rack.layout(&t, &p.ball));
-            s.strike(
-                0,
-                Shot {
-                    angle: 0.01,
-                    speed: 6.0,
-                },
-            )
-            .unwrap();
+            s.strike(0, Shot::new(0.01, 6.0)).unwrap();
             let st = checked_for(&mut s, 10.0, &format!("{name} frictionless {rack:?}"));
             assert!(st.events > 50, "{name} {rack:?}: {st:?}");
             let mut s = sim(t, with_friction(p, 100.0), &rack.layout(&t, &p.ball));
-            s.strike(
-                0,
-                Shot {
-                    angle: 0.01,
-                    speed: 30.0,
-                },
-            )
-            .unwrap();
+            s.strike(0, Shot::new(0.01, 30.0)).unwrap();
             checked_to_rest(&mut s, &format!("{name} friction x100 {rack:?}"));
         }
     }
@@ -321,21 +285,14 @@ fn balls_within_1e_15_m_of_a_cushion() {
                 for k in 0..12 {
                     let angle = k as f64 * TAU / 12.0;
                     let mut s = sim(t, p, &[BallSetup::at(0, pos)]);
-                    s.strike(0, Shot { angle, speed: 1.5 }).unwrap();
+                    s.strike(0, Shot::new(angle, 1.5)).unwrap();
                     checked_to_rest(&mut s, &format!("{name} {pos:?} angle {angle}"));
                 }
                 // Another ball drives it into the cushion, head-on and obliquely.
                 for slant in [0.0, 0.3 * r(), 1.2 * r()] {
                     let other = pos + n * 0.3 + n.perp() * slant;
                     let mut s = sim(t, p, &[BallSetup::at(0, other), BallSetup::at(1, pos)]);
-                    s.strike(
-                        0,
-                        Shot {
-                            angle: (-n).angle(),
-                            speed: 3.0,
-                        },
-                    )
-                    .unwrap();
+                    s.strike(0, Shot::new((-n).angle(), 3.0)).unwrap();
                     checked_to_rest(&mut s, &format!("{name} {pos:?} hit with slant {slant}"));
                 }
             }
@@ -375,15 +332,7 @@ fn advance_in_slices_matches_run_to_rest_in_stress_scenes() {
     let t = Table::wpa_8ft();
     for (name, p) in models() {
         let mut whole = sim(t, p, &Rack::Tight.layout(&t, &p.ball));
-        whole
-            .strike(
-                0,
-                Shot {
-                    angle: 0.0,
-                    speed: 11.0,
-                },
-            )
-            .unwrap();
+        whole.strike(0, Shot::new(0.0, 11.0)).unwrap();
         let mut sliced = whole.clone();
         checked_to_rest(&mut whole, name);
         for dt in [1e-4, 0.0071, 0.1] {

@@ -1,6 +1,6 @@
 //! Ball–ball time of impact: the smallest non-negative root of a quartic.
 
-use super::{Kinematics, RESTING_DEPTH, RESTING_SPEED, SEPARATION};
+use super::{Kinematics, SEPARATION, resting_speed};
 use crate::ball::Segment;
 use crate::math::Vec2;
 use crate::poly::{ContactTolerance, Poly, first_contact, root_bound};
@@ -36,6 +36,12 @@ pub fn ball_ball(
         Kinematics::Exact => b.acceleration - a.acceleration,
         Kinematics::Linear => Vec2::ZERO,
     };
+    contact_quartic(dp, dv, da, contact, horizon)
+}
+
+/// First time within `horizon` at which `|dp + dv τ + da τ²/2|` comes down to `contact`
+/// (a contact that starts; see [`first_contact`]).
+fn contact_quartic(dp: Vec2, dv: Vec2, da: Vec2, contact: f64, horizon: f64) -> Option<f64> {
     let f = Poly::new([
         dp.length_squared() - contact * contact,
         2.0 * dp.dot(dv),
@@ -44,12 +50,35 @@ pub fn ball_ball(
         0.25 * da.length_squared(),
     ]);
     let h = horizon.min(root_bound(&f));
-    // f' = 2 d · d' ≈ 2 (2R) × approach speed, so the speed tolerances scale by 4R.
+    // f' = 2 d · d' ≈ 2 (contact) × approach speed, so the speed tolerances scale by it.
     let tol = ContactTolerance {
-        slack: 2.0 * contact * RESTING_SPEED,
+        slack: 2.0 * contact * resting_speed(da.length()),
         separation: 2.0 * contact * SEPARATION,
-        // |d|^2 - (2R)^2 at a depth of RESTING_DEPTH, to first order.
-        depth: 2.0 * contact * RESTING_DEPTH,
     };
     first_contact(&f, h, tol)
+}
+
+/// Time after `t` at which the ball of `seg` touches a fixed circle (a rounded pocket jaw)
+/// centred at `centre`, their centres then `contact` apart: the same quartic as two balls.
+pub fn ball_jaw(
+    seg: &Segment,
+    t: f64,
+    centre: Vec2,
+    contact: f64,
+    horizon: f64,
+    kin: Kinematics,
+) -> Option<f64> {
+    if !seg.state.motion.is_moving() {
+        return None;
+    }
+    let dp = seg.position_at(t) - centre;
+    let reach = seg.reach(t, horizon) * (1.0 + 1e-12) + 1e-12 + contact;
+    if dp.length_squared() > reach * reach {
+        return None;
+    }
+    let a = match kin {
+        Kinematics::Exact => seg.acceleration,
+        Kinematics::Linear => Vec2::ZERO,
+    };
+    contact_quartic(dp, seg.velocity_at(t), a, contact, horizon)
 }

@@ -1,6 +1,6 @@
 //! Ball–cushion time of impact: the smallest valid root of a quadratic.
 
-use super::{Kinematics, RESTING_DEPTH, RESTING_SPEED, SEPARATION};
+use super::{Kinematics, SEPARATION, resting_speed};
 use crate::ball::Segment;
 use crate::poly::{ContactTolerance, Poly, first_contact, root_bound};
 use crate::table::Cushion;
@@ -19,7 +19,19 @@ pub fn ball_cushion(
     horizon: f64,
     kin: Kinematics,
 ) -> Option<f64> {
-    let n = cushion.inward_normal();
+    ball_line(seg, t, cushion.inward_normal(), limit, horizon, kin)
+}
+
+/// Time after `t` at which the centre of the ball of `seg` reaches the line where
+/// `offset + n·p = 0`, coming from the side where it is positive, within `horizon` seconds.
+pub fn ball_line(
+    seg: &Segment,
+    t: f64,
+    n: crate::Vec2,
+    offset: f64,
+    horizon: f64,
+    kin: Kinematics,
+) -> Option<f64> {
     let p = seg.position_at(t);
     let v = seg.velocity_at(t);
     let a = match kin {
@@ -31,12 +43,11 @@ pub fn ball_cushion(
     if vn >= 0.0 && an >= 0.0 {
         return None;
     }
-    let gap = Poly::new([limit + n.dot(p), vn, 0.5 * an, 0.0, 0.0]);
+    let gap = Poly::new([offset + n.dot(p), vn, 0.5 * an, 0.0, 0.0]);
     let h = horizon.min(root_bound(&gap));
     let tol = ContactTolerance {
-        slack: RESTING_SPEED,
+        slack: resting_speed(an.abs()),
         separation: SEPARATION,
-        depth: RESTING_DEPTH,
     };
     first_contact(&gap, h, tol)
 }

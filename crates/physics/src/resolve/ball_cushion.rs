@@ -1,6 +1,6 @@
 //! Ball–cushion collision of the paper's model (3.1): reflection about the cushion normal.
 
-use crate::math::Vec2;
+use crate::math::{Vec2, Vec3};
 
 /// Velocity after a cushion contact with unit inward normal `n` and restitution `e`:
 /// `R = v − (1 + e) n (v·n)`; `e = 1` is the paper's mirror reflection `v − 2 n (v·n)`.
@@ -10,21 +10,56 @@ pub fn reflect(v: Vec2, n: Vec2, e: f64) -> Option<Vec2> {
     (vn < 0.0).then(|| v - n * ((1.0 + e) * vn))
 }
 
-/// Velocity after a resting contact with a cushion of unit inward normal `n`: touching,
-/// approaching slowly or pressed into it by an acceleration `pressing` (m/s^2, `>= 0`).
-/// Elastic, leaving at no less than `sqrt(2 pressing hop)`, the extra normal speed taken from
-/// the tangential speed so the speed never rises (see [`super::resting_contact`]).
-pub fn resting_reflect(v: Vec2, n: Vec2, pressing: f64, hop: f64) -> Vec2 {
-    let t = n.perp();
-    let (vn, vt) = (v.dot(n), v.dot(t));
-    let want = (-vn).max((2.0 * pressing.max(0.0) * hop).sqrt());
-    if vn >= want {
-        return v;
+/// Han (2005), "Dynamics in carom and three cushion billiards" (J. Mech. Sci. Tech. 19):
+/// the cushion touches the ball at its nose, at angle `theta` above the ball's centre
+/// (`sin theta = h/R - 1`). The compression impulse along the contact normal is
+/// `(1 + e) m c`, with `c` the normal approach speed there; the tangential impulse opposes the
+/// slip `s` of the contact point, sticking if `|s| / A <= mu P_n` (`A = 7/(2m)`), sliding
+/// with `mu P_n` otherwise (Han's eqs. 14–22). Impulses are applied to `v` (in the plane) and
+/// to `w`. `n` is the unit inward normal, `height` the nose height above the cloth.
+/// Returns `None` if the ball is not moving into the cushion.
+pub fn han_2005(
+    v: Vec2,
+    w: Vec3,
+    n: Vec2,
+    e: f64,
+    mu: f64,
+    radius: f64,
+    height: f64,
+) -> Option<(Vec2, Vec3)> {
+    // Cushion frame: x towards the cushion, y along it, z up (right-handed).
+    let (ex, ey) = (-n, (-n).perp());
+    let (vx, vy) = (v.dot(ex), v.dot(ey));
+    if vx <= 0.0 {
+        return None;
     }
-    let speed2 = vn * vn + vt * vt;
-    let vn2 = want.min(speed2.sqrt());
-    let vt2 = vt.signum() * (speed2 - vn2 * vn2).max(0.0).sqrt().min(vt.abs());
-    v + n * (vn2 - vn) + t * (vt2 - vt)
+    let (wx, wy, wz) = (w.xy().dot(ex), w.xy().dot(ey), w.z);
+    let sin_t = (height / radius - 1.0).clamp(-1.0, 1.0);
+    let cos_t = (1.0 - sin_t * sin_t).sqrt();
+    // Per unit mass throughout (m = 1): A = 7/2, B = 1.
+    let sx = vx * sin_t + radius * wy;
+    let sy = -vy - radius * wz * cos_t + radius * wx * sin_t;
+    let c = vx * cos_t;
+    let pz = (1.0 + e) * c;
+    let slip = (sx * sx + sy * sy).sqrt();
+    let (px, py) = if slip / 3.5 <= mu * pz {
+        (sx / 3.5, sy / 3.5)
+    } else {
+        (mu * pz * sx / slip, mu * pz * sy / slip)
+    };
+    // Back from the contact frame to the cushion frame.
+    let big_x = -px * sin_t - pz * cos_t;
+    let big_y = py;
+    let big_z = px * cos_t - pz * sin_t;
+    let k = 2.5 / radius; // R / I per unit mass
+    let (vx2, vy2) = (vx + big_x, vy + big_y);
+    let wx2 = wx - k * big_y * sin_t;
+    let wy2 = wy + k * (big_x * sin_t - big_z * cos_t);
+    let wz2 = wz + k * big_y * cos_t;
+    Some((
+        ex * vx2 + ey * vy2,
+        (ex * wx2 + ey * wy2).extend() + Vec3::new(0.0, 0.0, wz2),
+    ))
 }
 
 #[cfg(test)]

@@ -3,6 +3,7 @@
 
 mod ball_ball;
 mod ball_cushion;
+pub mod cue;
 
-pub use ball_ball::{equal_mass_restitution, resting_contact};
-pub use ball_cushion::{reflect, resting_reflect};
+pub use ball_ball::{equal_mass_restitution, frictional_spheres};
+pub use ball_cushion::{han_2005, reflect};

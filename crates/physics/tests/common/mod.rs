@@ -10,16 +10,7 @@ pub fn huge_table() -> Table {
 
 /// One ball at the origin with velocity `v`.
 pub fn one_ball(table: Table, params: Params, v: Vec2) -> Simulation {
-    Simulation::new(
-        table,
-        params,
-        &[BallSetup {
-            number: 0,
-            position: Vec2::ZERO,
-            velocity: v,
-        }],
-    )
-    .unwrap()
+    Simulation::new(table, params, &[BallSetup::moving(0, Vec2::ZERO, v)]).unwrap()
 }
 
 /// Default parameters with the paper model `model`.
@@ -66,15 +57,24 @@ pub fn assert_no_overlap_or_escape(sim: &Simulation, tol: f64) {
                 e.time,
                 s.position
             );
-            for (j, o) in states.iter().enumerate().skip(i + 1) {
-                if o.motion.on_table() {
-                    let overlap = 2.0 * r - (o.position - s.position).length();
-                    assert!(
-                        overlap <= tol,
-                        "balls {i},{j} overlap by {overlap} at t = {}",
-                        e.time
-                    );
+        }
+        // Sweep along x: only balls within 2R in x can overlap.
+        let mut order: Vec<usize> = (0..states.len())
+            .filter(|&i| states[i].motion.on_table())
+            .collect();
+        order.sort_by(|&i, &j| states[i].position.x.total_cmp(&states[j].position.x));
+        for (k, &i) in order.iter().enumerate() {
+            for &j in &order[k + 1..] {
+                let (s, o) = (&states[i], &states[j]);
+                if o.position.x - s.position.x > 2.0 * r {
+                    break;
                 }
+                let overlap = 2.0 * r - (o.position - s.position).length();
+                assert!(
+                    overlap <= tol,
+                    "balls {i},{j} overlap by {overlap} at t = {}",
+                    e.time
+                );
             }
         }
     }
@@ -95,14 +95,7 @@ pub fn break_shot(rack: Rack, speed: f64, params: Params) -> Simulation {
     let balls = rack.layout(&table, &params.ball);
     let mut sim = Simulation::new(table, params, &balls).unwrap();
     // Slightly off the centre line so the break is not perfectly symmetric.
-    sim.strike(
-        0,
-        Shot {
-            angle: 0.002,
-            speed,
-        },
-    )
-    .unwrap();
+    sim.strike(0, Shot::new(0.002, speed)).unwrap();
     sim
 }
 
@@ -132,4 +125,15 @@ pub fn checked_for(sim: &mut Simulation, seconds: f64, what: &str) -> check::Sta
 /// `params` with every friction coefficient multiplied by `k` (0: frictionless).
 pub fn with_friction(params: Params, k: f64) -> Params {
     billiards_physics::soak::scale_friction(params, k)
+}
+
+/// A ball rolling without slipping at velocity `v` (its spin matches `v`; the paper's model
+/// ignores the spin and rolls it by its speed).
+pub fn rolling(number: u8, position: Vec2, v: Vec2) -> BallSetup {
+    let r = BallSpec::default().radius;
+    BallSetup {
+        velocity: v,
+        spin: Vec3::new(-v.y / r, v.x / r, 0.0),
+        ..BallSetup::at(number, position)
+    }
 }
