@@ -19,7 +19,7 @@
 //! Stability invariants hold for [`crate::Prediction::Exact`] only: the paper's linear
 //! prediction is a deliberately inexact comparison mode.
 
-use crate::ball::{BallId, BallState};
+use crate::ball::{BallId, BallState, Segment};
 use crate::event::{Event, EventKind, Shot};
 use crate::math::Vec2;
 use crate::sim::{SetupError, Simulation};
@@ -231,7 +231,10 @@ pub fn deepest_overlap(states: &[BallState], radius: f64) -> Option<(BallId, Bal
     worst
 }
 
-/// Drives a simulation event by event and checks every invariant of the module docs.
+/// Drives a simulation and checks every invariant of the module docs at every event it
+/// records. The checks replay the simulation's [`crate::History`] (each event and the segment
+/// each ball it names continues on), so they see exactly what a recording or the game sees,
+/// whether the simulation is driven event by event or by [`Simulation::advance_to`].
 #[derive(Clone, Debug)]
 pub struct Monitor {
     tol: Tolerances,
@@ -240,11 +243,21 @@ pub struct Monitor {
     burst: usize,
     /// Kinetic energy just after the last event (or at the start).
     energy: f64,
+    /// Events of the history checked so far.
+    seen: usize,
+    /// Per ball: index of its segment in force in its history track, and that segment.
+    at: Vec<usize>,
+    work: Vec<Segment>,
 }
 
 impl Monitor {
     /// Starts monitoring `sim` from its current state, which is checked at once.
     pub fn new(sim: &Simulation, tol: Tolerances) -> Result<Self, Violation> {
+        let h = sim.history();
+        let at: Vec<usize> = (0..sim.ball_count())
+            .map(|i| h.track(i).len() - 1)
+            .collect();
+        let work: Vec<Segment> = (0..sim.ball_count()).map(|i| *sim.segment(i)).collect();
         let states: Vec<BallState> = sim.balls().collect();
         let mut m = Self {
             tol,
@@ -255,6 +268,9 @@ impl Monitor {
             last_time: sim.time(),
             burst: 0,
             energy: 0.0,
+            seen: h.events().len(),
+            at,
+            work,
         };
         m.check_states(sim, &states, sim.time(), "after")?;
         m.energy = m.energy_of(sim, &states);
@@ -269,6 +285,13 @@ impl Monitor {
     fn energy_of(&self, sim: &Simulation, states: &[BallState]) -> f64 {
         let b = sim.params().ball;
         kinetic_energy(states, b.mass, b.radius)
+    }
+
+    fn states_at(&self, t: f64) -> Vec<BallState> {
+        self.work
+            .iter()
+            .map(|s| s.state_at(t.max(s.start)))
+            .collect()
     }
 
     /// NaN, escape and overlap checks on one snapshot.
@@ -319,19 +342,24 @@ impl Monitor {
     }
 
     /// Energy that rounding alone can add when velocities are evaluated at `t`: a velocity
-    /// `v0 + a tau` is good to about `4 eps (|v0| + |a| (tau + 2 |t|))`, which is large against a small
-    /// final speed (a ball set to exactly its slide/roll threshold after decelerating from a
-    /// much higher speed, for instance).
+    /// `v0 + a tau` is good to about `4 eps (|v0| + |a| (tau + 2 |t|))`, which is large against
+    /// a small final speed (a ball set to exactly its slide/roll threshold after decelerating
+    /// from a much higher speed, for instance).
     fn rounding_energy(&self, sim: &Simulation, t: f64) -> f64 {
         let m = sim.params().ball.mass;
-        (0..sim.ball_count())
-            .map(|i| sim.segment(i))
+        let r = sim.params().ball.radius;
+        self.work
+            .iter()
             .filter(|s| s.state.motion.is_moving())
             .map(|s| {
                 // The elapsed time itself is only known to an ulp or so of the absolute time.
                 let tau = (t - s.start).max(0.0);
-                let scale = s.speed + s.accel * (tau + 2.0 * t.abs());
-                m * s.velocity_at(t).length() * 4.0 * f64::EPSILON * scale
+                let slop = 4.0 * f64::EPSILON * (tau + 2.0 * t.abs());
+                let v = s.speed + s.accel * tau;
+                let dv = 4.0 * f64::EPSILON * s.speed + s.accel * slop;
+                let w = s.state.angular_velocity.length() + s.angular_acceleration.length() * tau;
+                let dw = 4.0 * f64::EPSILON * w + s.angular_acceleration.length() * slop;
+                m * v * dv + 0.4 * m * r * r * w * dw
             })
             .sum()
     }
@@ -359,10 +387,114 @@ impl Monitor {
         Ok(())
     }
 
-    /// Processes the next event of `sim` (like [`Simulation::step_event`]) and checks it;
-    /// `Ok(None)` when nothing is pending.
+    /// Checks every event `sim` has recorded since the last check.
+    pub fn catch_up(&mut self, sim: &Simulation) -> Result<(), Violation> {
+        let h = sim.history();
+        let n = self.work.len();
+        while self.seen < h.events().len() {
+            let event = h.events()[self.seen];
+            let t = event.time;
+            if t.is_nan() || t < self.last_time {
+                return Err(Violation::TimeBack {
+                    before: self.last_time,
+                    after: t,
+                });
+            }
+            // Between the previous event and this one: overlaps, and energy never rising.
+            let t0 = self.last_time;
+            let samples = self.tol.interior_samples;
+            for k in 1..=samples {
+                let ts = t0 + (t - t0) * k as f64 / (samples + 1) as f64;
+                if ts > t0 && ts < t {
+                    let states = self.states_at(ts);
+                    self.check_states(sim, &states, ts, "between")?;
+                }
+            }
+            let before = self.states_at(t);
+            self.check_states(sim, &before, t, "before")?;
+            let e_before = self.energy_of(sim, &before);
+            let rounding = self.rounding_energy(sim, t);
+            self.energy_check(self.energy, e_before, rounding, t, || {
+                "between events".into()
+            })?;
+
+            // The segments the event's balls continue on.
+            if event.kind == EventKind::ParamsChanged {
+                // Every ball whose segment changed continues on a new one from this instant.
+                for i in 0..n {
+                    let track = h.track(i);
+                    if self.at[i] + 1 < track.len() && track[self.at[i] + 1].start == t {
+                        self.at[i] += 1;
+                        self.work[i] = track[self.at[i]];
+                    }
+                }
+            } else {
+                for i in event.kind.balls() {
+                    self.at[i] += 1;
+                    self.work[i] = h.track(i)[self.at[i]];
+                }
+            }
+            let after = self.states_at(t);
+            self.check_states(sim, &after, t, "after")?;
+            for ball in event.kind.balls() {
+                let by = (after[ball].position - before[ball].position).length();
+                if by > self.tol.jump && !matches!(event.kind, EventKind::Placed { .. }) {
+                    return Err(Violation::Jump {
+                        time: t,
+                        kind: event.kind,
+                        ball,
+                        by,
+                    });
+                }
+            }
+            let e_after = self.energy_of(sim, &after);
+            let input = matches!(
+                event.kind,
+                EventKind::Strike { .. } | EventKind::Placed { .. } | EventKind::ParamsChanged
+            );
+            if !input {
+                self.energy_check(e_before, e_after, rounding, t, || {
+                    format!("at {:?}", event.kind)
+                })?;
+            }
+            if let EventKind::BallBall { a, b } = event.kind {
+                let p0 = before[a].velocity + before[b].velocity;
+                let p1 = after[a].velocity + after[b].velocity;
+                let scale = before[a].velocity.length() + before[b].velocity.length();
+                let change = (p1 - p0).length() / scale.max(f64::MIN_POSITIVE);
+                self.stats.worst_momentum = self.stats.worst_momentum.max(change);
+                if change > self.tol.momentum {
+                    return Err(Violation::Momentum {
+                        time: t,
+                        a,
+                        b,
+                        change,
+                    });
+                }
+            }
+            if input {
+                // A strike is not part of the shot's chain of events.
+            } else if self.burst > 0 && t - self.last_time <= self.tol.burst_window {
+                self.burst += 1;
+            } else {
+                self.burst = 1;
+            }
+            self.stats.longest_burst = self.stats.longest_burst.max(self.burst);
+            if !input {
+                self.stats.events += 1;
+            }
+            self.stats.time = t;
+            self.last_time = t;
+            self.energy = e_after;
+            self.seen += 1;
+        }
+        Ok(())
+    }
+
+    /// Processes the next event of `sim` ([`Simulation::step_event`]) and checks it; `Ok(None)`
+    /// when nothing is pending.
     pub fn step(&mut self, sim: &mut Simulation) -> Result<Option<Event>, Violation> {
-        let Some(t) = sim.next_event_time() else {
+        let Some(event) = sim.step_event() else {
             if let Some(ball) = (0..sim.ball_count()).find(|&i| sim.ball(i).motion.is_moving()) {
                 return Err(Violation::MovingForever {
                     time: sim.time(),
@@ -371,88 +503,7 @@ impl Monitor {
             }
             return Ok(None);
         };
-        if t.is_nan() || t < self.last_time {
-            return Err(Violation::TimeBack {
-                before: self.last_time,
-                after: t,
-            });
-        }
-        let n = sim.ball_count();
-        // Between the previous event and this one: overlaps, and energy never rising.
-        let t0 = sim.time();
-        let samples = self.tol.interior_samples;
-        for k in 1..=samples {
-            let ts = t0 + (t - t0) * k as f64 / (samples + 1) as f64;
-            if ts > t0 && ts < t {
-                let states: Vec<BallState> = (0..n).map(|i| sim.segment(i).state_at(ts)).collect();
-                self.check_states(sim, &states, ts, "between")?;
-            }
-        }
-        let before: Vec<BallState> = (0..n).map(|i| sim.segment(i).state_at(t)).collect();
-        self.check_states(sim, &before, t, "before")?;
-        let e_before = self.energy_of(sim, &before);
-        let rounding = self.rounding_energy(sim, t);
-        self.energy_check(self.energy, e_before, rounding, t, || {
-            "between events".into()
-        })?;
-
-        let event = sim
-            .step_event()
-            .expect("an event was pending, so one is processed");
-        if event.time.is_nan() || event.time < self.last_time {
-            return Err(Violation::TimeBack {
-                before: self.last_time,
-                after: event.time,
-            });
-        }
-        let after: Vec<BallState> = sim.balls().collect();
-        self.check_states(sim, &after, event.time, "after")?;
-        for ball in event.kind.balls() {
-            let by = (after[ball].position - before[ball].position).length();
-            if by > self.tol.jump && !matches!(event.kind, EventKind::Placed { .. }) {
-                return Err(Violation::Jump {
-                    time: event.time,
-                    kind: event.kind,
-                    ball,
-                    by,
-                });
-            }
-        }
-        let e_after = self.energy_of(sim, &after);
-        let input = matches!(
-            event.kind,
-            EventKind::Strike { .. } | EventKind::Placed { .. } | EventKind::ParamsChanged
-        );
-        if !input {
-            self.energy_check(e_before, e_after, rounding, event.time, || {
-                format!("at {:?}", event.kind)
-            })?;
-        }
-        if let EventKind::BallBall { a, b } = event.kind {
-            let p0 = before[a].velocity + before[b].velocity;
-            let p1 = after[a].velocity + after[b].velocity;
-            let scale = before[a].velocity.length() + before[b].velocity.length();
-            let change = (p1 - p0).length() / scale.max(f64::MIN_POSITIVE);
-            self.stats.worst_momentum = self.stats.worst_momentum.max(change);
-            if change > self.tol.momentum {
-                return Err(Violation::Momentum {
-                    time: event.time,
-                    a,
-                    b,
-                    change,
-                });
-            }
-        }
-        if self.stats.events > 0 && event.time - self.last_time <= self.tol.burst_window {
-            self.burst += 1;
-        } else {
-            self.burst = 1;
-        }
-        self.stats.longest_burst = self.stats.longest_burst.max(self.burst);
-        self.stats.events += 1;
-        self.stats.time = event.time;
-        self.last_time = event.time;
-        self.energy = e_after;
+        self.catch_up(sim)?;
         Ok(Some(event))
     }
 
@@ -464,9 +515,8 @@ impl Monitor {
         shot: Shot,
     ) -> Result<(), SetupError> {
         sim.strike(ball, shot)?;
-        let states: Vec<BallState> = sim.balls().collect();
-        self.energy = self.energy_of(sim, &states);
-        self.last_time = sim.time();
+        self.catch_up(sim)
+            .expect("a strike breaks no invariant by itself");
         Ok(())
     }
 
@@ -490,33 +540,26 @@ impl Monitor {
         }
     }
 
-    /// Runs `sim` up to absolute time `t` (for scenes that never rest, such as frictionless
-    /// ones), checking every event; at most `params().max_events` events in this call, as
-    /// [`Simulation::advance_to`]. The clock ends at `t`.
+    /// Runs `sim` up to absolute time `t` with [`Simulation::advance_to`] (for scenes that never
+    /// rest, such as frictionless ones), then checks every event it processed and the state at
+    /// `t`.
     pub fn run_until(&mut self, sim: &mut Simulation, t: f64) -> Result<Stats, Violation> {
-        let cap = sim.params().max_events;
-        let mut count = 0;
-        while sim.next_event_time().is_some_and(|te| te <= t) {
-            if count == cap {
-                return Err(Violation::EventCap {
-                    events: count,
-                    cap,
-                    time: sim.time(),
-                });
-            }
-            self.step(sim)?;
-            count += 1;
+        let advanced = sim.advance_to(t);
+        self.catch_up(sim)?;
+        if let Err(crate::SimError::EventCap { cap, time }) = advanced {
+            return Err(Violation::EventCap {
+                events: cap,
+                cap,
+                time,
+            });
         }
-        // The state at `t` itself, after the last event.
-        let states: Vec<BallState> = (0..sim.ball_count())
-            .map(|i| sim.segment(i).state_at(t.max(sim.segment(i).start)))
-            .collect();
+        let states = self.states_at(t);
         self.check_states(sim, &states, t, "between")?;
         let e = self.energy_of(sim, &states);
         let rounding = self.rounding_energy(sim, t);
         self.energy_check(self.energy, e, rounding, t, || "between events".into())?;
         self.energy = e;
-        sim.advance_to(t).expect("no event is left before t");
+        self.last_time = t;
         self.stats.time = t;
         Ok(self.stats)
     }

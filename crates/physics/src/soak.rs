@@ -318,28 +318,30 @@ pub fn run_scenario_traced(
             .strike(&mut sim, ball, *shot)
             .expect("a valid shot on a ball in play");
         let before = monitor.stats().events;
-        let until = s.duration.map_or(f64::INFINITY, |d| sim.time() + d);
-        let mut count = 0;
-        while sim.next_event_time().is_some_and(|t| t <= until) {
-            if count == s.params.max_events {
-                return Err(Violation::EventCap {
-                    events: count,
-                    cap: count,
-                    time: sim.time(),
-                });
+        let seen = sim.history().events().len();
+        match s.duration {
+            None => {
+                let mut count = 0;
+                while let Some(e) = monitor.step(&mut sim)? {
+                    trace(&e);
+                    count += 1;
+                    if count == s.params.max_events && sim.next_event_time().is_some() {
+                        return Err(Violation::EventCap {
+                            events: count,
+                            cap: count,
+                            time: sim.time(),
+                        });
+                    }
+                }
             }
-            if let Some(e) = monitor.step(&mut sim)? {
-                trace(&e);
+            Some(d) => {
+                let until = sim.time() + d;
+                let r = monitor.run_until(&mut sim, until);
+                for e in &sim.history().events()[seen..] {
+                    trace(e);
+                }
+                r?;
             }
-            count += 1;
-        }
-        if until.is_finite() {
-            monitor.run_until(&mut sim, until)?;
-        } else if let Some(ball) = (0..sim.ball_count()).find(|&i| sim.ball(i).motion.is_moving()) {
-            return Err(Violation::MovingForever {
-                time: sim.time(),
-                ball,
-            });
         }
         stats.shots += 1;
         stats.most_events = stats.most_events.max(monitor.stats().events - before);
