@@ -23,6 +23,7 @@ use crate::ball::{BallId, BallState, Segment};
 use crate::event::{Event, EventKind, Shot};
 use crate::math::Vec2;
 use crate::sim::{SetupError, Simulation};
+use crate::table::{Cushion, PocketShape, Table};
 
 /// How much rounding each invariant allows.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -206,6 +207,46 @@ pub fn kinetic_energy(states: &[BallState], mass: f64, radius: f64) -> f64 {
         .sum()
 }
 
+/// How far (metres) a ball centred at `p` is where no ball in play may be; zero or negative
+/// when it is fine. Inside the cushion lines (`Table::centre_bounds`) everywhere; on a table
+/// with jaws also beyond them inside a pocket mouth, on the table side of the pocket's opening
+/// and clear of its jaws.
+pub fn outside_by(table: &Table, radius: f64, p: Vec2) -> f64 {
+    let b = table.centre_bounds(radius);
+    let by = (p.x.abs() - b.x).max(p.y.abs() - b.y);
+    let PocketShape::Jaws { radius: rho } = table.pockets else {
+        return by;
+    };
+    if by <= 0.0 {
+        return by;
+    }
+    // Beyond a cushion line: only inside a mouth, where that cushion has no nose.
+    let beyond = [
+        (Cushion::Head, -p.x - b.x),
+        (Cushion::Foot, p.x - b.x),
+        (Cushion::Left, p.y - b.y),
+        (Cushion::Right, -p.y - b.y),
+    ];
+    let mut worst = f64::NEG_INFINITY;
+    for (c, d) in beyond {
+        if d > 0.0 {
+            match table.pocket_at(c, p) {
+                Some(pocket) => {
+                    let o = table.openings().into_iter().find(|o| o.pocket == pocket);
+                    if let Some(o) = o {
+                        worst = worst.max(-(o.offset + o.normal.dot(p)));
+                    }
+                }
+                None => worst = worst.max(d),
+            }
+        }
+    }
+    for j in table.jaws() {
+        worst = worst.max(radius + rho - (p - j.centre).length());
+    }
+    worst
+}
+
 /// The deepest overlap among the balls in play (pair and depth), if any pair is closer than
 /// `2 radius`. Sweeps along x, so large layouts stay fast.
 pub fn deepest_overlap(states: &[BallState], radius: f64) -> Option<(BallId, BallId, f64)> {
@@ -303,7 +344,6 @@ impl Monitor {
         when: &'static str,
     ) -> Result<(), Violation> {
         let r = sim.params().ball.radius;
-        let bounds = sim.table().centre_bounds(r);
         for (ball, s) in states.iter().enumerate() {
             let finite =
                 s.position.is_finite() && s.velocity.is_finite() && s.angular_velocity.is_finite();
@@ -315,7 +355,7 @@ impl Monitor {
                 });
             }
             if s.motion.on_table() {
-                let by = (s.position.x.abs() - bounds.x).max(s.position.y.abs() - bounds.y);
+                let by = outside_by(sim.table(), r, s.position);
                 if by > self.tol.outside {
                     return Err(Violation::Outside {
                         time,
