@@ -663,6 +663,19 @@ impl Simulation {
         best
     }
 
+    /// Response of ball `id` in state `s` to a fixed body (cushion or jaw) with unit normal `n`
+    /// pointing towards the ball, `depth` metres into it: a resting contact (see [`resting`])
+    /// or the model's cushion response.
+    fn fixed_contact(&mut self, id: BallId, s: &BallState, n: Vec2, depth: f64) -> (Vec2, Vec3) {
+        let pressing = -self.segments[id].acceleration.dot(n);
+        if resting(depth, -s.velocity.dot(n), pressing) {
+            let v = resolve::resting_reflect(s.velocity, n, pressing, detect::RESTING_DEPTH);
+            (v, s.angular_velocity)
+        } else {
+            self.cushion_response(s, n)
+        }
+    }
+
     fn jaw_radius(&self) -> f64 {
         match self.table.pockets {
             PocketShape::Jaws { radius } => radius,
@@ -812,10 +825,10 @@ impl Simulation {
             PendingKind::Jaw(id, k) => {
                 let s = self.segments[id].state_at(t);
                 let jaw = self.jaws[k];
-                let n = (s.position - jaw.centre)
-                    .normalized()
-                    .unwrap_or(Vec2::new(0.0, 1.0));
-                let (v, w) = self.cushion_response(&s, n);
+                let d = s.position - jaw.centre;
+                let n = d.normalized().unwrap_or(Vec2::new(0.0, 1.0));
+                let depth = self.params.ball.radius + self.jaw_radius() - d.length();
+                let (v, w) = self.fixed_contact(id, &s, n, depth);
                 self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                 self.record(EventKind::Jaw {
                     ball: id,
@@ -833,7 +846,13 @@ impl Simulation {
                     self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
                     self.record(EventKind::Pocketed { ball: id, pocket });
                 } else {
-                    let (v, w) = self.cushion_response(&s, cushion.inward_normal());
+                    let n = cushion.inward_normal();
+                    let limit = match cushion {
+                        Cushion::Head | Cushion::Foot => self.bounds.x,
+                        Cushion::Left | Cushion::Right => self.bounds.y,
+                    };
+                    let depth = -(limit + n.dot(s.position));
+                    let (v, w) = self.fixed_contact(id, &s, n, depth);
                     self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                     self.record(EventKind::Cushion { ball: id, cushion });
                 }
@@ -841,10 +860,30 @@ impl Simulation {
             }
             PendingKind::Pair(a, b) => {
                 let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
-                let n = (sb.position - sa.position)
-                    .normalized()
-                    .unwrap_or(Vec2::new(1.0, 0.0));
-                let (na, nb) = self.pair_response(&sa, &sb, n);
+                let d = sb.position - sa.position;
+                let n = d.normalized().unwrap_or(Vec2::new(1.0, 0.0));
+                let depth = 2.0 * self.params.ball.radius - d.length();
+                let dv = sb.velocity - sa.velocity;
+                let da = self.segments[b].acceleration - self.segments[a].acceleration;
+                // Relative normal acceleration pushing the pair together, less the centripetal
+                // term of their sliding past each other (which pulls them apart).
+                let pressing =
+                    -da.dot(n) - dv.perp_dot(n).powi(2) / d.length().max(f64::MIN_POSITIVE);
+                let (na, nb) = if resting(depth, -dv.dot(n), pressing) {
+                    let (va, vb) = resolve::resting_contact(
+                        sa.velocity,
+                        sb.velocity,
+                        n,
+                        pressing,
+                        detect::RESTING_DEPTH,
+                    );
+                    (
+                        BallState { velocity: va, ..sa },
+                        BallState { velocity: vb, ..sb },
+                    )
+                } else {
+                    self.pair_response(&sa, &sb, n)
+                };
                 self.segments[a] = motion::segment_from(
                     &self.params,
                     t,
@@ -910,6 +949,16 @@ impl Simulation {
             .or_else(|| respond(n))
             .unwrap_or((*a, *b))
     }
+}
+
+/// Is a contact a resting one (resolved by [`resolve::resting_contact`]): sunk past half the
+/// resting depth, or pressed together and approaching too slowly to hop apart by the resting
+/// depth on its own? Such contacts bounce elastically with a minimum hop, so that neither a
+/// pressed pair (a Zeno cascade of ever smaller bounces) nor an inelastic collapse can make
+/// unboundedly many events per second.
+fn resting(depth: f64, approach: f64, pressing: f64) -> bool {
+    depth > 0.5 * detect::RESTING_DEPTH
+        || (pressing > 0.0 && approach * approach < 8.0 * pressing * detect::RESTING_DEPTH)
 }
 
 fn check_overlaps(balls: &[BallSetup], r: f64) -> Result<(), SetupError> {
