@@ -670,7 +670,7 @@ impl Simulation {
         let pressing = -self.segments[id].acceleration.dot(n);
         if resting(depth, -s.velocity.dot(n), pressing) {
             let v = resolve::resting_reflect(s.velocity, n, pressing, detect::RESTING_DEPTH);
-            (v, s.angular_velocity)
+            (v, keep_rolling(s, v, self.params.ball.radius))
         } else {
             self.cushion_response(s, n)
         }
@@ -877,9 +877,29 @@ impl Simulation {
                         pressing,
                         detect::RESTING_DEPTH,
                     );
+                    let r = self.params.ball.radius;
+                    // Both rolling: the pair's energy is 7/10 m (|va|^2 + |vb|^2), which the
+                    // resting contact never raises. Otherwise only a ball that slows may keep
+                    // rolling (its spin energy then falls too).
+                    let both = sa.motion == Motion::Rolling && sb.motion == Motion::Rolling;
+                    let roll = |s: &BallState, v: Vec2| {
+                        if both || v.length_squared() <= s.velocity.length_squared() {
+                            keep_rolling(s, v, r)
+                        } else {
+                            s.angular_velocity
+                        }
+                    };
                     (
-                        BallState { velocity: va, ..sa },
-                        BallState { velocity: vb, ..sb },
+                        BallState {
+                            velocity: va,
+                            angular_velocity: roll(&sa, va),
+                            ..sa
+                        },
+                        BallState {
+                            velocity: vb,
+                            angular_velocity: roll(&sb, vb),
+                            ..sb
+                        },
                     )
                 } else {
                     self.pair_response(&sa, &sb, n)
@@ -959,6 +979,18 @@ impl Simulation {
 fn resting(depth: f64, approach: f64, pressing: f64) -> bool {
     depth > 0.5 * detect::RESTING_DEPTH
         || (pressing > 0.0 && approach * approach < 8.0 * pressing * detect::RESTING_DEPTH)
+}
+
+/// Spin of a ball in state `s` whose velocity a resting contact changed to `v`: a rolling ball
+/// keeps rolling (its spin follows the small change of velocity), so a micro-impulse does not
+/// leave a tiny slip whose sliding friction, large against it, would press the pair together
+/// again within femtoseconds (the spin model); any other ball keeps its spin.
+fn keep_rolling(s: &BallState, v: Vec2, radius: f64) -> Vec3 {
+    if s.motion != Motion::Rolling {
+        return s.angular_velocity;
+    }
+    let dv = v - s.velocity;
+    s.angular_velocity + Vec3::new(-dv.y / radius, dv.x / radius, 0.0)
 }
 
 fn check_overlaps(balls: &[BallSetup], r: f64) -> Result<(), SetupError> {
