@@ -878,6 +878,46 @@ impl Simulation {
                         detect::RESTING_DEPTH,
                     );
                     let r = self.params.ball.radius;
+                    // Pressed head-on with no tangential speed to turn into the hop (a sliding
+                    // ball driven into another by its own spin, as after a follow shot): its
+                    // spin pays for the hop, as its cloth friction would by pushing.
+                    let (mut va, mut vb, mut wa, mut wb) =
+                        (va, vb, sa.angular_velocity, sb.angular_velocity);
+                    let want = (2.0 * pressing.max(0.0) * detect::RESTING_DEPTH).sqrt();
+                    let got = (vb - va).dot(n);
+                    if got < want {
+                        let half = n * (0.5 * (want - got));
+                        let (va2, vb2) = (va - half, vb + half);
+                        let m = self.params.ball.mass;
+                        let cost = 0.5
+                            * m
+                            * (va2.length_squared() + vb2.length_squared()
+                                - va.length_squared()
+                                - vb.length_squared());
+                        let inertia = 0.4 * m * r * r;
+                        let spin_energy = |w: Vec3| 0.5 * inertia * (w.x * w.x + w.y * w.y);
+                        let payer = [(&sa, &mut wa), (&sb, &mut wb)]
+                            .into_iter()
+                            .filter(|(s, w)| {
+                                s.motion == Motion::Sliding && spin_energy(**w) > 2.0 * cost
+                            })
+                            .max_by(|x, y| spin_energy(*x.1).total_cmp(&spin_energy(*y.1)));
+                        if cost <= 0.0 {
+                            (va, vb) = (va2, vb2);
+                        } else if let Some((_, w)) = payer {
+                            let k = (1.0 - cost * (1.0 + 1e-9) / spin_energy(*w)).sqrt();
+                            *w = Vec3::new(w.x * k, w.y * k, w.z);
+                            (va, vb) = (va2, vb2);
+                        }
+                    }
+                    let sa = BallState {
+                        angular_velocity: wa,
+                        ..sa
+                    };
+                    let sb = BallState {
+                        angular_velocity: wb,
+                        ..sb
+                    };
                     // Both rolling: the pair's energy is 7/10 m (|va|^2 + |vb|^2), which the
                     // resting contact never raises. Otherwise only a ball that slows may keep
                     // rolling (its spin energy then falls too).
