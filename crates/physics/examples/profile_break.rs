@@ -70,21 +70,7 @@ fn main() {
 
 /// Nanoseconds per event of a frictionless gas of `n` balls (pockets closed), after a warm-up.
 fn gas_ns_per_event(n: usize, events: usize) -> f64 {
-    let k = (n as f64 / 16.0).sqrt();
-    let table = Table {
-        corner_mouth: 1e-6,
-        side_mouth: 1e-6,
-        ..Table::scaled(k)
-    };
-    let params = Params {
-        model: Model::Paper(PaperModel {
-            mu_slide: 0.0,
-            mu_roll: 0.0,
-            ..PaperModel::default()
-        }),
-        ..Params::default()
-    };
-    let balls = racks::scattered(&table, &params.ball, n, 2.0, 7);
+    let (table, params, balls) = racks::frictionless_gas(n);
     let mut sim = Simulation::new(table, params, &balls).unwrap();
     for _ in 0..events / 10 {
         sim.step_event();

@@ -364,22 +364,9 @@ impl Simulation {
         if !(t.is_finite() && t >= self.time) {
             return Err(SimError::BadStep(t - self.time));
         }
-        let first = self.history.events().len();
-        let mut count = 0;
-        while let Some(p) = self.next_pending().filter(|p| p.time <= t) {
-            if count == self.params.max_events {
-                return Err(SimError::EventCap {
-                    cap: count,
-                    time: self.time,
-                });
-            }
-            self.process(p);
-            count += 1;
-        }
+        let advance = self.process_until(t)?;
         self.time = t;
-        Ok(Advance {
-            events: first..self.history.events().len(),
-        })
+        Ok(advance)
     }
 
     /// Advances exactly to the next event and processes it (and only it); `None` at rest.
@@ -395,9 +382,15 @@ impl Simulation {
 
     /// Runs until every ball rests; the clock ends at the last event.
     pub fn run_to_rest(&mut self) -> Result<Advance, SimError> {
+        self.process_until(f64::INFINITY)
+    }
+
+    /// The event loop: processes pending events in order while they are due by `t`, at most
+    /// `params.max_events` of them.
+    fn process_until(&mut self, t: f64) -> Result<Advance, SimError> {
         let first = self.history.events().len();
         let mut count = 0;
-        while let Some(p) = self.next_pending() {
+        while let Some(p) = self.next_pending().filter(|p| p.time <= t) {
             if count == self.params.max_events {
                 return Err(SimError::EventCap {
                     cap: count,
