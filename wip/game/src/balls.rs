@@ -1,0 +1,441 @@
+//! The balls: their components, their look (generated number textures) and how their
+//! table-plane state is drawn.
+//!
+//! The simulation owns [`BallMotion`]; this plugin only reads it, so the same components
+//! work headless (no meshes) and in the game.
+
+use bevy::{
+    asset::RenderAssetUsages,
+    math::DVec2,
+    prelude::*,
+    render::render_resource::{Extent3d, TextureDimension, TextureFormat},
+};
+
+use crate::geometry::{TableSpec, table_dir_to_world};
+
+/// Adds ball visuals and the writeback from [`BallMotion`] to [`Transform`].
+pub fn plugin(app: &mut App) {
+    app.add_systems(Startup, create_ball_assets)
+        .add_systems(
+            Update,
+            (attach_visuals, start_pocket_drops, animate_pocket_drops, restore_respotted),
+        )
+        .add_systems(PostUpdate, draw_ball_motion.before(TransformSystems::Propagate));
+}
+
+/// A pool ball. Spawned by the simulation together with [`BallMotion`].
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+#[require(Transform, Visibility)]
+pub struct Ball {
+    /// Index of the ball in the solver's ball list.
+    pub id: usize,
+    /// The number printed on the ball; 0 is the cue ball.
+    pub number: u8,
+}
+
+impl Ball {
+    /// What kind of ball this is, from its number.
+    pub fn kind(&self) -> BallKind {
+        BallKind::of(self.number)
+    }
+}
+
+/// How a ball is marked, which decides its look (and, for game rules, its group).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BallKind {
+    /// The white cue ball.
+    Cue,
+    /// Balls 1-7: one colour all over.
+    Solid,
+    /// The black 8 ball.
+    Eight,
+    /// Balls 9-15: white with a coloured band.
+    Stripe,
+}
+
+impl BallKind {
+    /// The kind of the ball with this number (numbers above 15 count as stripes).
+    pub fn of(number: u8) -> Self {
+        match number {
+            0 => Self::Cue,
+            1..=7 => Self::Solid,
+            8 => Self::Eight,
+            _ => Self::Stripe,
+        }
+    }
+}
+
+/// How a ball is moving, as the solver classifies it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum MotionState {
+    /// At rest.
+    #[default]
+    Stationary,
+    /// Sliding over the cloth (kinetic friction).
+    Sliding,
+    /// Rolling without slipping (rolling resistance).
+    Rolling,
+}
+
+/// A ball's state in the physics table plane (see [`crate::geometry`] for the axes).
+#[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
+pub struct BallMotion {
+    /// Centre of the ball in the table plane, metres.
+    pub position: DVec2,
+    /// Velocity of the centre, m/s.
+    pub velocity: DVec2,
+    /// Sliding, rolling or at rest.
+    pub state: MotionState,
+}
+
+/// Marks a ball that has dropped into a pocket and left play.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Pocketed {
+    /// The pocket it dropped into.
+    pub pocket: billiards_physics::Pocket,
+}
+
+/// The standard colours of balls 1-8 (9-15 repeat 1-7 as stripes), in sRGB.
+pub fn ball_colour(number: u8) -> Color {
+    match number {
+        0 => Color::srgb(0.96, 0.95, 0.90),
+        1 | 9 => Color::srgb(0.98, 0.76, 0.05),
+        2 | 10 => Color::srgb(0.05, 0.22, 0.70),
+        3 | 11 => Color::srgb(0.85, 0.08, 0.06),
+        4 | 12 => Color::srgb(0.33, 0.12, 0.52),
+        5 | 13 => Color::srgb(0.98, 0.40, 0.06),
+        6 | 14 => Color::srgb(0.04, 0.45, 0.20),
+        7 | 15 => Color::srgb(0.45, 0.10, 0.08),
+        _ => Color::srgb(0.03, 0.03, 0.03),
+    }
+}
+
+/// The mesh shared by every ball and one material per number.
+#[derive(Resource, Debug)]
+struct BallAssets {
+    mesh: Handle<Mesh>,
+    materials: Vec<Handle<StandardMaterial>>,
+}
+
+/// Largest ball number with its own texture.
+const MAX_NUMBER: u8 = 15;
+
+fn create_ball_assets(
+    mut commands: Commands,
+    spec: Res<TableSpec>,
+    mut meshes: ResMut<Assets<Mesh>>,
+    mut materials: ResMut<Assets<StandardMaterial>>,
+    mut images: ResMut<Assets<Image>>,
+) {
+    let mesh = meshes.add(Sphere::new(spec.ball_radius as f32).mesh().uv(48, 24));
+    let materials = (0..=MAX_NUMBER)
+        .map(|number| {
+            let texture = images.add(ball_texture(number));
+            materials.add(StandardMaterial {
+                base_color_texture: Some(texture),
+                // Phenolic resin: smooth and glossy, not metallic.
+                perceptual_roughness: 0.12,
+                reflectance: 0.5,
+                ..default()
+            })
+        })
+        .collect();
+    commands.insert_resource(BallAssets { mesh, materials });
+}
+
+/// Gives newly spawned balls their mesh and material, and turns them so that their number
+/// faces up (the texture's number sits on the mesh's local +Y; its top on local +Z).
+fn attach_visuals(
+    mut commands: Commands,
+    assets: Option<Res<BallAssets>>,
+    balls: Query<(Entity, &Ball, &mut Transform), Added<Ball>>,
+) {
+    let Some(assets) = assets else { return };
+    for (entity, ball, mut transform) in balls {
+        let material = assets.materials[usize::from(ball.number.min(MAX_NUMBER))].clone();
+        // Local +Y (number) up, local +Z (top of the digits) toward the foot rail, so the
+        // numbers read upright from the head end where the player stands.
+        transform.rotation = Quat::from_mat3(&Mat3::from_cols(Vec3::NEG_Z, Vec3::Y, Vec3::X));
+        commands
+            .entity(entity)
+            .insert((Mesh3d(assets.mesh.clone()), MeshMaterial3d(material)));
+    }
+}
+
+/// A pocketed ball on its way down: it rolls over the hole's centre and sinks out of sight.
+#[derive(Component, Debug, Clone, Copy, PartialEq)]
+struct PocketDrop {
+    /// Where the ball was when it left play.
+    from: Vec3,
+    /// The centre of the hole at cloth level.
+    over: Vec3,
+    /// Seconds since the drop started.
+    elapsed: f32,
+}
+
+/// How long a pocketed ball takes to disappear.
+const DROP_SECONDS: f32 = 0.35;
+
+fn start_pocket_drops(
+    mut commands: Commands,
+    spec: Res<TableSpec>,
+    balls: Query<(Entity, &Pocketed, &Transform), (With<Ball>, Added<Pocketed>)>,
+) {
+    for (entity, pocketed, transform) in &balls {
+        let hole = spec.pocket(pocketed.pocket).centre;
+        commands.entity(entity).insert(PocketDrop {
+            from: transform.translation,
+            over: spec.ball_world_position(hole),
+            elapsed: 0.0,
+        });
+    }
+}
+
+/// Moves dropping balls over the hole (first half) and down into it (second half), then hides
+/// them. Uses virtual time, so the drop pauses with the game.
+fn animate_pocket_drops(
+    mut commands: Commands,
+    time: Res<Time>,
+    spec: Res<TableSpec>,
+    mut balls: Query<(Entity, &mut PocketDrop, &mut Transform, &mut Visibility)>,
+    mut redraw: MessageWriter<bevy::window::RequestRedraw>,
+) {
+    for (entity, mut drop, mut transform, mut visibility) in &mut balls {
+        drop.elapsed += time.delta_secs();
+        let t = (drop.elapsed / DROP_SECONDS).min(1.0);
+        let depth = 3.0 * spec.ball_radius as f32;
+        transform.translation = if t < 0.5 {
+            drop.from.lerp(drop.over, t * 2.0)
+        } else {
+            drop.over - Vec3::Y * depth * (t * 2.0 - 1.0).powi(2)
+        };
+        if t >= 1.0 {
+            *visibility = Visibility::Hidden;
+            commands.entity(entity).remove::<PocketDrop>();
+        } else {
+            redraw.write(bevy::window::RequestRedraw);
+        }
+    }
+}
+
+/// A ball taken out of a pocket (a respotted cue ball) is shown again.
+fn restore_respotted(
+    mut commands: Commands,
+    mut respotted: RemovedComponents<Pocketed>,
+    mut balls: Query<&mut Visibility, With<Ball>>,
+) {
+    for entity in respotted.read() {
+        if let Ok(mut visibility) = balls.get_mut(entity) {
+            *visibility = Visibility::Inherited;
+            commands.entity(entity).remove::<PocketDrop>();
+        }
+    }
+}
+
+/// Writes moved balls to their transforms. A moving ball is turned as if it rolled without
+/// slipping along its displacement: exact while rolling, and close enough to read as rolling
+/// while sliding (the paper's model carries no spin). A ball placed at rest (racked,
+/// respotted) is moved without turning.
+fn draw_ball_motion(
+    spec: Res<TableSpec>,
+    mut balls: Query<
+        (&BallMotion, &mut Transform),
+        (With<Ball>, Without<Pocketed>, Changed<BallMotion>),
+    >,
+) {
+    for (motion, mut transform) in &mut balls {
+        let target = spec.ball_world_position(motion.position);
+        let step = target - transform.translation;
+        let distance = step.length();
+        if distance > 0.0 && motion.state != MotionState::Stationary {
+            let axis = Vec3::Y.cross(step / distance);
+            let angle = distance / spec.ball_radius as f32;
+            transform.rotation = Quat::from_axis_angle(axis, angle) * transform.rotation;
+        }
+        transform.translation = target;
+    }
+}
+
+/// The world direction a ball moves in, for drawing velocity vectors.
+pub fn world_velocity(motion: &BallMotion) -> Vec3 {
+    table_dir_to_world(motion.velocity)
+}
+
+/// Texture size: an equirectangular map, twice as wide as high so that a degree is the same
+/// number of pixels in both directions (the number circles stay round on the equator).
+const TEXTURE_WIDTH: usize = 512;
+const TEXTURE_HEIGHT: usize = TEXTURE_WIDTH / 2;
+
+/// Paints ball `number`'s texture: its colour (all over for solids, a band for stripes) and
+/// two white circles with the number, on opposite sides of the equator.
+pub fn ball_texture(number: u8) -> Image {
+    let colour = ball_colour(number).to_srgba();
+    let colour = [colour.red, colour.green, colour.blue];
+    let white = [0.97, 0.96, 0.92];
+    let kind = BallKind::of(number);
+    let label = number.to_string();
+    // The number circle is about 1 inch across on a 2.25 inch ball: 25 degrees of radius.
+    let circle_radius = 25.0f32.to_radians();
+    let stripe_half_width = 36.0f32.to_radians();
+    let mut data = Vec::with_capacity(TEXTURE_WIDTH * TEXTURE_HEIGHT * 4);
+    for row in 0..TEXTURE_HEIGHT {
+        for column in 0..TEXTURE_WIDTH {
+            // Supersample 3x3 so circle edges and digits are smooth.
+            let mut sum = [0.0f32; 3];
+            for sy in 0..3 {
+                for sx in 0..3 {
+                    let u = (column as f32 + (sx as f32 + 0.5) / 3.0) / TEXTURE_WIDTH as f32;
+                    let v = (row as f32 + (sy as f32 + 0.5) / 3.0) / TEXTURE_HEIGHT as f32;
+                    let c = ball_surface_colour(
+                        kind,
+                        &label,
+                        colour,
+                        white,
+                        u,
+                        v,
+                        circle_radius,
+                        stripe_half_width,
+                    );
+                    for (s, c) in sum.iter_mut().zip(c) {
+                        *s += c / 9.0;
+                    }
+                }
+            }
+            data.extend(sum.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8));
+            data.push(255);
+        }
+    }
+    Image::new(
+        Extent3d {
+            width: TEXTURE_WIDTH as u32,
+            height: TEXTURE_HEIGHT as u32,
+            depth_or_array_layers: 1,
+        },
+        TextureDimension::D2,
+        data,
+        TextureFormat::Rgba8UnormSrgb,
+        RenderAssetUsages::RENDER_WORLD,
+    )
+}
+
+/// The colour of one point of the ball surface, at texture coordinates (u, v).
+#[allow(clippy::too_many_arguments)]
+fn ball_surface_colour(
+    kind: BallKind,
+    label: &str,
+    colour: [f32; 3],
+    white: [f32; 3],
+    u: f32,
+    v: f32,
+    circle_radius: f32,
+    stripe_half_width: f32,
+) -> [f32; 3] {
+    use std::f32::consts::{PI, TAU};
+    let latitude = (0.5 - v) * PI;
+    let base = match kind {
+        BallKind::Cue => return colour,
+        BallKind::Solid | BallKind::Eight => colour,
+        BallKind::Stripe if latitude.abs() < stripe_half_width => colour,
+        BallKind::Stripe => white,
+    };
+    // Number circles centred on the equator at u = 1/4 and u = 3/4.
+    for centre_u in [0.25f32, 0.75] {
+        let dx = (u - centre_u) * TAU; // radians of longitude (= arc length on the equator)
+        let dy = -latitude; // radians, growing downward like v
+        let r = (dx * dx + dy * dy).sqrt();
+        if r < circle_radius {
+            // Digits fill 65 % of the circle's height.
+            let glyph_height = 1.3 * circle_radius;
+            let x = dx / glyph_height;
+            let y = dy / glyph_height + 0.5;
+            return if text_covers(label, x, y) {
+                [0.05, 0.05, 0.05]
+            } else {
+                white
+            };
+        }
+    }
+    base
+}
+
+/// 5x7 bitmap digits, one row per byte, most significant of the low five bits on the left.
+const DIGITS: [[u8; 7]; 10] = [
+    [0x0E, 0x11, 0x13, 0x15, 0x19, 0x11, 0x0E],
+    [0x04, 0x0C, 0x04, 0x04, 0x04, 0x04, 0x0E],
+    [0x0E, 0x11, 0x01, 0x02, 0x04, 0x08, 0x1F],
+    [0x1F, 0x02, 0x04, 0x02, 0x01, 0x11, 0x0E],
+    [0x02, 0x06, 0x0A, 0x12, 0x1F, 0x02, 0x02],
+    [0x1F, 0x10, 0x1E, 0x01, 0x01, 0x11, 0x0E],
+    [0x06, 0x08, 0x10, 0x1E, 0x11, 0x11, 0x0E],
+    [0x1F, 0x01, 0x02, 0x04, 0x08, 0x08, 0x08],
+    [0x0E, 0x11, 0x11, 0x0E, 0x11, 0x11, 0x0E],
+    [0x0E, 0x11, 0x11, 0x0F, 0x01, 0x02, 0x0C],
+];
+
+/// Whether the text, centred horizontally at x = 0 with its top at y = 0 and its bottom at
+/// y = 1 (units of the glyph height), covers the point (x, y).
+fn text_covers(text: &str, x: f32, y: f32) -> bool {
+    // A glyph cell is 5 columns plus 1 of spacing, in a 7-row height.
+    let cell = 1.0 / 7.0;
+    let advance = 6.0 * cell;
+    let width = text.len() as f32 * advance - cell;
+    let gx = x + width / 2.0;
+    if !(0.0..1.0).contains(&y) || gx < 0.0 {
+        return false;
+    }
+    let index = (gx / advance) as usize;
+    let Some(digit) = text.as_bytes().get(index).and_then(|b| b.checked_sub(b'0')) else {
+        return false;
+    };
+    let Some(glyph) = DIGITS.get(usize::from(digit)) else {
+        return false;
+    };
+    let column = ((gx - index as f32 * advance) / cell) as usize;
+    let row = (y / cell) as usize;
+    column < 5 && row < 7 && glyph[row] & (0x10 >> column) != 0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn kinds_follow_numbers() {
+        assert_eq!(BallKind::of(0), BallKind::Cue);
+        assert_eq!(BallKind::of(7), BallKind::Solid);
+        assert_eq!(BallKind::of(8), BallKind::Eight);
+        assert_eq!(BallKind::of(9), BallKind::Stripe);
+        assert_eq!(BallKind::of(15), BallKind::Stripe);
+    }
+
+    #[test]
+    fn glyphs_cover_their_strokes() {
+        // The middle of a "1" is its vertical stroke; left of it is empty.
+        assert!(text_covers("1", 0.0, 0.5));
+        assert!(!text_covers("1", -0.25, 0.5));
+        // Outside the text box nothing is covered.
+        assert!(!text_covers("8", 0.0, 1.2));
+        assert!(!text_covers("12", 2.0, 0.5));
+    }
+
+    #[test]
+    fn textures_show_colour_and_number() {
+        let pixel = |image: &Image, u: f32, v: f32| {
+            let x = ((u * TEXTURE_WIDTH as f32) as usize).min(TEXTURE_WIDTH - 1);
+            let y = ((v * TEXTURE_HEIGHT as f32) as usize).min(TEXTURE_HEIGHT - 1);
+            let data = image.data.as_ref().unwrap();
+            let i = (y * TEXTURE_WIDTH + x) * 4;
+            [data[i], data[i + 1], data[i + 2]]
+        };
+        let three = ball_texture(3);
+        // Away from the circles a solid is its colour (red), the circle rim is white.
+        let red = pixel(&three, 0.0, 0.5);
+        assert!(red[0] > 150 && red[1] < 60 && red[2] < 60, "{red:?}");
+        let rim = pixel(&three, 0.25 + 0.055, 0.5);
+        assert!(rim.iter().all(|&c| c > 200), "{rim:?}");
+        // A stripe is white at the poles and coloured at the equator.
+        let eleven = ball_texture(11);
+        assert!(pixel(&eleven, 0.0, 0.05).iter().all(|&c| c > 200));
+        assert!(pixel(&eleven, 0.0, 0.5)[0] > 150);
+    }
+}

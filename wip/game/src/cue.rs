@@ -1,0 +1,275 @@
+//! The cue: aiming and power input, the cue stick mesh, the shot key and the paper's vectors.
+//!
+//! Controls (also listed in the panel):
+//! - left drag on the table: aim the cue ball at the pointer;
+//! - Shift + left drag down / Shift + wheel: pull the cue back (power);
+//! - Left/Right arrows: turn the aim (hold Shift for fine steps); Up/Down: power;
+//! - Space: shoot.
+
+use bevy::{
+    input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
+    math::DVec2,
+    prelude::*,
+    window::{PrimaryWindow, RequestRedraw},
+};
+use bevy_egui::input::{egui_wants_any_keyboard_input, egui_wants_any_pointer_input};
+
+use crate::{
+    balls::{Ball, BallMotion, Pocketed, world_velocity},
+    camera::{CameraSystems, TableCamera},
+    geometry::{TableSpec, table_dir_to_world, to_table_plane},
+    settings::{ClampReport, ShotSettings, ViewSettings},
+    sim::{ShotRequested, SimStatus},
+};
+
+/// Registers the cue stick and its controls.
+pub fn plugin(app: &mut App) {
+    app.add_systems(Startup, spawn_cue)
+        .add_systems(
+            Update,
+            (
+                aim_with_mouse.run_if(not(egui_wants_any_pointer_input)),
+                cue_keys.run_if(not(egui_wants_any_keyboard_input)),
+                place_cue,
+            )
+                .chain()
+                .after(CameraSystems),
+        )
+        .add_systems(Update, draw_vectors);
+}
+
+/// The cue stick.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CueStick;
+
+/// Length of a cue (58 in).
+const CUE_LENGTH: f32 = 1.47;
+/// Cue tip and butt radii (13 mm tip; a butt about 30 mm across).
+const TIP_RADIUS: f32 = 0.0065;
+const BUTT_RADIUS: f32 = 0.015;
+/// Gap between tip and ball at zero power, and the pull-back at full power.
+const REST_GAP: f32 = 0.012;
+const FULL_PULL_BACK: f32 = 0.30;
+/// The cue is raised at the butt just enough to clear the rails.
+const ELEVATION: f32 = 0.09;
+
+/// The maple shaft colour, which the render test looks for.
+pub const SHAFT_COLOUR: Color = Color::srgb(0.93, 0.80, 0.58);
+
+fn spawn_cue(
+    mut commands: Commands,
+    mut meshes: ResMut<Assets<Mesh>>,
+    mut materials: ResMut<Assets<StandardMaterial>>,
+) {
+    // The stick's local +Y runs from the tip (at the origin) to the butt.
+    let radius_at = |y: f32| TIP_RADIUS + (BUTT_RADIUS - TIP_RADIUS) * y / CUE_LENGTH;
+    let mut piece = |from: f32, to: f32, colour: Color, roughness: f32| {
+        let mesh = ConicalFrustum {
+            radius_top: radius_at(to),
+            radius_bottom: radius_at(from),
+            height: to - from,
+        };
+        (
+            Mesh3d(meshes.add(mesh)),
+            MeshMaterial3d(materials.add(StandardMaterial {
+                base_color: colour,
+                perceptual_roughness: roughness,
+                ..default()
+            })),
+            Transform::from_xyz(0.0, (from + to) / 2.0, 0.0),
+        )
+    };
+    let tip = piece(0.0, 0.012, Color::srgb(0.10, 0.25, 0.55), 0.9);
+    let ferrule = piece(0.012, 0.035, Color::srgb(0.95, 0.95, 0.92), 0.3);
+    let shaft = piece(0.035, 0.80, SHAFT_COLOUR, 0.35);
+    let ring = piece(0.80, 0.82, Color::srgb(0.05, 0.05, 0.05), 0.2);
+    let butt = piece(0.82, CUE_LENGTH - 0.03, Color::srgb(0.22, 0.07, 0.03), 0.3);
+    let cap = piece(CUE_LENGTH - 0.03, CUE_LENGTH, Color::srgb(0.05, 0.05, 0.05), 0.5);
+    commands.spawn((
+        CueStick,
+        Name::new("Cue stick"),
+        Transform::default(),
+        Visibility::Hidden,
+        children![tip, ferrule, shaft, ring, butt, cap],
+    ));
+}
+
+/// The cue ball's table position, if it is on the table.
+fn cue_ball_position(balls: &Query<(&Ball, &BallMotion), Without<Pocketed>>) -> Option<DVec2> {
+    balls
+        .iter()
+        .find(|(ball, _)| ball.number == 0)
+        .map(|(_, motion)| motion.position)
+}
+
+/// Left drag aims at the pointer; with Shift, dragging down (or the wheel) sets the power.
+fn aim_with_mouse(
+    buttons: Res<ButtonInput<MouseButton>>,
+    keys: Res<ButtonInput<KeyCode>>,
+    motion: Res<AccumulatedMouseMotion>,
+    scroll: Res<AccumulatedMouseScroll>,
+    window: Single<&Window, With<PrimaryWindow>>,
+    camera: Single<(&Camera, &GlobalTransform), With<TableCamera>>,
+    spec: Res<TableSpec>,
+    balls: Query<(&Ball, &BallMotion), Without<Pocketed>>,
+    status: Res<SimStatus>,
+    mut shot: ResMut<ShotSettings>,
+    mut report: ResMut<ClampReport>,
+) {
+    if !status.at_rest {
+        return;
+    }
+    let Some(cue_ball) = cue_ball_position(&balls) else {
+        return;
+    };
+    let shift = keys.any_pressed([KeyCode::ShiftLeft, KeyCode::ShiftRight]);
+    let mut next = *shot;
+    if buttons.pressed(MouseButton::Left) {
+        if shift {
+            // Pulling the mouse toward the player pulls the cue back: 2 cm/s per pixel.
+            next.power += f64::from(motion.delta.y) * 0.02;
+        } else if let Some(cursor) = window.cursor_position() {
+            let (camera, camera_transform) = *camera;
+            let target = camera
+                .viewport_to_world(camera_transform, cursor)
+                .ok()
+                .and_then(|ray| {
+                    let plane_height = spec.ball_radius as f32;
+                    let distance = ray.intersect_plane(
+                        Vec3::Y * plane_height,
+                        InfinitePlane3d::new(Vec3::Y),
+                    )?;
+                    Some(to_table_plane(ray.get_point(distance)))
+                });
+            if let Some(target) = target
+                && target.distance(cue_ball) > 1e-3
+            {
+                next.angle = (target - cue_ball).to_angle();
+            }
+        }
+    }
+    if shift && scroll.delta.y != 0.0 {
+        let notches = match scroll.unit {
+            MouseScrollUnit::Line => scroll.delta.y,
+            MouseScrollUnit::Pixel => scroll.delta.y / 40.0,
+        };
+        next.power += f64::from(notches) * 0.25;
+    }
+    apply_shot_edit(next, &mut shot, &mut report);
+}
+
+/// Writes an edited shot back (only if it changed, to keep change detection meaningful),
+/// clamped, with any clamp reported to the panel.
+pub fn apply_shot_edit(mut next: ShotSettings, shot: &mut ShotSettings, report: &mut ClampReport) {
+    if next == *shot {
+        return;
+    }
+    let notes = next.clamp_to_physical();
+    if !notes.is_empty() {
+        report.notes = notes;
+    }
+    *shot = next;
+}
+
+/// Arrow keys turn the aim and change the power; Space shoots.
+fn cue_keys(
+    keys: Res<ButtonInput<KeyCode>>,
+    time: Res<Time<Real>>,
+    status: Res<SimStatus>,
+    mut shot: ResMut<ShotSettings>,
+    mut report: ResMut<ClampReport>,
+    mut shots: MessageWriter<ShotRequested>,
+) {
+    if !status.at_rest {
+        return;
+    }
+    let dt = f64::from(time.delta_secs());
+    let fine = keys.any_pressed([KeyCode::ShiftLeft, KeyCode::ShiftRight]);
+    let turn_rate = if fine { 2f64 } else { 30.0 }.to_radians();
+    let mut next = *shot;
+    if keys.pressed(KeyCode::ArrowLeft) {
+        next.angle += turn_rate * dt;
+    }
+    if keys.pressed(KeyCode::ArrowRight) {
+        next.angle -= turn_rate * dt;
+    }
+    if keys.pressed(KeyCode::ArrowUp) {
+        next.power += 3.0 * dt;
+    }
+    if keys.pressed(KeyCode::ArrowDown) {
+        next.power -= 3.0 * dt;
+    }
+    apply_shot_edit(next, &mut shot, &mut report);
+    if keys.just_pressed(KeyCode::Space) {
+        shots.write(ShotRequested {
+            angle: shot.angle,
+            speed: shot.power,
+        });
+    }
+}
+
+/// Puts the cue behind the cue ball along the aim, pulled back in proportion to the power,
+/// and shows it only while a shot can be taken.
+fn place_cue(
+    spec: Res<TableSpec>,
+    shot: Res<ShotSettings>,
+    status: Res<SimStatus>,
+    balls: Query<(&Ball, &BallMotion), Without<Pocketed>>,
+    cue: Single<(&mut Transform, &mut Visibility), With<CueStick>>,
+    mut redraw: MessageWriter<RequestRedraw>,
+) {
+    let (mut transform, mut visibility) = cue.into_inner();
+    let cue_ball = cue_ball_position(&balls).filter(|_| status.at_rest);
+    let wanted_visibility = if cue_ball.is_some() {
+        Visibility::Inherited
+    } else {
+        Visibility::Hidden
+    };
+    visibility.set_if_neq(wanted_visibility);
+    let Some(cue_ball) = cue_ball else { return };
+
+    let aim = table_dir_to_world(shot.direction());
+    // From the tip toward the butt: backward along the aim, raised by the elevation.
+    let back = (-aim * ELEVATION.cos() + Vec3::Y * ELEVATION.sin()).normalize();
+    let power = (shot.power / ShotSettings::POWER.max) as f32;
+    let gap = REST_GAP + FULL_PULL_BACK * power.clamp(0.0, 1.0);
+    let centre = spec.ball_world_position(cue_ball);
+    let target = Transform::from_translation(centre + back * (spec.ball_radius as f32 + gap))
+        .with_rotation(Quat::from_rotation_arc(Vec3::Y, back));
+    if *transform != target {
+        *transform = target;
+        redraw.write(RequestRedraw);
+    }
+}
+
+/// The paper's vectors: red for the cue (direction and strength of the shot), blue for each
+/// moving ball's velocity.
+fn draw_vectors(
+    view: Res<ViewSettings>,
+    spec: Res<TableSpec>,
+    shot: Res<ShotSettings>,
+    status: Res<SimStatus>,
+    balls: Query<(&Ball, &BallMotion), Without<Pocketed>>,
+    mut gizmos: Gizmos,
+) {
+    if !view.show_vectors {
+        return;
+    }
+    // Drawn just above the cloth so the balls do not hide them: 5 cm per m/s.
+    const METRES_PER_MPS: f32 = 0.05;
+    let lift = Vec3::Y * (2.05 * spec.ball_radius as f32);
+    if status.at_rest
+        && let Some(cue_ball) = cue_ball_position(&balls)
+    {
+        let start = spec.ball_world_position(cue_ball) + lift;
+        let end = start + table_dir_to_world(shot.direction()) * METRES_PER_MPS * shot.power as f32;
+        gizmos.arrow(start, end, Color::srgb(0.95, 0.1, 0.1));
+    }
+    for (_, motion) in &balls {
+        if motion.velocity != DVec2::ZERO {
+            let start = spec.ball_world_position(motion.position) + lift;
+            let end = start + world_velocity(motion) * METRES_PER_MPS;
+            gizmos.arrow(start, end, Color::srgb(0.15, 0.35, 1.0));
+        }
+    }
+}

@@ -1,0 +1,347 @@
+//! Table dimensions and the mapping between physics and Bevy coordinates.
+//!
+//! Physics coordinates: x along the table length (head end at x = -L/2, foot end at +L/2),
+//! y across (left = +y), z up, SI units, origin at the table centre on the cloth plane.
+//! Bevy is y-up, so a physics point (x, y, z) is drawn at Bevy (x, z, -y); a ball centre at
+//! table position p is drawn at (p.x, R, -p.y) so the ball sits on the cloth.
+
+use bevy::math::{DVec2, DVec3, Vec3};
+use bevy::prelude::Resource;
+
+/// One inch in metres: equipment specifications are in inches, everything else is SI.
+pub const INCH: f64 = 0.0254;
+
+/// Which side of the table a rail or cushion is on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rail {
+    /// The long rail at +y (the player's left when standing at the head end).
+    Left,
+    /// The long rail at -y.
+    Right,
+    /// The short rail at x = -L/2, where the cue ball is placed.
+    Head,
+    /// The short rail at x = +L/2, behind the rack.
+    Foot,
+}
+
+/// The two kinds of pocket, which differ in mouth width and jaw angle.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PocketKind {
+    /// The four pockets at the corners.
+    Corner,
+    /// The two pockets in the middle of the long rails.
+    Side,
+}
+
+/// A pocket: the hole in the bed a ball drops into.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pocket {
+    /// Corner or side.
+    pub kind: PocketKind,
+    /// Centre of the hole in the table plane.
+    pub centre: DVec2,
+    /// Radius of the hole.
+    pub radius: f64,
+}
+
+/// A straight cushion between two pockets.
+///
+/// Its nose runs along the playing-surface edge from `start` to `end` (coordinates along the
+/// rail); behind the nose each end is cut back by the jaw angle of the pocket it meets.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CushionSegment {
+    /// The rail the cushion is mounted on.
+    pub rail: Rail,
+    /// Start of the nose, along the rail (x for long rails, y for short rails).
+    pub start: f64,
+    /// End of the nose, along the rail; `end > start`.
+    pub end: f64,
+    /// How far each end grows toward its pocket per metre of depth behind the nose.
+    pub start_jaw_slope: f64,
+    /// Same as `start_jaw_slope`, for the `end` side.
+    pub end_jaw_slope: f64,
+}
+
+/// The dimensions of a WPA 8-ft pool table and its balls, in metres.
+#[derive(Resource, Debug, Clone, PartialEq)]
+pub struct TableSpec {
+    /// Playing-surface length between the cushion noses (92 in).
+    pub length: f64,
+    /// Playing-surface width between the cushion noses (46 in).
+    pub width: f64,
+    /// Ball radius (diameter 2.25 in).
+    pub ball_radius: f64,
+    /// Corner pocket mouth, between the cushion noses (4.5 in).
+    pub corner_mouth: f64,
+    /// Side pocket mouth, between the cushion noses (5 in).
+    pub side_mouth: f64,
+    /// Height of the cushion nose above the cloth (63.5 % of the ball diameter).
+    pub cushion_nose_height: f64,
+    /// Height of the top of the cushions and rails above the cloth.
+    pub rail_height: f64,
+    /// Depth of the cushion rubber from the nose to the wooden rail.
+    pub cushion_depth: f64,
+    /// Width of the wooden rail behind the cushion.
+    pub rail_width: f64,
+    /// Angle between a corner cushion's face and its jaw (WPA: 142 degrees).
+    pub corner_jaw_angle: f64,
+    /// Angle between a side cushion's face and its jaw (WPA: 103-104 degrees).
+    pub side_jaw_angle: f64,
+}
+
+impl Default for TableSpec {
+    fn default() -> Self {
+        Self::wpa_eight_foot()
+    }
+}
+
+impl TableSpec {
+    /// The WPA 8-ft table with regulation balls.
+    pub fn wpa_eight_foot() -> Self {
+        let ball_diameter = 2.25 * INCH;
+        Self {
+            length: 92.0 * INCH,
+            width: 46.0 * INCH,
+            ball_radius: ball_diameter / 2.0,
+            corner_mouth: 4.5 * INCH,
+            side_mouth: 5.0 * INCH,
+            cushion_nose_height: 0.635 * ball_diameter,
+            rail_height: 1.75 * INCH,
+            cushion_depth: 2.0 * INCH,
+            rail_width: 4.5 * INCH,
+            corner_jaw_angle: 142f64.to_radians(),
+            side_jaw_angle: 104f64.to_radians(),
+        }
+    }
+
+    /// Half the playing-surface length and width.
+    pub fn half_extents(&self) -> DVec2 {
+        DVec2::new(self.length / 2.0, self.width / 2.0)
+    }
+
+    /// The outer edge of the rails, measured from the table centre.
+    pub fn outer_half_extents(&self) -> DVec2 {
+        self.half_extents() + DVec2::splat(self.cushion_depth + self.rail_width)
+    }
+
+    /// The head spot: one quarter of the length from the head cushion, where the paper puts
+    /// the cue ball.
+    pub fn head_spot(&self) -> DVec2 {
+        DVec2::new(-self.length / 4.0, 0.0)
+    }
+
+    /// The foot spot: one quarter of the length from the foot cushion, the apex of the rack.
+    pub fn foot_spot(&self) -> DVec2 {
+        DVec2::new(self.length / 4.0, 0.0)
+    }
+
+    /// Distance along each rail from a playing-surface corner to the corner cushion's nose
+    /// end: the mouth is measured across the diagonal between the two noses.
+    pub fn corner_nose_offset(&self) -> f64 {
+        self.corner_mouth / std::f64::consts::SQRT_2
+    }
+
+    /// The six pockets: head-left, head-right, foot-left, foot-right corners, then the left
+    /// and right side pockets.
+    ///
+    /// The holes are drawn slightly larger than the mouth and set behind it, leaving a
+    /// shelf between the mouth line and the drop, as on a real table. (The physics decides
+    /// pocketing on its own; these holes are what the player sees.)
+    pub fn pockets(&self) -> [Pocket; 6] {
+        let h = self.half_extents();
+        let corner_radius = 0.55 * self.corner_mouth;
+        let corner_shelf = 0.5 * INCH;
+        // The mouth midpoint lies a/2 inside the corner on both axes; the hole centre sits on
+        // the diagonal so that the hole edge is one shelf behind the mouth line.
+        let corner_offset = (corner_radius + corner_shelf) / std::f64::consts::SQRT_2
+            - self.corner_nose_offset() / 2.0;
+        let side_radius = 0.52 * self.side_mouth;
+        let side_offset = side_radius + 0.25 * INCH;
+        let corner = |sx: f64, sy: f64| Pocket {
+            kind: PocketKind::Corner,
+            centre: DVec2::new(sx * (h.x + corner_offset), sy * (h.y + corner_offset)),
+            radius: corner_radius,
+        };
+        let side = |sy: f64| Pocket {
+            kind: PocketKind::Side,
+            centre: DVec2::new(0.0, sy * (h.y + side_offset)),
+            radius: side_radius,
+        };
+        [
+            corner(-1.0, 1.0),
+            corner(-1.0, -1.0),
+            corner(1.0, 1.0),
+            corner(1.0, -1.0),
+            side(1.0),
+            side(-1.0),
+        ]
+    }
+
+    /// The hole of one of the solver's pockets.
+    pub fn pocket(&self, pocket: billiards_physics::Pocket) -> Pocket {
+        use billiards_physics::Pocket as P;
+        let index = match pocket {
+            P::HeadLeft => 0,
+            P::HeadRight => 1,
+            P::FootLeft => 2,
+            P::FootRight => 3,
+            P::SideLeft => 4,
+            P::SideRight => 5,
+        };
+        self.pockets()[index]
+    }
+
+    /// The six cushions between the pockets.
+    pub fn cushions(&self) -> [CushionSegment; 6] {
+        let h = self.half_extents();
+        let corner_gap = self.corner_nose_offset();
+        let side_gap = self.side_mouth / 2.0;
+        // A jaw at angle `a` to the cushion face leaves the nose line at 180 deg - a, so each
+        // metre of depth moves it 1 / tan(180 deg - a) toward the pocket.
+        let corner_slope = 1.0 / (std::f64::consts::PI - self.corner_jaw_angle).tan();
+        let side_slope = 1.0 / (std::f64::consts::PI - self.side_jaw_angle).tan();
+        let long = |rail, start, end, start_jaw_slope, end_jaw_slope| CushionSegment {
+            rail,
+            start,
+            end,
+            start_jaw_slope,
+            end_jaw_slope,
+        };
+        [
+            long(Rail::Left, -h.x + corner_gap, -side_gap, corner_slope, side_slope),
+            long(Rail::Left, side_gap, h.x - corner_gap, side_slope, corner_slope),
+            long(Rail::Right, -h.x + corner_gap, -side_gap, corner_slope, side_slope),
+            long(Rail::Right, side_gap, h.x - corner_gap, side_slope, corner_slope),
+            long(Rail::Head, -h.y + corner_gap, h.y - corner_gap, corner_slope, corner_slope),
+            long(Rail::Foot, -h.y + corner_gap, h.y - corner_gap, corner_slope, corner_slope),
+        ]
+    }
+
+    /// A point on a rail in physics coordinates: `along` the rail, `depth` behind the cushion
+    /// nose (outward), `height` above the cloth.
+    pub fn rail_point(&self, rail: Rail, along: f64, depth: f64, height: f64) -> DVec3 {
+        let h = self.half_extents();
+        match rail {
+            Rail::Left => DVec3::new(along, h.y + depth, height),
+            Rail::Right => DVec3::new(along, -(h.y + depth), height),
+            Rail::Head => DVec3::new(-(h.x + depth), along, height),
+            Rail::Foot => DVec3::new(h.x + depth, along, height),
+        }
+    }
+
+    /// Whether a table-plane point is a legal ball-centre position (on the cloth, clear of
+    /// the cushions).
+    pub fn contains_ball_centre(&self, p: DVec2) -> bool {
+        let limit = self.half_extents() - DVec2::splat(self.ball_radius);
+        p.x.abs() <= limit.x && p.y.abs() <= limit.y
+    }
+
+    /// The solver's table with these dimensions.
+    pub fn physics_table(&self) -> billiards_physics::Table {
+        billiards_physics::Table {
+            length: self.length,
+            width: self.width,
+            corner_mouth: self.corner_mouth,
+            side_mouth: self.side_mouth,
+            ..billiards_physics::Table::wpa_8ft()
+        }
+    }
+
+    /// Where a ball resting at table position `p` is drawn.
+    pub fn ball_world_position(&self, p: DVec2) -> Vec3 {
+        to_world(p.extend(self.ball_radius))
+    }
+}
+
+/// Maps a physics point (x, y, z-up) to Bevy's y-up world: (x, z, -y).
+///
+/// The map is a proper rotation, so it keeps triangle winding and handedness.
+pub fn to_world(p: DVec3) -> Vec3 {
+    Vec3::new(p.x as f32, p.z as f32, -p.y as f32)
+}
+
+/// Maps a Bevy world point back to the physics table plane (drops the height).
+pub fn to_table_plane(world: Vec3) -> DVec2 {
+    DVec2::new(f64::from(world.x), -f64::from(world.z))
+}
+
+/// The Bevy world direction of a table-plane direction.
+pub fn table_dir_to_world(d: DVec2) -> Vec3 {
+    Vec3::new(d.x as f32, 0.0, -d.y as f32)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wpa_dimensions_in_metres() {
+        let t = TableSpec::wpa_eight_foot();
+        assert!((t.length - 2.3368).abs() < 1e-12);
+        assert!((t.width - 1.1684).abs() < 1e-12);
+        assert!((t.ball_radius - 0.028575).abs() < 1e-12);
+        assert!((t.cushion_nose_height - 0.036290).abs() < 1e-5);
+    }
+
+    #[test]
+    fn the_solver_table_has_the_same_dimensions() {
+        let spec = TableSpec::default();
+        assert_eq!(spec.physics_table(), billiards_physics::Table::wpa_8ft());
+        let ball = billiards_physics::BallSpec::default();
+        assert!((ball.radius - spec.ball_radius).abs() < 1e-15);
+    }
+
+    #[test]
+    fn mapping_round_trips_and_keeps_left_on_plus_y() {
+        let p = DVec2::new(0.5, 0.25);
+        let w = to_world(p.extend(0.0));
+        assert_eq!(w, Vec3::new(0.5, 0.0, -0.25));
+        assert_eq!(to_table_plane(w), p);
+        let t = TableSpec::default();
+        assert_eq!(t.ball_world_position(DVec2::ZERO).y, t.ball_radius as f32);
+    }
+
+    #[test]
+    fn corner_mouth_is_measured_between_the_noses() {
+        let t = TableSpec::default();
+        let h = t.half_extents();
+        let cushions = t.cushions();
+        // Foot-left corner: nose end on the left rail and on the foot rail.
+        let a = DVec2::new(cushions[1].end, h.y);
+        let b = DVec2::new(h.x, cushions[5].end);
+        assert!((a.distance(b) - t.corner_mouth).abs() < 1e-12);
+        // Left side pocket.
+        assert!((cushions[1].start - cushions[0].end - t.side_mouth).abs() < 1e-12);
+    }
+
+    #[test]
+    fn solver_pockets_map_to_the_holes_at_their_positions() {
+        let spec = TableSpec::default();
+        let table = spec.physics_table();
+        for pocket in billiards_physics::Pocket::ALL {
+            let corner = table.pocket_position(pocket);
+            let hole = spec.pocket(pocket);
+            assert!(hole.centre.distance(DVec2::new(corner.x, corner.y)) < hole.radius + 0.01);
+        }
+    }
+
+    #[test]
+    fn pocket_holes_lie_behind_the_mouths() {
+        let t = TableSpec::default();
+        let h = t.half_extents();
+        for pocket in t.pockets() {
+            match pocket.kind {
+                PocketKind::Corner => {
+                    let corner = DVec2::new(h.x.copysign(pocket.centre.x), h.y.copysign(pocket.centre.y));
+                    // The hole covers the playing-surface corner but not the table centre.
+                    assert!(pocket.centre.distance(corner) < pocket.radius);
+                    assert!(pocket.centre.length() > h.length());
+                }
+                PocketKind::Side => {
+                    assert_eq!(pocket.centre.x, 0.0);
+                    assert!(pocket.centre.y.abs() - pocket.radius > h.y);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,65 @@
+//! A 3D pool game on Bevy, on top of the exact event-driven solver `billiards-physics`.
+//!
+//! One plugin per feature; [`GamePlugin`] puts them together with Bevy's and egui's.
+
+pub mod balls;
+pub mod camera;
+pub mod cue;
+pub mod geometry;
+pub mod lighting;
+pub mod options;
+pub mod screenshot;
+pub mod settings;
+pub mod sim;
+pub mod table;
+pub mod table_mesh;
+pub mod ui;
+
+use bevy::{prelude::*, window::WindowResolution, winit::WinitSettings};
+use bevy_egui::EguiPlugin;
+
+pub use options::{ArgsError, LaunchOptions};
+
+/// The whole game: Bevy's default plugins, egui, and the game's feature plugins.
+#[derive(Debug, Clone, Default)]
+pub struct GamePlugin {
+    /// What the command line asked for.
+    pub options: LaunchOptions,
+}
+
+impl Plugin for GamePlugin {
+    fn build(&self, app: &mut App) {
+        app.add_plugins(DefaultPlugins.set(WindowPlugin {
+            primary_window: Some(Window {
+                title: "Billiards".into(),
+                resolution: WindowResolution::new(1280, 720),
+                ..default()
+            }),
+            ..default()
+        }))
+        .add_plugins(EguiPlugin::default())
+        .add_plugins((
+            settings::plugin,
+            sim::plugin,
+            table::plugin,
+            balls::plugin,
+            cue::plugin,
+            camera::plugin,
+            lighting::plugin,
+            ui::plugin,
+        ));
+        match &self.options.screenshot {
+            Some(path) => {
+                app.add_plugins(screenshot::ScreenshotPlugin {
+                    path: path.clone(),
+                    settle: self.options.screenshot_settle,
+                });
+            }
+            // Redraw only on input or when something asks for it (moving balls, the camera
+            // easing): an idle table costs no CPU.
+            None => {
+                app.insert_resource(WinitSettings::desktop_app());
+            }
+        }
+    }
+}

@@ -1,0 +1,127 @@
+//! Command-line options of the game binary.
+
+use std::{fmt, path::PathBuf, time::Duration};
+
+/// What the binary was asked to do on the command line.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct LaunchOptions {
+    /// Capture the first fully drawn frame to this PNG file, then exit.
+    pub screenshot: Option<PathBuf>,
+    /// How long the scene must have been fully drawn before the capture (wall time).
+    pub screenshot_settle: Duration,
+    /// Print the usage text and exit.
+    pub show_help: bool,
+}
+
+/// Why the command line could not be understood.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ArgsError {
+    /// A flag that needs a value came last.
+    MissingValue(&'static str),
+    /// A value that could not be parsed.
+    InvalidValue {
+        /// The flag the value belongs to.
+        flag: &'static str,
+        /// The text that was given.
+        value: String,
+    },
+    /// A flag this binary does not know.
+    UnknownArgument(String),
+}
+
+impl fmt::Display for ArgsError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::MissingValue(flag) => write!(f, "{flag} needs a value"),
+            Self::InvalidValue { flag, value } => write!(f, "invalid value {value:?} for {flag}"),
+            Self::UnknownArgument(arg) => write!(f, "unknown argument {arg:?}"),
+        }
+    }
+}
+
+impl std::error::Error for ArgsError {}
+
+impl LaunchOptions {
+    /// The usage text printed by `--help` and after a command-line error.
+    pub const USAGE: &'static str = "\
+usage: billiards [--screenshot PATH [--settle SECONDS]]
+
+  --screenshot PATH   wait until the scene has been drawn, save it as PNG to PATH, exit
+  --settle SECONDS    how long every render pipeline must have been ready before the
+                      capture (default 2)
+  -h, --help          print this text";
+
+    /// Wall time the scene must have been fully drawn before a screenshot, unless overridden.
+    pub const DEFAULT_SETTLE: Duration = Duration::from_secs(2);
+
+    /// Parses the arguments that follow the program name.
+    pub fn from_args(args: impl IntoIterator<Item = String>) -> Result<Self, ArgsError> {
+        let mut options = Self {
+            screenshot_settle: Self::DEFAULT_SETTLE,
+            ..Self::default()
+        };
+        let mut args = args.into_iter();
+        while let Some(arg) = args.next() {
+            match arg.as_str() {
+                "--screenshot" => {
+                    let path = args.next().ok_or(ArgsError::MissingValue("--screenshot"))?;
+                    options.screenshot = Some(PathBuf::from(path));
+                }
+                "--settle" => {
+                    let value = args.next().ok_or(ArgsError::MissingValue("--settle"))?;
+                    options.screenshot_settle = value
+                        .parse::<f64>()
+                        .ok()
+                        .and_then(|s| Duration::try_from_secs_f64(s).ok())
+                        .ok_or(ArgsError::InvalidValue {
+                            flag: "--settle",
+                            value,
+                        })?;
+                }
+                "-h" | "--help" => options.show_help = true,
+                _ => return Err(ArgsError::UnknownArgument(arg)),
+            }
+        }
+        Ok(options)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(args: &[&str]) -> Result<LaunchOptions, ArgsError> {
+        LaunchOptions::from_args(args.iter().map(|s| s.to_string()))
+    }
+
+    #[test]
+    fn no_arguments_means_play() {
+        let options = parse(&[]).unwrap();
+        assert_eq!(options.screenshot, None);
+        assert_eq!(options.screenshot_settle, LaunchOptions::DEFAULT_SETTLE);
+        assert!(!options.show_help);
+    }
+
+    #[test]
+    fn screenshot_and_settle_are_read() {
+        let options = parse(&["--screenshot", "out.png", "--settle", "0.5"]).unwrap();
+        assert_eq!(options.screenshot, Some(PathBuf::from("out.png")));
+        assert_eq!(options.screenshot_settle, Duration::from_millis(500));
+    }
+
+    #[test]
+    fn bad_arguments_are_errors() {
+        assert_eq!(
+            parse(&["--screenshot"]),
+            Err(ArgsError::MissingValue("--screenshot"))
+        );
+        assert!(matches!(
+            parse(&["--settle", "-1"]),
+            Err(ArgsError::InvalidValue { .. })
+        ));
+        assert_eq!(
+            parse(&["--fast"]),
+            Err(ArgsError::UnknownArgument("--fast".into()))
+        );
+    }
+}

@@ -1,0 +1,167 @@
+//! `--screenshot PATH`: wait until the scene has really been drawn, save it, exit.
+//!
+//! On a software renderer shader pipelines compile for seconds, and until they have, frames
+//! come out blank. So the render world reports how many pipelines exist and how many are
+//! still compiling; once every pipeline has been ready (and no new one has appeared) for the
+//! settle time, the primary window is captured. The process exits with status 0 once the PNG
+//! is written, 1 if it could not be, and 3 if the scene never became ready.
+
+use std::{
+    path::PathBuf,
+    sync::{
+        Arc,
+        atomic::{AtomicUsize, Ordering},
+    },
+    time::Duration,
+};
+
+use bevy::{
+    prelude::*,
+    render::{
+        Render, RenderApp, RenderSystems,
+        render_resource::PipelineCache,
+        view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk},
+    },
+    winit::WinitSettings,
+};
+
+/// Captures the primary window once the scene is drawn, then exits.
+#[derive(Debug, Clone)]
+pub struct ScreenshotPlugin {
+    /// Where the PNG goes.
+    pub path: PathBuf,
+    /// How long every pipeline must have been ready before the capture.
+    pub settle: Duration,
+}
+
+/// Give up if the pipelines are still compiling after this long.
+const TIMEOUT: Duration = Duration::from_secs(180);
+
+impl Plugin for ScreenshotPlugin {
+    fn build(&self, app: &mut App) {
+        let progress = PipelineProgress::default();
+        // Keep updating even though nothing moves and the window may be unfocused.
+        app.insert_resource(WinitSettings::continuous())
+            .insert_resource(progress.clone())
+            .insert_resource(Capture {
+                path: self.path.clone(),
+                settle: self.settle,
+                phase: CapturePhase::WaitingForPipelines {
+                    ready_since: None,
+                    pipelines: 0,
+                },
+            })
+            .add_systems(Update, capture_when_drawn);
+        if let Some(render_app) = app.get_sub_app_mut(RenderApp) {
+            render_app
+                .insert_resource(progress)
+                .add_systems(Render, report_pipelines.in_set(RenderSystems::Cleanup));
+        } else {
+            warn!("no render app: the screenshot will wait for its timeout");
+        }
+    }
+}
+
+/// Pipeline counts, written by the render world and read by the main world.
+#[derive(Resource, Debug, Clone, Default)]
+struct PipelineProgress(Arc<PipelineCounts>);
+
+#[derive(Debug, Default)]
+struct PipelineCounts {
+    total: AtomicUsize,
+    waiting: AtomicUsize,
+}
+
+fn report_pipelines(cache: Res<PipelineCache>, progress: Res<PipelineProgress>) {
+    progress
+        .0
+        .total
+        .store(cache.pipelines().count(), Ordering::Relaxed);
+    progress
+        .0
+        .waiting
+        .store(cache.waiting_pipelines().count(), Ordering::Relaxed);
+}
+
+#[derive(Resource, Debug)]
+struct Capture {
+    path: PathBuf,
+    settle: Duration,
+    phase: CapturePhase,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum CapturePhase {
+    /// Watching the pipeline counts; `ready_since` is when they last became all ready.
+    WaitingForPipelines {
+        ready_since: Option<Duration>,
+        pipelines: usize,
+    },
+    /// The screenshot has been requested; the observer exits when it is saved.
+    Requested,
+}
+
+fn capture_when_drawn(
+    mut commands: Commands,
+    time: Res<Time<Real>>,
+    progress: Res<PipelineProgress>,
+    mut capture: ResMut<Capture>,
+    mut exit: MessageWriter<AppExit>,
+) {
+    let CapturePhase::WaitingForPipelines {
+        ready_since,
+        pipelines,
+    } = capture.phase
+    else {
+        return;
+    };
+    let now = time.elapsed();
+    let total = progress.0.total.load(Ordering::Relaxed);
+    let waiting = progress.0.waiting.load(Ordering::Relaxed);
+    // A new pipeline appearing restarts the wait: it may belong to something not yet drawn.
+    let ready = total > 0 && waiting == 0 && total == pipelines;
+    let ready_since = if ready { ready_since.or(Some(now)) } else { None };
+    if let Some(since) = ready_since
+        && now - since >= capture.settle
+    {
+        info!(
+            "{total} pipelines ready for {:.1} s after {:.1} s: capturing {}",
+            (now - since).as_secs_f64(),
+            now.as_secs_f64(),
+            capture.path.display()
+        );
+        let path = capture.path.clone();
+        // A file left by an earlier run must not pass for this run's capture.
+        if let Err(error) = std::fs::remove_file(&path)
+            && error.kind() != std::io::ErrorKind::NotFound
+        {
+            warn!("could not remove the old {}: {error}", path.display());
+        }
+        let mut save = save_to_disk(path.clone());
+        commands.spawn(Screenshot::primary_window()).observe(
+            move |captured: On<ScreenshotCaptured>, mut exit: MessageWriter<AppExit>| {
+                // Bevy's saver logs its own errors; whether the file exists decides the
+                // exit status.
+                save(captured);
+                let written = std::fs::metadata(&path).is_ok_and(|m| m.len() > 0);
+                exit.write(if written {
+                    AppExit::Success
+                } else {
+                    error!("screenshot {} was not written", path.display());
+                    AppExit::error()
+                });
+            },
+        );
+        capture.phase = CapturePhase::Requested;
+        return;
+    }
+    if now > TIMEOUT {
+        error!("render pipelines still compiling after {TIMEOUT:?} ({waiting} of {total}): giving up");
+        exit.write(AppExit::from_code(3));
+        return;
+    }
+    capture.phase = CapturePhase::WaitingForPipelines {
+        ready_since,
+        pipelines: total,
+    };
+}

@@ -1,0 +1,365 @@
+//! Player-editable settings: the next shot and the physical parameters.
+//!
+//! The panels write these resources; the simulation reads them. Every numeric field has a
+//! physical range and [`ShotSettings::clamp_to_physical`] / [`PhysicsSettings::clamp_to_physical`]
+//! pull out-of-range values back into it and report what they changed, so the panel can say so.
+
+use std::{f64::consts::TAU, fmt};
+
+use bevy::prelude::*;
+use billiards_physics::Prediction;
+
+/// Registers the settings resources.
+pub fn plugin(app: &mut App) {
+    app.init_resource::<ShotSettings>()
+        .init_resource::<PhysicsSettings>()
+        .init_resource::<ViewSettings>()
+        .init_resource::<ClampReport>();
+}
+
+/// The physical range of one parameter.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ParamRange {
+    /// Name shown to the player.
+    pub label: &'static str,
+    /// Smallest allowed value.
+    pub min: f64,
+    /// Largest allowed value.
+    pub max: f64,
+    /// Unit suffix shown after the value ("" for dimensionless numbers).
+    pub unit: &'static str,
+}
+
+impl ParamRange {
+    /// Clamps `value` into the range, recording a note when it had to change it.
+    /// A NaN (which no widget should produce) becomes the lower bound.
+    pub fn clamp(&self, value: &mut f64, notes: &mut Vec<ClampNote>) {
+        let applied = if value.is_nan() {
+            self.min
+        } else {
+            value.clamp(self.min, self.max)
+        };
+        if applied != *value {
+            notes.push(ClampNote {
+                range: *self,
+                requested: *value,
+                applied,
+            });
+            *value = applied;
+        }
+    }
+
+    /// The range as an inclusive `f64` range, for sliders.
+    pub fn as_range(&self) -> std::ops::RangeInclusive<f64> {
+        self.min..=self.max
+    }
+}
+
+/// A value the player asked for that was outside its physical range, and what was used.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ClampNote {
+    /// The parameter and its range.
+    pub range: ParamRange,
+    /// What was asked for.
+    pub requested: f64,
+    /// What is used instead.
+    pub applied: f64,
+}
+
+impl fmt::Display for ClampNote {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let r = &self.range;
+        write!(
+            f,
+            "{} {}{} is outside {}..{}{}: clamped to {}{}",
+            r.label, self.requested, r.unit, r.min, r.max, r.unit, self.applied, r.unit
+        )
+    }
+}
+
+/// The clamp notes of the most recent edit, shown by the panel until the next clamp.
+#[derive(Resource, Debug, Default, Clone, PartialEq)]
+pub struct ClampReport {
+    /// Notes of the last edit that needed clamping.
+    pub notes: Vec<ClampNote>,
+}
+
+/// The shot the player is lining up.
+#[derive(Resource, Debug, Clone, Copy, PartialEq)]
+pub struct ShotSettings {
+    /// Aim direction in the table plane, radians counter-clockwise from +x (toward the foot
+    /// rail), kept in [0, 2 pi).
+    pub angle: f64,
+    /// Power, as the speed the cue gives the cue ball, in m/s.
+    pub power: f64,
+}
+
+impl Default for ShotSettings {
+    fn default() -> Self {
+        // Straight up the table at a firm break speed, as in the paper's default layout.
+        Self {
+            angle: 0.0,
+            power: 6.0,
+        }
+    }
+}
+
+impl ShotSettings {
+    /// Cue-ball speed range: from a gentle touch to a hard break (11-13 m/s).
+    pub const POWER: ParamRange = ParamRange {
+        label: "power",
+        min: 0.05,
+        max: 13.0,
+        unit: " m/s",
+    };
+
+    /// Wraps the angle into [0, 2 pi) and clamps the power, returning what was clamped.
+    /// Wrapping the angle is not a clamp: every direction is valid.
+    pub fn clamp_to_physical(&mut self) -> Vec<ClampNote> {
+        let mut notes = Vec::new();
+        if self.angle.is_finite() {
+            self.angle = self.angle.rem_euclid(TAU);
+            // rem_euclid can round up to exactly TAU for tiny negative inputs.
+            if self.angle >= TAU {
+                self.angle = 0.0;
+            }
+        } else {
+            self.angle = 0.0;
+        }
+        Self::POWER.clamp(&mut self.power, &mut notes);
+        notes
+    }
+
+    /// The aim direction as a unit vector in the table plane.
+    pub fn direction(&self) -> bevy::math::DVec2 {
+        bevy::math::DVec2::from_angle(self.angle)
+    }
+}
+
+/// Which physics model the solver runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum PhysicsModel {
+    /// The paper's model: no spin, sliding friction above the slide/roll threshold speed and
+    /// rolling friction below it.
+    #[default]
+    Paper,
+    /// Spin (Leckie and Greenspan): sliding turns into rolling by friction at the contact
+    /// point, throw between balls, a spin-aware cushion. The slide/roll threshold is unused.
+    Spin,
+}
+
+impl PhysicsModel {
+    /// Every model, in the order the panel lists them.
+    pub const ALL: [Self; 2] = [Self::Paper, Self::Spin];
+
+    /// The name shown to the player.
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Paper => "paper (no spin)",
+            Self::Spin => "spin (Leckie & Greenspan)",
+        }
+    }
+}
+
+/// The name of a contact-time prediction, as shown to the player.
+pub fn prediction_label(prediction: Prediction) -> &'static str {
+    match prediction {
+        Prediction::Exact => "exact (roots of the real motion)",
+        Prediction::PaperLinear => "paper's linear prediction",
+    }
+}
+
+/// Every prediction, in the order the panel lists them.
+pub const PREDICTIONS: [Prediction; 2] = [Prediction::Exact, Prediction::PaperLinear];
+
+/// Random perturbation of collision normals (the paper's section 5).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Randomization {
+    /// Whether collisions are perturbed at all.
+    pub enabled: bool,
+    /// Standard deviation of the perturbation of each collision normal, in degrees.
+    pub spread_degrees: f64,
+    /// Seed of the random sequence, so that a perturbed run can be replayed.
+    pub seed: u64,
+}
+
+impl Default for Randomization {
+    fn default() -> Self {
+        Self {
+            enabled: false,
+            spread_degrees: 0.5,
+            seed: 1,
+        }
+    }
+}
+
+/// The physical parameters of the simulation and its clock.
+#[derive(Resource, Debug, Clone, Copy, PartialEq)]
+pub struct PhysicsSettings {
+    /// Sliding friction between ball and cloth.
+    pub mu_slide: f64,
+    /// Rolling resistance between ball and cloth.
+    pub mu_roll: f64,
+    /// Speed below which a ball counts as rolling rather than sliding (the paper's switch
+    /// between its two friction regimes), in m/s.
+    pub slide_roll_speed: f64,
+    /// Ball-ball coefficient of restitution.
+    pub e_ball: f64,
+    /// Ball-cushion coefficient of restitution.
+    pub e_cushion: f64,
+    /// Perturbation of collision normals.
+    pub randomization: Randomization,
+    /// Physics model.
+    pub model: PhysicsModel,
+    /// How contact times are predicted.
+    pub prediction: Prediction,
+    /// Simulated seconds per real second.
+    pub time_scale: f64,
+    /// Whether the simulation clock is stopped.
+    pub paused: bool,
+}
+
+impl Default for PhysicsSettings {
+    fn default() -> Self {
+        // Typical values from docs/physics reference (pooltool, FastFiz, Alciatore).
+        Self {
+            mu_slide: 0.2,
+            mu_roll: 0.01,
+            slide_roll_speed: 0.5,
+            e_ball: 0.95,
+            e_cushion: 0.85,
+            randomization: Randomization::default(),
+            model: PhysicsModel::default(),
+            prediction: Prediction::Exact,
+            time_scale: 1.0,
+            paused: false,
+        }
+    }
+}
+
+impl PhysicsSettings {
+    /// Sliding friction of real cloths.
+    pub const MU_SLIDE: ParamRange = ParamRange {
+        label: "sliding friction",
+        min: 0.15,
+        max: 0.4,
+        unit: "",
+    };
+    /// Rolling resistance of real cloths.
+    pub const MU_ROLL: ParamRange = ParamRange {
+        label: "rolling friction",
+        min: 0.005,
+        max: 0.015,
+        unit: "",
+    };
+    /// The slide/roll switch speed; above a few m/s every ball would count as rolling.
+    pub const SLIDE_ROLL_SPEED: ParamRange = ParamRange {
+        label: "slide/roll threshold",
+        min: 0.0,
+        max: 2.0,
+        unit: " m/s",
+    };
+    /// Ball-ball restitution: phenolic balls are 0.92-0.98; 1 is the paper's elastic ideal.
+    pub const E_BALL: ParamRange = ParamRange {
+        label: "ball restitution",
+        min: 0.9,
+        max: 1.0,
+        unit: "",
+    };
+    /// Ball-cushion restitution: real rubber cushions are 0.6-0.9; 1 is the paper's mirror.
+    pub const E_CUSHION: ParamRange = ParamRange {
+        label: "cushion restitution",
+        min: 0.6,
+        max: 1.0,
+        unit: "",
+    };
+    /// Spread of the normal perturbation: beyond a few degrees play stops looking plausible.
+    pub const SPREAD: ParamRange = ParamRange {
+        label: "spread",
+        min: 0.0,
+        max: 5.0,
+        unit: " deg",
+    };
+    /// Slow motion to fast forward.
+    pub const TIME_SCALE: ParamRange = ParamRange {
+        label: "time scale",
+        min: 0.05,
+        max: 4.0,
+        unit: "x",
+    };
+
+    /// Clamps every parameter into its physical range, returning what was clamped.
+    pub fn clamp_to_physical(&mut self) -> Vec<ClampNote> {
+        let mut notes = Vec::new();
+        Self::MU_SLIDE.clamp(&mut self.mu_slide, &mut notes);
+        Self::MU_ROLL.clamp(&mut self.mu_roll, &mut notes);
+        Self::SLIDE_ROLL_SPEED.clamp(&mut self.slide_roll_speed, &mut notes);
+        Self::E_BALL.clamp(&mut self.e_ball, &mut notes);
+        Self::E_CUSHION.clamp(&mut self.e_cushion, &mut notes);
+        Self::SPREAD.clamp(&mut self.randomization.spread_degrees, &mut notes);
+        Self::TIME_SCALE.clamp(&mut self.time_scale, &mut notes);
+        notes
+    }
+}
+
+/// What is drawn on top of the scene.
+#[derive(Resource, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ViewSettings {
+    /// Draw the paper's vectors: the red cue vector and blue ball velocities.
+    pub show_vectors: bool,
+}
+
+impl Default for ViewSettings {
+    fn default() -> Self {
+        // The paper's default layout figure shows the cue vector.
+        Self { show_vectors: true }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_inside_their_ranges() {
+        assert!(PhysicsSettings::default().clamp_to_physical().is_empty());
+        assert!(ShotSettings::default().clamp_to_physical().is_empty());
+    }
+
+    #[test]
+    fn out_of_range_values_are_clamped_and_reported() {
+        let mut settings = PhysicsSettings {
+            mu_slide: 0.9,
+            e_cushion: -1.0,
+            ..default()
+        };
+        let notes = settings.clamp_to_physical();
+        assert_eq!(settings.mu_slide, 0.4);
+        assert_eq!(settings.e_cushion, 0.6);
+        assert_eq!(notes.len(), 2);
+        assert_eq!(notes[0].requested, 0.9);
+        assert!(notes[0].to_string().contains("sliding friction"));
+    }
+
+    #[test]
+    fn nan_is_replaced() {
+        let mut shot = ShotSettings {
+            angle: f64::NAN,
+            power: f64::NAN,
+        };
+        let notes = shot.clamp_to_physical();
+        assert_eq!(shot.angle, 0.0);
+        assert_eq!(shot.power, ShotSettings::POWER.min);
+        assert_eq!(notes.len(), 1);
+    }
+
+    #[test]
+    fn angle_wraps_without_a_note() {
+        let mut shot = ShotSettings {
+            angle: -std::f64::consts::FRAC_PI_2,
+            power: 1.0,
+        };
+        assert!(shot.clamp_to_physical().is_empty());
+        assert!((shot.angle - 1.5 * std::f64::consts::PI).abs() < 1e-12);
+    }
+}

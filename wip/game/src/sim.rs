@@ -1,0 +1,598 @@
+//! The simulation: `billiards-physics` inside the ECS.
+//!
+//! One frame, in [`Update`]:
+//! 1. [`SimSystems::Step`]: one exclusive system advances the solver by the frame's virtual
+//!    time (so pause and time scale apply), or by exactly one event when the paused player
+//!    asks for a step. It writes back only the balls whose state changed and turns the
+//!    solver's events into messages ([`BallContact`], [`CushionHit`], [`BallPocketed`],
+//!    [`ShotFinished`]). When every ball rests it does nothing at all.
+//! 2. [`SimSystems::Flow`]: the game's reaction to a finished shot (respotting after a scratch).
+//! 3. [`SimSystems::Commands`]: requests for the next frame: rack, settings changes, edited
+//!    balls (found by change detection, so only those are re-predicted), the shot.
+//!
+//! Running the requests after the step means a shot starts with the next frame's delta, not
+//! with whatever idle time the reactive window accumulated before the key press.
+
+use std::{ops::Range, time::Instant};
+
+use bevy::{math::DVec2, prelude::*, window::RequestRedraw};
+use billiards_physics::{
+    self as physics, BallState, CushionModel, EventKind, Model, Motion, PaperModel, Params,
+    Rack, Shot, Simulation, SpinModel,
+};
+
+use crate::{
+    balls::{Ball, BallMotion, MotionState, Pocketed},
+    geometry::TableSpec,
+    settings::{PhysicsModel, PhysicsSettings},
+};
+
+/// Registers the solver, its messages and the game-flow systems. Needs no rendering, so it
+/// runs headless under `MinimalPlugins` too (together with [`crate::settings::plugin`]).
+pub fn plugin(app: &mut App) {
+    app.add_message::<RackRequested>()
+        .add_message::<ShotRequested>()
+        .add_message::<StepRequested>()
+        .add_message::<BallContact>()
+        .add_message::<CushionHit>()
+        .add_message::<BallPocketed>()
+        .add_message::<ShotFinished>()
+        .add_message::<RequestRedraw>()
+        .init_resource::<TableSpec>()
+        .init_resource::<SimStatus>()
+        .configure_sets(
+            Update,
+            (SimSystems::Step, SimSystems::Flow, SimSystems::Commands).chain(),
+        )
+        .add_systems(Startup, request_default_rack)
+        .add_systems(
+            Update,
+            (
+                advance_solver.in_set(SimSystems::Step),
+                respot_after_scratch.in_set(SimSystems::Flow),
+                (
+                    apply_clock_settings,
+                    rack_balls,
+                    apply_physics_settings,
+                    place_edited_balls,
+                    strike_cue_ball,
+                )
+                    .chain()
+                    .in_set(SimSystems::Commands),
+            ),
+        );
+}
+
+/// The phases of the simulation within a frame, in order.
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SimSystems {
+    /// The exclusive solver step and its writeback.
+    Step,
+    /// Game flow reacting to what the step reported.
+    Flow,
+    /// Requests that take effect from the next step on.
+    Commands,
+}
+
+/// The racks the panel offers, in its order.
+pub const RACKS: [Rack; 4] = [Rack::PaperDefault, Rack::FifteenBall, Rack::Tight, Rack::NineBall];
+
+/// The name of a rack shown to the player.
+pub fn rack_label(rack: Rack) -> &'static str {
+    match rack {
+        Rack::PaperDefault => "Paper default",
+        Rack::FifteenBall => "15-ball rack",
+        Rack::Tight => "Tight 15",
+        Rack::NineBall => "9-ball rack",
+    }
+}
+
+/// The rack on the table when the game starts: the paper's 15 balls 1/10 in apart, with the
+/// cue ball on the head spot.
+pub const STARTING_RACK: Rack = Rack::FifteenBall;
+
+/// Asks for the table to be cleared and racked anew.
+#[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RackRequested(pub Rack);
+
+/// Asks for the cue ball to be struck. Only honoured while every ball rests.
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub struct ShotRequested {
+    /// Direction in the table plane, radians counter-clockwise from +x.
+    pub angle: f64,
+    /// Cue-ball speed given by the cue, m/s.
+    pub speed: f64,
+}
+
+/// Asks the paused simulation to advance exactly to its next event.
+#[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct StepRequested;
+
+/// Two balls collided.
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub struct BallContact {
+    /// The ball with the lower solver index.
+    pub a: Entity,
+    /// The other ball.
+    pub b: Entity,
+    /// Simulation time of the contact, seconds.
+    pub time: f64,
+}
+
+/// What part of the table's edge a ball hit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CushionPart {
+    /// The straight nose of a cushion.
+    Cushion(physics::Cushion),
+    /// The rounded jaw at the mouth of a pocket.
+    Jaw(physics::Pocket),
+}
+
+/// A ball hit a cushion or a pocket jaw.
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub struct CushionHit {
+    /// The ball.
+    pub ball: Entity,
+    /// What it hit.
+    pub part: CushionPart,
+    /// Simulation time of the hit, seconds.
+    pub time: f64,
+}
+
+/// A ball dropped into a pocket.
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub struct BallPocketed {
+    /// The ball.
+    pub ball: Entity,
+    /// Its number.
+    pub number: u8,
+    /// The pocket.
+    pub pocket: physics::Pocket,
+    /// Simulation time, seconds.
+    pub time: f64,
+}
+
+/// Every ball has come to rest after a shot.
+#[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ShotFinished {
+    /// Whether the cue ball went into a pocket.
+    pub scratch: bool,
+}
+
+/// What the simulation reports to the HUD and to the game flow.
+#[derive(Resource, Debug, Clone, PartialEq, Default)]
+pub struct SimStatus {
+    /// Whether every ball is at rest (a shot may be taken).
+    pub at_rest: bool,
+    /// Shots taken since the last rack.
+    pub shots: u32,
+    /// Simulated time since the last rack, seconds.
+    pub sim_time: f64,
+    /// Events the solver resolved since the last strike (the strike itself not counted).
+    pub events_this_shot: usize,
+    /// Wall time the solver took in the last frame that ran it, seconds.
+    pub solver_seconds_last_frame: f64,
+    /// A message for the player about the simulation's state, if any.
+    pub note: Option<String>,
+}
+
+/// The solver and the entity of each of its balls.
+#[derive(Resource, Debug)]
+pub struct Solver {
+    sim: Simulation,
+    entities: Vec<Entity>,
+}
+
+impl Solver {
+    /// The simulation, for reading.
+    pub fn simulation(&self) -> &Simulation {
+        &self.sim
+    }
+
+    /// The entity of solver ball `id`.
+    pub fn entity(&self, id: usize) -> Option<Entity> {
+        self.entities.get(id).copied()
+    }
+
+    /// The solver index of the cue ball, if it is in the layout.
+    pub fn cue_ball(&self) -> Option<usize> {
+        self.sim.numbers().iter().position(|&n| n == 0)
+    }
+}
+
+/// The solver's parameters for the player's settings.
+pub fn params_from(settings: &PhysicsSettings) -> Params {
+    let model = match settings.model {
+        PhysicsModel::Paper => Model::Paper(PaperModel {
+            mu_slide: settings.mu_slide,
+            mu_roll: settings.mu_roll,
+            slide_roll_speed: settings.slide_roll_speed,
+            e_ball: settings.e_ball,
+            e_cushion: settings.e_cushion,
+        }),
+        PhysicsModel::Spin => {
+            let defaults = SpinModel::default();
+            // Keep the library's cushion friction; only the restitution is a setting.
+            let cushion = match defaults.cushion {
+                CushionModel::Han2005 { mu, .. } => CushionModel::Han2005 {
+                    e: settings.e_cushion,
+                    mu,
+                },
+                CushionModel::Reflect { .. } => CushionModel::Reflect {
+                    e: settings.e_cushion,
+                },
+            };
+            Model::Spin(SpinModel {
+                mu_slide: settings.mu_slide,
+                mu_roll: settings.mu_roll,
+                e_ball: settings.e_ball,
+                cushion,
+                ..defaults
+            })
+        }
+    };
+    Params {
+        model,
+        prediction: settings.prediction,
+        randomization: settings
+            .randomization
+            .enabled
+            .then(|| physics::Randomization {
+                spread: settings.randomization.spread_degrees.to_radians(),
+                seed: settings.randomization.seed,
+            }),
+        ..Params::default()
+    }
+}
+
+fn to_dvec2(v: physics::Vec2) -> DVec2 {
+    DVec2::new(v.x, v.y)
+}
+
+fn to_vec2(v: DVec2) -> physics::Vec2 {
+    physics::Vec2::new(v.x, v.y)
+}
+
+/// The component form of a solver ball state.
+pub fn ball_motion(state: &BallState) -> BallMotion {
+    BallMotion {
+        position: to_dvec2(state.position),
+        velocity: to_dvec2(state.velocity),
+        state: match state.motion {
+            Motion::Sliding => MotionState::Sliding,
+            Motion::Rolling => MotionState::Rolling,
+            // Spinning in place: the centre does not move, so nothing to roll.
+            Motion::Stationary | Motion::Spinning | Motion::Pocketed(_) => {
+                MotionState::Stationary
+            }
+        },
+    }
+}
+
+/// Applies the pause and time-scale settings to the virtual clock the solver advances by.
+fn apply_clock_settings(settings: Res<PhysicsSettings>, mut time: ResMut<Time<Virtual>>) {
+    if !settings.is_changed() {
+        return;
+    }
+    time.set_relative_speed_f64(settings.time_scale);
+    if settings.paused {
+        time.pause();
+    } else {
+        time.unpause();
+    }
+}
+
+fn request_default_rack(mut racks: MessageWriter<RackRequested>) {
+    racks.write(RackRequested(STARTING_RACK));
+}
+
+/// The solver step (see the module docs). Exclusive: it needs the solver, the ball
+/// components and the message queues at once, and nothing else may run beside it anyway.
+fn advance_solver(world: &mut World) {
+    let step_requested = world
+        .resource_mut::<Messages<StepRequested>>()
+        .drain()
+        .count()
+        > 0;
+    if !world.contains_resource::<Solver>() {
+        return;
+    }
+    let dt = world.resource::<Time>().delta_secs_f64();
+    let paused = world.resource::<Time<Virtual>>().is_paused();
+    world.resource_scope(|world, mut solver: Mut<Solver>| {
+        if solver.sim.is_at_rest() {
+            return;
+        }
+        let started = Instant::now();
+        let outcome: Result<Range<usize>, String> = if paused {
+            if !step_requested {
+                return;
+            }
+            let before = solver.sim.history().events().len();
+            solver.sim.step_event();
+            Ok(before..solver.sim.history().events().len())
+        } else if dt > 0.0 {
+            solver
+                .sim
+                .advance(dt)
+                .map(|advance| advance.events)
+                .map_err(|error| error.to_string())
+        } else {
+            return;
+        };
+        let cost = started.elapsed().as_secs_f64();
+        write_back(world, &solver);
+        let events = match outcome {
+            Ok(range) => range,
+            Err(error) => {
+                // The solver's state is valid where it stopped; show why it stopped.
+                world.resource_mut::<SimStatus>().note = Some(format!("solver: {error}"));
+                0..0
+            }
+        };
+        send_event_messages(world, &solver, events.clone());
+        let at_rest = solver.sim.is_at_rest();
+        {
+            let mut status = world.resource_mut::<SimStatus>();
+            status.at_rest = at_rest;
+            status.sim_time = solver.sim.time();
+            status.events_this_shot += events.len();
+            status.solver_seconds_last_frame = cost;
+        }
+        if at_rest {
+            let scratch = solver
+                .cue_ball()
+                .is_some_and(|id| !solver.sim.ball(id).motion.on_table());
+            world.write_message(ShotFinished { scratch });
+        } else {
+            // The window only redraws on demand; moving balls demand it.
+            world.write_message(RequestRedraw);
+        }
+    });
+}
+
+/// Copies changed solver states to the ball components (`set_if_neq`: a ball at rest is not
+/// touched, so change detection downstream sees only what moved).
+fn write_back(world: &mut World, solver: &Solver) {
+    for (id, &entity) in solver.entities.iter().enumerate() {
+        let state = solver.sim.ball(id);
+        let Ok(mut ball) = world.get_entity_mut(entity) else {
+            continue;
+        };
+        if let Some(mut motion) = ball.get_mut::<BallMotion>() {
+            motion.set_if_neq(ball_motion(&state));
+        }
+        if let Motion::Pocketed(pocket) = state.motion
+            && !ball.contains::<Pocketed>()
+        {
+            ball.insert(Pocketed { pocket });
+        }
+    }
+}
+
+fn send_event_messages(world: &mut World, solver: &Solver, events: Range<usize>) {
+    let entity = |id: usize| solver.entities[id];
+    for event in &solver.sim.history().events()[events] {
+        let time = event.time;
+        match event.kind {
+            EventKind::BallBall { a, b } => {
+                world.write_message(BallContact {
+                    a: entity(a),
+                    b: entity(b),
+                    time,
+                });
+            }
+            EventKind::Cushion { ball, cushion } => {
+                world.write_message(CushionHit {
+                    ball: entity(ball),
+                    part: CushionPart::Cushion(cushion),
+                    time,
+                });
+            }
+            EventKind::Jaw { ball, pocket } => {
+                world.write_message(CushionHit {
+                    ball: entity(ball),
+                    part: CushionPart::Jaw(pocket),
+                    time,
+                });
+            }
+            EventKind::Pocketed { ball, pocket } => {
+                world.write_message(BallPocketed {
+                    ball: entity(ball),
+                    number: solver.sim.numbers()[ball],
+                    pocket,
+                    time,
+                });
+            }
+            EventKind::Strike { .. }
+            | EventKind::Placed { .. }
+            | EventKind::ParamsChanged
+            | EventKind::Transition { .. } => {}
+        }
+    }
+}
+
+/// Clears the table and racks anew: a new solver and new ball entities.
+fn rack_balls(
+    mut commands: Commands,
+    mut requests: MessageReader<RackRequested>,
+    spec: Res<TableSpec>,
+    settings: Res<PhysicsSettings>,
+    balls: Query<Entity, With<Ball>>,
+    mut status: ResMut<SimStatus>,
+) {
+    let Some(&RackRequested(rack)) = requests.read().last() else {
+        return;
+    };
+    let table = spec.physics_table();
+    let params = params_from(&settings);
+    let layout = rack.layout(&table, &params.ball);
+    let sim = match Simulation::new(table, params, &layout) {
+        Ok(sim) => sim,
+        Err(error) => {
+            status.note = Some(format!("cannot rack: {error}"));
+            return;
+        }
+    };
+    for entity in &balls {
+        commands.entity(entity).despawn();
+    }
+    let entities = sim
+        .balls()
+        .zip(sim.numbers())
+        .enumerate()
+        .map(|(id, (state, &number))| {
+            let motion = ball_motion(&state);
+            commands
+                .spawn((
+                    Ball { id, number },
+                    motion,
+                    Transform::from_translation(spec.ball_world_position(motion.position)),
+                    Name::new(format!("Ball {number}")),
+                ))
+                .id()
+        })
+        .collect();
+    commands.insert_resource(Solver { sim, entities });
+    *status = SimStatus {
+        at_rest: true,
+        ..default()
+    };
+}
+
+/// A settings change reaches the solver: moving balls continue under the new parameters.
+fn apply_physics_settings(
+    settings: Res<PhysicsSettings>,
+    solver: Option<ResMut<Solver>>,
+    mut status: ResMut<SimStatus>,
+) {
+    let Some(mut solver) = solver else { return };
+    let params = params_from(&settings);
+    // Compare with what the solver has rather than trusting change detection alone: the
+    // clock settings (pause, time scale) change the resource too but not the physics.
+    if !settings.is_changed() || *solver.sim.params() == params {
+        return;
+    }
+    if let Err(error) = solver.sim.set_params(params) {
+        status.note = Some(format!("settings not applied: {error}"));
+    }
+}
+
+/// Balls whose [`BallMotion`] was edited outside the solver (respot, ball in hand, tools)
+/// are placed in the solver; only they are re-predicted. An edit the solver rejects (off the
+/// table, overlapping) is undone.
+fn place_edited_balls(
+    solver: Option<ResMut<Solver>>,
+    mut balls: Query<(&Ball, &mut BallMotion), Changed<BallMotion>>,
+    mut status: ResMut<SimStatus>,
+) {
+    let Some(mut solver) = solver else { return };
+    for (ball, mut motion) in &mut balls {
+        if ball.id >= solver.sim.ball_count() {
+            continue;
+        }
+        let state = solver.sim.ball(ball.id);
+        // The solver's own writeback also marks the component changed; it matches exactly.
+        let current = ball_motion(&state);
+        if motion.position == current.position && motion.velocity == current.velocity {
+            continue;
+        }
+        // A ball put down by hand carries no spin.
+        let result = solver.sim.place(
+            ball.id,
+            to_vec2(motion.position),
+            to_vec2(motion.velocity),
+            physics::Vec3::ZERO,
+        );
+        if let Err(error) = result {
+            status.note = Some(format!("ball {} not moved: {error}", ball.number));
+        }
+        // Either way the component now says what the solver has; already marked changed.
+        *motion.bypass_change_detection() = ball_motion(&solver.sim.ball(ball.id));
+        status.at_rest = solver.sim.is_at_rest();
+    }
+}
+
+/// Strikes the cue ball when every ball rests.
+fn strike_cue_ball(
+    mut shots: MessageReader<ShotRequested>,
+    solver: Option<ResMut<Solver>>,
+    mut status: ResMut<SimStatus>,
+    mut redraw: MessageWriter<RequestRedraw>,
+) {
+    let Some(&request) = shots.read().last() else {
+        return;
+    };
+    let Some(mut solver) = solver else { return };
+    if !solver.sim.is_at_rest() {
+        status.note = Some("wait until every ball rests".to_owned());
+        return;
+    }
+    let Some(cue_ball) = solver.cue_ball() else {
+        status.note = Some("there is no cue ball in this layout".to_owned());
+        return;
+    };
+    let shot = Shot::new(request.angle, request.speed);
+    match solver.sim.strike(cue_ball, shot) {
+        Ok(()) => {
+            status.shots += 1;
+            status.events_this_shot = 0;
+            status.at_rest = solver.sim.is_at_rest();
+            status.note = None;
+            redraw.write(RequestRedraw);
+        }
+        Err(error) => status.note = Some(format!("no shot: {error}")),
+    }
+}
+
+/// After a scratch the cue ball goes back on the head string: the head spot, or the nearest
+/// free point along the string. The edit reaches the solver like any other (change detection).
+fn respot_after_scratch(
+    mut commands: Commands,
+    mut finished: MessageReader<ShotFinished>,
+    solver: Option<Res<Solver>>,
+    spec: Res<TableSpec>,
+    mut balls: Query<&mut BallMotion>,
+    mut status: ResMut<SimStatus>,
+) {
+    if !finished.read().any(|shot| shot.scratch) {
+        return;
+    }
+    let Some(solver) = solver else { return };
+    let Some(cue) = solver.cue_ball() else { return };
+    let others: Vec<DVec2> = (0..solver.sim.ball_count())
+        .filter(|&id| id != cue)
+        .map(|id| solver.sim.ball(id))
+        .filter(|state| state.motion.on_table())
+        .map(|state| to_dvec2(state.position))
+        .collect();
+    let Some(spot) = head_string_spot(&spec, &others) else {
+        status.note = Some("no free spot on the head string for the cue ball".to_owned());
+        return;
+    };
+    let entity = solver.entities[cue];
+    if let Ok(mut motion) = balls.get_mut(entity) {
+        *motion = BallMotion {
+            position: spot,
+            velocity: DVec2::ZERO,
+            state: MotionState::Stationary,
+        };
+        commands.entity(entity).remove::<Pocketed>();
+        status.note = Some("scratch: the cue ball is back on the head string".to_owned());
+    }
+}
+
+/// The free point on the head string (x = -L/4) nearest the head spot, if any: a ball there
+/// must clear every other ball by a millimetre.
+pub fn head_string_spot(spec: &TableSpec, others: &[DVec2]) -> Option<DVec2> {
+    let clearance = 2.0 * spec.ball_radius + 1e-3;
+    let limit = spec.width / 2.0 - spec.ball_radius;
+    let step = spec.ball_radius / 4.0;
+    let free = |p: DVec2| others.iter().all(|o| o.distance(p) >= clearance);
+    (0u32..)
+        .map(|k| f64::from(k) * step)
+        .take_while(|&offset| offset <= limit)
+        .flat_map(|offset| [offset, -offset])
+        .map(|y| DVec2::new(spec.head_spot().x, y))
+        .find(|&p| free(p))
+}

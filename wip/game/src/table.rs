@@ -1,0 +1,134 @@
+//! The table: cloth, cushions, wooden rails, pockets, diamond sights, legs and the floor.
+
+use bevy::{light::NotShadowCaster, math::DVec3, prelude::*};
+
+use crate::{
+    geometry::{TableSpec, to_world},
+    table_mesh,
+};
+
+/// Spawns the table from the [`TableSpec`] resource.
+pub fn plugin(app: &mut App) {
+    app.init_resource::<TableSpec>()
+        .add_systems(Startup, spawn_table);
+}
+
+/// Marks every part of the table.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TablePart;
+
+/// The cloth, whose colour the render test looks for.
+pub const CLOTH_COLOUR: Color = Color::srgb(0.05, 0.42, 0.20);
+
+/// Height of the cloth above the floor (WPA: 29.25-31 in).
+const CLOTH_HEIGHT: f64 = 0.78;
+/// How far the apron reaches below the cloth.
+const APRON_DEPTH: f64 = 0.18;
+/// Depth of the pocket liners below the cloth.
+const POCKET_DEPTH: f64 = 0.12;
+
+fn spawn_table(
+    mut commands: Commands,
+    spec: Res<TableSpec>,
+    mut meshes: ResMut<Assets<Mesh>>,
+    mut materials: ResMut<Assets<StandardMaterial>>,
+) {
+    let cloth = materials.add(StandardMaterial {
+        base_color: CLOTH_COLOUR,
+        perceptual_roughness: 0.95,
+        reflectance: 0.2,
+        ..default()
+    });
+    let cushion_cloth = materials.add(StandardMaterial {
+        base_color: Color::srgb(0.04, 0.36, 0.17),
+        perceptual_roughness: 0.95,
+        reflectance: 0.2,
+        ..default()
+    });
+    let wood = materials.add(StandardMaterial {
+        base_color: Color::srgb(0.30, 0.12, 0.04),
+        perceptual_roughness: 0.35,
+        reflectance: 0.4,
+        ..default()
+    });
+    let liner = materials.add(StandardMaterial {
+        base_color: Color::srgb(0.015, 0.015, 0.015),
+        perceptual_roughness: 0.8,
+        ..default()
+    });
+    let pearl = materials.add(StandardMaterial {
+        base_color: Color::srgb(0.93, 0.90, 0.82),
+        perceptual_roughness: 0.2,
+        ..default()
+    });
+
+    let mut part = |mesh: Mesh, material: &Handle<StandardMaterial>, name: &'static str| {
+        commands
+            .spawn((
+                TablePart,
+                Name::new(name),
+                Mesh3d(meshes.add(mesh)),
+                MeshMaterial3d(material.clone()),
+            ))
+            .id()
+    };
+    part(table_mesh::cloth(&spec), &cloth, "Cloth");
+    part(table_mesh::cushions(&spec), &cushion_cloth, "Cushions");
+    part(table_mesh::rails(&spec, -APRON_DEPTH), &wood, "Rails");
+    let liners = part(
+        table_mesh::pocket_liners(&spec, POCKET_DEPTH),
+        &liner,
+        "Pocket liners",
+    );
+    // The liners are inside the table; letting them cast would only darken the pockets' rims.
+    commands.entity(liners).insert(NotShadowCaster);
+
+    // Diamond sights: small flat rhombi inlaid in the rail tops.
+    let diamond = meshes.add(Rhombus::new(0.028, 0.014));
+    for (rail, position) in table_mesh::diamond_positions(&spec) {
+        use crate::geometry::Rail;
+        // Lay the 2D rhombus flat, its long diagonal across the rail.
+        let across = match rail {
+            Rail::Left | Rail::Right => 0.0,
+            Rail::Head | Rail::Foot => std::f32::consts::FRAC_PI_2,
+        };
+        commands.spawn((
+            TablePart,
+            Name::new("Diamond sight"),
+            Mesh3d(diamond.clone()),
+            MeshMaterial3d(pearl.clone()),
+            NotShadowCaster,
+            Transform::from_translation(to_world(position + DVec3::Z * 5e-4))
+                .with_rotation(Quat::from_rotation_y(across) * Quat::from_rotation_x(-std::f32::consts::FRAC_PI_2)),
+        ));
+    }
+
+    // Four legs under the corners, and the floor.
+    let outer = spec.outer_half_extents();
+    let leg_height = (CLOTH_HEIGHT - APRON_DEPTH) as f32;
+    let leg = meshes.add(Cuboid::new(0.14, leg_height, 0.14));
+    for (sx, sy) in [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)] {
+        let at = DVec3::new(
+            sx * (outer.x - 0.12),
+            sy * (outer.y - 0.12),
+            -APRON_DEPTH - f64::from(leg_height) / 2.0,
+        );
+        commands.spawn((
+            TablePart,
+            Name::new("Leg"),
+            Mesh3d(leg.clone()),
+            MeshMaterial3d(wood.clone()),
+            Transform::from_translation(to_world(at)),
+        ));
+    }
+    commands.spawn((
+        Name::new("Floor"),
+        Mesh3d(meshes.add(Plane3d::default().mesh().size(12.0, 12.0))),
+        MeshMaterial3d(materials.add(StandardMaterial {
+            base_color: Color::srgb(0.16, 0.10, 0.08),
+            perceptual_roughness: 0.9,
+            ..default()
+        })),
+        Transform::from_xyz(0.0, -CLOTH_HEIGHT as f32, 0.0),
+    ));
+}

@@ -1,0 +1,139 @@
+//! Render test: the real binary draws the table, the balls and the cue.
+//!
+//! Runs `billiards --screenshot` under Xvfb with whatever Vulkan driver is installed (Mesa's
+//! software lavapipe in CI, see `.ci/run`) and checks the captured pixels. On a machine
+//! without `xvfb-run` or a Vulkan driver it prints that it is skipped and passes, so the
+//! README's test command works everywhere.
+
+use std::{
+    env,
+    path::{Path, PathBuf},
+    process::Command,
+};
+
+/// Where Vulkan loaders look for driver manifests.
+const ICD_DIRS: [&str; 3] = [
+    "/usr/share/vulkan/icd.d",
+    "/etc/vulkan/icd.d",
+    "/usr/local/share/vulkan/icd.d",
+];
+
+fn on_path(program: &str) -> bool {
+    env::var_os("PATH").is_some_and(|paths| {
+        env::split_paths(&paths).any(|dir| dir.join(program).is_file())
+    })
+}
+
+fn vulkan_driver_installed() -> bool {
+    env::var_os("VK_ICD_FILENAMES").is_some()
+        || env::var_os("VK_DRIVER_FILES").is_some()
+        || ICD_DIRS.iter().any(|dir| {
+            std::fs::read_dir(dir).is_ok_and(|entries| {
+                entries
+                    .flatten()
+                    .any(|e| e.path().extension().is_some_and(|x| x == "json"))
+            })
+        })
+}
+
+/// An RGB screenshot.
+struct Shot {
+    width: usize,
+    height: usize,
+    rgb: Vec<[u8; 3]>,
+}
+
+impl Shot {
+    fn load(path: &Path) -> Self {
+        let file = std::fs::File::open(path).expect("screenshot exists");
+        let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
+        decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
+        let mut reader = decoder.read_info().expect("screenshot is a PNG");
+        let mut buffer = vec![0; reader.output_buffer_size().expect("sane PNG size")];
+        let info = reader.next_frame(&mut buffer).expect("PNG decodes");
+        let channels = match info.color_type {
+            png::ColorType::Rgb => 3,
+            png::ColorType::Rgba => 4,
+            other => panic!("unexpected PNG colour type {other:?}"),
+        };
+        let rgb = buffer[..info.buffer_size()]
+            .chunks_exact(channels)
+            .map(|p| [p[0], p[1], p[2]])
+            .collect();
+        Self {
+            width: info.width as usize,
+            height: info.height as usize,
+            rgb,
+        }
+    }
+
+    /// Pixels of the 3D view: right of the settings panel, minus the HUD corner.
+    fn table_view(&self) -> impl Iterator<Item = [u8; 3]> + '_ {
+        let panel = billiards::ui::PANEL_WIDTH as usize + 4;
+        let (hud_left, hud_bottom) = (self.width.saturating_sub(320), 200);
+        (0..self.height).flat_map(move |y| {
+            (panel..self.width)
+                .filter(move |&x| !(x >= hud_left && y < hud_bottom))
+                .map(move |x| self.rgb[y * self.width + x])
+        })
+    }
+
+    fn count(&self, matches: impl Fn([i32; 3]) -> bool) -> usize {
+        self.table_view()
+            .filter(|p| matches(p.map(i32::from)))
+            .count()
+    }
+}
+
+#[test]
+fn table_balls_and_cue_are_drawn() {
+    if !on_path("xvfb-run") || !vulkan_driver_installed() {
+        eprintln!(
+            "render test skipped: needs xvfb-run and a Vulkan driver \
+             (apt-get install xvfb mesa-vulkan-drivers libvulkan1)"
+        );
+        return;
+    }
+    let out: PathBuf = env::temp_dir().join(format!("billiards-render-{}.png", std::process::id()));
+    let runtime_dir = env::var_os("XDG_RUNTIME_DIR").unwrap_or_else(|| env::temp_dir().into());
+    // `timeout` (coreutils) ends the run with SIGTERM, so xvfb-run can stop its X server.
+    let output = Command::new("timeout")
+        .args(["--kill-after=10", "300", "xvfb-run", "-a", "-s", "-screen 0 1280x720x24"])
+        .arg(env!("CARGO_BIN_EXE_billiards"))
+        .arg("--screenshot")
+        .arg(&out)
+        .env("XDG_RUNTIME_DIR", runtime_dir)
+        .output()
+        .expect("timeout and xvfb-run start");
+    assert!(
+        output.status.success(),
+        "billiards --screenshot failed ({}):\n{}",
+        output.status,
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let shot = Shot::load(&out);
+    let _ = std::fs::remove_file(&out);
+    assert_eq!((shot.width, shot.height), (1280, 720));
+
+    let total = shot.table_view().count();
+    let cloth = shot.count(|[r, g, b]| g > 50 && g > r * 3 / 2 + 10 && g > b + 15);
+    let white = shot.count(|[r, g, b]| r > 190 && g > 190 && b > 180 && r - b < 40);
+    let yellow = shot.count(|[r, g, b]| r > 170 && g > 120 && b < 70 && r - g < 90);
+    let red = shot.count(|[r, g, b]| r > 140 && g < 60 && b < 60);
+    let blue = shot.count(|[r, g, b]| b > 110 && r < 60 && g < 110);
+    let maple = shot.count(|[r, g, b]| r > 170 && g > 120 && b > 70 && r - b > 60 && r >= g);
+    let mean_brightness =
+        shot.table_view().map(|p| p.iter().map(|&c| u64::from(c)).sum::<u64>()).sum::<u64>()
+            / (3 * total as u64);
+    let report = format!(
+        "view {total} px, mean {mean_brightness}: cloth {cloth}, white {white}, yellow {yellow}, \
+         red {red}, blue {blue}, maple {maple}"
+    );
+    eprintln!("{report}");
+
+    assert!(mean_brightness > 20, "the frame is (nearly) black: {report}");
+    assert!(cloth > total / 5, "too little cloth: {report}");
+    assert!(white > 60, "no cue ball: {report}");
+    assert!(yellow > 20 && red > 20 && blue > 20, "coloured balls missing: {report}");
+    assert!(maple > 150, "no cue stick: {report}");
+}

@@ -1,0 +1,186 @@
+//! Headless tests of the simulation plugin: `MinimalPlugins` plus the game's settings and
+//! simulation plugins, with time advanced by hand.
+
+use std::time::Duration;
+
+use bevy::{math::DVec2, prelude::*, time::TimeUpdateStrategy};
+use billiards::{
+    balls::{Ball, BallMotion, Pocketed},
+    geometry::TableSpec,
+    settings::{self, PhysicsSettings},
+    sim::{self, RackRequested, ShotFinished, ShotRequested, SimStatus, Solver, params_from},
+};
+use billiards_physics::{Motion, Rack, Shot, Simulation};
+
+/// A headless game with the given rack on the table.
+fn game(rack: Rack) -> App {
+    let mut app = App::new();
+    app.add_plugins((MinimalPlugins, settings::plugin, sim::plugin));
+    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(16)));
+    app.update();
+    app.world_mut().write_message(RackRequested(rack));
+    app.update();
+    app
+}
+
+/// Runs frames with durations from `frame` until every ball rests (at most `limit` frames);
+/// returns how many frames ran.
+fn run_to_rest(app: &mut App, mut frame: impl FnMut(usize) -> Duration, limit: usize) -> usize {
+    for i in 0..limit {
+        app.insert_resource(TimeUpdateStrategy::ManualDuration(frame(i)));
+        app.update();
+        if i > 0 && app.world().resource::<SimStatus>().at_rest {
+            return i + 1;
+        }
+    }
+    panic!("balls still moving after {limit} frames");
+}
+
+/// The balls as the ECS has them, by solver index: position, pocketed or not.
+fn ecs_balls(app: &mut App) -> Vec<(usize, DVec2, bool)> {
+    let mut balls: Vec<_> = app
+        .world_mut()
+        .query::<(&Ball, &BallMotion, Has<Pocketed>)>()
+        .iter(app.world())
+        .map(|(ball, motion, pocketed)| (ball.id, motion.position, pocketed))
+        .collect();
+    balls.sort_by_key(|&(id, _, _)| id);
+    balls
+}
+
+fn shoot(app: &mut App, angle: f64, speed: f64) {
+    app.world_mut()
+        .write_message(ShotRequested { angle, speed });
+}
+
+#[test]
+fn a_break_ends_bit_identical_to_the_library_however_frames_are_sliced() {
+    let (angle, speed) = (0.012, 9.0);
+    // The library alone, run to rest.
+    let spec = TableSpec::default();
+    let params = params_from(&PhysicsSettings::default());
+    let table = spec.physics_table();
+    let layout = Rack::FifteenBall.layout(&table, &params.ball);
+    let mut reference = Simulation::new(table, params, &layout).unwrap();
+    reference.strike(0, Shot::new(angle, speed)).unwrap();
+    reference.run_to_rest().unwrap();
+    let expected: Vec<(usize, DVec2, bool)> = reference
+        .balls()
+        .enumerate()
+        .map(|(id, s)| {
+            let pocketed = matches!(s.motion, Motion::Pocketed(_));
+            (id, DVec2::new(s.position.x, s.position.y), pocketed)
+        })
+        .collect();
+
+    let patterns: [(&str, fn(usize) -> Duration); 4] = [
+        ("60 Hz", |_| Duration::from_micros(16_667)),
+        ("slow 7 Hz", |_| Duration::from_millis(143)),
+        ("alternating", |i| {
+            Duration::from_micros(if i % 2 == 0 { 1_000 } else { 200_000 })
+        }),
+        ("jittery", |i| Duration::from_micros(3_000 + (i as u64 * 7_919) % 90_000)),
+    ];
+    for (name, pattern) in patterns {
+        let mut app = game(Rack::FifteenBall);
+        // The same path as the Space key and the panel: a ShotRequested message.
+        shoot(&mut app, angle, speed);
+        run_to_rest(&mut app, pattern, 100_000);
+        let got = ecs_balls(&mut app);
+        assert_eq!(got, expected, "frame pattern {name}");
+        let status = app.world().resource::<SimStatus>();
+        assert_eq!(status.shots, 1);
+        assert!(status.events_this_shot > 15, "{name}: {status:?}");
+    }
+}
+
+#[test]
+fn pocketed_balls_leave_play_and_a_scratch_respots_the_cue_ball() {
+    let mut app = game(Rack::PaperDefault);
+    let spec = TableSpec::default();
+    // From the head spot straight into the foot-left corner pocket.
+    let head = spec.head_spot();
+    let corner = DVec2::new(spec.length / 2.0, spec.width / 2.0);
+    let angle = (corner - head).to_angle();
+    shoot(&mut app, angle, 3.0);
+    let mut pocketed_seen = false;
+    let mut scratch_seen = false;
+    for _ in 0..2_000 {
+        app.update();
+        pocketed_seen |= app
+            .world_mut()
+            .query_filtered::<(), (With<Ball>, With<Pocketed>)>()
+            .iter(app.world())
+            .count()
+            > 0;
+        let finished = app.world().resource::<Messages<ShotFinished>>();
+        scratch_seen |= finished.iter_current_update_messages().any(|m| m.scratch);
+        if app.world().resource::<SimStatus>().at_rest {
+            break;
+        }
+    }
+    assert!(pocketed_seen, "the cue ball never left play");
+    assert!(scratch_seen, "no scratch reported");
+    // The respot is applied in the frame the shot finishes; one more frame settles commands.
+    app.update();
+    let balls = ecs_balls(&mut app);
+    assert_eq!(balls, vec![(0, head, false)]);
+    let solver = app.world().resource::<Solver>();
+    let cue = solver.simulation().ball(0);
+    assert_eq!(cue.motion, Motion::Stationary);
+    assert_eq!(DVec2::new(cue.position.x, cue.position.y), head);
+}
+
+#[test]
+fn a_friction_change_reaches_the_solver() {
+    let mut app = game(Rack::NineBall);
+    app.world_mut().resource_mut::<PhysicsSettings>().mu_roll = 0.013;
+    app.update();
+    let solver = app.world().resource::<Solver>();
+    assert_eq!(solver.simulation().params().model.friction().1, 0.013);
+}
+
+#[test]
+fn nothing_runs_while_every_ball_rests() {
+    let mut app = game(Rack::NineBall);
+    let events = |app: &App| {
+        app.world()
+            .resource::<Solver>()
+            .simulation()
+            .history()
+            .events()
+            .len()
+    };
+    let before = events(&app);
+    let time_before = app.world().resource::<Solver>().simulation().time();
+    for _ in 0..30 {
+        app.update();
+    }
+    assert_eq!(events(&app), before);
+    assert_eq!(
+        app.world().resource::<Solver>().simulation().time(),
+        time_before
+    );
+    // No ball component was written either.
+    let changed = app
+        .world_mut()
+        .query_filtered::<(), (With<Ball>, Changed<BallMotion>)>()
+        .iter(app.world())
+        .count();
+    assert_eq!(changed, 0);
+}
+
+#[test]
+fn a_ball_edited_through_its_component_is_placed_in_the_solver() {
+    let mut app = game(Rack::PaperDefault);
+    let target = DVec2::new(0.3, -0.2);
+    let mut query = app.world_mut().query::<(&Ball, &mut BallMotion)>();
+    for (ball, mut motion) in query.iter_mut(app.world_mut()) {
+        assert_eq!(ball.id, 0);
+        motion.position = target;
+    }
+    app.update();
+    let solver = app.world().resource::<Solver>();
+    let position = solver.simulation().ball(0).position;
+    assert_eq!(DVec2::new(position.x, position.y), target);
+}
