@@ -1,7 +1,7 @@
 //! Criterion benchmarks of the solver: a break run to rest, and event throughput against the
 //! number of balls.
 
-use billiards_physics::racks::scattered;
+use billiards_physics::racks;
 use billiards_physics::*;
 use criterion::{BatchSize, Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -57,25 +57,10 @@ fn break_to_rest(c: &mut Criterion) {
     g.finish();
 }
 
-/// `n` balls moving without friction on a table scaled so the density of balls stays that of
-/// 16 balls on the 8-ft table, with pockets too small to swallow anything: every event is a
-/// collision and the scene never comes to rest.
+/// The frictionless gas of [`racks::frictionless_gas`], ready to run.
 fn gas(n: usize) -> Simulation {
-    let k = (n as f64 / 16.0).sqrt();
-    let table = Table {
-        corner_mouth: 1e-6,
-        side_mouth: 1e-6,
-        ..Table::scaled(k)
-    };
-    let params = Params {
-        model: Model::Paper(PaperModel {
-            mu_slide: 0.0,
-            mu_roll: 0.0,
-            ..PaperModel::default()
-        }),
-        ..Params::default()
-    };
-    Simulation::new(table, params, &scattered(&table, &params.ball, n, 2.0, 7)).unwrap()
+    let (table, params, balls) = racks::frictionless_gas(n);
+    Simulation::new(table, params, &balls).unwrap()
 }
 
 fn event_throughput(c: &mut Criterion) {

@@ -4,7 +4,7 @@
 //! ```text
 //! profile_break [breaks]          # 15-ball breaks at 9 m/s (paper model)
 //! profile_break spin9 [breaks]    # 9-ball breaks at 8 m/s (spin model)
-//! profile_break gas N EVENTS      # N balls, no friction, EVENTS events
+//! profile_break gas [EVENTS]      # 16, 100, 1000 balls, no friction: cost per event
 //! ```
 
 use billiards_physics::*;
@@ -13,33 +13,19 @@ use std::time::Instant;
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if args.first().map(String::as_str) == Some("gas") {
-        let n: usize = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(16);
-        let events: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(100_000);
-        let k = (n as f64 / 16.0).sqrt();
-        let table = Table {
-            corner_mouth: 1e-6,
-            side_mouth: 1e-6,
-            ..Table::scaled(k)
-        };
-        let params = Params {
-            model: Model::Paper(PaperModel {
-                mu_slide: 0.0,
-                mu_roll: 0.0,
-                ..PaperModel::default()
-            }),
-            ..Params::default()
-        };
-        let balls = racks::scattered(&table, &params.ball, n, 2.0, 7);
-        let mut sim = Simulation::new(table, params, &balls).unwrap();
-        let start = Instant::now();
-        for _ in 0..events {
-            sim.step_event();
+        // Per-event cost for 16, 100 and 1000 balls on proportionally larger tables, measured
+        // in one run so the ratios are comparable on a noisy machine.
+        let events: usize = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(100_000);
+        let mut base = None;
+        for n in [16usize, 100, 1000] {
+            let ns = gas_ns_per_event(n, events);
+            let b = *base.get_or_insert(ns);
+            println!(
+                "gas of {n:>4} balls: {ns:>7.0} ns per event ({:.2}x the 16-ball cost), {:.0} events/s",
+                ns / b,
+                1e9 / ns
+            );
         }
-        let el = start.elapsed().as_secs_f64();
-        println!(
-            "gas of {n}: {events} events, {:.0} ns per event",
-            el / events as f64 * 1e9
-        );
         return;
     }
     let spin = args.first().map(String::as_str) == Some("spin9");
@@ -80,4 +66,18 @@ fn main() {
         el / n as f64 * 1e6,
         el / events as f64 * 1e9
     );
+}
+
+/// Nanoseconds per event of a frictionless gas of `n` balls (pockets closed), after a warm-up.
+fn gas_ns_per_event(n: usize, events: usize) -> f64 {
+    let (table, params, balls) = racks::frictionless_gas(n);
+    let mut sim = Simulation::new(table, params, &balls).unwrap();
+    for _ in 0..events / 10 {
+        sim.step_event();
+    }
+    let start = Instant::now();
+    for _ in 0..events {
+        sim.step_event();
+    }
+    start.elapsed().as_secs_f64() / events as f64 * 1e9
 }

@@ -20,6 +20,7 @@
 //! ```
 
 pub mod ball;
+pub mod check;
 pub mod detect;
 pub mod event;
 pub mod grid;
@@ -34,6 +35,7 @@ pub mod recording;
 pub mod resolve;
 pub mod scene;
 pub mod sim;
+pub mod soak;
 pub mod table;
 
 pub use ball::{BallId, BallState, Motion, Segment};

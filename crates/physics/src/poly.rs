@@ -234,13 +234,22 @@ pub struct ContactTolerance {
     pub slack: f64,
     /// Value of the contact function above which a touching pair counts as separated.
     pub separation: f64,
+    /// How far below zero the contact function of a resting pair may sink before the contact
+    /// counts (a resting contact); it is counted again only after the pair has risen back
+    /// above half of it, or separated.
+    pub depth: f64,
 }
 
 /// First time in `[0, h]` at which the contact function `f` starts a contact.
 ///
-/// Apart now (`f(0) > 0`): the first root. Touching now: `0` if approaching faster than the
-/// slack; otherwise the first moment the approach becomes significant while still touching, or,
-/// after the pair separates, the first root after that. Separating pairs get no false root.
+/// Apart now (`f(0) > 0`): the first root. Touching now and approaching faster than the slack:
+/// `0`. Touching and resting (approaching slower than the slack, or pressed together by their
+/// accelerations): the first moment, while approaching at all (faster than a thousandth of the
+/// slack), that `f` has sunk to `-depth`: a resting contact, which the caller resolves so that
+/// the pair hops apart by about `depth` (see [`crate::resolve::resting_contact`]); a pressed
+/// pair then touches a finite number of times per second instead of in a Zeno cascade, and a
+/// pair drifting together slower than the slack cannot sink deeper than `depth`. A pair that
+/// separates first gets the first root after it. Separating pairs get no false root.
 pub fn first_contact(f: &Poly, h: f64, tol: ContactTolerance) -> Option<f64> {
     if f.c[0] > 0.0 {
         return first_entry(f, 0.0, h);
@@ -249,11 +258,12 @@ pub fn first_contact(f: &Poly, h: f64, tol: ContactTolerance) -> Option<f64> {
     if df.c[0] < -tol.slack {
         return Some(0.0);
     }
-    let approach = first_entry(&df.shifted(tol.slack), 0.0, h);
     let separate = first_entry(&f.negated().shifted(tol.separation), 0.0, h);
-    match (approach, separate) {
-        (Some(ta), Some(ts)) if ta < ts => Some(ta),
-        (Some(ta), None) => Some(ta),
+    let approaching = first_entry(&df.shifted(1e-3 * tol.slack), 0.0, h);
+    let sink = approaching.and_then(|ta| first_entry(&f.shifted(tol.depth), ta, h));
+    match (sink, separate) {
+        (Some(tc), Some(ts)) if tc < ts => Some(tc),
+        (Some(tc), None) => Some(tc),
         (_, Some(ts)) => first_entry(f, ts, h),
         (None, None) => None,
     }
@@ -346,6 +356,7 @@ mod tests {
         let tol = ContactTolerance {
             slack: 1e-12,
             separation: 1e-15,
+            depth: 1e-10,
         };
         assert_eq!(
             first_contact(&Poly::new([0.0, 1.0, 0.0, 0.0, 0.0]), 5.0, tol),
@@ -363,6 +374,7 @@ mod tests {
         let tol = ContactTolerance {
             slack: 1e-12,
             separation: 1e-15,
+            depth: 1e-10,
         };
         assert_eq!(
             first_contact(&Poly::new([0.0, -1.0, 0.0, 0.0, 0.0]), 5.0, tol),
@@ -376,6 +388,7 @@ mod tests {
         let tol = ContactTolerance {
             slack: 1e-12,
             separation: 1e-15,
+            depth: 1e-10,
         };
         let t = first_contact(&Poly::new([0.0, 2.0, -1.0, 0.0, 0.0]), 5.0, tol).unwrap();
         assert!((t - 2.0).abs() < 1e-12, "{t}");

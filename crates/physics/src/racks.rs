@@ -124,3 +124,26 @@ pub fn scattered(
         })
         .collect()
 }
+
+/// A benchmark scene: `n` balls moving without friction (up to 2 m/s) on a table scaled so the
+/// density stays that of 16 balls on the 8-ft table, with pockets too small to swallow
+/// anything, so every event is a collision and the scene never comes to rest.
+pub fn frictionless_gas(n: usize) -> (Table, crate::params::Params, Vec<BallSetup>) {
+    let k = (n as f64 / 16.0).sqrt();
+    let table = Table {
+        corner_mouth: 1e-6,
+        side_mouth: 1e-6,
+        ..Table::scaled(k)
+    };
+    let model = crate::params::PaperModel {
+        mu_slide: 0.0,
+        mu_roll: 0.0,
+        ..Default::default()
+    };
+    let params = crate::params::Params {
+        model: crate::params::Model::Paper(model),
+        ..Default::default()
+    };
+    let balls = scattered(&table, &params.ball, n, 2.0, 7);
+    (table, params, balls)
+}

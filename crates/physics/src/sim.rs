@@ -364,22 +364,9 @@ impl Simulation {
         if !(t.is_finite() && t >= self.time) {
             return Err(SimError::BadStep(t - self.time));
         }
-        let first = self.history.events().len();
-        let mut count = 0;
-        while let Some(p) = self.next_pending().filter(|p| p.time <= t) {
-            if count == self.params.max_events {
-                return Err(SimError::EventCap {
-                    cap: count,
-                    time: self.time,
-                });
-            }
-            self.process(p);
-            count += 1;
-        }
+        let advance = self.process_until(t)?;
         self.time = t;
-        Ok(Advance {
-            events: first..self.history.events().len(),
-        })
+        Ok(advance)
     }
 
     /// Advances exactly to the next event and processes it (and only it); `None` at rest.
@@ -395,9 +382,15 @@ impl Simulation {
 
     /// Runs until every ball rests; the clock ends at the last event.
     pub fn run_to_rest(&mut self) -> Result<Advance, SimError> {
+        self.process_until(f64::INFINITY)
+    }
+
+    /// The event loop: processes pending events in order while they are due by `t`, at most
+    /// `params.max_events` of them.
+    fn process_until(&mut self, t: f64) -> Result<Advance, SimError> {
         let first = self.history.events().len();
         let mut count = 0;
-        while let Some(p) = self.next_pending() {
+        while let Some(p) = self.next_pending().filter(|p| p.time <= t) {
             if count == self.params.max_events {
                 return Err(SimError::EventCap {
                     cap: count,
@@ -663,6 +656,19 @@ impl Simulation {
         best
     }
 
+    /// Response of ball `id` in state `s` to a fixed body (cushion or jaw) with unit normal `n`
+    /// pointing towards the ball, `depth` metres into it: a resting contact (see [`resting`])
+    /// or the model's cushion response.
+    fn fixed_contact(&mut self, id: BallId, s: &BallState, n: Vec2, depth: f64) -> (Vec2, Vec3) {
+        let pressing = -self.segments[id].acceleration.dot(n);
+        if resting(depth, -s.velocity.dot(n), pressing) {
+            let v = resolve::resting_reflect(s.velocity, n, pressing, detect::RESTING_DEPTH);
+            (v, keep_rolling(s, v, self.params.ball.radius))
+        } else {
+            self.cushion_response(s, n)
+        }
+    }
+
     fn jaw_radius(&self) -> f64 {
         match self.table.pockets {
             PocketShape::Jaws { radius } => radius,
@@ -753,7 +759,15 @@ impl Simulation {
         for &id in touched {
             for m in std::mem::take(&mut self.dependents[id]) {
                 let stale = self.cache.get(m).is_some_and(|p| p.involves(id));
-                if self.stamps[m] != self.round && stale {
+                if !stale {
+                    continue;
+                }
+                if self.stamps[m] == self.round {
+                    // Re-predicted earlier in this round (say, as a dependent of another
+                    // touched ball) and now waiting on `id`: keep the link, or the next change
+                    // of `id` leaves `m`'s pair event stale and it fires at a gap.
+                    self.dependents[id].push(m);
+                } else {
                     let p = self.predict(m, t);
                     self.set_cache(m, p);
                 }
@@ -812,10 +826,10 @@ impl Simulation {
             PendingKind::Jaw(id, k) => {
                 let s = self.segments[id].state_at(t);
                 let jaw = self.jaws[k];
-                let n = (s.position - jaw.centre)
-                    .normalized()
-                    .unwrap_or(Vec2::new(0.0, 1.0));
-                let (v, w) = self.cushion_response(&s, n);
+                let d = s.position - jaw.centre;
+                let n = d.normalized().unwrap_or(Vec2::new(0.0, 1.0));
+                let depth = self.params.ball.radius + self.jaw_radius() - d.length();
+                let (v, w) = self.fixed_contact(id, &s, n, depth);
                 self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                 self.record(EventKind::Jaw {
                     ball: id,
@@ -833,7 +847,13 @@ impl Simulation {
                     self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
                     self.record(EventKind::Pocketed { ball: id, pocket });
                 } else {
-                    let (v, w) = self.cushion_response(&s, cushion.inward_normal());
+                    let n = cushion.inward_normal();
+                    let limit = match cushion {
+                        Cushion::Head | Cushion::Foot => self.bounds.x,
+                        Cushion::Left | Cushion::Right => self.bounds.y,
+                    };
+                    let depth = -(limit + n.dot(s.position));
+                    let (v, w) = self.fixed_contact(id, &s, n, depth);
                     self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                     self.record(EventKind::Cushion { ball: id, cushion });
                 }
@@ -841,10 +861,90 @@ impl Simulation {
             }
             PendingKind::Pair(a, b) => {
                 let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
-                let n = (sb.position - sa.position)
-                    .normalized()
-                    .unwrap_or(Vec2::new(1.0, 0.0));
-                let (na, nb) = self.pair_response(&sa, &sb, n);
+                let d = sb.position - sa.position;
+                let n = d.normalized().unwrap_or(Vec2::new(1.0, 0.0));
+                let depth = 2.0 * self.params.ball.radius - d.length();
+                let dv = sb.velocity - sa.velocity;
+                let da = self.segments[b].acceleration - self.segments[a].acceleration;
+                // Relative normal acceleration pushing the pair together, less the centripetal
+                // term of their sliding past each other (which pulls them apart).
+                let pressing =
+                    -da.dot(n) - dv.perp_dot(n).powi(2) / d.length().max(f64::MIN_POSITIVE);
+                let (na, nb) = if resting(depth, -dv.dot(n), pressing) {
+                    let (va, vb) = resolve::resting_contact(
+                        sa.velocity,
+                        sb.velocity,
+                        n,
+                        pressing,
+                        detect::RESTING_DEPTH,
+                    );
+                    let r = self.params.ball.radius;
+                    // Pressed head-on with no tangential speed to turn into the hop (a sliding
+                    // ball driven into another by its own spin, as after a follow shot): its
+                    // spin pays for the hop, as its cloth friction would by pushing.
+                    let (mut va, mut vb, mut wa, mut wb) =
+                        (va, vb, sa.angular_velocity, sb.angular_velocity);
+                    let want = (2.0 * pressing.max(0.0) * detect::RESTING_DEPTH).sqrt();
+                    let got = (vb - va).dot(n);
+                    if got < want {
+                        let half = n * (0.5 * (want - got));
+                        let (va2, vb2) = (va - half, vb + half);
+                        let m = self.params.ball.mass;
+                        let cost = 0.5
+                            * m
+                            * (va2.length_squared() + vb2.length_squared()
+                                - va.length_squared()
+                                - vb.length_squared());
+                        let inertia = 0.4 * m * r * r;
+                        let spin_energy = |w: Vec3| 0.5 * inertia * (w.x * w.x + w.y * w.y);
+                        let payer = [(&sa, &mut wa), (&sb, &mut wb)]
+                            .into_iter()
+                            .filter(|(s, w)| {
+                                s.motion == Motion::Sliding && spin_energy(**w) > 2.0 * cost
+                            })
+                            .max_by(|x, y| spin_energy(*x.1).total_cmp(&spin_energy(*y.1)));
+                        if cost <= 0.0 {
+                            (va, vb) = (va2, vb2);
+                        } else if let Some((_, w)) = payer {
+                            let k = (1.0 - cost * (1.0 + 1e-9) / spin_energy(*w)).sqrt();
+                            *w = Vec3::new(w.x * k, w.y * k, w.z);
+                            (va, vb) = (va2, vb2);
+                        }
+                    }
+                    let sa = BallState {
+                        angular_velocity: wa,
+                        ..sa
+                    };
+                    let sb = BallState {
+                        angular_velocity: wb,
+                        ..sb
+                    };
+                    // Both rolling: the pair's energy is 7/10 m (|va|^2 + |vb|^2), which the
+                    // resting contact never raises. Otherwise only a ball that slows may keep
+                    // rolling (its spin energy then falls too).
+                    let both = sa.motion == Motion::Rolling && sb.motion == Motion::Rolling;
+                    let roll = |s: &BallState, v: Vec2| {
+                        if both || v.length_squared() <= s.velocity.length_squared() {
+                            keep_rolling(s, v, r)
+                        } else {
+                            s.angular_velocity
+                        }
+                    };
+                    (
+                        BallState {
+                            velocity: va,
+                            angular_velocity: roll(&sa, va),
+                            ..sa
+                        },
+                        BallState {
+                            velocity: vb,
+                            angular_velocity: roll(&sb, vb),
+                            ..sb
+                        },
+                    )
+                } else {
+                    self.pair_response(&sa, &sb, n)
+                };
                 self.segments[a] = motion::segment_from(
                     &self.params,
                     t,
@@ -910,6 +1010,28 @@ impl Simulation {
             .or_else(|| respond(n))
             .unwrap_or((*a, *b))
     }
+}
+
+/// Is a contact a resting one (resolved by [`resolve::resting_contact`]): sunk past half the
+/// resting depth, or pressed together and approaching too slowly to hop apart by the resting
+/// depth on its own? Such contacts bounce elastically with a minimum hop, so that neither a
+/// pressed pair (a Zeno cascade of ever smaller bounces) nor an inelastic collapse can make
+/// unboundedly many events per second.
+fn resting(depth: f64, approach: f64, pressing: f64) -> bool {
+    depth > 0.5 * detect::RESTING_DEPTH
+        || (pressing > 0.0 && approach * approach < 8.0 * pressing * detect::RESTING_DEPTH)
+}
+
+/// Spin of a ball in state `s` whose velocity a resting contact changed to `v`: a rolling ball
+/// keeps rolling (its spin follows the small change of velocity), so a micro-impulse does not
+/// leave a tiny slip whose sliding friction, large against it, would press the pair together
+/// again within femtoseconds (the spin model); any other ball keeps its spin.
+fn keep_rolling(s: &BallState, v: Vec2, radius: f64) -> Vec3 {
+    if s.motion != Motion::Rolling {
+        return s.angular_velocity;
+    }
+    let dv = v - s.velocity;
+    s.angular_velocity + Vec3::new(-dv.y / radius, dv.x / radius, 0.0)
 }
 
 fn check_overlaps(balls: &[BallSetup], r: f64) -> Result<(), SetupError> {

@@ -1,6 +1,101 @@
-//! Scenes that once broke the solver, each named after what it broke.
+//! Scenes that once broke the solver, each named after what it broke; the newer ones are
+//! checked event by event (see `billiards_physics::check`).
 
+mod common;
 use billiards_physics::*;
+use common::*;
+
+fn r() -> f64 {
+    BallSpec::default().radius
+}
+
+/// Two touching rolling balls whose decelerations press them together: B ahead of A along
+/// the line of centres, both moving at the same speed along it, A also drifting sideways at a
+/// tenth of that. Each decelerates along its own velocity, so B slows along the line faster
+/// than A (the paper's model): a pressing contact (3e-4 m/s^2, more than the centripetal pull
+/// of their sliding past each other). It used to make a Zeno cascade, a contact every ~6e-7 s
+/// (2 x 1e-10 m/s slack / pressing), hundreds of thousands of events before the balls stopped.
+#[test]
+fn pressed_rolling_pair_does_not_make_a_zeno_cascade() {
+    for (name, p) in models() {
+        for e_ball in [1.0, 0.5, 0.0] {
+            let p = soak::vary(
+                p,
+                &soak::Variation {
+                    friction: 1.0,
+                    e_ball,
+                    e_cushion: 0.8,
+                    threshold: 1.0,
+                    randomization: None,
+                },
+            );
+            let balls = [
+                rolling(0, Vec2::new(0.0, 0.0), Vec2::new(0.03, 0.003)),
+                rolling(1, Vec2::new(2.0 * r(), 0.0), Vec2::new(0.03, 0.0)),
+            ];
+            let mut sim = Simulation::new(Table::wpa_8ft(), p, &balls).unwrap();
+            let st = checked_to_rest(&mut sim, &format!("{name} e_ball {e_ball}"));
+            // Pressed at ~3e-4 m/s^2 for ~0.3 s: a few hundred resting contacts at most.
+            assert!(st.events < 2_000, "{name} e_ball {e_ball}: {st:?}");
+        }
+    }
+}
+
+/// The shrunk proptest case that found the pressing cascade in a rack: inelastic balls
+/// (e = 0) stay in contact after the break and press each other while they decelerate.
+#[test]
+fn inelastic_balls_pressed_together_after_a_break_come_to_rest() {
+    for (name, p) in models() {
+        for (e_ball, speed) in [(0.0, 1.0), (0.05, 3.0)] {
+            let p = soak::vary(
+                p,
+                &soak::Variation {
+                    friction: 1.0,
+                    e_ball,
+                    e_cushion: 0.62,
+                    threshold: 1.0,
+                    randomization: None,
+                },
+            );
+            let t = Table::wpa_8ft();
+            let mut sim = Simulation::new(t, p, &Rack::FifteenBall.layout(&t, &p.ball)).unwrap();
+            sim.strike(0, Shot::new(0.0, speed)).unwrap();
+            checked_to_rest(&mut sim, &format!("{name} e_ball {e_ball} {speed} m/s"));
+        }
+    }
+}
+
+/// A ball touching a cushion and drifting into it slower than the resting speed (1e-10 m/s),
+/// under very low friction so it runs for a long time: it used to count as resting against
+/// the cushion and sink through it (1.2e-9 m after 22 s in soak seed 1068).
+#[test]
+fn ball_drifting_into_a_cushion_slower_than_the_resting_speed_cannot_sink() {
+    let t = Table::wpa_8ft();
+    for (name, p) in models() {
+        let p = with_friction(p, 1.6e-3);
+        let b = t.centre_bounds(p.ball.radius);
+        let balls = [rolling(0, Vec2::new(0.5, b.y), Vec2::new(-0.015, 6.5e-11))];
+        let mut sim = Simulation::new(t, p, &balls).unwrap();
+        checked_to_rest(&mut sim, name);
+        assert!(sim.time() > 50.0, "{name}: runs long enough to sink");
+    }
+}
+
+/// The same drift between two balls rolling side by side at the same speed (so their
+/// decelerations neither press nor part them), closing in at 5e-11 m/s.
+#[test]
+fn ball_drifting_into_another_slower_than_the_resting_speed_cannot_sink() {
+    for (name, p) in models() {
+        let p = with_friction(p, 1.6e-3);
+        let balls = [
+            rolling(0, Vec2::new(-0.5, 0.0), Vec2::new(0.015, 0.0)),
+            rolling(1, Vec2::new(-0.5, 2.0 * r()), Vec2::new(0.015, -5e-11)),
+        ];
+        let mut sim = Simulation::new(Table::wpa_8ft(), p, &balls).unwrap();
+        checked_to_rest(&mut sim, name);
+        assert!(sim.time() > 50.0, "{name}: runs long enough to sink");
+    }
+}
 
 #[test]
 fn slow_ball_pressing_a_nearly_resting_one_does_not_collide_a_million_times() {

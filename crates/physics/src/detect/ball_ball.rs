@@ -1,6 +1,6 @@
 //! Ball–ball time of impact: the smallest non-negative root of a quartic.
 
-use super::{Kinematics, SEPARATION, resting_speed};
+use super::{Kinematics, RESTING_DEPTH, RESTING_SPEED, SEPARATION};
 use crate::ball::Segment;
 use crate::math::Vec2;
 use crate::poly::{ContactTolerance, Poly, first_contact, root_bound};
@@ -52,8 +52,10 @@ fn contact_quartic(dp: Vec2, dv: Vec2, da: Vec2, contact: f64, horizon: f64) -> 
     let h = horizon.min(root_bound(&f));
     // f' = 2 d · d' ≈ 2 (contact) × approach speed, so the speed tolerances scale by it.
     let tol = ContactTolerance {
-        slack: 2.0 * contact * resting_speed(da.length()),
+        slack: 2.0 * contact * RESTING_SPEED,
         separation: 2.0 * contact * SEPARATION,
+        // |d|^2 - contact^2 at a depth of RESTING_DEPTH, to first order.
+        depth: 2.0 * contact * RESTING_DEPTH,
     };
     first_contact(&f, h, tol)
 }

@@ -1,6 +1,6 @@
 //! Ball–cushion time of impact: the smallest valid root of a quadratic.
 
-use super::{Kinematics, SEPARATION, resting_speed};
+use super::{Kinematics, RESTING_DEPTH, RESTING_SPEED, SEPARATION};
 use crate::ball::Segment;
 use crate::poly::{ContactTolerance, Poly, first_contact, root_bound};
 use crate::table::Cushion;
@@ -46,8 +46,9 @@ pub fn ball_line(
     let gap = Poly::new([offset + n.dot(p), vn, 0.5 * an, 0.0, 0.0]);
     let h = horizon.min(root_bound(&gap));
     let tol = ContactTolerance {
-        slack: resting_speed(an.abs()),
+        slack: RESTING_SPEED,
         separation: SEPARATION,
+        depth: RESTING_DEPTH,
     };
     first_contact(&gap, h, tol)
 }

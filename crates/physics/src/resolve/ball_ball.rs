@@ -80,9 +80,56 @@ pub fn frictional_spheres(
     ))
 }
 
+/// Post-contact velocities of two equal-mass balls in a resting contact along the unit normal
+/// `n` (from `a` towards `b`): touching, approaching slowly or pressed together by a relative
+/// normal acceleration `pressing` (m/s^2, `>= 0`).
+///
+/// The contact is elastic, and the pair leaves it separating at no less than
+/// `sqrt(2 pressing hop)`, so that it hops apart by about `hop` metres before pressing brings
+/// it back; the normal speed this needs beyond the elastic rebound is taken from the pair's
+/// relative tangential speed (the relative velocity is turned, never lengthened). Momentum is
+/// kept exactly and kinetic energy never rises, so a pressed pair touches at a bounded rate
+/// instead of in a Zeno cascade, at no cost in energy. With no tangential speed to spare the
+/// result is the elastic one.
+pub fn resting_contact(va: Vec2, vb: Vec2, n: Vec2, pressing: f64, hop: f64) -> (Vec2, Vec2) {
+    let dv = vb - va;
+    let t = n.perp();
+    let (vn, vt) = (dv.dot(n), dv.dot(t));
+    let want = (-vn).max((2.0 * pressing.max(0.0) * hop).sqrt());
+    if vn >= want {
+        return (va, vb);
+    }
+    let speed2 = vn * vn + vt * vt;
+    let vn2 = want.min(speed2.sqrt());
+    let vt2 = vt.signum() * (speed2 - vn2 * vn2).max(0.0).sqrt().min(vt.abs());
+    // Symmetric impulse: each ball takes half the change of the relative velocity.
+    let half = (n * (vn2 - vn) + t * (vt2 - vt)) * 0.5;
+    (va - half, vb + half)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn resting_contact_hops_apart_without_gaining_energy() {
+        let n = Vec2::new(1.0, 0.0);
+        // Touching, approaching at 1e-12 m/s, sliding past each other at 1 mm/s, pressed at
+        // 0.01 m/s^2: they leave at sqrt(2 * 0.01 * 1e-10), the relative speed unchanged.
+        let (va, vb) = (Vec2::new(0.3, 0.001), Vec2::new(0.3 - 1e-12, 0.0));
+        let (a, b) = resting_contact(va, vb, n, 0.01, 1e-10);
+        let sep = (b - a).dot(n);
+        assert!(
+            (sep - (2.0 * 0.01 * 1e-10f64).sqrt()).abs() < 1e-15,
+            "{sep}"
+        );
+        assert!((a + b - (va + vb)).length() < 1e-16);
+        let ke = |x: Vec2, y: Vec2| x.length_squared() + y.length_squared();
+        assert!(ke(a, b) <= ke(va, vb) * (1.0 + 1e-15));
+        // Not pressed: a plain elastic rebound.
+        let (a, b) = resting_contact(va, vb, n, 0.0, 1e-10);
+        assert!(((b - a).dot(n) - 1e-12).abs() < 1e-16);
+    }
 
     #[test]
     fn head_on_elastic_collision_exchanges_velocities_exactly() {

@@ -62,6 +62,23 @@ pub fn han_2005(
     ))
 }
 
+/// Velocity after a resting contact with a cushion of unit inward normal `n`: touching,
+/// approaching slowly or pressed into it by an acceleration `pressing` (m/s^2, `>= 0`).
+/// Elastic, leaving at no less than `sqrt(2 pressing hop)`, the extra normal speed taken from
+/// the tangential speed so the speed never rises (see [`super::resting_contact`]).
+pub fn resting_reflect(v: Vec2, n: Vec2, pressing: f64, hop: f64) -> Vec2 {
+    let t = n.perp();
+    let (vn, vt) = (v.dot(n), v.dot(t));
+    let want = (-vn).max((2.0 * pressing.max(0.0) * hop).sqrt());
+    if vn >= want {
+        return v;
+    }
+    let speed2 = vn * vn + vt * vt;
+    let vn2 = want.min(speed2.sqrt());
+    let vt2 = vt.signum() * (speed2 - vn2 * vn2).max(0.0).sqrt().min(vt.abs());
+    v + n * (vn2 - vn) + t * (vt2 - vt)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -98,3 +98,42 @@ pub fn break_shot(rack: Rack, speed: f64, params: Params) -> Simulation {
     sim.strike(0, Shot::new(0.002, speed)).unwrap();
     sim
 }
+
+/// Every model configuration under test, by name (one list for all stress tests and the soak:
+/// see `billiards_physics::soak::models`).
+pub fn models() -> Vec<(&'static str, Params)> {
+    billiards_physics::soak::models()
+}
+
+/// Runs `sim` to rest with every event checked (see `billiards_physics::check`); panics with
+/// the broken invariant and `what` otherwise.
+pub fn checked_to_rest(sim: &mut Simulation, what: &str) -> check::Stats {
+    let mut m = check::Monitor::new(sim, check::Tolerances::default())
+        .unwrap_or_else(|v| panic!("{what}: bad start: {v}"));
+    m.run_to_rest(sim).unwrap_or_else(|v| panic!("{what}: {v}"))
+}
+
+/// Runs `sim` for `seconds` of simulated time with every event checked.
+pub fn checked_for(sim: &mut Simulation, seconds: f64, what: &str) -> check::Stats {
+    let mut m = check::Monitor::new(sim, check::Tolerances::default())
+        .unwrap_or_else(|v| panic!("{what}: bad start: {v}"));
+    let until = sim.time() + seconds;
+    m.run_until(sim, until)
+        .unwrap_or_else(|v| panic!("{what}: {v}"))
+}
+
+/// `params` with every friction coefficient multiplied by `k` (0: frictionless).
+pub fn with_friction(params: Params, k: f64) -> Params {
+    billiards_physics::soak::scale_friction(params, k)
+}
+
+/// A ball rolling without slipping at velocity `v` (its spin matches `v`; the paper's model
+/// ignores the spin and rolls it by its speed).
+pub fn rolling(number: u8, position: Vec2, v: Vec2) -> BallSetup {
+    let r = BallSpec::default().radius;
+    BallSetup {
+        velocity: v,
+        spin: Vec3::new(-v.y / r, v.x / r, 0.0),
+        ..BallSetup::at(number, position)
+    }
+}

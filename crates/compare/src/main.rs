@@ -1,0 +1,73 @@
+//! The benchmark program: `billiards-compare [--quick] [--out DIR]`.
+//!
+//! Runs every solver on every scene, prints one line per configuration, writes
+//! `results.csv` and `runtime_vs_error.svg` into `DIR` (default `target/compare`), and exits
+//! non-zero if the exact solver's error anywhere exceeds 1e-9 m.
+
+use billiards_compare::{bench, plot, report};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+fn main() -> ExitCode {
+    let mut quick = false;
+    let mut out = PathBuf::from("target/compare");
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--quick" => quick = true,
+            "--out" => match args.next() {
+                Some(dir) => out = PathBuf::from(dir),
+                None => return usage("--out needs a directory"),
+            },
+            "-h" | "--help" => {
+                println!("usage: billiards-compare [--quick] [--out DIR]");
+                return ExitCode::SUCCESS;
+            }
+            other => return usage(&format!("unknown argument {other}")),
+        }
+    }
+    let settings = if quick {
+        bench::Settings::quick()
+    } else {
+        bench::Settings::full()
+    };
+    let started = Instant::now();
+    let report = match bench::run(&settings, |line| println!("{line}")) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("benchmark failed: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    if let Err(e) = write(&report, &out) {
+        eprintln!("cannot write the results to {}: {e}", out.display());
+        return ExitCode::FAILURE;
+    }
+    let worst = report.exact_max_error();
+    println!(
+        "wrote {}/results.csv and runtime_vs_error.svg in {:.1} s; exact solver's largest error {worst:.1e} m",
+        out.display(),
+        started.elapsed().as_secs_f64()
+    );
+    if worst > bench::EXACT_ERROR_LIMIT {
+        eprintln!(
+            "FAIL: the exact solver's error {worst:e} m exceeds {:e} m",
+            bench::EXACT_ERROR_LIMIT
+        );
+        return ExitCode::FAILURE;
+    }
+    ExitCode::SUCCESS
+}
+
+fn write(report: &bench::Report, out: &std::path::Path) -> Result<(), Box<dyn std::error::Error>> {
+    std::fs::create_dir_all(out)?;
+    std::fs::write(out.join("results.csv"), report::csv(report))?;
+    plot::draw(report, &out.join("runtime_vs_error.svg"))?;
+    Ok(())
+}
+
+fn usage(msg: &str) -> ExitCode {
+    eprintln!("{msg}\nusage: billiards-compare [--quick] [--out DIR]");
+    ExitCode::from(2)
+}

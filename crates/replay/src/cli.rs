@@ -1,0 +1,445 @@
+//! The command line: `simulate`, `verify`, `export` (and `replay`, which the game binary
+//! handles). Errors go to stderr with a non-zero exit code.
+
+use crate::export::{self, ExportOptions};
+use billiards_physics::recording::{Recorder, Recording, Verdict};
+use billiards_physics::scene::Scene;
+use billiards_physics::*;
+use clap::{Parser, Subcommand, ValueEnum};
+use indicatif::{ProgressBar, ProgressStyle};
+use rand::{Rng, SeedableRng};
+use serde::Serialize;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// Billiards: exact event-driven pool physics, headless tools.
+#[derive(Parser, Debug)]
+#[command(name = "billiards", version, about)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// Subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Simulate shots from a rack or a scene file; write a recording and print a summary.
+    Simulate(SimulateArgs),
+    /// Re-simulate a recording and check it reproduces its history bit for bit.
+    Verify {
+        /// The recording.
+        file: PathBuf,
+    },
+    /// Export a recording (or one shot of it) as an animated GIF or a PNG sequence.
+    Export(ExportArgs),
+    /// Open the game on a recording (needs the game binary: `billiards replay FILE`).
+    Replay {
+        /// The recording.
+        file: PathBuf,
+    },
+}
+
+/// Standard racks.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum RackArg {
+    /// The paper's default layout: the cue ball alone.
+    PaperDefault,
+    /// The paper's 15-ball rack, 1/10 in apart.
+    FifteenBall,
+    /// A tight 15-ball rack.
+    Tight,
+    /// A 9-ball diamond.
+    NineBall,
+}
+
+/// Physics models.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum ModelArg {
+    /// The paper's model.
+    Paper,
+    /// The spin model.
+    Spin,
+}
+
+/// `simulate` options.
+#[derive(clap::Args, Debug)]
+pub struct SimulateArgs {
+    /// A scene file (JSON, see crates/physics/README.md); its shots are played first.
+    #[arg(long, conflicts_with = "rack")]
+    pub scene: Option<PathBuf>,
+    /// A standard rack on the WPA 8-ft table.
+    #[arg(long, value_enum, default_value = "fifteen-ball")]
+    pub rack: RackArg,
+    /// The physics model (with a rack).
+    #[arg(long, value_enum, default_value = "spin")]
+    pub model: ModelArg,
+    /// A shot of the cue ball, `ANGLE_DEG:SPEED[:SIDE:HEIGHT]`; repeat for several shots,
+    /// each played once everything rests.
+    #[arg(long = "shot", value_parser = parse_shot)]
+    pub shots: Vec<Shot>,
+    /// Seed of the collision-normal randomization (off if absent).
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Write the recording here (rewritten atomically after every shot).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Print the summary as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// Batch mode: play this many random break shots from the start position, in parallel,
+    /// and report the best (most balls pocketed).
+    #[arg(long)]
+    pub batch: Option<usize>,
+    /// Worker threads for batch mode (default: all cores).
+    #[arg(long)]
+    pub threads: Option<usize>,
+}
+
+/// `export` options.
+#[derive(clap::Args, Debug)]
+pub struct ExportArgs {
+    /// The recording.
+    pub file: PathBuf,
+    /// Write an animated GIF here.
+    #[arg(long)]
+    pub gif: Option<PathBuf>,
+    /// Write a numbered PNG sequence into this folder.
+    #[arg(long)]
+    pub png: Option<PathBuf>,
+    /// Frames per second of simulated time.
+    #[arg(long, default_value_t = 30.0)]
+    pub fps: f64,
+    /// Frame size, `WIDTHxHEIGHT`.
+    #[arg(long, default_value = "640x360", value_parser = parse_size)]
+    pub size: (u32, u32),
+    /// Export only this shot (0 is the first); default the whole game.
+    #[arg(long)]
+    pub shot: Option<usize>,
+}
+
+fn parse_shot(s: &str) -> Result<Shot, String> {
+    let v: Vec<f64> = s
+        .split(':')
+        .map(|x| x.trim().parse::<f64>().map_err(|e| format!("{x:?}: {e}")))
+        .collect::<Result<_, _>>()?;
+    match v[..] {
+        [a, speed] => Ok(Shot::new(a.to_radians(), speed)),
+        [a, speed, side, height] => Ok(Shot {
+            tip: TipOffset { side, height },
+            ..Shot::new(a.to_radians(), speed)
+        }),
+        _ => Err("expected ANGLE_DEG:SPEED or ANGLE_DEG:SPEED:SIDE:HEIGHT".into()),
+    }
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s.split_once(['x', 'X']).ok_or("expected WIDTHxHEIGHT")?;
+    Ok((
+        w.parse().map_err(|e| format!("width: {e}"))?,
+        h.parse().map_err(|e| format!("height: {e}"))?,
+    ))
+}
+
+/// One shot's outcome.
+#[derive(Serialize, Debug)]
+pub struct ShotSummary {
+    /// The shot.
+    pub shot: Shot,
+    /// Events it produced.
+    pub events: usize,
+    /// Numbers of the balls it pocketed.
+    pub pocketed: Vec<u8>,
+    /// Seconds of simulated time until everything rested.
+    pub time_to_rest: f64,
+}
+
+/// Runs the command line; returns the process exit code.
+pub fn run(cli: Cli) -> ExitCode {
+    let result = match cli.command {
+        Command::Simulate(a) => simulate(a),
+        Command::Verify { file } => verify(&file),
+        Command::Export(a) => export_cmd(a),
+        Command::Replay { file } => Err(format!(
+            "{}: replay opens the game: run `billiards replay {}`",
+            file.display(),
+            file.display()
+        )),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn setup(a: &SimulateArgs) -> Result<(Table, Params, Vec<BallSetup>, Vec<Shot>), String> {
+    let randomization = a.seed.map(|seed| Randomization {
+        spread: 0.005,
+        seed,
+    });
+    if let Some(path) = &a.scene {
+        let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let scene = Scene::from_json(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+        let params = Params {
+            randomization: randomization.or(scene.params.randomization),
+            ..scene.params
+        };
+        let shots = scene
+            .shots
+            .iter()
+            .map(|s| s.shot)
+            .chain(a.shots.iter().copied())
+            .collect();
+        return Ok((scene.table, params, scene.balls(), shots));
+    }
+    let model = match a.model {
+        ModelArg::Paper => Model::Paper(PaperModel::default()),
+        ModelArg::Spin => Model::Spin(SpinModel::default()),
+    };
+    let table = match a.model {
+        ModelArg::Paper => Table::wpa_8ft(),
+        ModelArg::Spin => Table::wpa_8ft().with_jaws(0.015),
+    };
+    let params = Params {
+        model,
+        randomization,
+        ..Params::default()
+    };
+    let rack = match a.rack {
+        RackArg::PaperDefault => Rack::PaperDefault,
+        RackArg::FifteenBall => Rack::FifteenBall,
+        RackArg::Tight => Rack::Tight,
+        RackArg::NineBall => Rack::NineBall,
+    };
+    Ok((
+        table,
+        params,
+        rack.layout(&table, &params.ball),
+        a.shots.clone(),
+    ))
+}
+
+/// After a scratch the cue ball goes back to the head spot, or the nearest free place on the
+/// head string (the game's rule).
+fn respot_cue_ball(rec: &mut Recorder) -> Result<(), String> {
+    if rec.sim().ball(0).motion.on_table() {
+        return Ok(());
+    }
+    let table = *rec.sim().table();
+    let r = rec.sim().params().ball.radius;
+    let limit = table.centre_bounds(r).y;
+    let spots = (0..)
+        .map(|k| f64::from(k) * 2.1 * r)
+        .take_while(|&d| d <= limit);
+    for d in spots {
+        for y in [d, -d] {
+            let p = Vec2::new(table.head_spot().x, y);
+            if rec.place(0, p, Vec2::ZERO, Vec3::ZERO).is_ok() {
+                return Ok(());
+            }
+        }
+    }
+    Err("no free place on the head string for the cue ball".into())
+}
+
+fn play(rec: &mut Recorder, shot: Shot) -> Result<ShotSummary, String> {
+    respot_cue_ball(rec)?;
+    let start = rec.sim().time();
+    let first = rec.sim().history().events().len();
+    rec.strike(0, shot).map_err(|e| e.to_string())?;
+    rec.run_to_rest().map_err(|e| e.to_string())?;
+    let sim = rec.sim();
+    let events = &sim.history().events()[first..];
+    let pocketed = events
+        .iter()
+        .filter_map(|e| match e.kind {
+            EventKind::Pocketed { ball, .. } => Some(sim.numbers()[ball]),
+            _ => None,
+        })
+        .collect();
+    Ok(ShotSummary {
+        shot,
+        events: events.len(),
+        pocketed,
+        time_to_rest: sim.time() - start,
+    })
+}
+
+fn simulate(a: SimulateArgs) -> Result<(), String> {
+    let (table, params, balls, shots) = setup(&a)?;
+    if let Some(n) = a.batch {
+        return batch(table, params, balls, n, &a);
+    }
+    if shots.is_empty() {
+        return Err(
+            "no shots: give --shot ANGLE_DEG:SPEED (or a scene with shots), or --batch N".into(),
+        );
+    }
+    let mut rec = Recorder::new(table, params, balls).map_err(|e| e.to_string())?;
+    let mut out = Vec::new();
+    for (k, shot) in shots.into_iter().enumerate() {
+        let s = play(&mut rec, shot).map_err(|e| format!("shot {k}: {e}"))?;
+        out.push(s);
+        if let Some(path) = &a.out {
+            // After every shot: a crash loses at most the shot in flight.
+            rec.recording().save(path).map_err(|e| e.to_string())?;
+        }
+    }
+    if a.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&out).map_err(|e| e.to_string())?
+        );
+    } else {
+        for (k, s) in out.iter().enumerate() {
+            println!(
+                "shot {k}: {} events, pocketed {:?}, rest after {:.3} s",
+                s.events, s.pocketed, s.time_to_rest
+            );
+        }
+    }
+    Ok(())
+}
+
+fn batch(
+    table: Table,
+    params: Params,
+    balls: Vec<BallSetup>,
+    n: usize,
+    a: &SimulateArgs,
+) -> Result<(), String> {
+    let threads = a
+        .threads
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+        .max(1);
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(a.seed.unwrap_or(0));
+    let shots: Vec<Shot> = (0..n)
+        .map(|_| Shot::new(rng.random_range(-0.3..0.3), rng.random_range(4.0..11.0)))
+        .collect();
+    let bar = ProgressBar::new(n as u64);
+    bar.set_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} shots {eta}").expect("template"),
+    );
+    let start = Recorder::new(table, params, balls).map_err(|e| e.to_string())?;
+    let chunk = n.div_ceil(threads).max(1);
+    let results: Vec<Result<ShotSummary, String>> = std::thread::scope(|s| {
+        let handles: Vec<_> = shots
+            .chunks(chunk)
+            .map(|part| {
+                let (bar, start) = (&bar, &start);
+                s.spawn(move || {
+                    part.iter()
+                        .map(|&shot| {
+                            let r = play(&mut start.clone(), shot);
+                            bar.inc(1);
+                            r
+                        })
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .flat_map(|h| h.join().expect("worker"))
+            .collect()
+    });
+    bar.finish_and_clear();
+    let ok: Vec<ShotSummary> = results.into_iter().collect::<Result<_, _>>()?;
+    let best = ok
+        .iter()
+        .max_by_key(|s| s.pocketed.len())
+        .ok_or("no shots")?;
+    if a.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&serde_json::json!({ "shots": ok, "best": best }))
+                .map_err(|e| e.to_string())?
+        );
+    } else {
+        let events: usize = ok.iter().map(|s| s.events).sum();
+        println!(
+            "{n} shots, {events} events; best: angle {:.4} rad, speed {:.2} m/s pocketed {:?}",
+            best.shot.angle, best.shot.speed, best.pocketed
+        );
+    }
+    Ok(())
+}
+
+fn verify(file: &std::path::Path) -> Result<(), String> {
+    let rec = Recording::load(file).map_err(|e| e.to_string())?;
+    match rec
+        .verify()
+        .map_err(|e| format!("{}: {e}", file.display()))?
+    {
+        Verdict::Reproduced { events } => {
+            println!(
+                "{}: reproduced bit for bit ({events} events)",
+                file.display()
+            );
+            Ok(())
+        }
+        Verdict::Differs {
+            index,
+            recorded,
+            replayed,
+        } => Err(format!(
+            "{}: differs at event {index}:\n  recorded: {recorded:?}\n  replayed: {replayed:?}",
+            file.display()
+        )),
+    }
+}
+
+/// Simulated time span of shot `k` of a recording: from its strike to the next strike (or the
+/// end).
+pub fn shot_span(rec: &Recording, k: usize) -> Option<(f64, f64)> {
+    let strikes: Vec<f64> = rec
+        .events
+        .iter()
+        .filter(|e| matches!(e.kind, EventKind::Strike { .. }))
+        .map(|e| e.time)
+        .collect();
+    let start = *strikes.get(k)?;
+    let end = strikes.get(k + 1).copied().unwrap_or(rec.end_time);
+    Some((start, end))
+}
+
+fn export_cmd(a: ExportArgs) -> Result<(), String> {
+    let rec = Recording::load(&a.file).map_err(|e| e.to_string())?;
+    let span = match a.shot {
+        Some(k) => shot_span(&rec, k)
+            .ok_or_else(|| format!("{}: there is no shot {k}", a.file.display()))?,
+        None => (
+            0.0,
+            rec.end_time.max(rec.events.last().map_or(0.0, |e| e.time)),
+        ),
+    };
+    let opts = ExportOptions {
+        fps: a.fps,
+        width: a.size.0,
+        height: a.size.1,
+        span,
+    };
+    if a.gif.is_none() && a.png.is_none() {
+        return Err("nothing to export: give --gif FILE and/or --png DIR".into());
+    }
+    let bar = ProgressBar::new(0);
+    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} frames").expect("template"));
+    let mut progress = |done: usize, total: usize| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    };
+    if let Some(out) = &a.gif {
+        let n = export::gif(&rec, &opts, out, &mut progress).map_err(|e| e.to_string())?;
+        bar.finish_and_clear();
+        println!("{}: {n} frames", out.display());
+    }
+    if let Some(dir) = &a.png {
+        let n = export::png_sequence(&rec, &opts, dir, &mut progress).map_err(|e| e.to_string())?;
+        bar.finish_and_clear();
+        println!("{}: {n} frames", dir.display());
+    }
+    Ok(())
+}

@@ -1,0 +1,155 @@
+//! Exports of a recording as an animated GIF or a numbered PNG sequence, timed by simulated
+//! time (frame k shows the exact state at `start + k / fps`), so the animation is smooth
+//! however slowly it is rendered.
+
+use crate::render::{self, Frame};
+use billiards_physics::recording::Recording;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+
+/// What to export.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ExportOptions {
+    /// Frames per second of simulated time.
+    pub fps: f64,
+    /// Frame width, pixels.
+    pub width: u32,
+    /// Frame height, pixels.
+    pub height: u32,
+    /// Simulated time span to export, seconds.
+    pub span: (f64, f64),
+}
+
+/// Why an export failed.
+#[derive(Debug)]
+pub enum ExportError {
+    /// Bad options (fps, size, span).
+    Options(String),
+    /// The recording's history could not be rebuilt.
+    Recording(String),
+    /// Writing failed.
+    Io(PathBuf, std::io::Error),
+    /// The encoder failed.
+    Encode(String),
+}
+
+impl std::fmt::Display for ExportError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ExportError::Options(s) => write!(f, "bad export options: {s}"),
+            ExportError::Recording(s) => write!(f, "recording: {s}"),
+            ExportError::Io(p, e) => write!(f, "{}: {e}", p.display()),
+            ExportError::Encode(s) => write!(f, "encoding: {s}"),
+        }
+    }
+}
+
+impl std::error::Error for ExportError {}
+
+impl ExportOptions {
+    fn check(&self) -> Result<usize, ExportError> {
+        let (a, b) = self.span;
+        if !(self.fps.is_finite() && self.fps > 0.0 && self.fps <= 240.0) {
+            return Err(ExportError::Options(format!(
+                "fps {} must be in (0, 240]",
+                self.fps
+            )));
+        }
+        if !(16..=4096).contains(&self.width) || !(16..=4096).contains(&self.height) {
+            return Err(ExportError::Options(format!(
+                "size {}x{} must be 16..4096 each way",
+                self.width, self.height
+            )));
+        }
+        if !(a.is_finite() && b.is_finite() && a >= 0.0 && b >= a) {
+            return Err(ExportError::Options(format!(
+                "time span {a}..{b} is not a span of simulated time"
+            )));
+        }
+        Ok(((b - a) * self.fps).floor() as usize + 1)
+    }
+}
+
+/// The frames of an export, each sampled exactly from the recording's history; `progress`
+/// is called with (done, total).
+pub fn frames(
+    rec: &Recording,
+    opts: &ExportOptions,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Vec<Frame>, ExportError> {
+    let n = opts.check()?;
+    let history = rec.history().map_err(ExportError::Recording)?;
+    let numbers: Vec<u8> = rec.balls.iter().map(|b| b.number).collect();
+    let r = rec.params.ball.radius;
+    (0..n)
+        .map(|k| {
+            let t = opts.span.0 + k as f64 / opts.fps;
+            let f = render::draw(
+                &rec.table,
+                r,
+                &history.states_at(t),
+                &numbers,
+                opts.width,
+                opts.height,
+            );
+            progress(k + 1, n);
+            Ok(f)
+        })
+        .collect()
+}
+
+/// Writes an animated GIF.
+pub fn gif(
+    rec: &Recording,
+    opts: &ExportOptions,
+    out: &Path,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<usize, ExportError> {
+    let frames = frames(rec, opts, progress)?;
+    let io = |e| ExportError::Io(out.to_path_buf(), e);
+    let file = std::fs::File::create(out).map_err(io)?;
+    let (w, h) = (opts.width as u16, opts.height as u16);
+    let mut enc = gif::Encoder::new(BufWriter::new(file), w, h, &[])
+        .map_err(|e| ExportError::Encode(e.to_string()))?;
+    enc.set_repeat(gif::Repeat::Infinite)
+        .map_err(|e| ExportError::Encode(e.to_string()))?;
+    // GIF delays are in hundredths of a second.
+    let delay = (100.0 / opts.fps).round().max(1.0) as u16;
+    for f in &frames {
+        let mut frame = gif::Frame::from_rgb_speed(w, h, &f.rgb, 10);
+        frame.delay = delay;
+        enc.write_frame(&frame)
+            .map_err(|e| ExportError::Encode(e.to_string()))?;
+    }
+    Ok(frames.len())
+}
+
+/// Writes `frame_00000.png`, `frame_00001.png`, ... into `dir`.
+pub fn png_sequence(
+    rec: &Recording,
+    opts: &ExportOptions,
+    dir: &Path,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<usize, ExportError> {
+    let frames = frames(rec, opts, progress)?;
+    std::fs::create_dir_all(dir).map_err(|e| ExportError::Io(dir.to_path_buf(), e))?;
+    for (k, f) in frames.iter().enumerate() {
+        let path = dir.join(format!("frame_{k:05}.png"));
+        write_png(f, &path)?;
+    }
+    Ok(frames.len())
+}
+
+/// Writes one frame as a PNG.
+pub fn write_png(f: &Frame, path: &Path) -> Result<(), ExportError> {
+    let io = |e| ExportError::Io(path.to_path_buf(), e);
+    let file = std::fs::File::create(path).map_err(io)?;
+    let mut enc = png::Encoder::new(BufWriter::new(file), f.width, f.height);
+    enc.set_color(png::ColorType::Rgb);
+    enc.set_depth(png::BitDepth::Eight);
+    let mut w = enc
+        .write_header()
+        .map_err(|e| ExportError::Encode(e.to_string()))?;
+    w.write_image_data(&f.rgb)
+        .map_err(|e| ExportError::Encode(e.to_string()))
+}

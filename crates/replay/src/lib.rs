@@ -1,0 +1,6 @@
+//! Headless tools for billiards recordings: the command line (`simulate`, `verify`, `export`),
+//! a software top-view renderer and GIF/PNG export. No GPU, no Bevy: they run anywhere.
+
+pub mod cli;
+pub mod export;
+pub mod render;

@@ -1,0 +1,231 @@
+//! The command line and the exports, end to end.
+
+use billiards_physics::recording::{Recorder, Recording};
+use billiards_physics::*;
+use billiards_replay::export::{self, ExportOptions};
+use std::path::PathBuf;
+use std::process::Command;
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_billiards-cli"))
+}
+
+fn temp(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("billiards-cli-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn break_recording() -> Recording {
+    let table = Table::wpa_8ft().with_jaws(0.015);
+    let params = Params {
+        model: Model::Spin(SpinModel::default()),
+        ..Params::default()
+    };
+    let mut rec = Recorder::new(
+        table,
+        params,
+        Rack::FifteenBall.layout(&table, &params.ball),
+    )
+    .unwrap();
+    rec.strike(0, Shot::new(0.0, 9.0)).unwrap();
+    rec.run_to_rest().unwrap();
+    rec.recording()
+}
+
+#[test]
+fn exported_gif_frames_show_the_balls_moving() {
+    let rec = break_recording();
+    let dir = temp("gif");
+    let out = dir.join("break.gif");
+    let opts = ExportOptions {
+        fps: 10.0,
+        width: 200,
+        height: 110,
+        span: (0.0, 1.0),
+    };
+    let n = export::gif(&rec, &opts, &out, &mut |_, _| {}).unwrap();
+    assert_eq!(n, 11);
+    // Decode and compare: between the first and the sixth frame (0.5 s into a 9 m/s break)
+    // the cue ball and the rack have moved, so many pixels changed; the background did not.
+    let mut dec = gif::DecodeOptions::new();
+    dec.set_color_output(gif::ColorOutput::RGBA);
+    let mut d = dec.read_info(std::fs::File::open(&out).unwrap()).unwrap();
+    let mut frames = Vec::new();
+    while let Some(f) = d.read_next_frame().unwrap() {
+        frames.push(f.buffer.to_vec());
+    }
+    assert_eq!(frames.len(), 11);
+    let changed = frames[0]
+        .chunks(4)
+        .zip(frames[5].chunks(4))
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(changed > 50, "only {changed} pixels changed");
+    assert!(
+        changed < 200 * 110 / 4,
+        "{changed} pixels changed: more than the balls"
+    );
+    let white = |f: &Vec<u8>| {
+        f.chunks(4)
+            .filter(|p| p[0] > 220 && p[1] > 220 && p[2] > 200)
+            .count()
+    };
+    assert!(white(&frames[0]) > 0, "the cue ball is drawn");
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn png_sequence_is_numbered_and_timed_by_simulated_time() {
+    let rec = break_recording();
+    let dir = temp("png");
+    let opts = ExportOptions {
+        fps: 4.0,
+        width: 64,
+        height: 40,
+        span: (0.0, 2.0),
+    };
+    let n = export::png_sequence(&rec, &opts, &dir, &mut |_, _| {}).unwrap();
+    assert_eq!(n, 9);
+    assert!(dir.join("frame_00008.png").exists() && !dir.join("frame_00009.png").exists());
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn bad_export_options_are_errors() {
+    let rec = break_recording();
+    for opts in [
+        ExportOptions {
+            fps: 0.0,
+            width: 64,
+            height: 40,
+            span: (0.0, 1.0),
+        },
+        ExportOptions {
+            fps: f64::NAN,
+            width: 64,
+            height: 40,
+            span: (0.0, 1.0),
+        },
+        ExportOptions {
+            fps: 10.0,
+            width: 1,
+            height: 40,
+            span: (0.0, 1.0),
+        },
+        ExportOptions {
+            fps: 10.0,
+            width: 64,
+            height: 40,
+            span: (2.0, 1.0),
+        },
+    ] {
+        assert!(
+            export::frames(&rec, &opts, &mut |_, _| {}).is_err(),
+            "{opts:?}"
+        );
+    }
+}
+
+fn run(cmd: &mut Command) -> (bool, String, String) {
+    let out = cmd.output().unwrap();
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+    )
+}
+
+#[test]
+fn simulate_writes_a_recording_that_verifies_and_an_edit_fails_with_its_location() {
+    let dir = temp("sim");
+    let file = dir.join("game.json");
+    let (ok, stdout, err) = run(bin()
+        .args([
+            "simulate",
+            "--rack",
+            "nine-ball",
+            "--shot",
+            "0:8",
+            "--shot",
+            "30:2:0.2:-0.3",
+            "--seed",
+            "3",
+            "--json",
+            "--out",
+        ])
+        .arg(&file));
+    assert!(ok, "{err}");
+    let summary: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(summary.as_array().unwrap().len(), 2);
+    let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
+    assert!(ok && stdout.contains("bit for bit"), "{stdout} {err}");
+    // One value changed by hand: verify fails, says which event, exits non-zero.
+    let mut rec = Recording::load(&file).unwrap();
+    rec.events[1].after[0].velocity.x += 1e-12;
+    rec.save(&file).unwrap();
+    let (ok, _, err) = run(bin().arg("verify").arg(&file));
+    assert!(!ok && err.contains("differs at event 1"), "{err}");
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn commands_on_broken_files_fail_cleanly_naming_the_file() {
+    let dir = temp("broken");
+    let file = dir.join("empty.json");
+    std::fs::write(&file, "").unwrap();
+    for cmd in ["verify", "export"] {
+        let (ok, _, err) = run(bin().arg(cmd).arg(&file).args(
+            ["--gif", "/dev/null"]
+                .iter()
+                .take(if cmd == "export" { 2 } else { 0 }),
+        ));
+        assert!(
+            !ok && err.contains("empty.json") && !err.contains("panicked"),
+            "{cmd}: {err}"
+        );
+    }
+    let (ok, _, err) = run(bin().args(["simulate", "--shot", "nonsense"]));
+    assert!(!ok && !err.is_empty());
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn killing_the_recorder_mid_game_leaves_the_last_complete_shot_on_disk() {
+    let dir = temp("crash");
+    let file = dir.join("game.json");
+    let mut cmd = bin();
+    cmd.args([
+        "simulate",
+        "--rack",
+        "fifteen-ball",
+        "--model",
+        "paper",
+        "--out",
+    ])
+    .arg(&file);
+    for k in 0..4000 {
+        cmd.args(["--shot", &format!("{}:{}", (k * 37) % 360, 1 + k % 5)]);
+    }
+    let mut child = cmd.stdout(std::process::Stdio::null()).spawn().unwrap();
+    // Wait for a few saves, then kill it while it is still playing and saving.
+    let start = std::time::Instant::now();
+    while !file.exists() && start.elapsed().as_secs() < 60 {
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    std::thread::sleep(std::time::Duration::from_millis(150));
+    assert!(
+        child.try_wait().unwrap().is_none(),
+        "the recorder must still be running when killed"
+    );
+    child.kill().unwrap();
+    child.wait().unwrap();
+    let rec = Recording::load(&file).expect("the file on disk is a complete recording");
+    assert!(!rec.inputs.is_empty());
+    // Whatever was on disk is whole: it ends with a shot that came to rest, and verifies.
+    assert!(matches!(
+        rec.verify().unwrap(),
+        billiards_physics::recording::Verdict::Reproduced { .. }
+    ));
+    std::fs::remove_dir_all(dir).ok();
+}
