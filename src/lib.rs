@@ -8,6 +8,7 @@ pub mod cue;
 pub mod geometry;
 pub mod lighting;
 pub mod options;
+pub mod recording;
 pub mod screenshot;
 pub mod settings;
 pub mod sim;
@@ -47,7 +48,13 @@ impl Plugin for GamePlugin {
             camera::plugin,
             lighting::plugin,
             ui::plugin,
+            recording::plugin,
         ));
+        if self.options.no_record {
+            app.insert_resource(recording::RecordingsFolder(None));
+        } else if let Some(folder) = &self.options.recordings {
+            app.insert_resource(recording::RecordingsFolder(Some(folder.clone())));
+        }
         if self.options.top_view {
             app.insert_resource(camera::OrbitCamera::top_view());
         }

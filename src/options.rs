@@ -13,6 +13,12 @@ pub struct LaunchOptions {
     pub top_view: bool,
     /// Print the usage text and exit.
     pub show_help: bool,
+    /// Where recordings are saved and listed (default: `recordings` in the current folder).
+    pub recordings: Option<PathBuf>,
+    /// Do not save recordings.
+    pub no_record: bool,
+    /// Open this recording in the replay viewer at start (`billiards replay FILE`).
+    pub replay: Option<PathBuf>,
 }
 
 /// Why the command line could not be understood.
@@ -46,7 +52,12 @@ impl std::error::Error for ArgsError {}
 impl LaunchOptions {
     /// The usage text printed by `--help` and after a command-line error.
     pub const USAGE: &'static str = "\
-usage: billiards [--top-view] [--screenshot PATH [--settle SECONDS]]
+usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
+                 [--screenshot PATH [--settle SECONDS]]
+
+  replay FILE         open a recording in the replay viewer
+  --recordings DIR    save every game there, one file per rack (default: ./recordings)
+  --no-record         do not save recordings
 
   --screenshot PATH   wait until the scene has been drawn, save it as PNG to PATH, exit
   --settle SECONDS    how long every render pipeline must have been ready before the
@@ -82,6 +93,15 @@ usage: billiards [--top-view] [--screenshot PATH [--settle SECONDS]]
                         })?;
                 }
                 "--top-view" => options.top_view = true,
+                "--recordings" => {
+                    let dir = args.next().ok_or(ArgsError::MissingValue("--recordings"))?;
+                    options.recordings = Some(PathBuf::from(dir));
+                }
+                "--no-record" => options.no_record = true,
+                "replay" if options.replay.is_none() => {
+                    let file = args.next().ok_or(ArgsError::MissingValue("replay"))?;
+                    options.replay = Some(PathBuf::from(file));
+                }
                 "-h" | "--help" => options.show_help = true,
                 _ => return Err(ArgsError::UnknownArgument(arg)),
             }
@@ -112,6 +132,16 @@ mod tests {
         assert!(options.top_view);
         assert_eq!(options.screenshot, Some(PathBuf::from("out.png")));
         assert_eq!(options.screenshot_settle, Duration::from_millis(500));
+    }
+
+    #[test]
+    fn replay_and_recordings_are_read() {
+        let options = parse(&["replay", "game.json", "--recordings", "out"]).unwrap();
+        assert_eq!(options.replay, Some(PathBuf::from("game.json")));
+        assert_eq!(options.recordings, Some(PathBuf::from("out")));
+        assert!(!options.no_record);
+        assert!(parse(&["--no-record"]).unwrap().no_record);
+        assert_eq!(parse(&["replay"]), Err(ArgsError::MissingValue("replay")));
     }
 
     #[test]

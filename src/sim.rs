@@ -13,12 +13,15 @@
 //! Running the requests after the step means a shot starts with the next frame's delta, not
 //! with whatever idle time the reactive window accumulated before the key press.
 
-use std::{ops::Range, time::Instant};
+use std::{
+    ops::Range,
+    time::{Instant, SystemTime},
+};
 
 use bevy::{math::DVec2, prelude::*, window::RequestRedraw};
 use billiards_physics::{
     self as physics, BallState, CushionModel, EventKind, Model, Motion, PaperModel, Params, Rack,
-    Shot, Simulation, SpinModel,
+    Shot, Simulation, SpinModel, recording::Recorder,
 };
 
 use crate::{
@@ -95,6 +98,16 @@ pub fn rack_label(rack: Rack) -> &'static str {
 /// The rack on the table when the game starts: the paper's 15 balls 1/10 in apart, with the
 /// cue ball on the head spot.
 pub const STARTING_RACK: Rack = Rack::FifteenBall;
+
+/// A short name of a rack for file names.
+pub fn rack_slug(rack: Rack) -> &'static str {
+    match rack {
+        Rack::PaperDefault => "paper",
+        Rack::FifteenBall => "15-ball",
+        Rack::Tight => "tight-15",
+        Rack::NineBall => "9-ball",
+    }
+}
 
 /// Asks for the table to be cleared and racked anew.
 #[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
@@ -181,17 +194,35 @@ pub struct SimStatus {
     pub note: Option<String>,
 }
 
-/// The solver and the entity of each of its balls.
+/// The solver and the entity of each of its balls. Every input goes through a [`Recorder`],
+/// so the game since the last rack is always an exact recording.
 #[derive(Resource, Debug)]
 pub struct Solver {
-    sim: Simulation,
+    rec: Recorder,
     entities: Vec<Entity>,
+    rack: Rack,
+    started: SystemTime,
 }
 
 impl Solver {
     /// The simulation, for reading.
     pub fn simulation(&self) -> &Simulation {
-        &self.sim
+        self.rec.sim()
+    }
+
+    /// The recorder: the game since the last rack, inputs and history.
+    pub fn recorder(&self) -> &Recorder {
+        &self.rec
+    }
+
+    /// The rack this game started from.
+    pub fn rack(&self) -> Rack {
+        self.rack
+    }
+
+    /// When this game was racked (wall clock; names its recording).
+    pub fn started(&self) -> SystemTime {
+        self.started
     }
 
     /// The entity of solver ball `id`.
@@ -201,7 +232,7 @@ impl Solver {
 
     /// The solver index of the cue ball, if it is in the layout.
     pub fn cue_ball(&self) -> Option<usize> {
-        self.sim.numbers().iter().position(|&n| n == 0)
+        self.simulation().numbers().iter().position(|&n| n == 0)
     }
 }
 
@@ -303,7 +334,7 @@ fn advance_solver(world: &mut World) {
     let dt = world.resource::<Time>().delta_secs_f64();
     let paused = world.resource::<Time<Virtual>>().is_paused();
     world.resource_scope(|world, mut solver: Mut<Solver>| {
-        if solver.sim.is_at_rest() {
+        if solver.simulation().is_at_rest() {
             return;
         }
         let started = Instant::now();
@@ -311,12 +342,12 @@ fn advance_solver(world: &mut World) {
             if !step_requested {
                 return;
             }
-            let before = solver.sim.history().events().len();
-            solver.sim.step_event();
-            Ok(before..solver.sim.history().events().len())
+            let before = solver.simulation().history().events().len();
+            solver.rec.step_event();
+            Ok(before..solver.simulation().history().events().len())
         } else if dt > 0.0 {
             solver
-                .sim
+                .rec
                 .advance(dt)
                 .map(|advance| advance.events)
                 .map_err(|error| error.to_string())
@@ -334,18 +365,18 @@ fn advance_solver(world: &mut World) {
             }
         };
         send_event_messages(world, &solver, events.clone());
-        let at_rest = solver.sim.is_at_rest();
+        let at_rest = solver.simulation().is_at_rest();
         {
             let mut status = world.resource_mut::<SimStatus>();
             status.at_rest = at_rest;
-            status.sim_time = solver.sim.time();
+            status.sim_time = solver.simulation().time();
             status.events_this_shot += events.len();
             status.solver_seconds_last_frame = cost;
         }
         if at_rest {
             let scratch = solver
                 .cue_ball()
-                .is_some_and(|id| !solver.sim.ball(id).motion.on_table());
+                .is_some_and(|id| !solver.simulation().ball(id).motion.on_table());
             world.write_message(ShotFinished { scratch });
         } else {
             // The window only redraws on demand; moving balls demand it.
@@ -358,7 +389,7 @@ fn advance_solver(world: &mut World) {
 /// touched, so change detection downstream sees only what moved).
 fn write_back(world: &mut World, solver: &Solver) {
     for (id, &entity) in solver.entities.iter().enumerate() {
-        let state = solver.sim.ball(id);
+        let state = solver.simulation().ball(id);
         let Ok(mut ball) = world.get_entity_mut(entity) else {
             continue;
         };
@@ -375,7 +406,7 @@ fn write_back(world: &mut World, solver: &Solver) {
 
 fn send_event_messages(world: &mut World, solver: &Solver, events: Range<usize>) {
     let entity = |id: usize| solver.entities[id];
-    for event in &solver.sim.history().events()[events] {
+    for event in &solver.simulation().history().events()[events] {
         let time = event.time;
         match event.kind {
             EventKind::BallBall { a, b } => {
@@ -402,7 +433,7 @@ fn send_event_messages(world: &mut World, solver: &Solver, events: Range<usize>)
             EventKind::Pocketed { ball, pocket } => {
                 world.write_message(BallPocketed {
                     ball: entity(ball),
-                    number: solver.sim.numbers()[ball],
+                    number: solver.simulation().numbers()[ball],
                     pocket,
                     time,
                 });
@@ -430,8 +461,8 @@ fn rack_balls(
     let table = spec.physics_table();
     let params = params_from(&settings);
     let layout = rack.layout(&table, &params.ball);
-    let sim = match Simulation::new(table, params, &layout) {
-        Ok(sim) => sim,
+    let rec = match Recorder::new(table, params, layout) {
+        Ok(rec) => rec,
         Err(error) => {
             status.note = Some(format!("cannot rack: {error}"));
             return;
@@ -440,6 +471,7 @@ fn rack_balls(
     for entity in &balls {
         commands.entity(entity).despawn();
     }
+    let sim = rec.sim();
     let entities = sim
         .balls()
         .zip(sim.numbers())
@@ -456,7 +488,12 @@ fn rack_balls(
                 .id()
         })
         .collect();
-    commands.insert_resource(Solver { sim, entities });
+    commands.insert_resource(Solver {
+        rec,
+        entities,
+        rack,
+        started: SystemTime::now(),
+    });
     *status = SimStatus {
         at_rest: true,
         ..default()
@@ -473,10 +510,10 @@ fn apply_physics_settings(
     let params = params_from(&settings);
     // Compare with what the solver has rather than trusting change detection alone: the
     // clock settings (pause, time scale) change the resource too but not the physics.
-    if !settings.is_changed() || *solver.sim.params() == params {
+    if !settings.is_changed() || *solver.simulation().params() == params {
         return;
     }
-    if let Err(error) = solver.sim.set_params(params) {
+    if let Err(error) = solver.rec.set_params(params) {
         status.note = Some(format!("settings not applied: {error}"));
     }
 }
@@ -491,17 +528,17 @@ fn place_edited_balls(
 ) {
     let Some(mut solver) = solver else { return };
     for (ball, mut motion) in &mut balls {
-        if ball.id >= solver.sim.ball_count() {
+        if ball.id >= solver.simulation().ball_count() {
             continue;
         }
-        let state = solver.sim.ball(ball.id);
+        let state = solver.simulation().ball(ball.id);
         // The solver's own writeback also marks the component changed; it matches exactly.
         let current = ball_motion(&state);
         if motion.position == current.position && motion.velocity == current.velocity {
             continue;
         }
         // A ball put down by hand carries no spin.
-        let result = solver.sim.place(
+        let result = solver.rec.place(
             ball.id,
             to_vec2(motion.position),
             to_vec2(motion.velocity),
@@ -511,8 +548,8 @@ fn place_edited_balls(
             status.note = Some(format!("ball {} not moved: {error}", ball.number));
         }
         // Either way the component now says what the solver has; already marked changed.
-        *motion.bypass_change_detection() = ball_motion(&solver.sim.ball(ball.id));
-        status.at_rest = solver.sim.is_at_rest();
+        *motion.bypass_change_detection() = ball_motion(&solver.simulation().ball(ball.id));
+        status.at_rest = solver.simulation().is_at_rest();
     }
 }
 
@@ -528,7 +565,7 @@ fn strike_cue_ball(
         return;
     };
     let Some(mut solver) = solver else { return };
-    if !solver.sim.is_at_rest() {
+    if !solver.simulation().is_at_rest() {
         status.note = Some("wait until every ball rests".to_owned());
         return;
     }
@@ -537,15 +574,15 @@ fn strike_cue_ball(
         return;
     };
     let shot = Shot::new(request.angle, request.speed);
-    match solver.sim.strike(cue_ball, shot) {
+    match solver.rec.strike(cue_ball, shot) {
         Ok(()) => {
             // Show the struck ball's new velocity now rather than after the next step.
             if let Ok(mut motion) = balls.get_mut(solver.entities[cue_ball]) {
-                *motion = ball_motion(&solver.sim.ball(cue_ball));
+                *motion = ball_motion(&solver.simulation().ball(cue_ball));
             }
             status.shots += 1;
             status.events_this_shot = 0;
-            status.at_rest = solver.sim.is_at_rest();
+            status.at_rest = solver.simulation().is_at_rest();
             status.note = None;
             redraw.write(RequestRedraw);
         }
@@ -555,7 +592,7 @@ fn strike_cue_ball(
 
 /// After a scratch the cue ball goes back on the head string: the head spot, or the nearest
 /// free point along the string. The edit reaches the solver like any other (change detection).
-fn respot_after_scratch(
+pub fn respot_after_scratch(
     mut commands: Commands,
     mut finished: MessageReader<ShotFinished>,
     solver: Option<Res<Solver>>,
@@ -568,9 +605,9 @@ fn respot_after_scratch(
     }
     let Some(solver) = solver else { return };
     let Some(cue) = solver.cue_ball() else { return };
-    let others: Vec<DVec2> = (0..solver.sim.ball_count())
+    let others: Vec<DVec2> = (0..solver.simulation().ball_count())
         .filter(|&id| id != cue)
-        .map(|id| solver.sim.ball(id))
+        .map(|id| solver.simulation().ball(id))
         .filter(|state| state.motion.on_table())
         .map(|state| to_dvec2(state.position))
         .collect();

@@ -1,0 +1,161 @@
+//! Every game is recorded without being asked: the solver's [`Recorder`] logs each input, and
+//! after every shot the recording (setup, inputs, exact event history) is written atomically to
+//! one file per game (from a rack to the next) in the recordings folder.
+//!
+//! [`Recorder`]: billiards_physics::recording::Recorder
+
+use std::{
+    path::{Path, PathBuf},
+    time::{SystemTime, UNIX_EPOCH},
+};
+
+use bevy::prelude::*;
+
+use crate::sim::{ShotFinished, SimStatus, SimSystems, Solver, rack_slug};
+
+/// Registers the autosave.
+pub fn plugin(app: &mut App) {
+    app.init_resource::<RecordingsFolder>()
+        .init_resource::<Autosave>()
+        .add_systems(
+            Update,
+            save_finished_shot
+                .in_set(SimSystems::Flow)
+                .after(crate::sim::respot_after_scratch),
+        );
+}
+
+/// Where recordings are written and listed. `None` turns the autosave off.
+#[derive(Resource, Debug, Clone, PartialEq, Eq)]
+pub struct RecordingsFolder(pub Option<PathBuf>);
+
+impl Default for RecordingsFolder {
+    fn default() -> Self {
+        Self(Some(PathBuf::from(DEFAULT_FOLDER)))
+    }
+}
+
+/// The folder recordings go to unless `--recordings DIR` says otherwise.
+pub const DEFAULT_FOLDER: &str = "recordings";
+
+/// What the autosave did last.
+#[derive(Resource, Debug, Clone, Default, PartialEq)]
+pub struct Autosave {
+    /// The file of the game in progress, once its first shot is saved.
+    pub file: Option<PathBuf>,
+    /// Shots in that file.
+    pub shots: u32,
+    /// The last failure, if the last save failed (the game goes on; the next shot retries).
+    pub error: Option<String>,
+}
+
+/// After every shot, writes the whole game so far to its file (temporary file, then rename:
+/// a crash loses at most the shot in flight).
+fn save_finished_shot(
+    mut finished: MessageReader<ShotFinished>,
+    folder: Res<RecordingsFolder>,
+    solver: Option<Res<Solver>>,
+    status: Res<SimStatus>,
+    mut autosave: ResMut<Autosave>,
+) {
+    if finished.read().count() == 0 {
+        return;
+    }
+    let (Some(folder), Some(solver)) = (&folder.0, solver) else {
+        return;
+    };
+    let path = game_file(folder, solver.started(), solver.rack());
+    let recording = solver.recorder().recording();
+    let result = std::fs::create_dir_all(folder)
+        .map_err(|error| format!("{}: {error}", folder.display()))
+        .and_then(|()| recording.save(&path).map_err(|error| error.to_string()));
+    match result {
+        Ok(()) => {
+            *autosave = Autosave {
+                file: Some(path),
+                shots: status.shots,
+                error: None,
+            };
+        }
+        Err(error) => {
+            warn!("recording not saved: {error}");
+            autosave.error = Some(error);
+        }
+    }
+}
+
+/// The file of the game that started at `started` from `rack`:
+/// `YYYY-MM-DD_HH-MM-SS.mmm_<rack>.json` (UTC), so a folder listing sorts by date.
+pub fn game_file(folder: &Path, started: SystemTime, rack: billiards_physics::Rack) -> PathBuf {
+    let since_epoch = started.duration_since(UNIX_EPOCH).unwrap_or_default();
+    let secs = since_epoch.as_secs();
+    let (year, month, day) = civil_from_days((secs / 86_400) as i64);
+    let of_day = secs % 86_400;
+    folder.join(format!(
+        "{year:04}-{month:02}-{day:02}_{:02}-{:02}-{:02}.{:03}_{}.json",
+        of_day / 3600,
+        of_day / 60 % 60,
+        of_day % 60,
+        since_epoch.subsec_millis(),
+        rack_slug(rack),
+    ))
+}
+
+/// Proleptic Gregorian date of a day count since 1970-01-01 (H. Hinnant's `civil_from_days`).
+fn civil_from_days(days: i64) -> (i64, u32, u32) {
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = (doy - (153 * mp + 2) / 5 + 1) as u32;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 } as u32;
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    (year, month, day)
+}
+
+/// The recordings in `folder`, newest first (by name, which starts with the date).
+pub fn list_recordings(folder: &Path) -> Vec<PathBuf> {
+    let Ok(entries) = std::fs::read_dir(folder) else {
+        return Vec::new();
+    };
+    let mut files: Vec<PathBuf> = entries
+        .filter_map(|entry| entry.ok().map(|entry| entry.path()))
+        .filter(|path| path.extension().is_some_and(|ext| ext == "json"))
+        .collect();
+    files.sort_unstable_by(|a, b| b.cmp(a));
+    files
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::time::Duration;
+
+    #[test]
+    fn dates_match_known_days() {
+        assert_eq!(civil_from_days(0), (1970, 1, 1));
+        // 2000-02-29 is day 11016; 2026-11-22 is day 20779.
+        assert_eq!(civil_from_days(11_016), (2000, 2, 29));
+        assert_eq!(civil_from_days(20_779), (2026, 11, 22));
+        assert_eq!(civil_from_days(-1), (1969, 12, 31));
+    }
+
+    #[test]
+    fn file_names_sort_by_start_time() {
+        let folder = Path::new("r");
+        let at = |s: u64, ms: u64| {
+            game_file(
+                folder,
+                UNIX_EPOCH + Duration::from_millis(s * 1000 + ms),
+                billiards_physics::Rack::NineBall,
+            )
+        };
+        assert_eq!(
+            at(20_779 * 86_400 + 3 * 3600 + 25 * 60 + 7, 42),
+            folder.join("2026-11-22_03-25-07.042_9-ball.json")
+        );
+        assert!(at(100, 999) < at(101, 0));
+    }
+}
