@@ -6,12 +6,12 @@
 
 use bevy::{
     asset::RenderAssetUsages,
-    math::DVec2,
+    math::{DVec2, DVec3},
     prelude::*,
     render::render_resource::{Extent3d, TextureDimension, TextureFormat},
 };
 
-use crate::geometry::{TableSpec, table_dir_to_world};
+use crate::geometry::{TableSpec, table_dir_to_world, to_world};
 
 /// Adds ball visuals and the writeback from [`BallMotion`] to [`Transform`].
 pub fn plugin(app: &mut App) {
@@ -94,6 +94,8 @@ pub struct BallMotion {
     pub velocity: DVec2,
     /// Sliding, rolling or at rest.
     pub state: MotionState,
+    /// Angular velocity, rad/s, in the table's axes (z up); zero under the paper's model.
+    pub spin: DVec3,
 }
 
 /// Marks a ball that has dropped into a pocket and left play.
@@ -246,19 +248,29 @@ fn restore_respotted(
     }
 }
 
-/// Writes moved balls to their transforms. A moving ball is turned as if it rolled without
-/// slipping along its displacement: exact while rolling, and close enough to read as rolling
-/// while sliding (the paper's model carries no spin). A ball placed at rest (racked,
-/// respotted) is moved without turning.
+/// Writes moved balls to their transforms. Under the spin model a ball turns by its own
+/// angular velocity over the frame (so draw, follow and english show); under the paper's
+/// model, which carries no spin, a moving ball is turned as if it rolled without slipping
+/// along its displacement. A ball placed at rest (racked, respotted) is moved without turning.
 fn draw_ball_motion(
     spec: Res<TableSpec>,
+    time: Res<Time>,
     mut balls: Query<(&BallMotion, &mut Transform), MovedOnTable>,
 ) {
+    let dt = time.delta_secs_f64();
     for (motion, mut transform) in &mut balls {
         let target = spec.ball_world_position(motion.position);
         let step = target - transform.translation;
         let distance = step.length();
-        if distance > 0.0 && motion.state != MotionState::Stationary {
+        if motion.spin != DVec3::ZERO {
+            // The table-to-world map is a rotation, so it carries rotation vectors too.
+            let turn = to_world(motion.spin * dt);
+            let angle = turn.length();
+            if angle > 0.0 {
+                transform.rotation =
+                    Quat::from_axis_angle(turn / angle, angle) * transform.rotation;
+            }
+        } else if distance > 0.0 && motion.state != MotionState::Stationary {
             let axis = Vec3::Y.cross(step / distance);
             let angle = distance / spec.ball_radius as f32;
             transform.rotation = Quat::from_axis_angle(axis, angle) * transform.rotation;

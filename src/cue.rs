@@ -221,10 +221,7 @@ fn cue_keys(
     }
     apply_shot_edit(next, &mut shot, &mut report);
     if keys.just_pressed(KeyCode::Space) {
-        shots.write(ShotRequested {
-            angle: shot.angle,
-            speed: shot.power,
-        });
+        shots.write(ShotRequested::from_settings(&shot));
     }
 }
 

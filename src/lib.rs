@@ -2,6 +2,7 @@
 //!
 //! One plugin per feature; [`GamePlugin`] puts them together with Bevy's and egui's.
 
+pub mod aim;
 pub mod balls;
 pub mod camera;
 pub mod cue;
@@ -45,6 +46,7 @@ impl Plugin for GamePlugin {
             table::plugin,
             balls::plugin,
             cue::plugin,
+            aim::plugin,
             camera::plugin,
             lighting::plugin,
             ui::plugin,

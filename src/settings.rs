@@ -7,7 +7,7 @@
 use std::{f64::consts::TAU, fmt};
 
 use bevy::prelude::*;
-use billiards_physics::Prediction;
+use billiards_physics::{Prediction, SpinModel, TipOffset};
 
 /// Registers the settings resources.
 pub fn plugin(app: &mut App) {
@@ -92,6 +92,9 @@ pub struct ShotSettings {
     pub angle: f64,
     /// Power, as the speed the cue gives the cue ball, in m/s.
     pub power: f64,
+    /// Where the tip strikes, in ball radii from the centre (spin model; the paper's model
+    /// ignores it): `side` right of centre, `height` above it.
+    pub tip: TipOffset,
 }
 
 impl Default for ShotSettings {
@@ -100,6 +103,7 @@ impl Default for ShotSettings {
         Self {
             angle: 0.0,
             power: 6.0,
+            tip: TipOffset::default(),
         }
     }
 }
@@ -127,7 +131,57 @@ impl ShotSettings {
             self.angle = 0.0;
         }
         Self::POWER.clamp(&mut self.power, &mut notes);
+        Self::TIP_SIDE.clamp(&mut self.tip.side, &mut notes);
+        Self::TIP_HEIGHT.clamp(&mut self.tip.height, &mut notes);
+        // Beyond the miscue limit the tip would slip off: pull it back along its direction.
+        let limit = Self::tip_limit();
+        let offset = self.tip.side.hypot(self.tip.height);
+        if offset > limit {
+            let scale = limit / offset;
+            notes.push(ClampNote {
+                range: ParamRange {
+                    label: "tip offset",
+                    min: 0.0,
+                    max: limit,
+                    unit: " R",
+                },
+                requested: offset,
+                applied: limit,
+            });
+            self.tip.side *= scale;
+            self.tip.height *= scale;
+        }
         notes
+    }
+
+    /// Tip offsets left/right of centre, in ball radii.
+    pub const TIP_SIDE: ParamRange = ParamRange {
+        label: "side (english)",
+        min: -0.5,
+        max: 0.5,
+        unit: " R",
+    };
+
+    /// Tip offsets below (draw) and above (follow) centre, in ball radii.
+    pub const TIP_HEIGHT: ParamRange = ParamRange {
+        label: "height (follow/draw)",
+        min: -0.5,
+        max: 0.5,
+        unit: " R",
+    };
+
+    /// The largest tip offset the solver accepts before calling a miscue, in radii.
+    pub fn tip_limit() -> f64 {
+        SpinModel::default().miscue_limit
+    }
+
+    /// The shot these settings describe.
+    pub fn shot(&self) -> billiards_physics::Shot {
+        billiards_physics::Shot {
+            angle: self.angle,
+            speed: self.power,
+            tip: self.tip,
+        }
     }
 
     /// The aim direction as a unit vector in the table plane.
@@ -136,15 +190,38 @@ impl ShotSettings {
     }
 }
 
+/// The cushion model of the spin model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum CushionChoice {
+    /// Han (2005): impulse at the nose height with friction; english changes the rebound.
+    #[default]
+    Han2005,
+    /// Plain reflection with restitution (no spin effect).
+    Reflect,
+}
+
+impl CushionChoice {
+    /// Every choice, in the panel's order.
+    pub const ALL: [Self; 2] = [Self::Han2005, Self::Reflect];
+
+    /// The name shown to the player.
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Han2005 => "Han 2005 (spin-aware)",
+            Self::Reflect => "reflection",
+        }
+    }
+}
+
 /// Which physics model the solver runs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum PhysicsModel {
     /// The paper's model: no spin, sliding friction above the slide/roll threshold speed and
     /// rolling friction below it.
-    #[default]
     Paper,
     /// Spin (Leckie and Greenspan): sliding turns into rolling by friction at the contact
     /// point, throw between balls, a spin-aware cushion. The slide/roll threshold is unused.
+    #[default]
     Spin,
 }
 
@@ -207,6 +284,17 @@ pub struct PhysicsSettings {
     pub e_ball: f64,
     /// Ball-cushion coefficient of restitution.
     pub e_cushion: f64,
+    /// Friction turning a ball's spin about the vertical (spin model).
+    pub mu_spin: f64,
+    /// Friction between two balls in contact: throw and spin transfer (spin model).
+    pub mu_ball: f64,
+    /// How cushions respond (spin model; the paper's model always reflects).
+    pub cushion: CushionChoice,
+    /// Friction between ball and cushion nose (Han 2005 cushion).
+    pub mu_cushion: f64,
+    /// Round the pocket jaws so balls can rattle (takes effect at the next rack: the table is
+    /// fixed during a game); otherwise the mouths end square.
+    pub jaws: bool,
     /// Perturbation of collision normals.
     pub randomization: Randomization,
     /// Physics model.
@@ -222,12 +310,18 @@ pub struct PhysicsSettings {
 impl Default for PhysicsSettings {
     fn default() -> Self {
         // Typical values from docs/physics reference (pooltool, FastFiz, Alciatore).
+        let spin = SpinModel::default();
         Self {
             mu_slide: 0.2,
             mu_roll: 0.01,
             slide_roll_speed: 0.5,
             e_ball: 0.95,
             e_cushion: 0.85,
+            mu_spin: spin.mu_spin,
+            mu_ball: spin.mu_ball,
+            cushion: CushionChoice::Han2005,
+            mu_cushion: 0.2,
+            jaws: true,
             randomization: Randomization::default(),
             model: PhysicsModel::default(),
             prediction: Prediction::Exact,
@@ -273,6 +367,27 @@ impl PhysicsSettings {
         max: 1.0,
         unit: "",
     };
+    /// Spin friction: the reference's 0.044 (FastFiz) with room either side.
+    pub const MU_SPIN: ParamRange = ParamRange {
+        label: "spin friction",
+        min: 0.01,
+        max: 0.1,
+        unit: "",
+    };
+    /// Ball-ball friction, the reference's range.
+    pub const MU_BALL: ParamRange = ParamRange {
+        label: "ball-ball friction",
+        min: 0.03,
+        max: 0.08,
+        unit: "",
+    };
+    /// Ball-cushion friction (Han 2005 uses about 0.2).
+    pub const MU_CUSHION: ParamRange = ParamRange {
+        label: "cushion friction",
+        min: 0.0,
+        max: 0.4,
+        unit: "",
+    };
     /// Spread of the normal perturbation: beyond a few degrees play stops looking plausible.
     pub const SPREAD: ParamRange = ParamRange {
         label: "spread",
@@ -296,6 +411,9 @@ impl PhysicsSettings {
         Self::SLIDE_ROLL_SPEED.clamp(&mut self.slide_roll_speed, &mut notes);
         Self::E_BALL.clamp(&mut self.e_ball, &mut notes);
         Self::E_CUSHION.clamp(&mut self.e_cushion, &mut notes);
+        Self::MU_SPIN.clamp(&mut self.mu_spin, &mut notes);
+        Self::MU_BALL.clamp(&mut self.mu_ball, &mut notes);
+        Self::MU_CUSHION.clamp(&mut self.mu_cushion, &mut notes);
         Self::SPREAD.clamp(&mut self.randomization.spread_degrees, &mut notes);
         Self::TIME_SCALE.clamp(&mut self.time_scale, &mut notes);
         notes
@@ -307,12 +425,17 @@ impl PhysicsSettings {
 pub struct ViewSettings {
     /// Draw the paper's vectors: the red cue vector and blue ball velocities.
     pub show_vectors: bool,
+    /// Draw the aiming aid: the path to the first contact, the ghost ball, the paths after.
+    pub show_aim: bool,
 }
 
 impl Default for ViewSettings {
     fn default() -> Self {
         // The paper's default layout figure shows the cue vector.
-        Self { show_vectors: true }
+        Self {
+            show_vectors: true,
+            show_aim: true,
+        }
     }
 }
 
@@ -346,11 +469,33 @@ mod tests {
         let mut shot = ShotSettings {
             angle: f64::NAN,
             power: f64::NAN,
+            tip: TipOffset {
+                side: f64::NAN,
+                height: 0.0,
+            },
         };
         let notes = shot.clamp_to_physical();
         assert_eq!(shot.angle, 0.0);
         assert_eq!(shot.power, ShotSettings::POWER.min);
+        assert_eq!(shot.tip.side, ShotSettings::TIP_SIDE.min);
+        assert_eq!(notes.len(), 2);
+    }
+
+    #[test]
+    fn a_tip_beyond_the_miscue_limit_is_pulled_back_along_its_direction() {
+        let mut shot = ShotSettings {
+            tip: TipOffset {
+                side: 0.4,
+                height: -0.4,
+            },
+            ..default()
+        };
+        let notes = shot.clamp_to_physical();
         assert_eq!(notes.len(), 1);
+        let limit = ShotSettings::tip_limit();
+        assert!((shot.tip.side.hypot(shot.tip.height) - limit).abs() < 1e-12);
+        assert!((shot.tip.side + shot.tip.height).abs() < 1e-12);
+        assert!(notes[0].to_string().contains("tip offset"));
     }
 
     #[test]
@@ -358,6 +503,7 @@ mod tests {
         let mut shot = ShotSettings {
             angle: -std::f64::consts::FRAC_PI_2,
             power: 1.0,
+            tip: TipOffset::default(),
         };
         assert!(shot.clamp_to_physical().is_empty());
         assert!((shot.angle - 1.5 * std::f64::consts::PI).abs() < 1e-12);

@@ -27,7 +27,7 @@ use billiards_physics::{
 use crate::{
     balls::{Ball, BallMotion, MotionState, Pocketed},
     geometry::TableSpec,
-    settings::{PhysicsModel, PhysicsSettings},
+    settings::{CushionChoice, PhysicsModel, PhysicsSettings},
 };
 
 /// Registers the solver, its messages and the game-flow systems. Needs no rendering, so it
@@ -120,6 +120,19 @@ pub struct ShotRequested {
     pub angle: f64,
     /// Cue-ball speed given by the cue, m/s.
     pub speed: f64,
+    /// Where the tip strikes (spin model).
+    pub tip: physics::TipOffset,
+}
+
+impl ShotRequested {
+    /// The request for the shot the settings describe.
+    pub fn from_settings(shot: &crate::settings::ShotSettings) -> Self {
+        Self {
+            angle: shot.angle,
+            speed: shot.power,
+            tip: shot.tip,
+        }
+    }
 }
 
 /// Asks the paused simulation to advance exactly to its next event.
@@ -236,6 +249,19 @@ impl Solver {
     }
 }
 
+/// Radius of the rounded cushion ends at the pocket mouths (about the nose's own rounding).
+pub const JAW_RADIUS: f64 = 0.015;
+
+/// The solver's table for the table's dimensions and the player's settings.
+pub fn table_for(spec: &TableSpec, settings: &PhysicsSettings) -> physics::Table {
+    let table = spec.physics_table();
+    if settings.jaws {
+        table.with_jaws(JAW_RADIUS)
+    } else {
+        table
+    }
+}
+
 /// The solver's parameters for the player's settings.
 pub fn params_from(settings: &PhysicsSettings) -> Params {
     let model = match settings.model {
@@ -247,23 +273,23 @@ pub fn params_from(settings: &PhysicsSettings) -> Params {
             e_cushion: settings.e_cushion,
         }),
         PhysicsModel::Spin => {
-            let defaults = SpinModel::default();
-            // Keep the library's cushion friction; only the restitution is a setting.
-            let cushion = match defaults.cushion {
-                CushionModel::Han2005 { mu, .. } => CushionModel::Han2005 {
+            let cushion = match settings.cushion {
+                CushionChoice::Han2005 => CushionModel::Han2005 {
                     e: settings.e_cushion,
-                    mu,
+                    mu: settings.mu_cushion,
                 },
-                CushionModel::Reflect { .. } => CushionModel::Reflect {
+                CushionChoice::Reflect => CushionModel::Reflect {
                     e: settings.e_cushion,
                 },
             };
             Model::Spin(SpinModel {
                 mu_slide: settings.mu_slide,
                 mu_roll: settings.mu_roll,
+                mu_spin: settings.mu_spin,
                 e_ball: settings.e_ball,
+                mu_ball: settings.mu_ball,
                 cushion,
-                ..defaults
+                ..SpinModel::default()
             })
         }
     };
@@ -294,6 +320,10 @@ pub fn ball_motion(state: &BallState) -> BallMotion {
     BallMotion {
         position: to_dvec2(state.position),
         velocity: to_dvec2(state.velocity),
+        spin: {
+            let w = state.angular_velocity;
+            bevy::math::DVec3::new(w.x, w.y, w.z)
+        },
         state: match state.motion {
             Motion::Sliding => MotionState::Sliding,
             Motion::Rolling => MotionState::Rolling,
@@ -458,7 +488,7 @@ fn rack_balls(
     let Some(&RackRequested(rack)) = requests.read().last() else {
         return;
     };
-    let table = spec.physics_table();
+    let table = table_for(&spec, &settings);
     let params = params_from(&settings);
     let layout = rack.layout(&table, &params.ball);
     let rec = match Recorder::new(table, params, layout) {
@@ -573,7 +603,11 @@ fn strike_cue_ball(
         status.note = Some("there is no cue ball in this layout".to_owned());
         return;
     };
-    let shot = Shot::new(request.angle, request.speed);
+    let shot = Shot {
+        angle: request.angle,
+        speed: request.speed,
+        tip: request.tip,
+    };
     match solver.rec.strike(cue_ball, shot) {
         Ok(()) => {
             // Show the struck ball's new velocity now rather than after the next step.
@@ -621,6 +655,7 @@ pub fn respot_after_scratch(
             position: spot,
             velocity: DVec2::ZERO,
             state: MotionState::Stationary,
+            spin: bevy::math::DVec3::ZERO,
         };
         commands.entity(entity).remove::<Pocketed>();
         status.note = Some("scratch: the cue ball is back on the head string".to_owned());

@@ -15,12 +15,13 @@ use bevy_egui::{
 };
 
 use crate::{
+    aim::AimPrediction,
     balls::{Ball, Pocketed},
     camera::{CameraMode, OrbitCamera, TableCamera},
     cue::apply_shot_edit,
     settings::{
-        ClampReport, PREDICTIONS, ParamRange, PhysicsModel, PhysicsSettings, ShotSettings,
-        ViewSettings, prediction_label,
+        ClampReport, CushionChoice, PREDICTIONS, ParamRange, PhysicsModel, PhysicsSettings,
+        ShotSettings, ViewSettings, prediction_label,
     },
     sim::{RACKS, RackRequested, ShotRequested, SimStatus, StepRequested, rack_label},
 };
@@ -68,6 +69,7 @@ struct PanelState<'w, 's> {
     steps: MessageWriter<'w, StepRequested>,
     shots: MessageWriter<'w, ShotRequested>,
     pocketed: Query<'w, 's, &'static Ball, With<Pocketed>>,
+    aim: Res<'w, AimPrediction>,
 }
 
 fn panels(
@@ -133,14 +135,28 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
         );
         next.angle = degrees.to_radians();
         param_slider(ui, &mut next.power, ShotSettings::POWER);
+        // The tip offset only matters to the spin model.
+        ui.add_enabled_ui(state.physics.model == PhysicsModel::Spin, |ui| {
+            ui.horizontal(|ui| {
+                tip_picker(ui, &mut next.tip);
+                ui.vertical(|ui| {
+                    ui.label("tip: click the ball");
+                    param_slider(ui, &mut next.tip.side, ShotSettings::TIP_SIDE);
+                    param_slider(ui, &mut next.tip.height, ShotSettings::TIP_HEIGHT);
+                    if ui.small_button("centre").clicked() {
+                        next.tip = Default::default();
+                    }
+                });
+            });
+        });
+        if let Some(note) = &state.aim.note {
+            ui.colored_label(Color32::from_rgb(255, 170, 60), note);
+        }
         apply_shot_edit(next, &mut state.shot, &mut state.report);
         ui.horizontal(|ui| {
             let shoot = ui.add_enabled(state.status.at_rest, egui::Button::new("Shoot (Space)"));
             if shoot.clicked() {
-                state.shots.write(ShotRequested {
-                    angle: state.shot.angle,
-                    speed: state.shot.power,
-                });
+                state.shots.write(ShotRequested::from_settings(&state.shot));
             }
             ui.label(RichText::new("when every ball rests").weak());
         });
@@ -160,6 +176,21 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
         });
         param_slider(ui, &mut next.e_ball, PhysicsSettings::E_BALL);
         param_slider(ui, &mut next.e_cushion, PhysicsSettings::E_CUSHION);
+        if next.model == PhysicsModel::Spin {
+            param_slider(ui, &mut next.mu_spin, PhysicsSettings::MU_SPIN);
+            param_slider(ui, &mut next.mu_ball, PhysicsSettings::MU_BALL);
+            egui::ComboBox::from_label("cushion")
+                .selected_text(next.cushion.label())
+                .show_ui(ui, |ui| {
+                    for choice in CushionChoice::ALL {
+                        ui.selectable_value(&mut next.cushion, choice, choice.label());
+                    }
+                });
+            ui.add_enabled_ui(next.cushion == CushionChoice::Han2005, |ui| {
+                param_slider(ui, &mut next.mu_cushion, PhysicsSettings::MU_CUSHION);
+            });
+        }
+        ui.checkbox(&mut next.jaws, "rounded pocket jaws (from the next rack)");
         ui.separator();
         ui.checkbox(
             &mut next.randomization.enabled,
@@ -226,6 +257,10 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
             &mut state.view.show_vectors,
             "show vectors (cue red, velocity blue)",
         );
+        ui.checkbox(
+            &mut state.view.show_aim,
+            "aiming aid (path, ghost ball, paths after contact)",
+        );
         ui.horizontal(|ui| {
             let mut mode = state.orbit.mode;
             ui.selectable_value(&mut mode, CameraMode::Free, "orbit");
@@ -266,6 +301,60 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
                  T: top view; F: follow the cue ball; Home: reset view",
             );
         });
+}
+
+/// The cue ball seen from behind the cue: click or drag where the tip should strike. The red
+/// ring is the miscue limit; the blue dot is the tip (drawn to scale, 13 mm across).
+fn tip_picker(ui: &mut egui::Ui, tip: &mut billiards_physics::TipOffset) {
+    let size = 96.0;
+    let (response, painter) =
+        ui.allocate_painter(egui::vec2(size, size), egui::Sense::click_and_drag());
+    let centre = response.rect.center();
+    let radius = size / 2.0 - 2.0;
+    let enabled = ui.is_enabled();
+    let ball = if enabled {
+        Color32::from_rgb(240, 238, 228)
+    } else {
+        Color32::from_gray(120)
+    };
+    painter.circle_filled(centre, radius, ball);
+    painter.circle_stroke(centre, radius, (1.0, Color32::DARK_GRAY));
+    let limit = ShotSettings::tip_limit() as f32;
+    painter.circle_stroke(
+        centre,
+        radius * limit,
+        (1.0, Color32::from_rgb(200, 70, 70)),
+    );
+    let cross = Color32::from_gray(170);
+    painter.line_segment(
+        [
+            centre - egui::vec2(radius, 0.0),
+            centre + egui::vec2(radius, 0.0),
+        ],
+        (0.5, cross),
+    );
+    painter.line_segment(
+        [
+            centre - egui::vec2(0.0, radius),
+            centre + egui::vec2(0.0, radius),
+        ],
+        (0.5, cross),
+    );
+    if enabled
+        && (response.clicked() || response.dragged())
+        && let Some(pointer) = response.interact_pointer_pos()
+    {
+        let offset = (pointer - centre) / radius;
+        tip.side = f64::from(offset.x);
+        tip.height = f64::from(-offset.y);
+    }
+    let at = centre + egui::vec2(tip.side as f32, -tip.height as f32) * radius;
+    // A 13 mm tip on a 57.15 mm ball.
+    painter.circle_filled(
+        at,
+        radius * 0.0065 / 0.028575,
+        Color32::from_rgb(40, 90, 200),
+    );
 }
 
 fn section(ui: &mut egui::Ui, title: &str, add_contents: impl FnOnce(&mut egui::Ui)) {

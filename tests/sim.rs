@@ -10,10 +10,10 @@ use billiards::{
     settings::{self, PhysicsSettings},
     sim::{
         self, BallPocketed, RackRequested, ShotFinished, ShotRequested, SimStatus, Solver,
-        params_from,
+        params_from, table_for,
     },
 };
-use billiards_physics::{Motion, Rack, Shot, Simulation};
+use billiards_physics::{Motion, Rack, Shot, Simulation, TipOffset};
 
 /// A headless game with the given rack on the table.
 fn game(rack: Rack) -> App {
@@ -54,8 +54,12 @@ fn ecs_balls(app: &mut App) -> Vec<(usize, DVec2, bool)> {
 }
 
 fn shoot(app: &mut App, angle: f64, speed: f64) {
+    shoot_with_tip(app, angle, speed, TipOffset::default());
+}
+
+fn shoot_with_tip(app: &mut App, angle: f64, speed: f64, tip: TipOffset) {
     app.world_mut()
-        .write_message(ShotRequested { angle, speed });
+        .write_message(ShotRequested { angle, speed, tip });
 }
 
 /// The duration of frame `i`.
@@ -66,8 +70,9 @@ fn a_break_ends_bit_identical_to_the_library_however_frames_are_sliced() {
     let (angle, speed) = (0.012, 9.0);
     // The library alone, run to rest.
     let spec = TableSpec::default();
-    let params = params_from(&PhysicsSettings::default());
-    let table = spec.physics_table();
+    let settings = PhysicsSettings::default();
+    let params = params_from(&settings);
+    let table = table_for(&spec, &settings);
     let layout = Rack::FifteenBall.layout(&table, &params.ball);
     let mut reference = Simulation::new(table, params, &layout).unwrap();
     reference.strike(0, Shot::new(angle, speed)).unwrap();
@@ -134,7 +139,8 @@ fn a_pocketed_ball_leaves_play() {
     let mut app = game(Rack::NineBall);
     let spec = TableSpec::default();
     // Put the 1 between the cue ball and the foot-left corner, through the same component
-    // edit any tool would use, then shoot it in.
+    // edit any tool would use, then shoot it in with draw, so that the cue ball (which the
+    // default spin model lets follow) does not go in after it.
     let head = spec.head_spot();
     let corner = DVec2::new(spec.length / 2.0, spec.width / 2.0);
     let line = (corner - head).normalize();
@@ -145,7 +151,11 @@ fn a_pocketed_ball_leaves_play() {
         }
     }
     app.update();
-    shoot(&mut app, line.to_angle(), 2.5);
+    let draw = TipOffset {
+        side: 0.0,
+        height: -0.4,
+    };
+    shoot_with_tip(&mut app, line.to_angle(), 4.0, draw);
     let (pocketed, scratch) = run_collecting(&mut app);
     assert_eq!(pocketed, vec![1]);
     assert!(!scratch);
