@@ -19,7 +19,7 @@ use crate::{
     camera::{CameraSystems, TableCamera},
     geometry::{TableSpec, table_dir_to_world, to_table_plane},
     settings::{ClampReport, ShotSettings, ViewSettings},
-    sim::{ShotRequested, SimStatus, SimSystems},
+    sim::{ShotRequested, SimStatus, SimSystems, move_ball_in_hand},
 };
 
 /// Registers the cue stick and its controls.
@@ -135,11 +135,12 @@ impl PointerInput<'_, '_> {
     }
 }
 
-/// Left drag aims at the pointer; with Shift, dragging down (or the wheel) sets the power.
+/// Left drag aims at the pointer; with Shift, dragging down (or the wheel) sets the power;
+/// with Ctrl, after a scratch, it slides the cue ball along the head string.
 fn aim_with_mouse(
     input: PointerInput,
     spec: Res<TableSpec>,
-    balls: Query<(&Ball, &BallMotion), Without<Pocketed>>,
+    mut balls: Query<(&Ball, &mut BallMotion), Without<Pocketed>>,
     status: Res<SimStatus>,
     mut shot: ResMut<ShotSettings>,
     mut report: ResMut<ClampReport>,
@@ -147,7 +148,23 @@ fn aim_with_mouse(
     if !status.at_rest {
         return;
     }
-    let Some(cue_ball) = cue_ball_position(&balls) else {
+    let ctrl = input
+        .keys
+        .any_pressed([KeyCode::ControlLeft, KeyCode::ControlRight]);
+    if status.ball_in_hand && ctrl {
+        if input.buttons.pressed(MouseButton::Left)
+            && let Some(target) = input.table_point(spec.ball_radius as f32)
+            && let Some((_, mut motion)) = balls.iter_mut().find(|(ball, _)| ball.number == 0)
+        {
+            move_ball_in_hand(&spec, &mut motion, target.y);
+        }
+        return;
+    }
+    let Some(cue_ball) = balls
+        .iter()
+        .find(|(ball, _)| ball.number == 0)
+        .map(|(_, motion)| motion.position)
+    else {
         return;
     };
     let shift = input

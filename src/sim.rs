@@ -205,6 +205,9 @@ pub struct SimStatus {
     pub solver_seconds_last_frame: f64,
     /// A message for the player about the simulation's state, if any.
     pub note: Option<String>,
+    /// After a scratch, until the next shot: the player may slide the cue ball along the head
+    /// string.
+    pub ball_in_hand: bool,
 }
 
 /// The solver and the entity of each of its balls. Every input goes through a [`Recorder`],
@@ -616,6 +619,7 @@ fn strike_cue_ball(
             }
             status.shots += 1;
             status.events_this_shot = 0;
+            status.ball_in_hand = false;
             status.at_rest = solver.simulation().is_at_rest();
             status.note = None;
             redraw.write(RequestRedraw);
@@ -658,7 +662,29 @@ pub fn respot_after_scratch(
             spin: bevy::math::DVec3::ZERO,
         };
         commands.entity(entity).remove::<Pocketed>();
-        status.note = Some("scratch: the cue ball is back on the head string".to_owned());
+        status.note = Some(
+            "scratch: the cue ball is back on the head string (ball in hand: Ctrl + drag \
+             or the slider moves it along the string)"
+                .to_owned(),
+        );
+        status.ball_in_hand = true;
+    }
+}
+
+/// Moves the cue ball in hand to `y` on the head string, clamped between the side cushions.
+/// Goes through the same component edit as any placement, so the solver (and the recording)
+/// gets it; a spot on another ball is refused there, with a note.
+pub fn move_ball_in_hand(spec: &TableSpec, motion: &mut BallMotion, y: f64) {
+    let limit = spec.width / 2.0 - spec.ball_radius;
+    let y = if y.is_finite() {
+        y.clamp(-limit, limit)
+    } else {
+        0.0
+    };
+    let spot = DVec2::new(spec.head_spot().x, y);
+    if motion.position != spot {
+        motion.position = spot;
+        motion.velocity = DVec2::ZERO;
     }
 }
 

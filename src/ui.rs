@@ -16,14 +16,18 @@ use bevy_egui::{
 
 use crate::{
     aim::AimPrediction,
-    balls::{Ball, Pocketed},
+    balls::{Ball, BallMotion, Pocketed},
     camera::{CameraMode, OrbitCamera, TableCamera},
     cue::apply_shot_edit,
+    geometry::TableSpec,
     settings::{
         ClampReport, CushionChoice, PREDICTIONS, ParamRange, PhysicsModel, PhysicsSettings,
         ShotSettings, ViewSettings, prediction_label,
     },
-    sim::{RACKS, RackRequested, ShotRequested, SimStatus, StepRequested, rack_label},
+    sim::{
+        RACKS, RackRequested, ShotRequested, SimStatus, StepRequested, move_ball_in_hand,
+        rack_label,
+    },
 };
 
 /// Registers the panels.
@@ -33,7 +37,7 @@ pub fn plugin(app: &mut App) {
 }
 
 /// Width of the settings panel, in logical pixels.
-pub const PANEL_WIDTH: f32 = 310.0;
+pub const PANEL_WIDTH: f32 = 340.0;
 
 /// The egui context gets a camera of its own that draws nothing but the UI, on top of the
 /// table camera; the table camera can then take a viewport beside the panel.
@@ -70,6 +74,8 @@ struct PanelState<'w, 's> {
     shots: MessageWriter<'w, ShotRequested>,
     pocketed: Query<'w, 's, &'static Ball, With<Pocketed>>,
     aim: Res<'w, AimPrediction>,
+    spec: Res<'w, TableSpec>,
+    cue_ball: Query<'w, 's, (&'static Ball, &'static mut BallMotion), Without<Pocketed>>,
 }
 
 fn panels(
@@ -140,15 +146,35 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
             ui.horizontal(|ui| {
                 tip_picker(ui, &mut next.tip);
                 ui.vertical(|ui| {
-                    ui.label("tip: click the ball");
-                    param_slider(ui, &mut next.tip.side, ShotSettings::TIP_SIDE);
-                    param_slider(ui, &mut next.tip.height, ShotSettings::TIP_HEIGHT);
+                    ui.label("Cue tip: click or drag\non the ball.");
+                    ui.label(RichText::new("above: follow\nbelow: draw\nsides: english").weak());
                     if ui.small_button("centre").clicked() {
                         next.tip = Default::default();
                     }
                 });
             });
+            param_slider(ui, &mut next.tip.side, ShotSettings::TIP_SIDE);
+            param_slider(ui, &mut next.tip.height, ShotSettings::TIP_HEIGHT);
         });
+        if state.status.ball_in_hand
+            && let Some(mut motion) = state
+                .cue_ball
+                .iter_mut()
+                .find(|(b, _)| b.number == 0)
+                .map(|(_, m)| m)
+        {
+            let limit = state.spec.width / 2.0 - state.spec.ball_radius;
+            let mut y = motion.position.y;
+            ui.add(
+                egui::Slider::new(&mut y, -limit..=limit)
+                    .text("ball in hand: along the head string")
+                    .suffix(" m")
+                    .max_decimals(3),
+            );
+            if y != motion.position.y {
+                move_ball_in_hand(&state.spec, &mut motion, y);
+            }
+        }
         if let Some(note) = &state.aim.note {
             ui.colored_label(Color32::from_rgb(255, 170, 60), note);
         }

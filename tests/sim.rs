@@ -189,6 +189,35 @@ fn a_scratch_respots_the_cue_ball_on_the_head_spot() {
     let cue = solver.simulation().ball(0);
     assert_eq!(cue.motion, Motion::Stationary);
     assert_eq!(DVec2::new(cue.position.x, cue.position.y), head);
+
+    // Ball in hand: the player slides it along the head string; the solver and the recording
+    // get the placement. Beyond the side cushion it is held at the cushion.
+    assert!(app.world().resource::<SimStatus>().ball_in_hand);
+    for (wanted_y, expected_y) in [(0.2, 0.2), (5.0, spec.width / 2.0 - spec.ball_radius)] {
+        let mut query = app.world_mut().query::<(&Ball, &mut BallMotion)>();
+        let (_, mut motion) = query
+            .iter_mut(app.world_mut())
+            .find(|(ball, _)| ball.number == 0)
+            .unwrap();
+        sim::move_ball_in_hand(&spec, &mut motion, wanted_y);
+        app.update();
+        let solver = app.world().resource::<Solver>();
+        let cue = solver.simulation().ball(0);
+        assert_eq!((cue.position.x, cue.position.y), (head.x, expected_y));
+    }
+    let inputs = &app
+        .world()
+        .resource::<Solver>()
+        .recorder()
+        .recording()
+        .inputs;
+    assert!(matches!(
+        inputs.last().unwrap().action,
+        billiards_physics::recording::Action::Place { .. }
+    ));
+    shoot(&mut app, 0.0, 1.0);
+    app.update();
+    assert!(!app.world().resource::<SimStatus>().ball_in_hand);
 }
 
 #[test]
