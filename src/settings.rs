@@ -292,6 +292,10 @@ pub struct PhysicsSettings {
     pub cushion: CushionChoice,
     /// Friction between ball and cushion nose (Han 2005 cushion).
     pub mu_cushion: f64,
+    /// Height of the cushion nose above the cloth, as a fraction of the ball's diameter.
+    pub cushion_height: f64,
+    /// Mass of the cue, kg (how much of the stroke's speed the ball gets off centre).
+    pub cue_mass: f64,
     /// Round the pocket jaws so balls can rattle (takes effect at the next rack: the table is
     /// fixed during a game); otherwise the mouths end square.
     pub jaws: bool,
@@ -321,6 +325,8 @@ impl Default for PhysicsSettings {
             mu_ball: spin.mu_ball,
             cushion: CushionChoice::Han2005,
             mu_cushion: 0.2,
+            cushion_height: spin.cushion_height,
+            cue_mass: spin.cue_mass,
             jaws: true,
             randomization: Randomization::default(),
             model: PhysicsModel::default(),
@@ -388,6 +394,21 @@ impl PhysicsSettings {
         max: 0.4,
         unit: "",
     };
+    /// Cushion nose height: WPA's 63.5 % of the diameter, with room either side (a nose at
+    /// the centre height, 50 %, would give no spin-dependent rebound).
+    pub const CUSHION_HEIGHT: ParamRange = ParamRange {
+        label: "cushion nose height",
+        min: 0.55,
+        max: 0.75,
+        unit: " D",
+    };
+    /// Cue mass: house cues run from about 16 to 23 oz.
+    pub const CUE_MASS: ParamRange = ParamRange {
+        label: "cue mass",
+        min: 0.45,
+        max: 0.65,
+        unit: " kg",
+    };
     /// Spread of the normal perturbation: beyond a few degrees play stops looking plausible.
     pub const SPREAD: ParamRange = ParamRange {
         label: "spread",
@@ -414,6 +435,8 @@ impl PhysicsSettings {
         Self::MU_SPIN.clamp(&mut self.mu_spin, &mut notes);
         Self::MU_BALL.clamp(&mut self.mu_ball, &mut notes);
         Self::MU_CUSHION.clamp(&mut self.mu_cushion, &mut notes);
+        Self::CUSHION_HEIGHT.clamp(&mut self.cushion_height, &mut notes);
+        Self::CUE_MASS.clamp(&mut self.cue_mass, &mut notes);
         Self::SPREAD.clamp(&mut self.randomization.spread_degrees, &mut notes);
         Self::TIME_SCALE.clamp(&mut self.time_scale, &mut notes);
         notes

@@ -292,6 +292,8 @@ pub fn params_from(settings: &PhysicsSettings) -> Params {
                 e_ball: settings.e_ball,
                 mu_ball: settings.mu_ball,
                 cushion,
+                cushion_height: settings.cushion_height,
+                cue_mass: settings.cue_mass,
                 ..SpinModel::default()
             })
         }

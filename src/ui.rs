@@ -214,7 +214,13 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
                 });
             ui.add_enabled_ui(next.cushion == CushionChoice::Han2005, |ui| {
                 param_slider(ui, &mut next.mu_cushion, PhysicsSettings::MU_CUSHION);
+                param_slider(
+                    ui,
+                    &mut next.cushion_height,
+                    PhysicsSettings::CUSHION_HEIGHT,
+                );
             });
+            param_slider(ui, &mut next.cue_mass, PhysicsSettings::CUE_MASS);
         }
         ui.checkbox(&mut next.jaws, "rounded pocket jaws (from the next rack)");
         ui.separator();
