@@ -33,13 +33,64 @@ pub fn ball_ball(
     if misses(dp, dv, da, contact, horizon) {
         return None;
     }
-    let reach = a.reach(t, horizon) + b.reach(t, horizon);
+    let (ra, rb) = (a.reach(t, horizon), b.reach(t, horizon));
     // Margin covers rounding in the reach bound itself.
-    let reach = reach * (1.0 + 1e-12) + 1e-12 + contact;
+    let reach = (ra + rb) * (1.0 + 1e-12) + 1e-12 + contact;
     if dp.length_squared() > reach * reach {
         return None;
     }
+    // Against a resting ball (where the cull above knows nothing of the deceleration).
+    if !(ma && mb)
+        && let (Some(pa), Some(pb)) = (sweep(a, t, ra), sweep(b, t, rb))
+        && apart(pa, pb) > (contact + 2.0 * (ra + rb) * 1e-12) * (1.0 + 1e-9) + 1e-9
+    {
+        return None;
+    }
     contact_quartic(dp, dv, da, contact, horizon)
+}
+
+/// The segment swept by the centre of a ball on a straight path (at rest, or decelerating
+/// along its velocity, as in the paper's model) from `t` over a distance `reach`: from its
+/// position at `t` along its velocity. `None` for a curving path.
+fn sweep(s: &Segment, t: f64, reach: f64) -> Option<(Vec2, Vec2)> {
+    let p = s.position_at(t);
+    if !s.state.motion.is_moving() {
+        return Some((p, p));
+    }
+    if !s.straight {
+        return None;
+    }
+    let dir = s.velocity_at(t).normalized().unwrap_or(Vec2::ZERO);
+    Some((p, p + dir * reach))
+}
+
+/// Smallest distance between two segments (zero if they cross). Two balls on straight paths
+/// can touch only if their swept segments come within the contact distance, whenever each
+/// passes there: for a ball driven at a resting one (most pairs of a break) this is the exact
+/// test of its path, where the reach bound is only a disc.
+fn apart((p, q): (Vec2, Vec2), (r, s): (Vec2, Vec2)) -> f64 {
+    let side = |a: Vec2, b: Vec2, c: Vec2| (b - a).perp_dot(c - a);
+    let (d1, d2) = (side(p, q, r), side(p, q, s));
+    let (d3, d4) = (side(r, s, p), side(r, s, q));
+    if (d1 > 0.0 && d2 < 0.0 || d1 < 0.0 && d2 > 0.0)
+        && (d3 > 0.0 && d4 < 0.0 || d3 < 0.0 && d4 > 0.0)
+    {
+        return 0.0;
+    }
+    let to = |x: Vec2, a: Vec2, b: Vec2| {
+        let ab = b - a;
+        let len2 = ab.length_squared();
+        let u = if len2 > 0.0 {
+            ((x - a).dot(ab) / len2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        (x - (a + ab * u)).length()
+    };
+    to(p, r, s)
+        .min(to(q, r, s))
+        .min(to(r, p, q))
+        .min(to(s, p, q))
 }
 
 /// Can `|dp + dv τ + da τ²/2|` surely not come down to `contact` for τ in `[0, h]`? The
