@@ -54,7 +54,15 @@ impl<K: Copy> Tournament<K> {
         let mut node = (self.size + i) / 2;
         while node >= 1 {
             let (l, r) = (self.slot(2 * node), self.slot(2 * node + 1));
-            self.winner[node] = if self.ranks[r] < self.ranks[l] { r } else { l };
+            let (old, new) = (
+                self.winner[node],
+                if self.ranks[r] < self.ranks[l] { r } else { l },
+            );
+            self.winner[node] = new;
+            // Slot `i` neither won nor wins here: nothing above changes.
+            if old == new && new != i {
+                break;
+            }
             node /= 2;
         }
     }

@@ -227,8 +227,8 @@ struct Kin {
     until: Vec<f64>,
     /// Moving (bit 0), on the table (bit 1).
     live: Vec<u8>,
-    /// Result of [`Kin::cull_row`]: pairs that may touch.
-    keep: Vec<bool>,
+    /// Result of [`Kin::cull_row`]: positive for pairs that cannot touch.
+    gap: Vec<f64>,
 }
 
 impl Kin {
@@ -244,7 +244,7 @@ impl Kin {
             ay: z,
             until: vec![f64::INFINITY; n],
             live: vec![0; n],
-            keep: vec![false; n],
+            gap: vec![0.0; n],
         }
     }
 
@@ -257,6 +257,11 @@ impl Kin {
         (self.ax[id], self.ay[id]) = (seg.acceleration.x, seg.acceleration.y);
         self.until[id] = own.map_or(f64::INFINITY, |p| p.time);
         self.live[id] = u8::from(s.motion.is_moving()) | u8::from(s.motion.on_table()) << 1;
+    }
+
+    /// The verdict of the last [`Kin::cull_row`] on ball `j` (a NaN gap keeps the pair).
+    fn may_touch(&self, j: BallId) -> bool {
+        self.gap[j].is_nan() || self.gap[j] <= 0.0
     }
 
     /// For every ball `j`, whether balls `i` and `j` may touch between `t` and the earlier
@@ -275,8 +280,8 @@ impl Kin {
         let rows = self.start.iter().zip(self.px.iter().zip(&self.py));
         let rows = rows.zip(self.vx.iter().zip(&self.vy));
         let rows = rows.zip(self.ax.iter().zip(&self.ay).zip(&self.until));
-        for (keep, (((start, (px, py)), (vx, vy)), ((ax, ay), until))) in
-            self.keep.iter_mut().zip(rows)
+        for (gap, (((start, (px, py)), (vx, vy)), ((ax, ay), until))) in
+            self.gap.iter_mut().zip(rows)
         {
             let tj = t - start;
             let (vxj, vyj) = (vx + ax * tj, vy + ay * tj);
@@ -293,8 +298,8 @@ impl Kin {
             let (cx, cy) = (dpx + dvx * tau, dpy + dvy * tau);
             let bend = 0.5 * (dax * dax + day * day).sqrt() * h * h;
             let reach = (contact + bend) * (1.0 + 1e-9) + 1e-9;
-            let far = cx * cx + cy * cy > reach * reach + 1e-12 * (dpx * dpx + dpy * dpy);
-            *keep = !far || h < 0.0;
+            // (With h < 0, tau is 0 and a touching pair is kept.)
+            *gap = cx * cx + cy * cy - (reach * reach + 1e-12 * (dpx * dpx + dpy * dpy));
         }
     }
 }
@@ -860,14 +865,14 @@ impl Simulation {
             if self.kin.live[id] == 3 {
                 self.kin.cull_row(id, t, contact);
             } else {
-                self.kin.keep.fill(true);
+                self.kin.gap.fill(f64::NEG_INFINITY);
             }
             for j in 0..n {
                 // A pair of two touched balls is solved once.
                 if j == id || touched[..k].contains(&j) {
                     continue;
                 }
-                let time = self.solve_pair(id, j, t, self.kin.keep[j]);
+                let time = self.solve_pair(id, j, t, self.kin.may_touch(j));
                 if time != self.pairs[id * n + j] {
                     self.set_pair(id, j, time);
                     affected.push(j);
@@ -997,10 +1002,10 @@ impl Simulation {
                 if self.kin.live[i] == 3 {
                     self.kin.cull_row(i, t, contact);
                 } else {
-                    self.kin.keep.fill(true);
+                    self.kin.gap.fill(f64::NEG_INFINITY);
                 }
                 for j in i + 1..n {
-                    let time = self.solve_pair(i, j, t, self.kin.keep[j]);
+                    let time = self.solve_pair(i, j, t, self.kin.may_touch(j));
                     self.set_pair(i, j, time);
                 }
             }
