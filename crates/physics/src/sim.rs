@@ -291,10 +291,14 @@ impl Kin {
             );
             let (dpx, dpy, dvx, dvy) = (pxj - pxi, pyj - pyi, vxj - vxi, vyj - vyi);
             let (dax, day) = (ax - axi, ay - ayi);
-            let h = until.min(ui) - t;
+            // Plain selects rather than `f64::min`/`max` (no NaN fix-ups in the vector code):
+            // a NaN closest time (no relative motion) becomes `h`, still a valid time.
+            let h = if *until < ui { *until } else { ui } - t;
             let pv = dpx * dvx + dpy * dvy;
             let vv = dvx * dvx + dvy * dvy;
-            let tau = (-pv / vv).min(h).max(0.0);
+            let tau = -pv / vv;
+            let tau = if tau < h { tau } else { h };
+            let tau = if tau > 0.0 { tau } else { 0.0 };
             let (cx, cy) = (dpx + dvx * tau, dpy + dvy * tau);
             let bend = 0.5 * (dax * dax + day * day).sqrt() * h * h;
             let reach = (contact + bend) * (1.0 + 1e-9) + 1e-9;
