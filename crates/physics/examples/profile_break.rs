@@ -4,7 +4,7 @@
 //! ```text
 //! profile_break [breaks]          # 15-ball breaks at 9 m/s (paper model)
 //! profile_break spin9 [breaks]    # 9-ball breaks at 8 m/s (spin model)
-//! profile_break gas [EVENTS]      # 16, 100, 1000 balls, no friction: cost per event
+//! profile_break gas [EVENTS [N..]] # 16, 100, 1000 (or N..) balls, no friction: cost per event
 //! ```
 
 use billiards_physics::*;
@@ -16,8 +16,18 @@ fn main() {
         // Per-event cost for 16, 100 and 1000 balls on proportionally larger tables, measured
         // in one run so the ratios are comparable on a noisy machine.
         let events: usize = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(100_000);
+        // Ball counts after the event count (one at a time under callgrind).
+        let sizes: Vec<usize> = args[2.min(args.len())..]
+            .iter()
+            .filter_map(|s| s.parse().ok())
+            .collect();
+        let sizes = if sizes.is_empty() {
+            vec![16, 100, 1000]
+        } else {
+            sizes
+        };
         let mut base = None;
-        for n in [16usize, 100, 1000] {
+        for n in sizes {
             let ns = gas_ns_per_event(n, events);
             let b = *base.get_or_insert(ns);
             println!(

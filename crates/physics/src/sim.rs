@@ -14,7 +14,6 @@ use crate::table::{Cushion, Jaw, Opening, PocketShape, Table, TableError};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
-use std::cmp::Ordering;
 
 /// How far two balls may overlap, or a ball cross a cushion line, in a valid starting layout
 /// (metres): exactly touching layouts computed in floating point land within rounding of it.
@@ -158,22 +157,38 @@ impl Pending {
     /// Tie order between events at equal times: grid crossings (bookkeeping, so that a
     /// contact at the same instant is seen), state transitions, then cushions, then ball
     /// pairs (after pooltool), each by ball index, then by cushion order.
-    fn key(&self) -> (f64, u8, BallId, usize) {
+    fn key(&self) -> (u8, BallId, usize) {
         match self.kind {
-            PendingKind::Crossing(b, s) => (self.time, 0, b, s as usize),
-            PendingKind::Transition(b) => (self.time, 1, b, 0),
-            PendingKind::Opening(b, k) => (self.time, 2, b, k),
-            PendingKind::Cushion(b, c) => (self.time, 3, b, c as usize),
-            PendingKind::Jaw(b, k) => (self.time, 4, b, k),
-            PendingKind::Pair(a, b) => (self.time, 5, a, b),
+            PendingKind::Crossing(b, s) => (0, b, s as usize),
+            PendingKind::Transition(b) => (1, b, 0),
+            PendingKind::Opening(b, k) => (2, b, k),
+            PendingKind::Cushion(b, c) => (3, b, c as usize),
+            PendingKind::Jaw(b, k) => (4, b, k),
+            PendingKind::Pair(a, b) => (5, a, b),
         }
     }
 
+    /// The order of events as one integer: the time (its bits mapped so that integer order
+    /// is `f64::total_cmp` order), then the tie order of [`Pending::key`].
+    fn rank(&self) -> u128 {
+        let time = time_order(self.time);
+        let (kind, a, b) = self.key();
+        debug_assert!(
+            a < 1 << 30 && b < 1 << 30,
+            "ball and part indices fit in 30 bits"
+        );
+        let tie = (kind as u64) << 60 | (a as u64) << 30 | b as u64;
+        (time as u128) << 64 | tie as u128
+    }
+
+    #[inline]
     fn precedes(&self, other: &Pending) -> bool {
-        let (a, b) = (self.key(), other.key());
-        a.0.total_cmp(&b.0)
-            .then((a.1, a.2, a.3).cmp(&(b.1, b.2, b.3)))
-            == Ordering::Less
+        // Times nearly always differ: compare them first, in the same order as `rank`.
+        let (a, b) = (time_order(self.time), time_order(other.time));
+        if a != b {
+            return a < b;
+        }
+        self.rank() < other.rank()
     }
 
     /// The other ball of a pair event, seen from `id`.
@@ -197,6 +212,119 @@ impl Pending {
     }
 }
 
+/// Every ball's segment (start, position, velocity, acceleration) and the time of its own
+/// next event (infinity for none), one array per component so that the cull of a row of
+/// pairs is a loop the compiler vectorizes. Updated only for the balls an event changes.
+#[derive(Clone, Debug, Default)]
+struct Kin {
+    start: Vec<f64>,
+    px: Vec<f64>,
+    py: Vec<f64>,
+    vx: Vec<f64>,
+    vy: Vec<f64>,
+    ax: Vec<f64>,
+    ay: Vec<f64>,
+    until: Vec<f64>,
+    /// Moving (bit 0), on the table (bit 1).
+    live: Vec<u8>,
+    /// Result of [`Kin::cull_row`]: positive for pairs that cannot touch.
+    gap: Vec<f64>,
+}
+
+impl Kin {
+    fn new(n: usize) -> Self {
+        let z = vec![0.0; n];
+        Self {
+            start: z.clone(),
+            px: z.clone(),
+            py: z.clone(),
+            vx: z.clone(),
+            vy: z.clone(),
+            ax: z.clone(),
+            ay: z,
+            until: vec![f64::INFINITY; n],
+            live: vec![0; n],
+            gap: vec![0.0; n],
+        }
+    }
+
+    /// Records ball `id`'s segment and the time of its own next event.
+    fn set(&mut self, id: BallId, seg: &Segment, own: Option<Pending>) {
+        let s = &seg.state;
+        self.start[id] = seg.start;
+        (self.px[id], self.py[id]) = (s.position.x, s.position.y);
+        (self.vx[id], self.vy[id]) = (s.velocity.x, s.velocity.y);
+        (self.ax[id], self.ay[id]) = (seg.acceleration.x, seg.acceleration.y);
+        self.until[id] = own.map_or(f64::INFINITY, |p| p.time);
+        self.live[id] = u8::from(s.motion.is_moving()) | u8::from(s.motion.on_table()) << 1;
+    }
+
+    /// The verdict of the last [`Kin::cull_row`] on ball `j` (a NaN gap keeps the pair).
+    fn may_touch(&self, j: BallId) -> bool {
+        self.gap[j].is_nan() || self.gap[j] <= 0.0
+    }
+
+    /// For every ball `j`, whether balls `i` and `j` may touch between `t` and the earlier
+    /// of their own next events: the test of [`detect::misses`] (with the real accelerations,
+    /// which only widens it in the linear prediction mode) without branches, so that it
+    /// vectorizes; conservative in every degenerate case (a NaN or infinite bound keeps the
+    /// pair). Ball `i` must be moving: a resting ball is at rest from its segment's start.
+    fn cull_row(&mut self, i: BallId, t: f64, contact: f64) {
+        let ti = t - self.start[i];
+        let (vxi, vyi) = (self.vx[i] + self.ax[i] * ti, self.vy[i] + self.ay[i] * ti);
+        let (pxi, pyi) = (
+            self.px[i] + (self.vx[i] + self.ax[i] * (0.5 * ti)) * ti,
+            self.py[i] + (self.vy[i] + self.ay[i] * (0.5 * ti)) * ti,
+        );
+        let (axi, ayi, ui) = (self.ax[i], self.ay[i], self.until[i]);
+        let rows = self.start.iter().zip(self.px.iter().zip(&self.py));
+        let rows = rows.zip(self.vx.iter().zip(&self.vy));
+        let rows = rows.zip(self.ax.iter().zip(&self.ay).zip(&self.until));
+        for (gap, (((start, (px, py)), (vx, vy)), ((ax, ay), until))) in
+            self.gap.iter_mut().zip(rows)
+        {
+            let tj = t - start;
+            let (vxj, vyj) = (vx + ax * tj, vy + ay * tj);
+            let (pxj, pyj) = (
+                px + (vx + ax * (0.5 * tj)) * tj,
+                py + (vy + ay * (0.5 * tj)) * tj,
+            );
+            let (dpx, dpy, dvx, dvy) = (pxj - pxi, pyj - pyi, vxj - vxi, vyj - vyi);
+            let (dax, day) = (ax - axi, ay - ayi);
+            // Plain selects rather than `f64::min`/`max` (no NaN fix-ups in the vector code):
+            // a NaN closest time (no relative motion) becomes `h`, still a valid time.
+            let h = if *until < ui { *until } else { ui } - t;
+            let pv = dpx * dvx + dpy * dvy;
+            let vv = dvx * dvx + dvy * dvy;
+            let tau = -pv / vv;
+            let tau = if tau < h { tau } else { h };
+            let tau = if tau > 0.0 { tau } else { 0.0 };
+            let (cx, cy) = (dpx + dvx * tau, dpy + dvy * tau);
+            let bend = 0.5 * (dax * dax + day * day).sqrt() * h * h;
+            let reach = (contact + bend) * (1.0 + 1e-9) + 1e-9;
+            // (With h < 0, tau is 0 and a touching pair is kept.)
+            *gap = cx * cx + cy * cy - (reach * reach + 1e-12 * (dpx * dpx + dpy * dpy));
+        }
+    }
+}
+
+/// The bits of a time mapped so that integer order is `f64::total_cmp` order.
+#[inline]
+fn time_order(t: f64) -> u64 {
+    let bits = t.to_bits();
+    if bits >> 63 == 1 {
+        !bits
+    } else {
+        bits | 1 << 63
+    }
+}
+
+/// Rank of an optional prediction in the tournament (see [`Pending::rank`]).
+fn rank(p: Option<Pending>) -> u128 {
+    p.map_or(Tournament::<Pending>::EMPTY, |p| p.rank())
+}
+
+#[inline]
 fn earlier(a: Option<Pending>, b: Option<Pending>) -> Option<Pending> {
     match (a, b) {
         (Some(x), Some(y)) => Some(if y.precedes(&x) { y } else { x }),
@@ -218,8 +346,18 @@ pub struct Simulation {
     segments: Vec<Segment>,
     /// Each ball's earliest predicted event, and the earliest of them all.
     cache: Tournament<Pending>,
+    /// Single-cell scenes: each ball's earliest event of its own (not with another ball).
+    own: Vec<Option<Pending>>,
+    /// Single-cell scenes: contact time of each pair (`n * n`, both halves, infinity for
+    /// none), valid until either ball's segment changes; an event then re-solves only the
+    /// pairs of the balls it touched, and every other ball takes its best from its row.
+    pairs: Vec<f64>,
+    /// Single-cell scenes: every ball's segment for the pair culls (see [`Kin`]).
+    kin: Kin,
+    /// Scratch: balls whose pair with a touched ball changed in this event.
+    affected: Vec<BallId>,
     /// For each ball, the balls whose cached event is a contact with it (may hold stale
-    /// entries; checked before use).
+    /// entries; checked before use). Scenes split into cells only.
     dependents: Vec<Vec<BallId>>,
     /// Stamp of the prediction round that last predicted each ball, and the current round.
     stamps: Vec<u64>,
@@ -275,6 +413,10 @@ impl Simulation {
             numbers: balls.iter().map(|b| b.number).collect(),
             history: History::new(&segments),
             cache: Tournament::new(segments.len()),
+            own: vec![None; segments.len()],
+            pairs: Vec::new(),
+            kin: Kin::default(),
+            affected: Vec::new(),
             dependents: vec![Vec::new(); segments.len()],
             stamps: vec![0; segments.len()],
             round: 0,
@@ -541,7 +683,7 @@ impl Simulation {
     /// Stores ball `id`'s prediction and indexes it under its partner, if any.
     fn set_cache(&mut self, id: BallId, p: Option<Pending>) {
         self.stamps[id] = self.round;
-        self.cache.set(id, p, Pending::precedes);
+        self.cache.set(id, p, rank(p));
         if let Some(partner) = p.and_then(|p| p.partner(id)) {
             let deps = &mut self.dependents[partner];
             deps.push(id);
@@ -556,8 +698,41 @@ impl Simulation {
     }
 
     /// The earliest event of ball `id` from time `t` on: its own transition, a cushion, or a
-    /// contact with any other ball in play.
+    /// contact with any other ball in play in the cells around it.
     fn predict(&self, id: BallId, t: f64) -> Option<Pending> {
+        let seg = &self.segments[id];
+        if !seg.state.motion.on_table() {
+            return None;
+        }
+        let kin = self.kinematics();
+        let horizon = seg.end.map_or(f64::INFINITY, |e| e - t);
+        let mut best = self.predict_own(id, t);
+        let r = self.params.ball.radius;
+        for j in self.grid.neighbours(id) {
+            let other = &self.segments[j];
+            if j == id || !other.state.motion.on_table() {
+                continue;
+            }
+            let h = other.end.map_or(horizon, |e| horizon.min(e - t));
+            // Only a pair that could be earlier than the best so far is worth solving.
+            let h = best.map_or(h, |b| h.min(b.time - t));
+            if let Some(tau) = detect::ball_ball(seg, other, t, r, h, kin) {
+                let (a, b) = (id.min(j), id.max(j));
+                best = earlier(
+                    best,
+                    Some(Pending {
+                        time: t + tau,
+                        kind: PendingKind::Pair(a, b),
+                    }),
+                );
+            }
+        }
+        best
+    }
+
+    /// The earliest event of ball `id` from time `t` on that involves no other ball: its own
+    /// transition, a cushion, a jaw, a pocket opening or a grid crossing.
+    fn predict_own(&self, id: BallId, t: f64) -> Option<Pending> {
         let seg = &self.segments[id];
         if !seg.state.motion.on_table() {
             return None;
@@ -631,29 +806,118 @@ impl Simulation {
                 }
             }
         }
+        best
+    }
+
+    /// Contact time of balls `i` and `j` from time `t` on (infinity for none), searched only
+    /// up to the earlier of their own next events: each of those changes a segment (there are
+    /// no crossings in a single cell) and wins ties, so a later contact could never happen.
+    /// `keep` is the cull's verdict ([`Kin::cull_row`]): a culled pair has no contact.
+    fn solve_pair(&self, i: BallId, j: BallId, t: f64, keep: bool) -> f64 {
+        let k = &self.kin;
+        // Both on the table, and one of them moving.
+        let (li, lj) = (k.live[i], k.live[j]);
+        if !keep || li & lj & 2 == 0 || (li | lj) & 1 == 0 {
+            return f64::INFINITY;
+        }
+        let h = k.until[i].min(k.until[j]) - t;
+        let (si, sj) = (&self.segments[i], &self.segments[j]);
         let r = self.params.ball.radius;
-        let all = (!self.grid.is_split()).then_some(0..self.segments.len());
-        let near = self.grid.is_split().then(|| self.grid.neighbours(id));
-        for j in all.into_iter().flatten().chain(near.into_iter().flatten()) {
-            let other = &self.segments[j];
-            if j == id || !other.state.motion.on_table() {
-                continue;
-            }
-            let h = other.end.map_or(horizon, |e| horizon.min(e - t));
-            // Only a pair that could be earlier than the best so far is worth solving.
-            let h = best.map_or(h, |b| h.min(b.time - t));
-            if let Some(tau) = detect::ball_ball(seg, other, t, r, h, kin) {
-                let (a, b) = (id.min(j), id.max(j));
-                best = earlier(
-                    best,
-                    Some(Pending {
-                        time: t + tau,
-                        kind: PendingKind::Pair(a, b),
-                    }),
-                );
+        detect::ball_ball(si, sj, t, r, h, self.kinematics()).map_or(f64::INFINITY, |tau| t + tau)
+    }
+
+    /// Ball `id`'s earliest event from the pair table and its own events. Scanning partners in
+    /// ascending order with a strict comparison keeps the tie order of [`Pending::key`].
+    fn best_of_row(&self, id: BallId) -> Option<Pending> {
+        let n = self.segments.len();
+        let row = &self.pairs[id * n..(id + 1) * n];
+        let mut k_best = usize::MAX;
+        let mut t_best = f64::INFINITY;
+        for (k, &tk) in row.iter().enumerate() {
+            if tk < t_best {
+                (k_best, t_best) = (k, tk);
             }
         }
-        best
+        let pair = (k_best != usize::MAX).then(|| Pending {
+            time: t_best,
+            kind: PendingKind::Pair(id.min(k_best), id.max(k_best)),
+        });
+        earlier(self.own[id], pair)
+    }
+
+    /// Stores a pair's contact time in both halves of the table.
+    fn set_pair(&mut self, i: BallId, j: BallId, time: f64) {
+        let n = self.segments.len();
+        self.pairs[i * n + j] = time;
+        self.pairs[j * n + i] = time;
+    }
+
+    /// Single-cell scenes: re-solves the own events of the touched balls and every pair
+    /// containing one of them, then updates the best of the touched balls and of every ball
+    /// whose pair with one of them changed.
+    fn repredict_pairs(&mut self, touched: &[BallId]) {
+        let t = self.time;
+        let n = self.segments.len();
+        for &id in touched {
+            self.own[id] = self.predict_own(id, t);
+            self.kin.set(id, &self.segments[id], self.own[id]);
+        }
+        let contact = 2.0 * self.params.ball.radius;
+        let mut affected = std::mem::take(&mut self.affected);
+        affected.clear();
+        for (k, &id) in touched.iter().enumerate() {
+            if self.kin.live[id] == 3 {
+                self.kin.cull_row(id, t, contact);
+            } else {
+                self.kin.gap.fill(f64::NEG_INFINITY);
+            }
+            for j in 0..n {
+                // A pair of two touched balls is solved once.
+                if j == id || touched[..k].contains(&j) {
+                    continue;
+                }
+                let time = self.solve_pair(id, j, t, self.kin.may_touch(j));
+                if time != self.pairs[id * n + j] {
+                    self.set_pair(id, j, time);
+                    affected.push(j);
+                }
+            }
+        }
+        for &id in touched {
+            let p = self.best_of_row(id);
+            self.cache.set(id, p, rank(p));
+        }
+        // A ball may appear twice (paired with both touched balls): updating it is idempotent.
+        for &j in &affected {
+            if touched.contains(&j) {
+                continue;
+            }
+            let cur = self.cache.get(j);
+            let stale = matches!(cur, Some(Pending { kind: PendingKind::Pair(a, b), .. })
+                    if touched.contains(&a) || touched.contains(&b));
+            if stale {
+                let p = self.best_of_row(j);
+                self.cache.set(j, p, rank(p));
+                continue;
+            }
+            // Only the touched balls' pairs changed, and the best was none of them.
+            let mut best = self.cache.rank(j);
+            let mut found = None;
+            for &id in touched {
+                let time = self.pairs[j * n + id];
+                if time < f64::INFINITY {
+                    let kind = PendingKind::Pair(id.min(j), id.max(j));
+                    let p = Pending { time, kind };
+                    if p.rank() < best {
+                        (best, found) = (p.rank(), Some(p));
+                    }
+                }
+            }
+            if found.is_some() {
+                self.cache.set(j, found, best);
+            }
+        }
+        self.affected = affected;
     }
 
     /// Response of ball `id` in state `s` to a fixed body (cushion or jaw) with unit normal `n`
@@ -727,6 +991,34 @@ impl Simulation {
     }
 
     fn predict_all(&mut self) {
+        if !self.grid.is_split() {
+            let (n, t) = (self.segments.len(), self.time);
+            self.pairs = vec![f64::INFINITY; n * n];
+            for id in 0..n {
+                self.own[id] = self.predict_own(id, t);
+            }
+            self.kin = Kin::new(n);
+            for id in 0..n {
+                self.kin.set(id, &self.segments[id], self.own[id]);
+            }
+            let contact = 2.0 * self.params.ball.radius;
+            for i in 0..n {
+                if self.kin.live[i] == 3 {
+                    self.kin.cull_row(i, t, contact);
+                } else {
+                    self.kin.gap.fill(f64::NEG_INFINITY);
+                }
+                for j in i + 1..n {
+                    let time = self.solve_pair(i, j, t, self.kin.may_touch(j));
+                    self.set_pair(i, j, time);
+                }
+            }
+            for id in 0..n {
+                let p = self.best_of_row(id);
+                self.cache.set(id, p, rank(p));
+            }
+            return;
+        }
         self.round += 1;
         for deps in &mut self.dependents {
             deps.clear();
@@ -747,6 +1039,9 @@ impl Simulation {
     /// Re-predicts the balls an event changed, and every ball whose cached event was a contact
     /// with one of them; all other predictions stay valid.
     fn repredict(&mut self, touched: &[BallId]) {
+        if !self.grid.is_split() {
+            return self.repredict_pairs(touched);
+        }
         let t = self.time;
         self.round += 1;
         for &id in touched {
