@@ -68,6 +68,7 @@ struct PanelState<'w, 's> {
     steps: MessageWriter<'w, StepRequested>,
     shots: MessageWriter<'w, ShotRequested>,
     pocketed: Query<'w, 's, &'static Ball, With<Pocketed>>,
+    replay: crate::replay::panel::RecordingsParam<'w>,
 }
 
 fn panels(
@@ -243,6 +244,8 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
             }
         });
     });
+
+    crate::replay::panel::recordings_section(ui, &mut state.replay);
 
     if !state.report.notes.is_empty() {
         ui.separator();
