@@ -35,7 +35,8 @@ pub fn plugin(app: &mut App) {
             )
                 .chain()
                 .after(CameraSystems)
-                .before(SimSystems::Commands),
+                .before(SimSystems::Commands)
+                .run_if(crate::replay::playing),
         )
         .add_systems(
             Update,

@@ -10,6 +10,7 @@ pub mod geometry;
 pub mod lighting;
 pub mod options;
 pub mod recording;
+pub mod replay;
 pub mod screenshot;
 pub mod settings;
 pub mod sim;
@@ -51,7 +52,11 @@ impl Plugin for GamePlugin {
             lighting::plugin,
             ui::plugin,
             recording::plugin,
-        ));
+        ))
+        .add_plugins((replay::plugin, replay::panel::plugin));
+        if let Some(file) = &self.options.replay {
+            app.insert_resource(replay::OpenAtStart(file.clone()));
+        }
         if self.options.no_record {
             app.insert_resource(recording::RecordingsFolder(None));
         } else if let Some(folder) = &self.options.recordings {

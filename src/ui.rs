@@ -76,6 +76,7 @@ struct PanelState<'w, 's> {
     aim: Res<'w, AimPrediction>,
     spec: Res<'w, TableSpec>,
     cue_ball: Query<'w, 's, (&'static Ball, &'static mut BallMotion), Without<Pocketed>>,
+    replay: crate::replay::panel::RecordingsParam<'w>,
 }
 
 fn panels(
@@ -310,6 +311,8 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
             }
         });
     });
+
+    crate::replay::panel::recordings_section(ui, &mut state.replay);
 
     if !state.report.notes.is_empty() {
         ui.separator();

@@ -1,0 +1,503 @@
+//! Headless tests of the replay viewer: a live game (`MinimalPlugins` plus the settings,
+//! simulation, autosave and replay plugins) plays and saves shots; the saved file is opened
+//! in replay mode through [`ReplayCommand`]s, as the panel does.
+
+use std::{
+    path::{Path, PathBuf},
+    time::Duration,
+};
+
+use bevy::{math::DVec2, prelude::*, time::TimeUpdateStrategy, window::FileDragAndDrop};
+use billiards::{
+    balls::{Ball, BallMotion, Pocketed},
+    geometry::TableSpec,
+    recording::{self, Autosave, RecordingsFolder},
+    replay::{
+        self, AppMode, ExportFormat, ExportRequest, ExportScope, OpenAtStart, Replay, ReplayBall,
+        ReplayCommand,
+    },
+    settings::{self, PhysicsSettings},
+    sim::{self, RackRequested, ShotRequested, SimStatus, Solver, params_from},
+};
+use billiards_physics::{
+    Motion, Rack, Shot,
+    recording::{Recorder, Recording, Verdict},
+};
+
+/// A fresh, empty folder for one test.
+fn temp_folder(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("billiards-replay-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// A headless game saving into `folder`, with `rack` on the table.
+fn game(folder: &Path, rack: Rack) -> App {
+    let mut app = App::new();
+    app.add_plugins((
+        MinimalPlugins,
+        settings::plugin,
+        sim::plugin,
+        recording::plugin,
+        replay::plugin,
+    ));
+    app.insert_resource(RecordingsFolder(Some(folder.to_path_buf())));
+    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
+        16,
+    )));
+    app.update();
+    app.world_mut().write_message(RackRequested(rack));
+    app.update();
+    app
+}
+
+/// Shoots in the live game and runs frames until every ball rests again.
+fn play_shot(app: &mut App, angle: f64, speed: f64) {
+    app.world_mut().write_message(ShotRequested {
+        angle,
+        speed,
+        tip: Default::default(),
+    });
+    for i in 0..20_000 {
+        app.update();
+        if i > 0 && app.world().resource::<SimStatus>().at_rest {
+            // One more frame: the autosave runs after the step that came to rest.
+            app.update();
+            return;
+        }
+    }
+    panic!("balls still moving");
+}
+
+/// (id, position, pocketed) of the balls matching `F`, by id.
+fn balls<F: bevy::ecs::query::QueryFilter>(app: &mut App) -> Vec<(usize, DVec2, bool)> {
+    let mut balls: Vec<_> = app
+        .world_mut()
+        .query_filtered::<(&Ball, &BallMotion, Has<Pocketed>), F>()
+        .iter(app.world())
+        .map(|(ball, motion, pocketed)| (ball.id, motion.position, pocketed))
+        .collect();
+    balls.sort_by_key(|&(id, _, _)| id);
+    balls
+}
+
+/// The live balls as the live solver has them.
+fn solver_balls(app: &App) -> Vec<(usize, DVec2, bool)> {
+    let sim = app.world().resource::<Solver>().simulation();
+    sim.balls()
+        .enumerate()
+        .map(|(id, s)| {
+            let pocketed = matches!(s.motion, Motion::Pocketed(_));
+            (id, DVec2::new(s.position.x, s.position.y), pocketed)
+        })
+        .collect()
+}
+
+fn command(app: &mut App, command: ReplayCommand) {
+    app.world_mut().write_message(command);
+    app.update();
+}
+
+fn replay_time(app: &App) -> f64 {
+    app.world().resource::<Replay>().time
+}
+
+fn mode(app: &App) -> AppMode {
+    *app.world().resource::<AppMode>()
+}
+
+/// Two shots played and autosaved in a 9-ball game; returns the app and the saved file.
+fn played_game(name: &str) -> (App, PathBuf) {
+    let folder = temp_folder(name);
+    let mut app = game(&folder, Rack::NineBall);
+    play_shot(&mut app, 0.0, 7.0);
+    play_shot(&mut app, 1.9, 2.0);
+    let file = app
+        .world()
+        .resource::<Autosave>()
+        .file
+        .clone()
+        .expect("the game was saved");
+    assert_eq!(recording::list_recordings(&folder), vec![file.clone()]);
+    (app, file)
+}
+
+#[test]
+fn a_saved_game_replays_exactly_at_any_time_and_closing_restores_the_live_game() {
+    let (mut app, file) = played_game("exact");
+    let live_before = balls::<With<Ball>>(&mut app);
+    assert_eq!(live_before, solver_balls(&app));
+    let solver_time = app.world().resource::<Solver>().simulation().time();
+    let live_events = app
+        .world()
+        .resource::<Solver>()
+        .simulation()
+        .history()
+        .events()
+        .len();
+
+    command(&mut app, ReplayCommand::Open(file.clone()));
+    assert_eq!(mode(&app), AppMode::Replay);
+    assert_eq!(app.world().resource::<Replay>().error, None);
+    command(&mut app, ReplayCommand::Pause);
+
+    let recording = Recording::load(&file).unwrap();
+    let history = recording.history().unwrap();
+    let end = recording.end_time;
+    assert!(end > 1.0, "end time {end}");
+    // Only the recorded balls carry `Ball` while replaying.
+    assert_eq!(balls::<With<Ball>>(&mut app).len(), recording.balls.len());
+    let strike = recording.inputs[1].time;
+    for t in [
+        0.0,
+        0.013,
+        0.25,
+        end / 3.0,
+        strike,
+        strike + 0.1234567,
+        end * 0.9,
+        end,
+    ] {
+        command(&mut app, ReplayCommand::Seek(t));
+        assert_eq!(replay_time(&app), t);
+        let expected: Vec<(usize, DVec2, bool)> = history
+            .states_at(t)
+            .iter()
+            .enumerate()
+            .map(|(id, s)| {
+                let pocketed = matches!(s.motion, Motion::Pocketed(_));
+                (id, DVec2::new(s.position.x, s.position.y), pocketed)
+            })
+            .collect();
+        assert_eq!(balls::<With<ReplayBall>>(&mut app), expected, "t = {t}");
+    }
+    // Out of range: clamped to the recording.
+    command(&mut app, ReplayCommand::Seek(end + 10.0));
+    assert_eq!(replay_time(&app), end);
+
+    // Playing runs the replay clock at the chosen speed; the live solver stays put.
+    command(&mut app, ReplayCommand::Seek(0.5));
+    command(&mut app, ReplayCommand::SetSpeed(2.0));
+    command(&mut app, ReplayCommand::Play);
+    for _ in 0..10 {
+        app.update();
+    }
+    let t = replay_time(&app);
+    assert!((t - (0.5 + 11.0 * 0.016 * 2.0)).abs() < 1e-9, "t = {t}");
+    let solver = app.world().resource::<Solver>().simulation();
+    assert_eq!(solver.time(), solver_time);
+    assert_eq!(solver.history().events().len(), live_events);
+
+    // A shot asked for while replaying is not taken.
+    app.world_mut().write_message(ShotRequested {
+        angle: 0.0,
+        speed: 3.0,
+        tip: Default::default(),
+    });
+    app.update();
+    assert!(app.world().resource::<Solver>().simulation().is_at_rest());
+
+    command(&mut app, ReplayCommand::Close);
+    assert_eq!(mode(&app), AppMode::Play);
+    assert!(app.world().resource::<Replay>().open.is_none());
+    assert_eq!(
+        app.world_mut()
+            .query_filtered::<(), With<ReplayBall>>()
+            .iter(app.world())
+            .count(),
+        0
+    );
+    assert_eq!(balls::<With<Ball>>(&mut app), live_before);
+    assert_eq!(
+        app.world().resource::<Solver>().simulation().time(),
+        solver_time
+    );
+
+    // The live game goes on: a new shot is struck and played out.
+    let shots = app.world().resource::<SimStatus>().shots;
+    play_shot(&mut app, -1.0, 1.5);
+    assert_eq!(app.world().resource::<SimStatus>().shots, shots + 1);
+    assert_eq!(balls::<With<Ball>>(&mut app), solver_balls(&app));
+}
+
+#[test]
+fn stepping_lands_on_event_and_shot_times() {
+    let (mut app, file) = played_game("steps");
+    command(&mut app, ReplayCommand::Open(file.clone()));
+    command(&mut app, ReplayCommand::Pause);
+    let recording = Recording::load(&file).unwrap();
+    let times: Vec<f64> = recording.events.iter().map(|e| e.time).collect();
+    let mut distinct = times.clone();
+    distinct.dedup();
+    assert!(distinct.len() > 5);
+
+    // Forward from the start through the first events, each step on the next event time.
+    command(&mut app, ReplayCommand::Seek(0.0));
+    for &expected in distinct.iter().filter(|&&t| t > 0.0).take(8) {
+        command(&mut app, ReplayCommand::NextEvent);
+        assert_eq!(replay_time(&app), expected);
+        let replay = app.world().resource::<Replay>();
+        let open = replay.open.as_ref().unwrap();
+        let (index, event) = open.event_at(replay.time).unwrap();
+        assert_eq!(event.time, expected);
+        // The event under the cursor is the last one at that time.
+        assert!(times.get(index + 1).is_none_or(|&next| next > expected));
+        assert!(!replay.playing, "stepping pauses");
+    }
+    // Backward from between two events: the earlier one, then the one before.
+    let (a, b) = (distinct[3], distinct[4]);
+    command(&mut app, ReplayCommand::Seek((a + b) / 2.0));
+    command(&mut app, ReplayCommand::PreviousEvent);
+    assert_eq!(replay_time(&app), a);
+    command(&mut app, ReplayCommand::PreviousEvent);
+    assert_eq!(replay_time(&app), distinct[2]);
+    // At the end there is no next event: the time stays.
+    let end = app
+        .world()
+        .resource::<Replay>()
+        .open
+        .as_ref()
+        .unwrap()
+        .end_time;
+    command(&mut app, ReplayCommand::Seek(end));
+    command(&mut app, ReplayCommand::NextEvent);
+    assert_eq!(replay_time(&app), end);
+
+    // Shots: the strike inputs.
+    let strikes: Vec<f64> = recording
+        .inputs
+        .iter()
+        .filter(|i| {
+            matches!(
+                i.action,
+                billiards_physics::recording::Action::Strike { .. }
+            )
+        })
+        .map(|i| i.time)
+        .collect();
+    assert_eq!(strikes.len(), 2);
+    command(&mut app, ReplayCommand::Seek(0.0));
+    let shot = |app: &App| {
+        let replay = app.world().resource::<Replay>();
+        replay.open.as_ref().unwrap().shot_at(replay.time)
+    };
+    assert_eq!(shot(&app), 1, "the first strike is at t = 0");
+    command(&mut app, ReplayCommand::NextShot);
+    assert_eq!(replay_time(&app), strikes[1]);
+    assert_eq!(shot(&app), 2);
+    command(&mut app, ReplayCommand::Seek(strikes[1] + 0.5));
+    command(&mut app, ReplayCommand::PreviousShot);
+    assert_eq!(replay_time(&app), strikes[1]);
+    command(&mut app, ReplayCommand::PreviousShot);
+    assert_eq!(replay_time(&app), strikes[0]);
+}
+
+#[test]
+fn a_bad_file_shows_an_error_and_leaves_the_live_game() {
+    let folder = temp_folder("bad");
+    let mut app = game(&folder, Rack::NineBall);
+    let live = balls::<With<Ball>>(&mut app);
+    let bad = folder.join("broken.json");
+    std::fs::write(&bad, "{ \"version\": 1, \"table\": ").unwrap();
+    command(&mut app, ReplayCommand::Open(bad.clone()));
+    assert_eq!(mode(&app), AppMode::Play);
+    let error = app.world().resource::<Replay>().error.clone().unwrap();
+    assert!(error.contains("broken.json"), "{error}");
+    assert!(error.contains("not a valid recording"), "{error}");
+    assert_eq!(balls::<With<Ball>>(&mut app), live);
+
+    let missing = folder.join("missing.json");
+    command(&mut app, ReplayCommand::Open(missing));
+    assert_eq!(mode(&app), AppMode::Play);
+    assert!(
+        app.world()
+            .resource::<Replay>()
+            .error
+            .as_ref()
+            .unwrap()
+            .contains("missing.json")
+    );
+    // The live game still plays.
+    play_shot(&mut app, 0.0, 2.0);
+    assert_eq!(app.world().resource::<SimStatus>().shots, 1);
+}
+
+/// A 16-ball recording made with the library alone, saved to `path`.
+fn fifteen_ball_recording(path: &Path) -> Recording {
+    let spec = TableSpec::default();
+    let params = params_from(&PhysicsSettings::default());
+    let table = spec.physics_table();
+    let layout = Rack::FifteenBall.layout(&table, &params.ball);
+    let mut rec = Recorder::new(table, params, layout).unwrap();
+    rec.strike(0, Shot::new(0.01, 8.0)).unwrap();
+    rec.run_to_rest().unwrap();
+    let recording = rec.recording();
+    recording.save(path).unwrap();
+    recording
+}
+
+#[test]
+fn another_ball_count_gets_its_own_balls_and_the_live_ones_come_back() {
+    let folder = temp_folder("count");
+    let mut app = game(&folder, Rack::NineBall);
+    let live = balls::<With<Ball>>(&mut app);
+    assert_eq!(live.len(), 10);
+    let file = folder.join("break.json");
+    let recording = fifteen_ball_recording(&file);
+
+    // Opened by dropping the file on the window.
+    app.world_mut().write_message(FileDragAndDrop::DroppedFile {
+        window: Entity::PLACEHOLDER,
+        path_buf: file.clone(),
+    });
+    app.update();
+    assert_eq!(mode(&app), AppMode::Replay);
+    command(&mut app, ReplayCommand::Pause);
+    command(&mut app, ReplayCommand::Seek(1.0));
+    let history = recording.history().unwrap();
+    let shown = balls::<With<Ball>>(&mut app);
+    assert_eq!(shown.len(), 16);
+    for (id, position, _) in shown {
+        let s = history.state_at(id, 1.0);
+        assert_eq!(position, DVec2::new(s.position.x, s.position.y));
+    }
+
+    // Verify re-simulates the recording.
+    command(&mut app, ReplayCommand::Verify);
+    let replay = app.world().resource::<Replay>();
+    let verdict = replay.verdict.clone().unwrap();
+    assert!(
+        matches!(verdict, Ok(Verdict::Reproduced { events }) if events == recording.events.len())
+    );
+    let text = replay.open.as_ref().unwrap().verdict_text(&verdict);
+    assert!(text.starts_with("reproduced bit for bit ("), "{text}");
+
+    // A rack asked for while replaying closes the replay and racks the live table.
+    app.world_mut()
+        .write_message(RackRequested(Rack::PaperDefault));
+    app.update();
+    assert_eq!(mode(&app), AppMode::Play);
+    assert_eq!(balls::<With<Ball>>(&mut app).len(), 1);
+    assert_eq!(
+        app.world_mut().query::<&Ball>().iter(app.world()).count()
+            + app
+                .world_mut()
+                .query_filtered::<(), With<ReplayBall>>()
+                .iter(app.world())
+                .count(),
+        1
+    );
+}
+
+#[test]
+fn closing_a_replay_of_another_ball_count_restores_the_live_balls() {
+    let folder = temp_folder("count-close");
+    let mut app = game(&folder, Rack::NineBall);
+    play_shot(&mut app, 0.0, 6.0);
+    let live = balls::<With<Ball>>(&mut app);
+    let file = folder.join("break.json");
+    fifteen_ball_recording(&file);
+    command(&mut app, ReplayCommand::Open(file));
+    assert_eq!(balls::<With<Ball>>(&mut app).len(), 16);
+    command(&mut app, ReplayCommand::Close);
+    assert_eq!(balls::<With<Ball>>(&mut app), live);
+    assert_eq!(live, solver_balls(&app));
+}
+
+#[test]
+fn the_command_line_file_opens_once_the_table_is_racked() {
+    let folder = temp_folder("start");
+    let file = folder.join("break.json");
+    fifteen_ball_recording(&file);
+    let mut app = App::new();
+    app.add_plugins((
+        MinimalPlugins,
+        settings::plugin,
+        sim::plugin,
+        recording::plugin,
+        replay::plugin,
+    ));
+    app.insert_resource(OpenAtStart(file.clone()));
+    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
+        16,
+    )));
+    for _ in 0..3 {
+        app.update();
+    }
+    assert_eq!(mode(&app), AppMode::Replay);
+    assert!(app.world().get_resource::<OpenAtStart>().is_none());
+    // The live table behind it was racked (the starting rack), and comes back on close.
+    command(&mut app, ReplayCommand::Close);
+    assert_eq!(balls::<With<Ball>>(&mut app), solver_balls(&app));
+    assert!(!solver_balls(&app).is_empty());
+}
+
+#[test]
+fn an_export_runs_in_the_background_and_reports_its_frames() {
+    let (mut app, file) = played_game("export");
+    command(&mut app, ReplayCommand::Open(file.clone()));
+    command(&mut app, ReplayCommand::Pause);
+    let out = file.with_file_name("shot.gif");
+    command(
+        &mut app,
+        ReplayCommand::Export(ExportRequest {
+            format: ExportFormat::Gif,
+            scope: ExportScope::CurrentShot,
+            fps: 5.0,
+            width: 64,
+            height: 36,
+            path: Some(out.clone()),
+        }),
+    );
+    let mut finished = None;
+    for _ in 0..2_000 {
+        app.update();
+        let replay = app.world().resource::<Replay>();
+        if let Some(job) = &replay.export {
+            let (done, total) = job.progress();
+            assert!(done <= total || total == 0);
+        } else {
+            finished = replay.export_result.clone();
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    let message = finished.expect("export finished").unwrap();
+    assert!(message.ends_with("frames"), "{message}");
+    assert!(std::fs::metadata(&out).unwrap().len() > 100);
+
+    // The whole game as PNGs, to the default place next to the recording.
+    command(
+        &mut app,
+        ReplayCommand::Export(ExportRequest {
+            format: ExportFormat::PngSequence,
+            scope: ExportScope::WholeGame,
+            fps: 2.0,
+            width: 32,
+            height: 18,
+            path: None,
+        }),
+    );
+    let stem = file.file_stem().unwrap().to_string_lossy().into_owned();
+    let target = file.with_file_name(format!("{stem}_frames"));
+    for _ in 0..2_000 {
+        if app.world().resource::<Replay>().export.is_none() {
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(5));
+        app.update();
+    }
+    let result = app
+        .world()
+        .resource::<Replay>()
+        .export_result
+        .clone()
+        .unwrap()
+        .unwrap();
+    assert!(
+        result.starts_with(&target.display().to_string()),
+        "{result}"
+    );
+    assert!(target.join("frame_00000.png").exists());
+}
