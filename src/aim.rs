@@ -23,7 +23,9 @@ pub fn plugin(app: &mut App) {
         Update,
         (update_prediction, draw_prediction)
             .chain()
-            .after(SimSystems::Commands),
+            .after(SimSystems::Commands)
+            // A replay shows the recording's balls, not the live table's next shot.
+            .run_if(crate::replay::playing),
     );
 }
 

@@ -285,15 +285,19 @@ fn draw_vectors(
     shot: Res<ShotSettings>,
     status: Res<SimStatus>,
     balls: Query<(&Ball, &BallMotion), Without<Pocketed>>,
+    mode: Option<Res<crate::replay::AppMode>>,
     mut gizmos: Gizmos,
 ) {
     if !view.show_vectors {
         return;
     }
+    // The cue vector belongs to the live shot; a replay shows only the balls' velocities.
+    let live = crate::replay::playing(mode);
     // Drawn just above the cloth so the balls do not hide them: 5 cm per m/s.
     const METRES_PER_MPS: f32 = 0.05;
     let lift = Vec3::Y * (2.05 * spec.ball_radius as f32);
-    if status.at_rest
+    if live
+        && status.at_rest
         && let Some(cue_ball) = cue_ball_position(&balls)
     {
         let start = spec.ball_world_position(cue_ball) + lift;
