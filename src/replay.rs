@@ -551,7 +551,8 @@ fn apply_replay(world: &mut World) {
     }
 }
 
-/// Applies one command; true when it set the replay time.
+/// Applies one command; true when it set the replay time or started the clock (the clock
+/// then does not also run this frame).
 fn apply_command(world: &mut World, command: ReplayCommand) -> bool {
     match command {
         ReplayCommand::Open(path) => {
@@ -578,6 +579,8 @@ fn apply_command(world: &mut World, command: ReplayCommand) -> bool {
                 replay.time = 0.0;
             }
             replay.playing = true;
+            // The clock starts next frame: this frame's delta may span an idle window.
+            return true;
         }
         ReplayCommand::Pause => replay.playing = false,
         ReplayCommand::TogglePlay => {
@@ -585,6 +588,7 @@ fn apply_command(world: &mut World, command: ReplayCommand) -> bool {
                 replay.time = 0.0;
             }
             replay.playing = !replay.playing;
+            return true;
         }
         ReplayCommand::SetSpeed(speed) => {
             if speed.is_finite() {

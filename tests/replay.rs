@@ -176,7 +176,8 @@ fn a_saved_game_replays_exactly_at_any_time_and_closing_restores_the_live_game()
     command(&mut app, ReplayCommand::Seek(end + 10.0));
     assert_eq!(replay_time(&app), end);
 
-    // Playing runs the replay clock at the chosen speed; the live solver stays put.
+    // Playing runs the replay clock at the chosen speed from the frame after the Play (the
+    // frame of the click may follow an idle window); the live solver stays put.
     command(&mut app, ReplayCommand::Seek(0.5));
     command(&mut app, ReplayCommand::SetSpeed(2.0));
     command(&mut app, ReplayCommand::Play);
@@ -184,7 +185,7 @@ fn a_saved_game_replays_exactly_at_any_time_and_closing_restores_the_live_game()
         app.update();
     }
     let t = replay_time(&app);
-    assert!((t - (0.5 + 11.0 * 0.016 * 2.0)).abs() < 1e-9, "t = {t}");
+    assert!((t - (0.5 + 10.0 * 0.016 * 2.0)).abs() < 1e-9, "t = {t}");
     let solver = app.world().resource::<Solver>().simulation();
     assert_eq!(solver.time(), solver_time);
     assert_eq!(solver.history().events().len(), live_events);
@@ -219,6 +220,8 @@ fn a_saved_game_replays_exactly_at_any_time_and_closing_restores_the_live_game()
     play_shot(&mut app, -1.0, 1.5);
     assert_eq!(app.world().resource::<SimStatus>().shots, shots + 1);
     assert_eq!(balls::<With<Ball>>(&mut app), solver_balls(&app));
+    // Left behind when the test fails, for a look.
+    let _ = std::fs::remove_dir_all(file.parent().unwrap());
 }
 
 #[test]
@@ -291,6 +294,8 @@ fn stepping_lands_on_event_and_shot_times() {
     assert_eq!(replay_time(&app), strikes[1]);
     command(&mut app, ReplayCommand::PreviousShot);
     assert_eq!(replay_time(&app), strikes[0]);
+    // Left behind when the test fails, for a look.
+    let _ = std::fs::remove_dir_all(file.parent().unwrap());
 }
 
 #[test]
@@ -321,6 +326,8 @@ fn a_bad_file_shows_an_error_and_leaves_the_live_game() {
     // The live game still plays.
     play_shot(&mut app, 0.0, 2.0);
     assert_eq!(app.world().resource::<SimStatus>().shots, 1);
+    // Left behind when the test fails, for a look.
+    let _ = std::fs::remove_dir_all(&folder);
 }
 
 /// A 16-ball recording made with the library alone, saved to `path`.
@@ -388,6 +395,8 @@ fn another_ball_count_gets_its_own_balls_and_the_live_ones_come_back() {
                 .count(),
         1
     );
+    // Left behind when the test fails, for a look.
+    let _ = std::fs::remove_dir_all(&folder);
 }
 
 #[test]
@@ -403,6 +412,8 @@ fn closing_a_replay_of_another_ball_count_restores_the_live_balls() {
     command(&mut app, ReplayCommand::Close);
     assert_eq!(balls::<With<Ball>>(&mut app), live);
     assert_eq!(live, solver_balls(&app));
+    // Left behind when the test fails, for a look.
+    let _ = std::fs::remove_dir_all(&folder);
 }
 
 #[test]
@@ -431,6 +442,8 @@ fn the_command_line_file_opens_once_the_table_is_racked() {
     command(&mut app, ReplayCommand::Close);
     assert_eq!(balls::<With<Ball>>(&mut app), solver_balls(&app));
     assert!(!solver_balls(&app).is_empty());
+    // Left behind when the test fails, for a look.
+    let _ = std::fs::remove_dir_all(&folder);
 }
 
 #[test]
@@ -500,4 +513,6 @@ fn an_export_runs_in_the_background_and_reports_its_frames() {
         "{result}"
     );
     assert!(target.join("frame_00000.png").exists());
+    // Left behind when the test fails, for a look.
+    let _ = std::fs::remove_dir_all(file.parent().unwrap());
 }

@@ -70,6 +70,57 @@ impl ExportOptions {
     }
 }
 
+/// An export checked and ready to render: its frame count and the recording's history.
+struct Prepared<'a> {
+    rec: &'a Recording,
+    opts: &'a ExportOptions,
+    count: usize,
+    history: billiards_physics::History,
+    numbers: Vec<u8>,
+}
+
+impl<'a> Prepared<'a> {
+    fn new(rec: &'a Recording, opts: &'a ExportOptions) -> Result<Self, ExportError> {
+        let count = opts.check()?;
+        let history = rec.history().map_err(ExportError::Recording)?;
+        let numbers = rec.balls.iter().map(|b| b.number).collect();
+        Ok(Self {
+            rec,
+            opts,
+            count,
+            history,
+            numbers,
+        })
+    }
+
+    /// Frame `k`: the exact state at `start + k / fps`.
+    fn frame(&self, k: usize) -> Frame {
+        let t = self.opts.span.0 + k as f64 / self.opts.fps;
+        render::draw(
+            &self.rec.table,
+            self.rec.params.ball.radius,
+            &self.history.states_at(t),
+            &self.numbers,
+            self.opts.width,
+            self.opts.height,
+        )
+    }
+
+    /// Renders the frames one at a time into `sink` (so a long export never holds them all),
+    /// calling `progress` with (done, total) after each.
+    fn each(
+        &self,
+        progress: &mut dyn FnMut(usize, usize),
+        mut sink: impl FnMut(usize, Frame) -> Result<(), ExportError>,
+    ) -> Result<usize, ExportError> {
+        for k in 0..self.count {
+            sink(k, self.frame(k))?;
+            progress(k + 1, self.count);
+        }
+        Ok(self.count)
+    }
+}
+
 /// The frames of an export, each sampled exactly from the recording's history; `progress`
 /// is called with (done, total).
 pub fn frames(
@@ -77,35 +128,23 @@ pub fn frames(
     opts: &ExportOptions,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Vec<Frame>, ExportError> {
-    let n = opts.check()?;
-    let history = rec.history().map_err(ExportError::Recording)?;
-    let numbers: Vec<u8> = rec.balls.iter().map(|b| b.number).collect();
-    let r = rec.params.ball.radius;
-    (0..n)
-        .map(|k| {
-            let t = opts.span.0 + k as f64 / opts.fps;
-            let f = render::draw(
-                &rec.table,
-                r,
-                &history.states_at(t),
-                &numbers,
-                opts.width,
-                opts.height,
-            );
-            progress(k + 1, n);
-            Ok(f)
-        })
-        .collect()
+    let prepared = Prepared::new(rec, opts)?;
+    let mut frames = Vec::with_capacity(prepared.count);
+    prepared.each(progress, |_, f| {
+        frames.push(f);
+        Ok(())
+    })?;
+    Ok(frames)
 }
 
-/// Writes an animated GIF.
+/// Writes an animated GIF, encoding each frame as soon as it is rendered.
 pub fn gif(
     rec: &Recording,
     opts: &ExportOptions,
     out: &Path,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<usize, ExportError> {
-    let frames = frames(rec, opts, progress)?;
+    let prepared = Prepared::new(rec, opts)?;
     let io = |e| ExportError::Io(out.to_path_buf(), e);
     let file = std::fs::File::create(out).map_err(io)?;
     let (w, h) = (opts.width as u16, opts.height as u16);
@@ -115,29 +154,27 @@ pub fn gif(
         .map_err(|e| ExportError::Encode(e.to_string()))?;
     // GIF delays are in hundredths of a second.
     let delay = (100.0 / opts.fps).round().max(1.0) as u16;
-    for f in &frames {
+    prepared.each(progress, |_, f| {
         let mut frame = gif::Frame::from_rgb_speed(w, h, &f.rgb, 10);
         frame.delay = delay;
         enc.write_frame(&frame)
-            .map_err(|e| ExportError::Encode(e.to_string()))?;
-    }
-    Ok(frames.len())
+            .map_err(|e| ExportError::Encode(e.to_string()))
+    })
 }
 
-/// Writes `frame_00000.png`, `frame_00001.png`, ... into `dir`.
+/// Writes `frame_00000.png`, `frame_00001.png`, ... into `dir`, each as soon as it is
+/// rendered.
 pub fn png_sequence(
     rec: &Recording,
     opts: &ExportOptions,
     dir: &Path,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<usize, ExportError> {
-    let frames = frames(rec, opts, progress)?;
+    let prepared = Prepared::new(rec, opts)?;
     std::fs::create_dir_all(dir).map_err(|e| ExportError::Io(dir.to_path_buf(), e))?;
-    for (k, f) in frames.iter().enumerate() {
-        let path = dir.join(format!("frame_{k:05}.png"));
-        write_png(f, &path)?;
-    }
-    Ok(frames.len())
+    prepared.each(progress, |k, f| {
+        write_png(&f, &dir.join(format!("frame_{k:05}.png")))
+    })
 }
 
 /// Writes one frame as a PNG.
