@@ -5,7 +5,8 @@
 //! solver system per frame (as the HUD shows it) and of the whole `App::update`, and their ratio
 //! to the 16.7 ms frame budget (target: the solver under 5 %).
 //!
-//! `cargo bench -p billiards --bench frame_cost`
+//! `cargo build --workspace --release --bench frame_cost`, then
+//! `target/release/deps/frame_cost-* --bench` (see the README's Performance section).
 
 use std::time::{Duration, Instant};
 
