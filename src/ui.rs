@@ -77,6 +77,7 @@ struct PanelState<'w, 's> {
     spec: Res<'w, TableSpec>,
     cue_ball: Query<'w, 's, (&'static Ball, &'static mut BallMotion), Without<Pocketed>>,
     replay: crate::replay::panel::RecordingsParam<'w>,
+    mode: Option<Res<'w, crate::replay::AppMode>>,
 }
 
 fn panels(
@@ -429,6 +430,16 @@ fn hud(ctx: &egui::Context, state: &PanelState) {
         .resizable(false)
         .anchor(egui::Align2::RIGHT_TOP, [-10.0, 10.0])
         .show(ctx, |ui| {
+            if state
+                .mode
+                .as_deref()
+                .is_some_and(|mode| *mode == crate::replay::AppMode::Replay)
+            {
+                ui.colored_label(
+                    Color32::from_rgb(120, 190, 255),
+                    "replaying a recording: the live game below waits",
+                );
+            }
             ui.label(format!("shots: {}", status.shots));
             ui.label(format!("simulated time: {:.3} s", status.sim_time));
             ui.label(format!("events this shot: {}", status.events_this_shot));
