@@ -115,17 +115,33 @@ fn slow_ball_pressing_a_nearly_resting_one_does_not_collide_a_million_times() {
     assert!(n < 1000, "{n} events");
 }
 
-/// Soak seed 10288 (spin model, sliding friction 1/28 of the default, rolling friction 1/28,
-/// e_ball 0): three balls drifting together along the foot cushion at 3.7 cm/s, the middle
-/// one pressed into the rail by the other two, make a contact every few microseconds for the
-/// ~10 s (v / mu_r g) they take to stop: over 1e6 events. The solver before the pair table
-/// passed it by 158 events. Needs a persistent-contact mode for ball-ball-cushion chains;
+/// Soak seeds 10288, 61081 and 78761 (spin-model breaks, friction a few percent of the
+/// default): balls drifting together along a cushion, one pressed into the rail by the others,
+/// make a contact every few microseconds for the seconds (v / mu_r g) they take to stop: over
+/// 1e6 events. Seed 10288, for one: three balls at 3.7 cm/s along the foot rail with friction
+/// 1/28 of the default and e_ball 0. The solver before the pair table failed 61081 and 78761 too
+/// and passed 10288 by 158 events. Needs a persistent-contact mode for ball-ball-cushion chains;
 /// run with `cargo test --release -p billiards-physics --test regressions -- --ignored`.
 #[test]
 #[ignore = "open: persistent ball-ball-cushion contacts at very low friction (issue 7)"]
-fn three_balls_sliding_along_a_rail_at_low_friction_rest_within_the_event_cap() {
-    let s = soak::scenario(10288);
+fn balls_drifting_along_a_rail_at_low_friction_rest_within_the_event_cap() {
+    for seed in [10288, 61081, 78761] {
+        let s = soak::scenario(seed);
+        if let Err(v) = soak::run_scenario(&s, check::Tolerances::default()) {
+            panic!("seed {seed}: {v}");
+        }
+    }
+}
+
+/// Soak seed 110421 (paper model, no friction, jaws of radius 6.9 mm): ball 1 is pocketed in
+/// the foot-left corner at a centre 2.4 mm beyond the cushion lines by the monitor's account of
+/// the pocket mouth. Either the opening line or the monitor's mouth region is off at small jaw
+/// radii; the solver before the pair table gives the same event.
+#[test]
+#[ignore = "open: pocketing point vs the monitor's mouth region at small jaw radii (issue 7)"]
+fn a_ball_pocketed_past_small_jaws_stays_inside_the_mouth_region() {
+    let s = soak::scenario(110421);
     if let Err(v) = soak::run_scenario(&s, check::Tolerances::default()) {
-        panic!("seed 10288: {v}");
+        panic!("seed 110421: {v}");
     }
 }
