@@ -15,7 +15,8 @@ use crate::geometry::{TableSpec, table_dir_to_world, to_world};
 
 /// Adds ball visuals and the writeback from [`BallMotion`] to [`Transform`].
 pub fn plugin(app: &mut App) {
-    app.add_systems(Startup, create_ball_assets)
+    app.init_resource::<ShownTime>()
+        .add_systems(Startup, create_ball_assets)
         .add_systems(
             Update,
             (
@@ -248,16 +249,28 @@ fn restore_respotted(
     }
 }
 
+/// The simulated time the balls on the table show: the solver's in play, the replay clock's
+/// in a replay. Balls turn by their spin over its steps, so a replay at 0.1x turns them at
+/// 0.1x and a paused clock does not turn them.
+#[derive(Resource, Debug, Clone, Copy, Default, PartialEq)]
+pub struct ShownTime(pub f64);
+
+/// Longest step of [`ShownTime`] a ball is turned over: a jump (a rack, a scrub, opening a
+/// replay) is not a motion.
+const MAX_TURN_STEP: f64 = 0.25;
+
 /// Writes moved balls to their transforms. Under the spin model a ball turns by its own
-/// angular velocity over the frame (so draw, follow and english show); under the paper's
+/// angular velocity over the step of [`ShownTime`] (so draw, follow and english show); under the paper's
 /// model, which carries no spin, a moving ball is turned as if it rolled without slipping
 /// along its displacement. A ball placed at rest (racked, respotted) is moved without turning.
 fn draw_ball_motion(
     spec: Res<TableSpec>,
-    time: Res<Time>,
+    shown: Res<ShownTime>,
+    mut last_shown: Local<f64>,
     mut balls: Query<(&BallMotion, &mut Transform), MovedOnTable>,
 ) {
-    let dt = time.delta_secs_f64();
+    let dt = (shown.0 - *last_shown).clamp(-MAX_TURN_STEP, MAX_TURN_STEP);
+    *last_shown = shown.0;
     for (motion, mut transform) in &mut balls {
         let target = spec.ball_world_position(motion.position);
         let step = target - transform.translation;

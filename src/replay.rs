@@ -539,6 +539,9 @@ fn apply_replay(world: &mut World) {
                 replay.time = time.min(end);
                 replay.playing = time < end;
             }
+            if let Some(mut shown) = world.get_resource_mut::<crate::balls::ShownTime>() {
+                shown.0 = replay.time;
+            }
             let open = replay.open.as_ref().expect("checked above");
             for (id, &entity) in open.entities.iter().enumerate() {
                 show_state(world, entity, &open.history.state_at(id, replay.time));

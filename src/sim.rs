@@ -312,7 +312,8 @@ pub fn params_from(settings: &PhysicsSettings) -> Params {
     }
 }
 
-fn to_dvec2(v: physics::Vec2) -> DVec2 {
+/// A solver vector as a Bevy one.
+pub fn to_dvec2(v: physics::Vec2) -> DVec2 {
     DVec2::new(v.x, v.y)
 }
 
@@ -407,6 +408,9 @@ fn advance_solver(world: &mut World) {
             status.sim_time = solver.simulation().time();
             status.events_this_shot += events.len();
             status.solver_seconds_last_frame = cost;
+        }
+        if let Some(mut shown) = world.get_resource_mut::<crate::balls::ShownTime>() {
+            shown.0 = solver.simulation().time();
         }
         if at_rest {
             let scratch = solver
