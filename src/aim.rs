@@ -14,7 +14,7 @@ use billiards_physics::{BallSetup, BallState, EventKind, Shot, Simulation};
 use crate::{
     geometry::{TableSpec, to_world},
     settings::{ShotSettings, ViewSettings},
-    sim::{SimStatus, SimSystems, Solver},
+    sim::{SimStatus, SimSystems, Solver, to_dvec2},
 };
 
 /// Registers the prediction and its drawing.
@@ -137,7 +137,7 @@ pub fn predict(
         path: sample(&sim, cue_id, start, end_of_path),
         ..default()
     };
-    let ghost = dvec(sim.history().state_at(cue_id, end_of_path).position);
+    let ghost = to_dvec2(sim.history().state_at(cue_id, end_of_path).position);
     let Some((kind, time, other)) = contact else {
         prediction.contact = Some((FirstContact::Nothing, ghost));
         return prediction;
@@ -179,15 +179,11 @@ impl AimPrediction {
     }
 }
 
-fn dvec(v: billiards_physics::Vec2) -> DVec2 {
-    DVec2::new(v.x, v.y)
-}
-
 /// Ball `id`'s centre at evenly spaced times over `[from, to]`, from the exact history.
 fn sample(sim: &Simulation, id: usize, from: f64, to: f64) -> Vec<DVec2> {
     (0..=SAMPLES)
         .map(|k| from + (to - from) * k as f64 / SAMPLES as f64)
-        .map(|t| dvec(sim.history().state_at(id, t.min(sim.time())).position))
+        .map(|t| to_dvec2(sim.history().state_at(id, t.min(sim.time())).position))
         .collect()
 }
 
@@ -231,7 +227,10 @@ fn draw_prediction(
     }
     let radius = spec.ball_radius;
     let at = |p: DVec2, lift: f64| to_world(p.extend(lift));
-    let line = |points: &[DVec2]| points.iter().map(|&p| at(p, 0.002)).collect::<Vec<_>>();
+    // Just above the cloth; drawn straight from the stored points, nothing allocated per frame.
+    fn line(points: &[DVec2]) -> impl Iterator<Item = Vec3> + '_ {
+        points.iter().map(|&p| to_world(p.extend(0.002)))
+    }
     let white = Color::srgba(1.0, 1.0, 1.0, 0.85);
     gizmos.linestrip(line(&prediction.path), white);
     if let Some((kind, ghost)) = prediction.contact {

@@ -32,8 +32,9 @@ fn temp_folder(name: &str) -> PathBuf {
     dir
 }
 
-/// A headless game saving into `folder`, with `rack` on the table.
-fn game(folder: &Path, rack: Rack) -> App {
+/// A headless app with the simulation, the autosave and the replay, in 16 ms frames; no
+/// frame run yet.
+fn headless() -> App {
     let mut app = App::new();
     app.add_plugins((
         MinimalPlugins,
@@ -42,10 +43,16 @@ fn game(folder: &Path, rack: Rack) -> App {
         recording::plugin,
         replay::plugin,
     ));
-    app.insert_resource(RecordingsFolder(Some(folder.to_path_buf())));
     app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
         16,
     )));
+    app
+}
+
+/// A headless game saving into `folder`, with `rack` on the table.
+fn game(folder: &Path, rack: Rack) -> App {
+    let mut app = headless();
+    app.insert_resource(RecordingsFolder(Some(folder.to_path_buf())));
     app.update();
     app.world_mut().write_message(RackRequested(rack));
     app.update();
@@ -421,18 +428,8 @@ fn the_command_line_file_opens_once_the_table_is_racked() {
     let folder = temp_folder("start");
     let file = folder.join("break.json");
     fifteen_ball_recording(&file);
-    let mut app = App::new();
-    app.add_plugins((
-        MinimalPlugins,
-        settings::plugin,
-        sim::plugin,
-        recording::plugin,
-        replay::plugin,
-    ));
+    let mut app = headless();
     app.insert_resource(OpenAtStart(file.clone()));
-    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
-        16,
-    )));
     for _ in 0..3 {
         app.update();
     }
