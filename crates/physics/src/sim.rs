@@ -925,6 +925,12 @@ impl Simulation {
     /// or the model's cushion response.
     fn fixed_contact(&mut self, id: BallId, s: &BallState, n: Vec2, depth: f64) -> (Vec2, Vec3) {
         let pressing = -self.segments[id].acceleration.dot(n);
+        let approach = -s.velocity.dot(n);
+        if matches!(self.params.model, Model::Spin(_)) && approach.abs() < resolve::SETTLE_SPEED {
+            // Slow contact in the spin model: cloth friction on the spin would bring a
+            // rebound straight back (see `resolve::SETTLE_SPEED`).
+            return resolve::settle(s.velocity, s.angular_velocity, n);
+        }
         if resting(depth, -s.velocity.dot(n), pressing) {
             let v = resolve::resting_reflect(s.velocity, n, pressing, detect::RESTING_DEPTH);
             (v, keep_rolling(s, v, self.params.ball.radius))

@@ -62,6 +62,27 @@ pub fn han_2005(
     ))
 }
 
+/// Normal approach speed (m/s) below which a spinning ball meeting a cushion or jaw settles
+/// against it ([`settle`]) instead of rebounding. A rebound this slow would carry the ball at
+/// most `v^2 / (2 mu g)`, nanometres, before cloth friction on its spin turned it back into
+/// the rail: a Zeno cascade of rebounds and slide/roll transitions (soak seed 10288).
+pub const SETTLE_SPEED: f64 = 1e-4;
+
+/// Velocity and spin of a ball that settles against a fixed body of unit normal `n` (towards
+/// the ball): the rail's compliance takes the normal approach and the grip of its nose the
+/// spin that rolls the ball into or out of it, so neither the velocity nor the cloth contact
+/// point moves along `n` afterwards (`v . n = 0` and `(v + w x (-R z)) . n = 0`). The ball
+/// then runs along the rail, any sliding friction along it. Energy only falls: both removed
+/// parts are squares.
+pub fn settle(v: Vec2, w: Vec3, n: Vec2) -> (Vec2, Vec3) {
+    let t = n.perp();
+    let v2 = t * v.dot(t);
+    // The cloth contact point moves by R (-w_y, w_x); its normal part is -R (w_xy . t).
+    let wt = w.xy().dot(t);
+    let w2 = w - t.extend() * wt;
+    (v2, w2)
+}
+
 /// Velocity after a resting contact with a cushion of unit inward normal `n`: touching,
 /// approaching slowly or pressed into it by an acceleration `pressing` (m/s^2, `>= 0`).
 /// Elastic, leaving at no less than `sqrt(2 pressing hop)`, the extra normal speed taken from
@@ -82,6 +103,23 @@ pub fn resting_reflect(v: Vec2, n: Vec2, pressing: f64, hop: f64) -> Vec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn settling_removes_normal_velocity_and_normal_slip_and_never_adds_energy() {
+        let n = Vec2::new(0.0, 1.0);
+        let (v, w) = (Vec2::new(0.3, -2e-6), Vec3::new(0.4, -10.0, 3.0));
+        let (v2, w2) = settle(v, w, n);
+        let r = 0.028575;
+        assert_eq!(v2.dot(n), 0.0);
+        assert_eq!(v2.dot(n.perp()), v.dot(n.perp()));
+        // The cloth contact point no longer moves along n, so sliding friction cannot push
+        // the ball back into the rail.
+        let slip = Vec2::new(v2.x - r * w2.y, v2.y + r * w2.x);
+        assert!(slip.dot(n).abs() < 1e-18, "{slip:?}");
+        assert_eq!(w2.z, w.z);
+        let e = |v: Vec2, w: Vec3| v.length_squared() + 0.4 * r * r * w.dot(w);
+        assert!(e(v2, w2) <= e(v, w));
+    }
 
     #[test]
     fn elastic_reflection_mirrors_the_angle_of_incidence() {
