@@ -172,9 +172,17 @@ fn first_entry_quadratic(p: &Poly, a: f64, b: f64) -> Option<f64> {
         }
         t = t.next_up();
     }
-    // Rounding left the closed form further off than expected: bracket it properly.
-    let fb = p.eval(b);
-    (fb <= 0.0).then(|| refine(p, a, b, p.eval(a), fb))
+    // Rounding left the closed form further off than expected: bracket it properly. Opening
+    // upwards, only up to the vertex: past the second root `p(b)` is positive again, and a
+    // bracket to `b` would lose a contact the path really makes (soak seed 110421: a ball
+    // through a pocket jaw).
+    let hi = if c2 > 0.0 {
+        (-c1 / (2.0 * c2)).clamp(a, b)
+    } else {
+        b
+    };
+    let fhi = p.eval(hi);
+    (fhi <= 0.0).then(|| refine(p, a, hi, p.eval(a), fhi))
 }
 
 /// Refines a bracket with `p(lo) = flo > 0 >= p(hi) = fhi`, `p` monotone on it, to a few ulps;
@@ -312,6 +320,26 @@ mod tests {
         assert_eq!(r.len(), 4);
         for (got, want) in r.iter().zip([0.5, 1.25, 2.0, 3.0]) {
             assert!((got - want).abs() < 1e-14, "{got} vs {want}");
+        }
+    }
+
+    #[test]
+    fn quadratic_entry_off_by_more_than_sixteen_ulps_is_still_found_before_the_exit() {
+        // Soak seed 110421: a ball at 11.6 m/s crossing a pocket jaw's circle, in and out
+        // within 3.7 ms. The closed-form entry time was 17+ ulps early, and the fallback
+        // bracket ran to the horizon, past the exit, where the contact function is positive
+        // again: no contact, and the ball went through the jaw.
+        let f = Poly::new([
+            3.9153355766839453,
+            -46.066420798322504,
+            135.4850913893127,
+            0.0,
+            0.0,
+        ]);
+        for h in [0.17, 0.2, 1.0, root_bound(&f)] {
+            let t = first_entry(&f, 0.0, h).expect("the path enters the circle");
+            assert!(f.eval(t) <= 0.0, "{h}: {t}");
+            assert!((t - 0.16820991061557272).abs() < 1e-14, "{h}: {t}");
         }
     }
 
