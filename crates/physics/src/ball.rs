@@ -101,9 +101,17 @@ impl Segment {
     ) -> Self {
         let v = state.velocity;
         let (speed, accel) = (v.length(), acceleration.length());
+        // Decelerating along the velocity, and stopping no earlier than the segment ends: a
+        // sliding ball with strong draw reverses within its segment and comes back past its
+        // start, beyond the swept segment of `detect` and the bound of `reach` (soak seed
+        // 23445). Overshooting the stop by 1e-9 of its time moves a ball ~1e-18 of its run.
+        let stops_in_time = end.is_some_and(|e| {
+            accel * (e - start) <= speed * (1.0 + 1e-9) + accel * 4.0 * f64::EPSILON * e.abs()
+        });
         let straight = accel == 0.0
             || (v.perp_dot(acceleration).abs() <= 1e-12 * speed * accel
-                && v.dot(acceleration) < 0.0);
+                && v.dot(acceleration) < 0.0
+                && stops_in_time);
         Self {
             start,
             state,

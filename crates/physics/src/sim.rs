@@ -922,17 +922,29 @@ impl Simulation {
 
     /// Response of ball `id` in state `s` to a fixed body (cushion or jaw) with unit normal `n`
     /// pointing towards the ball, `depth` metres into it: a resting contact (see [`resting`])
-    /// or the model's cushion response.
-    fn fixed_contact(&mut self, id: BallId, s: &BallState, n: Vec2, depth: f64) -> (Vec2, Vec3) {
+    /// or the model's cushion response. A slow spinning ball settles against a `rail` (a
+    /// straight cushion, along which it can keep running in contact); a jaw is convex, so a
+    /// ball leaving it tangentially parts from it anyway.
+    fn fixed_contact(
+        &mut self,
+        id: BallId,
+        s: &BallState,
+        n: Vec2,
+        depth: f64,
+        rail: bool,
+    ) -> (Vec2, Vec3) {
         let pressing = -self.segments[id].acceleration.dot(n);
         let approach = -s.velocity.dot(n);
-        if matches!(self.params.model, Model::Spin(_)) && approach.abs() < resolve::SETTLE_SPEED {
+        if rail
+            && matches!(self.params.model, Model::Spin(_))
+            && approach.abs() < resolve::SETTLE_SPEED
+        {
             // Slow contact in the spin model: cloth friction on the spin would bring a
             // rebound straight back (see `resolve::SETTLE_SPEED`).
             return resolve::settle(s.velocity, s.angular_velocity, n);
         }
         if resting(depth, -s.velocity.dot(n), pressing) {
-            let v = resolve::resting_reflect(s.velocity, n, pressing, detect::RESTING_DEPTH);
+            let v = resolve::resting_reflect(s.velocity, n, pressing, detect::RESTING_HOP);
             (v, keep_rolling(s, v, self.params.ball.radius))
         } else {
             self.cushion_response(s, n)
@@ -1130,7 +1142,7 @@ impl Simulation {
                 let d = s.position - jaw.centre;
                 let n = d.normalized().unwrap_or(Vec2::new(0.0, 1.0));
                 let depth = self.params.ball.radius + self.jaw_radius() - d.length();
-                let (v, w) = self.fixed_contact(id, &s, n, depth);
+                let (v, w) = self.fixed_contact(id, &s, n, depth, false);
                 self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                 self.record(EventKind::Jaw {
                     ball: id,
@@ -1154,7 +1166,7 @@ impl Simulation {
                         Cushion::Left | Cushion::Right => self.bounds.y,
                     };
                     let depth = -(limit + n.dot(s.position));
-                    let (v, w) = self.fixed_contact(id, &s, n, depth);
+                    let (v, w) = self.fixed_contact(id, &s, n, depth, true);
                     self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                     self.record(EventKind::Cushion { ball: id, cushion });
                 }
@@ -1177,7 +1189,7 @@ impl Simulation {
                         sb.velocity,
                         n,
                         pressing,
-                        detect::RESTING_DEPTH,
+                        detect::RESTING_HOP,
                     );
                     let r = self.params.ball.radius;
                     // Pressed head-on with no tangential speed to turn into the hop (a sliding
@@ -1185,7 +1197,7 @@ impl Simulation {
                     // spin pays for the hop, as its cloth friction would by pushing.
                     let (mut va, mut vb, mut wa, mut wb) =
                         (va, vb, sa.angular_velocity, sb.angular_velocity);
-                    let want = (2.0 * pressing.max(0.0) * detect::RESTING_DEPTH).sqrt();
+                    let want = (2.0 * pressing.max(0.0) * detect::RESTING_HOP).sqrt();
                     let got = (vb - va).dot(n);
                     if got < want {
                         let half = n * (0.5 * (want - got));

@@ -144,3 +144,49 @@ fn a_fast_ball_crossing_a_jaw_hits_it_instead_of_passing_through() {
         panic!("seed 110421: {v}");
     }
 }
+
+/// Soak seed 23445: a sliding ball with far more draw than speed (slip over 3.5 times its
+/// velocity, along it) stops and comes back within its sliding segment. Its segment counted as
+/// a straight decelerating path, so the culls bounded it by the run ahead of it, and it went
+/// through the ball behind it (2.6 mm deep). Here: 5 cm/s forward, 50 rad/s of backspin, a
+/// resting ball 7 cm behind (reached 0.15 s later, still sliding).
+#[test]
+fn a_ball_drawn_back_within_its_sliding_segment_hits_the_ball_behind_it() {
+    let params = Params {
+        model: Model::Spin(SpinModel::default()),
+        ..Params::default()
+    };
+    let balls = [
+        BallSetup {
+            number: 0,
+            position: Vec2::ZERO,
+            velocity: Vec2::new(0.05, 0.0),
+            spin: Vec3::new(0.0, -50.0, 0.0),
+        },
+        BallSetup::moving(1, Vec2::new(-0.07, 0.0), Vec2::ZERO),
+    ];
+    let mut sim = Simulation::new(huge_table(), params, &balls).unwrap();
+    check::run_to_rest_checked(&mut sim).unwrap();
+    let hit = sim
+        .history()
+        .events()
+        .iter()
+        .any(|e| e.kind == EventKind::BallBall { a: 0, b: 1 });
+    assert!(hit, "the drawn ball must come back into ball 1");
+}
+
+/// Soak seeds 38383 and 43317 (spin-model breaks): balls wedged in a pocket mouth between its
+/// jaws, pressed by a sliding neighbour, hopped apart by only the resting depth and touched
+/// ~50,000 times a second per contact: 858,376 and 554,168 events in one shot, one of them
+/// past the 1e6 cap. Resting contacts now open a gap of `detect::RESTING_HOP`; each jam rests
+/// in far fewer events, every one passing the monitor.
+#[test]
+fn balls_wedged_in_a_pocket_mouth_rest_in_a_bounded_number_of_events() {
+    for seed in [38383, 43317] {
+        let s = soak::scenario(seed);
+        match soak::run_scenario(&s, check::Tolerances::default()) {
+            Ok(st) => assert!(st.most_events < 200_000, "seed {seed}: {st:?}"),
+            Err(v) => panic!("seed {seed}: {v}"),
+        }
+    }
+}
