@@ -1222,6 +1222,17 @@ impl Simulation {
                             let k = (1.0 - cost * (1.0 + 1e-9) / spin_energy(*w)).sqrt();
                             *w = Vec3::new(w.x * k, w.y * k, w.z);
                             (va, vb) = (va2, vb2);
+                        } else {
+                            // Nothing to pay a hop with (soak seed 16706: a ball with next to
+                            // no roll spin driven by its slip into a ball held by a rail): the
+                            // contact holds, and its slip into the other ball goes, as cloth
+                            // friction would remove it within microseconds.
+                            if sa.motion == Motion::Sliding {
+                                wa = resolve::unpress(va, wa, n, r).unwrap_or(wa);
+                            }
+                            if sb.motion == Motion::Sliding {
+                                wb = resolve::unpress(vb, wb, -n, r).unwrap_or(wb);
+                            }
                         }
                     }
                     let sa = BallState {

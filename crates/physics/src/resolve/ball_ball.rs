@@ -1,7 +1,7 @@
 //! Ball–ball collision of the paper's model (3.2, after Berchek): equal masses, smooth balls.
 
 use crate::ball::BallState;
-use crate::math::Vec2;
+use crate::math::{Vec2, Vec3};
 
 /// Post-collision velocities of two equal-mass smooth balls meeting along the unit normal `n`
 /// (from `a` towards `b`), with restitution `e`.
@@ -107,6 +107,23 @@ pub fn resting_contact(va: Vec2, vb: Vec2, n: Vec2, pressing: f64, hop: f64) -> 
     (va - half, vb + half)
 }
 
+/// Spin of a sliding ball (velocity `v`, spin `w`) whose cloth slip drives it along the unit
+/// vector `toward` into a body that holds it: the spin about the axis `toward.perp()` is set so
+/// that the contact point no longer slips along `toward` (`(v + w x (-R z)) . toward = 0`),
+/// which removes the friction pressing it in. `None` when the slip does not press it in, or
+/// when that would raise the spin's energy.
+pub fn unpress(v: Vec2, w: Vec3, toward: Vec2, radius: f64) -> Option<Vec3> {
+    let p = toward.perp();
+    let (vn, wp) = (v.dot(toward), w.xy().dot(p));
+    // Friction is -mu g along the slip: it presses along `toward` when the slip opposes it.
+    let slip = vn - radius * wp;
+    if slip >= 0.0 {
+        return None;
+    }
+    let wp2 = vn / radius;
+    (wp2.abs() <= wp.abs()).then(|| w + p.extend() * (wp2 - wp))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -129,6 +146,21 @@ mod tests {
         // Not pressed: a plain elastic rebound.
         let (a, b) = resting_contact(va, vb, n, 0.0, 1e-10);
         assert!(((b - a).dot(n) - 1e-12).abs() < 1e-16);
+    }
+
+    #[test]
+    fn unpressing_removes_the_slip_into_the_other_ball_and_never_adds_spin_energy() {
+        let r = 0.028575;
+        let n = Vec2::new(0.0, 1.0);
+        // Still, spinning so that its contact point slips along -y: friction pushes it along +y.
+        let (v, w) = (Vec2::new(0.001, 0.0), Vec3::new(-0.5, 0.2, 70.0));
+        let w2 = unpress(v, w, n, r).expect("the slip presses it in");
+        let slip = Vec2::new(v.x - r * w2.y, v.y + r * w2.x);
+        assert!(slip.dot(n).abs() < 1e-18, "{slip:?}");
+        assert_eq!((w2.y, w2.z), (w.y, w.z));
+        assert!(w2.dot(w2) <= w.dot(w));
+        // Slipping the other way, friction pulls it off: nothing to do.
+        assert_eq!(unpress(v, Vec3::new(0.5, 0.0, 0.0), n, r), None);
     }
 
     #[test]

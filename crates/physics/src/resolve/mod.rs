@@ -5,5 +5,5 @@ mod ball_ball;
 mod ball_cushion;
 pub mod cue;
 
-pub use ball_ball::{equal_mass_restitution, frictional_spheres, resting_contact};
+pub use ball_ball::{equal_mass_restitution, frictional_spheres, resting_contact, unpress};
 pub use ball_cushion::{SETTLE_SPEED, han_2005, reflect, resting_reflect, settle};
