@@ -55,8 +55,7 @@ fn main() {
         let s = scenario(seed);
         let mut sim = Simulation::new(s.table, s.params, &s.balls).expect("a valid scene");
         for shot in &s.shots {
-            let Some(ball) = (0..sim.ball_count()).find(|&i| sim.ball(i).motion.on_table())
-            else {
+            let Some(ball) = (0..sim.ball_count()).find(|&i| sim.ball(i).motion.on_table()) else {
                 break;
             };
             sim.strike(ball, *shot).expect("a valid shot");

@@ -81,6 +81,22 @@ fn ball_drifting_into_a_cushion_slower_than_the_resting_speed_cannot_sink() {
     }
 }
 
+/// Soak seed 334696: with no friction at all a ball has no next event of its own, and the
+/// drift into a cushion at 9e-11 m/s was searched only up to the root bound of the gap
+/// itself (about 1 s), never out to where it has sunk to the resting depth: 1.04e-9 m into
+/// the rail 11 s later. Both models, frictionless, for 30 s.
+#[test]
+fn frictionless_ball_drifting_into_a_cushion_slower_than_the_resting_speed_cannot_sink() {
+    let t = Table::scaled(4.0);
+    for (name, p) in models() {
+        let p = with_friction(p, 0.0);
+        let b = t.centre_bounds(p.ball.radius);
+        let balls = [rolling(0, Vec2::new(b.x, -1.0), Vec2::new(9.3e-11, 0.05))];
+        let mut sim = Simulation::new(t, p, &balls).unwrap();
+        checked_for(&mut sim, 30.0, name);
+    }
+}
+
 /// The same drift between two balls rolling side by side at the same speed (so their
 /// decelerations neither press nor part them), closing in at 5e-11 m/s.
 #[test]

@@ -3,7 +3,7 @@
 use super::{Kinematics, RESTING_DEPTH, RESTING_SPEED, SEPARATION};
 use crate::ball::Segment;
 use crate::math::Vec2;
-use crate::poly::{ContactTolerance, Poly, first_contact, root_bound};
+use crate::poly::{ContactTolerance, Poly, first_contact};
 
 /// Time after `t` at which the balls of `a` and `b` touch, within `horizon` seconds.
 ///
@@ -132,7 +132,6 @@ fn contact_quartic(dp: Vec2, dv: Vec2, da: Vec2, contact: f64, horizon: f64) -> 
         dv.dot(da),
         0.25 * da.length_squared(),
     ]);
-    let h = horizon.min(root_bound(&f));
     // f' = 2 d · d' ≈ 2 (contact) × approach speed, so the speed tolerances scale by it.
     let tol = ContactTolerance {
         slack: 2.0 * contact * RESTING_SPEED,
@@ -140,7 +139,7 @@ fn contact_quartic(dp: Vec2, dv: Vec2, da: Vec2, contact: f64, horizon: f64) -> 
         // |d|^2 - contact^2 at a depth of RESTING_DEPTH, to first order.
         depth: 2.0 * contact * RESTING_DEPTH,
     };
-    first_contact(&f, h, tol)
+    first_contact(&f, horizon, tol)
 }
 
 /// Time after `t` at which the ball of `seg` touches a fixed circle (a rounded pocket jaw)

@@ -2,7 +2,7 @@
 
 use super::{Kinematics, RESTING_DEPTH, RESTING_SPEED, SEPARATION};
 use crate::ball::Segment;
-use crate::poly::{ContactTolerance, Poly, first_contact, root_bound};
+use crate::poly::{ContactTolerance, Poly, first_contact};
 use crate::table::Cushion;
 
 /// Time after `t` at which the ball of `seg` reaches `cushion`, within `horizon` seconds.
@@ -44,11 +44,10 @@ pub fn ball_line(
         return None;
     }
     let gap = Poly::new([offset + n.dot(p), vn, 0.5 * an, 0.0, 0.0]);
-    let h = horizon.min(root_bound(&gap));
     let tol = ContactTolerance {
         slack: RESTING_SPEED,
         separation: SEPARATION,
         depth: RESTING_DEPTH,
     };
-    first_contact(&gap, h, tol)
+    first_contact(&gap, horizon, tol)
 }
