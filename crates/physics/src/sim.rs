@@ -370,6 +370,10 @@ pub struct Simulation {
     history: History,
     rng: Option<ChaCha8Rng>,
     bounds: Vec2,
+    /// The fixed-body contacts (cushion or jaw, ball, which) resolved at the current instant
+    /// `instant_time`: a resting contact that repeats within one instant is plastic.
+    instant: Vec<(u8, BallId, usize)>,
+    instant_time: f64,
 }
 
 impl Simulation {
@@ -432,6 +436,8 @@ impl Simulation {
                 .randomization
                 .map(|r| ChaCha8Rng::seed_from_u64(r.seed)),
             bounds,
+            instant: Vec::new(),
+            instant_time: f64::NAN,
         };
         sim.predict_all();
         Ok(sim)
@@ -932,6 +938,7 @@ impl Simulation {
         n: Vec2,
         depth: f64,
         rail: bool,
+        repeat: bool,
     ) -> (Vec2, Vec3) {
         let pressing = -self.segments[id].acceleration.dot(n);
         let approach = -s.velocity.dot(n);
@@ -943,12 +950,33 @@ impl Simulation {
             // rebound straight back (see `resolve::SETTLE_SPEED`).
             return resolve::settle(s.velocity, s.angular_velocity, n);
         }
-        if resting(depth, -s.velocity.dot(n), pressing) {
-            let v = resolve::resting_reflect(s.velocity, n, pressing, detect::RESTING_HOP);
+        if resting(depth, approach, pressing) {
+            let v = if repeat {
+                // A second resting contact with the same body in one instant: a ball wedged
+                // between a jaw and a ball held by the other jaw bounced elastically between
+                // them forever at that instant (soak seed 349173). Plastic: the approach
+                // goes, no hop, and the wedge's contacts converge.
+                s.velocity + n * approach.max(0.0)
+            } else {
+                resolve::resting_reflect(s.velocity, n, pressing, detect::RESTING_HOP)
+            };
             (v, keep_rolling(s, v, self.params.ball.radius))
         } else {
             self.cushion_response(s, n)
         }
+    }
+
+    /// Has this contact already been resolved at the current instant? Records it if not.
+    fn repeats(&mut self, contact: (u8, BallId, usize)) -> bool {
+        if self.instant_time != self.time {
+            self.instant.clear();
+            self.instant_time = self.time;
+        }
+        let seen = self.instant.contains(&contact);
+        if !seen {
+            self.instant.push(contact);
+        }
+        seen
     }
 
     fn jaw_radius(&self) -> f64 {
@@ -1142,7 +1170,8 @@ impl Simulation {
                 let d = s.position - jaw.centre;
                 let n = d.normalized().unwrap_or(Vec2::new(0.0, 1.0));
                 let depth = self.params.ball.radius + self.jaw_radius() - d.length();
-                let (v, w) = self.fixed_contact(id, &s, n, depth, false);
+                let repeat = self.repeats((1, id, k));
+                let (v, w) = self.fixed_contact(id, &s, n, depth, false, repeat);
                 self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                 self.record(EventKind::Jaw {
                     ball: id,
@@ -1166,7 +1195,8 @@ impl Simulation {
                         Cushion::Left | Cushion::Right => self.bounds.y,
                     };
                     let depth = -(limit + n.dot(s.position));
-                    let (v, w) = self.fixed_contact(id, &s, n, depth, true);
+                    let repeat = self.repeats((0, id, cushion as usize));
+                    let (v, w) = self.fixed_contact(id, &s, n, depth, true, repeat);
                     self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                     self.record(EventKind::Cushion { ball: id, cushion });
                 }

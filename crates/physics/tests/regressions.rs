@@ -222,3 +222,16 @@ fn a_ball_slipping_into_a_ball_held_by_a_rail_stops_pressing_instead_of_a_zeno_c
         }
     }
 }
+
+/// Soak seed 349173 (spin model, jaws, cushion restitution 0): two balls wedged in a corner
+/// mouth, each against a jaw and against the other, at ~1 um/s. Resting contacts are elastic,
+/// so ball 3 bounced between its jaw and ball 15 forever at one instant (the 1e6 cap at
+/// t = 2.1365 s). A resting contact with the same cushion or jaw twice in one instant is now
+/// plastic.
+#[test]
+fn a_ball_wedged_between_a_jaw_and_a_ball_does_not_bounce_forever_in_one_instant() {
+    let s = soak::scenario(349173);
+    if let Err(v) = soak::run_scenario(&s, check::Tolerances::default()) {
+        panic!("seed 349173: {v}");
+    }
+}
