@@ -744,7 +744,20 @@ impl Simulation {
             kind: PendingKind::Transition(id),
         });
         if seg.state.motion.is_moving() {
+            // The first test of `detect::ball_line`, made once for all four cushions: one the
+            // ball moves away from, never turning back, has no contact, and is skipped before
+            // any position or root is computed (the same values: `cushion_contact` starts at
+            // `t + 0.0`).
+            let v = seg.velocity_at(t + 0.0);
+            let a = match kin {
+                Kinematics::Exact => seg.acceleration,
+                Kinematics::Linear => Vec2::ZERO,
+            };
             for c in Cushion::ALL {
+                let n = c.inward_normal();
+                if n.dot(v) >= 0.0 && n.dot(a) >= 0.0 {
+                    continue;
+                }
                 if let Some(tau) = self.cushion_contact(seg, t, c, horizon, kin) {
                     let kind = PendingKind::Cushion(id, c);
                     best = earlier(
