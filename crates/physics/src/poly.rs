@@ -282,6 +282,39 @@ pub fn first_contact(f: &Poly, h: f64, tol: ContactTolerance) -> Option<f64> {
     }
 }
 
+/// [`first_contact`] of the line `c0 + c1 t` with `c0 > 0 > c1` (a ball heading for a line on
+/// a straight path, as every cushion contact of the frictionless model), step for step as the
+/// general search does it (the entry bound of [`root_bound`], the closed-form root of
+/// [`first_entry`] nudged up by ulps) but without building, scanning and evaluating a quartic:
+/// at a finite `t` the quartic's Horner sum with its zero terms is exactly `c1 t + c0`.
+/// `None` when it cannot answer the same way (a non-finite time, a root more than 16 ulps
+/// off): the caller then runs the general search.
+pub(crate) fn first_contact_line(c0: f64, c1: f64, h: f64) -> Option<Option<f64>> {
+    if !(c0 > 0.0 && c1 < 0.0) {
+        return None;
+    }
+    // `first_entry(f, 0, h.min(root_bound(f)))`, `f(0) = c0 > 0`.
+    let b = h.min(1.0 + 0.0f64.max(c0.abs() / c1.abs()));
+    if b.is_nan() || b <= 0.0 {
+        return Some(None);
+    }
+    let root = -c0 / c1;
+    if root.is_nan() || root > b {
+        return Some(None);
+    }
+    let mut t = root.max(0.0);
+    for _ in 0..16 {
+        if !t.is_finite() {
+            return None;
+        }
+        if c1 * t + c0 <= 0.0 {
+            return Some(Some(t));
+        }
+        t = t.next_up();
+    }
+    None
+}
+
 /// An upper bound on the magnitude of every real root (Cauchy), for an unbounded horizon.
 pub fn root_bound(p: &Poly) -> f64 {
     let n = p.degree();
