@@ -884,15 +884,29 @@ impl Simulation {
             } else {
                 self.kin.gap.fill(f64::NEG_INFINITY);
             }
-            for j in 0..n {
-                // A pair of two touched balls is solved once.
-                if j == id || touched[..k].contains(&j) {
-                    continue;
+            for base in (0..n).step_by(64) {
+                // Most pairs are culled and had no contact before either: nothing changes for
+                // them. Mark the others, 64 at a time in a tight loop (the row's later entries
+                // are not written while this block is worked through).
+                let end = n.min(base + 64);
+                let gaps = &self.kin.gap[base..end];
+                let row = &self.pairs[id * n + base..id * n + end];
+                let mut mask = 0u64;
+                for (b, (&g, &p)) in gaps.iter().zip(row).enumerate() {
+                    mask |= u64::from(!(g > 0.0) || p != f64::INFINITY) << b;
                 }
-                let time = self.solve_pair(id, j, t, self.kin.may_touch(j));
-                if time != self.pairs[id * n + j] {
-                    self.set_pair(id, j, time);
-                    affected.push(j);
+                while mask != 0 {
+                    let j = base + mask.trailing_zeros() as usize;
+                    mask &= mask - 1;
+                    // A pair of two touched balls is solved once.
+                    if j == id || touched[..k].contains(&j) {
+                        continue;
+                    }
+                    let time = self.solve_pair(id, j, t, self.kin.may_touch(j));
+                    if time != self.pairs[id * n + j] {
+                        self.set_pair(id, j, time);
+                        affected.push(j);
+                    }
                 }
             }
         }
