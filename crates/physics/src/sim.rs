@@ -229,6 +229,9 @@ struct Kin {
     live: Vec<u8>,
     /// Result of [`Kin::cull_row`]: positive for pairs that cannot touch.
     gap: Vec<f64>,
+    /// How many balls have a non-zero (or NaN) acceleration: with none (a frictionless
+    /// scene), the cull drops the acceleration terms.
+    accelerating: usize,
 }
 
 impl Kin {
@@ -245,12 +248,16 @@ impl Kin {
             until: vec![f64::INFINITY; n],
             live: vec![0; n],
             gap: vec![0.0; n],
+            accelerating: 0,
         }
     }
 
     /// Records ball `id`'s segment and the time of its own next event.
     fn set(&mut self, id: BallId, seg: &Segment, own: Option<Pending>) {
         let s = &seg.state;
+        let was = self.ax[id] != 0.0 || self.ay[id] != 0.0;
+        let now = seg.acceleration.x != 0.0 || seg.acceleration.y != 0.0;
+        self.accelerating = self.accelerating + usize::from(now) - usize::from(was);
         self.start[id] = seg.start;
         (self.px[id], self.py[id]) = (s.position.x, s.position.y);
         (self.vx[id], self.vy[id]) = (s.velocity.x, s.velocity.y);
@@ -270,6 +277,9 @@ impl Kin {
     /// vectorizes; conservative in every degenerate case (a NaN or infinite bound keeps the
     /// pair). Ball `i` must be moving: a resting ball is at rest from its segment's start.
     fn cull_row(&mut self, i: BallId, t: f64, contact: f64) {
+        if self.accelerating == 0 {
+            return self.cull_row_straight(i, t, contact);
+        }
         let ti = t - self.start[i];
         let (vxi, vyi) = (self.vx[i] + self.ax[i] * ti, self.vy[i] + self.ay[i] * ti);
         let (pxi, pyi) = (
@@ -303,6 +313,33 @@ impl Kin {
             let bend = 0.5 * (dax * dax + day * day).sqrt() * h * h;
             let reach = (contact + bend) * (1.0 + 1e-9) + 1e-9;
             // (With h < 0, tau is 0 and a touching pair is kept.)
+            *gap = cx * cx + cy * cy - (reach * reach + 1e-12 * (dpx * dpx + dpy * dpy));
+        }
+    }
+
+    /// [`Kin::cull_row`] when no ball accelerates: the same test without the acceleration
+    /// terms (each is a zero; `bend` stays `0 h h`, NaN for an unbounded horizon, which keeps
+    /// the pair as the general cull does).
+    fn cull_row_straight(&mut self, i: BallId, t: f64, contact: f64) {
+        let ti = t - self.start[i];
+        let (vxi, vyi) = (self.vx[i], self.vy[i]);
+        let (pxi, pyi) = (self.px[i] + vxi * ti, self.py[i] + vyi * ti);
+        let ui = self.until[i];
+        let rows = self.start.iter().zip(self.px.iter().zip(&self.py));
+        let rows = rows.zip(self.vx.iter().zip(&self.vy)).zip(&self.until);
+        for (gap, (((start, (px, py)), (vx, vy)), until)) in self.gap.iter_mut().zip(rows) {
+            let tj = t - start;
+            let (dpx, dpy) = (px + vx * tj - pxi, py + vy * tj - pyi);
+            let (dvx, dvy) = (vx - vxi, vy - vyi);
+            let h = if *until < ui { *until } else { ui } - t;
+            let pv = dpx * dvx + dpy * dvy;
+            let vv = dvx * dvx + dvy * dvy;
+            let tau = -pv / vv;
+            let tau = if tau < h { tau } else { h };
+            let tau = if tau > 0.0 { tau } else { 0.0 };
+            let (cx, cy) = (dpx + dvx * tau, dpy + dvy * tau);
+            let bend = 0.0 * h * h;
+            let reach = (contact + bend) * (1.0 + 1e-9) + 1e-9;
             *gap = cx * cx + cy * cy - (reach * reach + 1e-12 * (dpx * dpx + dpy * dpy));
         }
     }
