@@ -941,7 +941,8 @@ impl Simulation {
                 let row = &self.pairs[id * n + base..id * n + end];
                 let mut mask = 0u64;
                 for (b, (&g, &p)) in gaps.iter().zip(row).enumerate() {
-                    mask |= u64::from(!(g > 0.0) | (p != f64::INFINITY)) << b;
+                    let skip = (g > 0.0) & (p == f64::INFINITY);
+                    mask |= u64::from(!skip) << b;
                 }
                 while mask != 0 {
                     let j = base + mask.trailing_zeros() as usize;
