@@ -264,6 +264,11 @@ pub fn first_contact(f: &Poly, h: f64, tol: ContactTolerance) -> Option<f64> {
     // of `f`: a pair drifting together at 9e-11 m/s sinks to the resting depth after f's own
     // roots are behind it (soak seed 334696: a ball 1.04e-9 m into a rail after 11 s).
     let entry = |p: &Poly, a: f64| first_entry(p, a, h.min(root_bound(p)));
+    if let Some(q) = first_contact_quadratic(f)
+        && let Some(answer) = first_entry_quadratic_fast(q, h)
+    {
+        return answer;
+    }
     if f.c[0] > 0.0 {
         return entry(f, 0.0);
     }
@@ -280,6 +285,81 @@ pub fn first_contact(f: &Poly, h: f64, tol: ContactTolerance) -> Option<f64> {
         (_, Some(ts)) => entry(f, ts),
         (None, None) => None,
     }
+}
+
+/// [`first_contact`] of the line `c0 + c1 t` with `c0 > 0 > c1` (a ball heading for a line on
+/// a straight path, as every cushion contact of the frictionless model), step for step as the
+/// general search does it (the entry bound of [`root_bound`], the closed-form root of
+/// [`first_entry`] nudged up by ulps) but without building, scanning and evaluating a quartic:
+/// at a finite `t` the quartic's Horner sum with its zero terms is exactly `c1 t + c0`.
+/// `None` when it cannot answer the same way (a non-finite time, a root more than 16 ulps
+/// off): the caller then runs the general search.
+pub(crate) fn first_contact_line(c0: f64, c1: f64, h: f64) -> Option<Option<f64>> {
+    if !(c0 > 0.0 && c1 < 0.0) {
+        return None;
+    }
+    // `first_entry(f, 0, h.min(root_bound(f)))`, `f(0) = c0 > 0`.
+    let b = h.min(1.0 + 0.0f64.max(c0.abs() / c1.abs()));
+    if b.is_nan() || b <= 0.0 {
+        return Some(None);
+    }
+    let root = -c0 / c1;
+    if root.is_nan() || root > b {
+        return Some(None);
+    }
+    let mut t = root.max(0.0);
+    for _ in 0..16 {
+        if !t.is_finite() {
+            return None;
+        }
+        if c1 * t + c0 <= 0.0 {
+            return Some(Some(t));
+        }
+        t = t.next_up();
+    }
+    None
+}
+
+/// [`first_contact`] of `f` apart now (`c0 > 0`) with `c3 = c4 = 0` and `c2 > 0` (two balls
+/// without relative acceleration: the quartic is a quadratic), step for step as the general
+/// search does it ([`root_bound`], then the closed form of [`first_entry`] nudged up by ulps):
+/// at a finite `t` the Horner sum's zero terms vanish exactly, leaving `(c2 t + c1) t + c0`.
+/// `None` when it cannot answer the same way (a non-finite time, a root more than 16 ulps
+/// off): the caller then runs the general search.
+fn first_contact_quadratic(f: &Poly) -> Option<(f64, f64, f64)> {
+    let [c0, c1, c2, c3, c4] = f.c;
+    (c0 > 0.0 && c2 > 0.0 && c3 == 0.0 && c4 == 0.0).then_some((c0, c1, c2))
+}
+
+/// The answer of [`first_contact`] for the quadratic of [`first_contact_quadratic`], or `None`
+/// to run the general search.
+fn first_entry_quadratic_fast((c0, c1, c2): (f64, f64, f64), h: f64) -> Option<Option<f64>> {
+    // `first_entry(f, 0, h.min(root_bound(f)))`, `f(0) = c0 > 0`, degree 2.
+    let b = h.min(1.0 + 0.0f64.max(c0.abs() / c2).max(c1.abs() / c2));
+    if b.is_nan() || b <= 0.0 {
+        return Some(None);
+    }
+    let disc = c1 * c1 - 4.0 * c2 * c0;
+    if disc < 0.0 {
+        return Some(None);
+    }
+    let q = -0.5 * (c1 + c1.signum() * disc.sqrt());
+    let (r1, r2) = (q / c2, c0 / q);
+    let r = r1.min(r2);
+    if r.is_nan() || r < 0.0 || r > b {
+        return Some(None);
+    }
+    let mut t = r.max(0.0);
+    for _ in 0..16 {
+        if !t.is_finite() {
+            return None;
+        }
+        if (c2 * t + c1) * t + c0 <= 0.0 {
+            return Some(Some(t));
+        }
+        t = t.next_up();
+    }
+    None
 }
 
 /// An upper bound on the magnitude of every real root (Cauchy), for an unbounded horizon.

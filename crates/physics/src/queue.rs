@@ -8,9 +8,9 @@
 pub struct Tournament<K: Copy> {
     size: usize,
     keys: Vec<Option<K>>,
-    ranks: Vec<u128>,
-    /// `winner[node]` for internal nodes `1..size`: the slot of the best key below.
-    winner: Vec<usize>,
+    /// For every node (`1..size` internal, `size..2 size` the slots): the rank and the slot of
+    /// the best key below. A replay carries its winner up and reads only the other side.
+    nodes: Vec<(u128, usize)>,
 }
 
 impl<K: Copy> Tournament<K> {
@@ -20,18 +20,18 @@ impl<K: Copy> Tournament<K> {
     /// `n` empty slots.
     pub fn new(n: usize) -> Self {
         let size = n.max(1).next_power_of_two();
-        // Every internal node starts pointing at a slot of its own subtree (all empty).
-        let leftmost = |mut node: usize| {
-            while node > 0 && node < size {
-                node *= 2;
-            }
-            node.saturating_sub(size)
-        };
+        let mut nodes = vec![(Self::EMPTY, 0); 2 * size];
+        for (i, node) in nodes[size..].iter_mut().enumerate() {
+            node.1 = i;
+        }
+        // All empty: every internal node holds its leftmost slot.
+        for node in (1..size).rev() {
+            nodes[node] = nodes[2 * node];
+        }
         Self {
             size,
             keys: vec![None; size],
-            ranks: vec![Self::EMPTY; size],
-            winner: (0..size).map(leftmost).collect(),
+            nodes,
         }
     }
 
@@ -42,7 +42,7 @@ impl<K: Copy> Tournament<K> {
 
     /// Rank of slot `i` ([`Self::EMPTY`] if it is empty).
     pub fn rank(&self, i: usize) -> u128 {
-        self.ranks[i]
+        self.nodes[self.size + i].0
     }
 
     /// Sets slot `i` to `key` with rank `rank` ([`Self::EMPTY`] for `None`) and replays its
@@ -50,35 +50,28 @@ impl<K: Copy> Tournament<K> {
     pub fn set(&mut self, i: usize, key: Option<K>, rank: u128) {
         debug_assert_eq!(key.is_none(), rank == Self::EMPTY);
         self.keys[i] = key;
-        self.ranks[i] = rank;
-        let mut node = (self.size + i) / 2;
-        while node >= 1 {
-            let (l, r) = (self.slot(2 * node), self.slot(2 * node + 1));
-            let (old, new) = (
-                self.winner[node],
-                if self.ranks[r] < self.ranks[l] { r } else { l },
-            );
-            self.winner[node] = new;
-            // Slot `i` neither won nor wins here: nothing above changes.
-            if old == new && new != i {
-                break;
+        let mut node = self.size + i;
+        let mut best = (rank, i);
+        self.nodes[node] = best;
+        while node > 1 {
+            let other = self.nodes[node ^ 1];
+            // Ties go to the left child (the lower slots).
+            let left = node & 1 == 0;
+            if other.0 < best.0 || (other.0 == best.0 && !left) {
+                best = other;
             }
             node /= 2;
-        }
-    }
-
-    #[inline]
-    fn slot(&self, node: usize) -> usize {
-        if node >= self.size {
-            node - self.size
-        } else {
-            self.winner[node]
+            // The winner here and its rank are unchanged: nothing above changes.
+            if self.nodes[node] == best {
+                break;
+            }
+            self.nodes[node] = best;
         }
     }
 
     /// The best key and its slot.
     pub fn best(&self) -> Option<(usize, K)> {
-        let i = self.slot(1);
+        let i = self.nodes[1].1;
         self.keys[i].map(|k| (i, k))
     }
 }

@@ -229,6 +229,9 @@ struct Kin {
     live: Vec<u8>,
     /// Result of [`Kin::cull_row`]: positive for pairs that cannot touch.
     gap: Vec<f64>,
+    /// How many balls have a non-zero (or NaN) acceleration: with none (a frictionless
+    /// scene), the cull drops the acceleration terms.
+    accelerating: usize,
 }
 
 impl Kin {
@@ -245,12 +248,16 @@ impl Kin {
             until: vec![f64::INFINITY; n],
             live: vec![0; n],
             gap: vec![0.0; n],
+            accelerating: 0,
         }
     }
 
     /// Records ball `id`'s segment and the time of its own next event.
     fn set(&mut self, id: BallId, seg: &Segment, own: Option<Pending>) {
         let s = &seg.state;
+        let was = self.ax[id] != 0.0 || self.ay[id] != 0.0;
+        let now = seg.acceleration.x != 0.0 || seg.acceleration.y != 0.0;
+        self.accelerating = self.accelerating + usize::from(now) - usize::from(was);
         self.start[id] = seg.start;
         (self.px[id], self.py[id]) = (s.position.x, s.position.y);
         (self.vx[id], self.vy[id]) = (s.velocity.x, s.velocity.y);
@@ -270,6 +277,9 @@ impl Kin {
     /// vectorizes; conservative in every degenerate case (a NaN or infinite bound keeps the
     /// pair). Ball `i` must be moving: a resting ball is at rest from its segment's start.
     fn cull_row(&mut self, i: BallId, t: f64, contact: f64) {
+        if self.accelerating == 0 {
+            return self.cull_row_straight(i, t, contact);
+        }
         let ti = t - self.start[i];
         let (vxi, vyi) = (self.vx[i] + self.ax[i] * ti, self.vy[i] + self.ay[i] * ti);
         let (pxi, pyi) = (
@@ -303,6 +313,33 @@ impl Kin {
             let bend = 0.5 * (dax * dax + day * day).sqrt() * h * h;
             let reach = (contact + bend) * (1.0 + 1e-9) + 1e-9;
             // (With h < 0, tau is 0 and a touching pair is kept.)
+            *gap = cx * cx + cy * cy - (reach * reach + 1e-12 * (dpx * dpx + dpy * dpy));
+        }
+    }
+
+    /// [`Kin::cull_row`] when no ball accelerates: the same test without the acceleration
+    /// terms (each is a zero; `bend` stays `0 h h`, NaN for an unbounded horizon, which keeps
+    /// the pair as the general cull does).
+    fn cull_row_straight(&mut self, i: BallId, t: f64, contact: f64) {
+        let ti = t - self.start[i];
+        let (vxi, vyi) = (self.vx[i], self.vy[i]);
+        let (pxi, pyi) = (self.px[i] + vxi * ti, self.py[i] + vyi * ti);
+        let ui = self.until[i];
+        let rows = self.start.iter().zip(self.px.iter().zip(&self.py));
+        let rows = rows.zip(self.vx.iter().zip(&self.vy)).zip(&self.until);
+        for (gap, (((start, (px, py)), (vx, vy)), until)) in self.gap.iter_mut().zip(rows) {
+            let tj = t - start;
+            let (dpx, dpy) = (px + vx * tj - pxi, py + vy * tj - pyi);
+            let (dvx, dvy) = (vx - vxi, vy - vyi);
+            let h = if *until < ui { *until } else { ui } - t;
+            let pv = dpx * dvx + dpy * dvy;
+            let vv = dvx * dvx + dvy * dvy;
+            let tau = -pv / vv;
+            let tau = if tau < h { tau } else { h };
+            let tau = if tau > 0.0 { tau } else { 0.0 };
+            let (cx, cy) = (dpx + dvx * tau, dpy + dvy * tau);
+            let bend = 0.0 * h * h;
+            let reach = (contact + bend) * (1.0 + 1e-9) + 1e-9;
             *gap = cx * cx + cy * cy - (reach * reach + 1e-12 * (dpx * dpx + dpy * dpy));
         }
     }
@@ -750,7 +787,20 @@ impl Simulation {
             kind: PendingKind::Transition(id),
         });
         if seg.state.motion.is_moving() {
+            // The first test of `detect::ball_line`, made once for all four cushions: one the
+            // ball moves away from, never turning back, has no contact, and is skipped before
+            // any position or root is computed (the same values: `cushion_contact` starts at
+            // `t + 0.0`).
+            let v = seg.velocity_at(t + 0.0);
+            let a = match kin {
+                Kinematics::Exact => seg.acceleration,
+                Kinematics::Linear => Vec2::ZERO,
+            };
             for c in Cushion::ALL {
+                let n = c.inward_normal();
+                if n.dot(v) >= 0.0 && n.dot(a) >= 0.0 {
+                    continue;
+                }
                 if let Some(tau) = self.cushion_contact(seg, t, c, horizon, kin) {
                     let kind = PendingKind::Cushion(id, c);
                     best = earlier(
@@ -837,17 +887,28 @@ impl Simulation {
     fn best_of_row(&self, id: BallId) -> Option<Pending> {
         let n = self.segments.len();
         let row = &self.pairs[id * n..(id + 1) * n];
-        let mut k_best = usize::MAX;
-        let mut t_best = f64::INFINITY;
-        for (k, &tk) in row.iter().enumerate() {
-            if tk < t_best {
-                (k_best, t_best) = (k, tk);
+        // The first of the smallest times below infinity, as a scan with a strict comparison
+        // finds it (NaNs never win), in two passes that vectorize: the smallest time in four
+        // independent lanes (the order of a minimum does not matter), then its first index.
+        let mut lanes = [f64::INFINITY; 4];
+        let mut chunks = row.chunks_exact(4);
+        for c in &mut chunks {
+            for (m, &x) in lanes.iter_mut().zip(c) {
+                *m = if x < *m { x } else { *m };
             }
         }
-        let pair = (k_best != usize::MAX).then(|| Pending {
-            time: t_best,
-            kind: PendingKind::Pair(id.min(k_best), id.max(k_best)),
-        });
+        let mut least = f64::INFINITY;
+        for &x in lanes.iter().chain(chunks.remainder()) {
+            least = if x < least { x } else { least };
+        }
+        let pair = if least < f64::INFINITY {
+            row.iter().position(|&x| x == least).map(|k| Pending {
+                time: row[k],
+                kind: PendingKind::Pair(id.min(k), id.max(k)),
+            })
+        } else {
+            None
+        };
         earlier(self.own[id], pair)
     }
 
@@ -877,15 +938,30 @@ impl Simulation {
             } else {
                 self.kin.gap.fill(f64::NEG_INFINITY);
             }
-            for j in 0..n {
-                // A pair of two touched balls is solved once.
-                if j == id || touched[..k].contains(&j) {
-                    continue;
+            for base in (0..n).step_by(64) {
+                // Most pairs are culled and had no contact before either: nothing changes for
+                // them. Mark the others, 64 at a time in a tight loop (the row's later entries
+                // are not written while this block is worked through).
+                let end = n.min(base + 64);
+                let gaps = &self.kin.gap[base..end];
+                let row = &self.pairs[id * n + base..id * n + end];
+                let mut mask = 0u64;
+                for (b, (&g, &p)) in gaps.iter().zip(row).enumerate() {
+                    let skip = (g > 0.0) & (p == f64::INFINITY);
+                    mask |= u64::from(!skip) << b;
                 }
-                let time = self.solve_pair(id, j, t, self.kin.may_touch(j));
-                if time != self.pairs[id * n + j] {
-                    self.set_pair(id, j, time);
-                    affected.push(j);
+                while mask != 0 {
+                    let j = base + mask.trailing_zeros() as usize;
+                    mask &= mask - 1;
+                    // A pair of two touched balls is solved once.
+                    if j == id || touched[..k].contains(&j) {
+                        continue;
+                    }
+                    let time = self.solve_pair(id, j, t, self.kin.may_touch(j));
+                    if time != self.pairs[id * n + j] {
+                        self.set_pair(id, j, time);
+                        affected.push(j);
+                    }
                 }
             }
         }

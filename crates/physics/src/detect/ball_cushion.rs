@@ -43,7 +43,15 @@ pub fn ball_line(
     if vn >= 0.0 && an >= 0.0 {
         return None;
     }
-    let gap = Poly::new([offset + n.dot(p), vn, 0.5 * an, 0.0, 0.0]);
+    let c0 = offset + n.dot(p);
+    // A straight path (no acceleration towards the line): the same root without the general
+    // search.
+    if an == 0.0
+        && let Some(tau) = crate::poly::first_contact_line(c0, vn, horizon)
+    {
+        return tau;
+    }
+    let gap = Poly::new([c0, vn, 0.5 * an, 0.0, 0.0]);
     let tol = ContactTolerance {
         slack: RESTING_SPEED,
         separation: SEPARATION,
