@@ -9,6 +9,12 @@ fn r() -> f64 {
     BallSpec::default().radius
 }
 
+/// Runs soak scene `seed` with every event checked; its figures, or a panic naming the seed.
+fn soak_scene(seed: u64) -> soak::SceneStats {
+    soak::run_scenario(&soak::scenario(seed), check::Tolerances::default())
+        .unwrap_or_else(|v| panic!("seed {seed}: {v}"))
+}
+
 /// Two touching rolling balls whose decelerations press them together: B ahead of A along
 /// the line of centres, both moving at the same speed along it, A also drifting sideways at a
 /// tenth of that. Each decelerates along its own velocity, so B slows along the line faster
@@ -141,10 +147,7 @@ fn slow_ball_pressing_a_nearly_resting_one_does_not_collide_a_million_times() {
 #[test]
 fn a_spinning_ball_pressed_into_a_rail_settles_instead_of_rebounding_forever() {
     for seed in [10288, 61081, 78761] {
-        let s = soak::scenario(seed);
-        if let Err(v) = soak::run_scenario(&s, check::Tolerances::default()) {
-            panic!("seed {seed}: {v}");
-        }
+        soak_scene(seed);
     }
 }
 
@@ -155,10 +158,7 @@ fn a_spinning_ball_pressed_into_a_rail_settles_instead_of_rebounding_forever() {
 /// `poly::first_entry`).
 #[test]
 fn a_fast_ball_crossing_a_jaw_hits_it_instead_of_passing_through() {
-    let s = soak::scenario(110421);
-    if let Err(v) = soak::run_scenario(&s, check::Tolerances::default()) {
-        panic!("seed 110421: {v}");
-    }
+    soak_scene(110421);
 }
 
 /// Soak seed 23445: a sliding ball with far more draw than speed (slip over 3.5 times its
@@ -199,11 +199,8 @@ fn a_ball_drawn_back_within_its_sliding_segment_hits_the_ball_behind_it() {
 #[test]
 fn balls_wedged_in_a_pocket_mouth_rest_in_a_bounded_number_of_events() {
     for seed in [38383, 43317] {
-        let s = soak::scenario(seed);
-        match soak::run_scenario(&s, check::Tolerances::default()) {
-            Ok(st) => assert!(st.most_events < 200_000, "seed {seed}: {st:?}"),
-            Err(v) => panic!("seed {seed}: {v}"),
-        }
+        let st = soak_scene(seed);
+        assert!(st.most_events < 200_000, "seed {seed}: {st:?}");
     }
 }
 
@@ -215,11 +212,8 @@ fn balls_wedged_in_a_pocket_mouth_rest_in_a_bounded_number_of_events() {
 #[test]
 fn a_ball_slipping_into_a_ball_held_by_a_rail_stops_pressing_instead_of_a_zeno_cascade() {
     for seed in [16706, 30230, 38390] {
-        let s = soak::scenario(seed);
-        match soak::run_scenario(&s, check::Tolerances::default()) {
-            Ok(st) => assert!(st.most_events < 100_000, "seed {seed}: {st:?}"),
-            Err(v) => panic!("seed {seed}: {v}"),
-        }
+        let st = soak_scene(seed);
+        assert!(st.most_events < 100_000, "seed {seed}: {st:?}");
     }
 }
 
@@ -230,8 +224,5 @@ fn a_ball_slipping_into_a_ball_held_by_a_rail_stops_pressing_instead_of_a_zeno_c
 /// plastic.
 #[test]
 fn a_ball_wedged_between_a_jaw_and_a_ball_does_not_bounce_forever_in_one_instant() {
-    let s = soak::scenario(349173);
-    if let Err(v) = soak::run_scenario(&s, check::Tolerances::default()) {
-        panic!("seed 349173: {v}");
-    }
+    soak_scene(349173);
 }
