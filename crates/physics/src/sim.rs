@@ -1004,24 +1004,20 @@ impl Simulation {
 
     /// Response of ball `id` in state `s` to a fixed body (cushion or jaw) with unit normal `n`
     /// pointing towards the ball, `depth` metres into it: a resting contact (see [`resting`])
-    /// or the model's cushion response. A slow spinning ball settles against a `rail` (a
-    /// straight cushion, along which it can keep running in contact); a jaw is convex, so a
-    /// ball leaving it tangentially parts from it anyway.
+    /// or the model's cushion response. A slow spinning ball settles against a cushion or a
+    /// jaw (soak seeds 10288 and 260383: rebounds that cloth friction on the spin sent
+    /// straight back, or a ball wedged between a jaw and a ball).
     fn fixed_contact(
         &mut self,
         id: BallId,
         s: &BallState,
         n: Vec2,
         depth: f64,
-        rail: bool,
         repeat: bool,
     ) -> (Vec2, Vec3) {
         let pressing = -self.segments[id].acceleration.dot(n);
         let approach = -s.velocity.dot(n);
-        if rail
-            && matches!(self.params.model, Model::Spin(_))
-            && approach.abs() < resolve::SETTLE_SPEED
-        {
+        if matches!(self.params.model, Model::Spin(_)) && approach.abs() < resolve::SETTLE_SPEED {
             // Slow contact in the spin model: cloth friction on the spin would bring a
             // rebound straight back (see `resolve::SETTLE_SPEED`).
             return resolve::settle(s.velocity, s.angular_velocity, n);
@@ -1247,7 +1243,7 @@ impl Simulation {
                 let n = d.normalized().unwrap_or(Vec2::new(0.0, 1.0));
                 let depth = self.params.ball.radius + self.jaw_radius() - d.length();
                 let repeat = self.repeats((1, id, k));
-                let (v, w) = self.fixed_contact(id, &s, n, depth, false, repeat);
+                let (v, w) = self.fixed_contact(id, &s, n, depth, repeat);
                 self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                 self.record(EventKind::Jaw {
                     ball: id,
@@ -1272,7 +1268,7 @@ impl Simulation {
                     };
                     let depth = -(limit + n.dot(s.position));
                     let repeat = self.repeats((0, id, cushion as usize));
-                    let (v, w) = self.fixed_contact(id, &s, n, depth, true, repeat);
+                    let (v, w) = self.fixed_contact(id, &s, n, depth, repeat);
                     self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                     self.record(EventKind::Cushion { ball: id, cushion });
                 }
