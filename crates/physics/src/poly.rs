@@ -145,32 +145,8 @@ pub fn first_entry(p: &Poly, a: f64, b: f64) -> Option<f64> {
 /// contact is never reported early.
 fn first_entry_quadratic(p: &Poly, a: f64, b: f64) -> Option<f64> {
     let (c0, c1, c2) = (p.c[0], p.c[1], p.c[2]);
-    let root = if c2 == 0.0 {
-        (c1 < 0.0).then(|| -c0 / c1)?
-    } else {
-        let disc = c1 * c1 - 4.0 * c2 * c0;
-        if disc < 0.0 {
-            return None;
-        }
-        let q = -0.5 * (c1 + c1.signum() * disc.sqrt());
-        let (r1, r2) = (q / c2, c0 / q);
-        let (lo, hi) = (r1.min(r2), r1.max(r2));
-        // Opening upwards p <= 0 between the roots; downwards, outside them.
-        let r = if c2 > 0.0 { lo } else { hi };
-        if r.is_nan() || r < a {
-            return None;
-        }
-        r
-    };
-    if root.is_nan() || root > b {
-        return None;
-    }
-    let mut t = root.max(a);
-    for _ in 0..16 {
-        if p.eval(t) <= 0.0 {
-            return Some(t);
-        }
-        t = t.next_up();
+    if let Some(answer) = closed_form_entry(c0, c1, c2, a, b) {
+        return answer;
     }
     // Rounding left the closed form further off than expected: bracket it properly. Opening
     // upwards, only up to the vertex: past the second root `p(b)` is positive again, and a
@@ -183,6 +159,47 @@ fn first_entry_quadratic(p: &Poly, a: f64, b: f64) -> Option<f64> {
     };
     let fhi = p.eval(hi);
     (fhi <= 0.0).then(|| refine(p, a, hi, p.eval(a), fhi))
+}
+
+/// The closed-form part of [`first_entry_quadratic`] for `c0 + c1 t + c2 t^2` (`p(a) > 0`):
+/// the numerically stable root, nudged up by at most 16 ulps until `p` is not positive there.
+/// `None` when that fails (a root further off, or a non-finite time): bracket it instead. At a
+/// finite `t`, `(c2 t + c1) t + c0` is exactly the quartic Horner sum with zero `c3`, `c4`.
+fn closed_form_entry(c0: f64, c1: f64, c2: f64, a: f64, b: f64) -> Option<Option<f64>> {
+    let root = if c2 == 0.0 {
+        if c1 >= 0.0 || c1.is_nan() {
+            return Some(None);
+        }
+        -c0 / c1
+    } else {
+        let disc = c1 * c1 - 4.0 * c2 * c0;
+        if disc < 0.0 {
+            return Some(None);
+        }
+        let q = -0.5 * (c1 + c1.signum() * disc.sqrt());
+        let (r1, r2) = (q / c2, c0 / q);
+        let (lo, hi) = (r1.min(r2), r1.max(r2));
+        // Opening upwards p <= 0 between the roots; downwards, outside them.
+        let r = if c2 > 0.0 { lo } else { hi };
+        if r.is_nan() || r < a {
+            return Some(None);
+        }
+        r
+    };
+    if root.is_nan() || root > b {
+        return Some(None);
+    }
+    let mut t = root.max(a);
+    for _ in 0..16 {
+        if !t.is_finite() {
+            return None;
+        }
+        if (c2 * t + c1) * t + c0 <= 0.0 {
+            return Some(Some(t));
+        }
+        t = t.next_up();
+    }
+    None
 }
 
 /// Refines a bracket with `p(lo) = flo > 0 >= p(hi) = fhi`, `p` monotone on it, to a few ulps;
@@ -303,21 +320,7 @@ pub(crate) fn first_contact_line(c0: f64, c1: f64, h: f64) -> Option<Option<f64>
     if b.is_nan() || b <= 0.0 {
         return Some(None);
     }
-    let root = -c0 / c1;
-    if root.is_nan() || root > b {
-        return Some(None);
-    }
-    let mut t = root.max(0.0);
-    for _ in 0..16 {
-        if !t.is_finite() {
-            return None;
-        }
-        if c1 * t + c0 <= 0.0 {
-            return Some(Some(t));
-        }
-        t = t.next_up();
-    }
-    None
+    closed_form_entry(c0, c1, 0.0, 0.0, b)
 }
 
 /// [`first_contact`] of `f` apart now (`c0 > 0`) with `c3 = c4 = 0` and `c2 > 0` (two balls
@@ -339,27 +342,7 @@ fn first_entry_quadratic_fast((c0, c1, c2): (f64, f64, f64), h: f64) -> Option<O
     if b.is_nan() || b <= 0.0 {
         return Some(None);
     }
-    let disc = c1 * c1 - 4.0 * c2 * c0;
-    if disc < 0.0 {
-        return Some(None);
-    }
-    let q = -0.5 * (c1 + c1.signum() * disc.sqrt());
-    let (r1, r2) = (q / c2, c0 / q);
-    let r = r1.min(r2);
-    if r.is_nan() || r < 0.0 || r > b {
-        return Some(None);
-    }
-    let mut t = r.max(0.0);
-    for _ in 0..16 {
-        if !t.is_finite() {
-            return None;
-        }
-        if (c2 * t + c1) * t + c0 <= 0.0 {
-            return Some(Some(t));
-        }
-        t = t.next_up();
-    }
-    None
+    closed_form_entry(c0, c1, c2, 0.0, b)
 }
 
 /// An upper bound on the magnitude of every real root (Cauchy), for an unbounded horizon.
