@@ -295,9 +295,7 @@ impl Monitor {
     /// Starts monitoring `sim` from its current state, which is checked at once.
     pub fn new(sim: &Simulation, tol: Tolerances) -> Result<Self, Violation> {
         let h = sim.history();
-        let at: Vec<usize> = (0..sim.ball_count())
-            .map(|i| h.track(i).len() - 1)
-            .collect();
+        let at: Vec<usize> = (0..sim.ball_count()).map(|i| h.track_len(i) - 1).collect();
         let work: Vec<Segment> = (0..sim.ball_count()).map(|i| *sim.segment(i)).collect();
         let states: Vec<BallState> = sim.balls().collect();
         let mut m = Self {
@@ -462,16 +460,18 @@ impl Monitor {
             if event.kind == EventKind::ParamsChanged {
                 // Every ball whose segment changed continues on a new one from this instant.
                 for i in 0..n {
-                    let track = h.track(i);
-                    if self.at[i] + 1 < track.len() && track[self.at[i] + 1].start == t {
-                        self.at[i] += 1;
-                        self.work[i] = track[self.at[i]];
+                    if self.at[i] + 1 < h.track_len(i) {
+                        let next = h.segment(i, self.at[i] + 1);
+                        if next.start == t {
+                            self.at[i] += 1;
+                            self.work[i] = next;
+                        }
                     }
                 }
             } else {
                 for i in event.kind.balls() {
                     self.at[i] += 1;
-                    self.work[i] = h.track(i)[self.at[i]];
+                    self.work[i] = h.segment(i, self.at[i]);
                 }
             }
             let after = self.states_at(t);

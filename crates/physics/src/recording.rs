@@ -207,7 +207,7 @@ impl Recording {
     pub fn history(&self) -> Result<History, String> {
         let sim = self.start().map_err(|e| format!("setup: {e}"))?;
         let mut segments: Vec<Segment> = (0..sim.ball_count()).map(|i| *sim.segment(i)).collect();
-        let mut history = History::new(&segments);
+        let mut history = History::new(&segments, self.params);
         let mut params = self.params;
         let mut param_changes = self.inputs.iter().filter_map(|i| match i.action {
             Action::SetParams { params } => Some(params),
@@ -230,13 +230,13 @@ impl Recording {
                         );
                     }
                 }
-                history.push_all(*e, &segments);
+                history.push_all(*e, &segments, params);
                 continue;
             }
             for (id, state) in e.states_after() {
                 segments[id] = motion::segment_with_motion(&params, e.time, state);
             }
-            history.push(*e, &segments);
+            history.push(*e);
         }
         Ok(history)
     }

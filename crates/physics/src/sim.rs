@@ -452,7 +452,7 @@ impl Simulation {
             table,
             params,
             numbers: balls.iter().map(|b| b.number).collect(),
-            history: History::new(&segments),
+            history: History::new(&segments, params),
             cache: Tournament::new(segments.len()),
             own: vec![None; segments.len()],
             pairs: Vec::new(),
@@ -699,7 +699,7 @@ impl Simulation {
             kind: EventKind::ParamsChanged,
             after: Default::default(),
         };
-        self.history.push_all(event, &self.segments);
+        self.history.push_all(event, &self.segments, params);
         self.predict_all();
         Ok(())
     }
@@ -1198,7 +1198,7 @@ impl Simulation {
             kind,
             after,
         };
-        self.history.push(event, &self.segments);
+        self.history.push(event);
     }
 
     /// A Gaussian rotation of a collision normal (paper 5), if randomization is on.

@@ -83,12 +83,6 @@ fn momentum_is_conserved_by_every_ball_ball_collision() {
     let mut checked = 0;
     for e in h.events() {
         if let EventKind::BallBall { a, b } = e.kind {
-            let before = h
-                .track(a)
-                .iter()
-                .chain(h.track(b))
-                .filter(|s| s.start < e.time);
-            let _ = before;
             let va = prior_velocity(h, a, e.time);
             let vb = prior_velocity(h, b, e.time);
             let sum = va + vb;

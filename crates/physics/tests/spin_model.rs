@@ -247,7 +247,8 @@ fn frictional_collision_conserves_momentum_and_never_gains_energy() {
             }
         };
         let h = sim.history();
-        let before = h.track(0).iter().rev().find(|s| s.start < e.time).unwrap();
+        let track = h.track(0);
+        let before = track.iter().rev().find(|s| s.start < e.time).unwrap();
         let (v0, w0) = (
             before.velocity_at(e.time),
             before.angular_velocity_at(e.time),
