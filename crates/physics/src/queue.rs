@@ -53,18 +53,15 @@ impl<K: Copy> Tournament<K> {
         let mut node = self.size + i;
         let mut best = (rank, i);
         self.nodes[node] = best;
+        // Every level is replayed, with selects rather than branches: which side wins is as
+        // good as random, and a mispredicted branch costs more than the few levels an early
+        // stop (when the winner above is unchanged) would save.
         while node > 1 {
             let other = self.nodes[node ^ 1];
-            // Ties go to the left child (the lower slots).
-            let left = node & 1 == 0;
-            if other.0 < best.0 || (other.0 == best.0 && !left) {
-                best = other;
-            }
+            // Ties go to the left child. Slots below a node's left child are lower than those below its right child, so
+            // "ties go left" is "the lower (rank, slot) wins".
+            best = std::hint::select_unpredictable(other < best, other, best);
             node /= 2;
-            // The winner here and its rank are unchanged: nothing above changes.
-            if self.nodes[node] == best {
-                break;
-            }
             self.nodes[node] = best;
         }
     }
