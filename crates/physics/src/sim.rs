@@ -932,12 +932,17 @@ impl Simulation {
         let contact = 2.0 * self.params.ball.radius;
         let mut affected = std::mem::take(&mut self.affected);
         affected.clear();
+        // Each touched ball's earliest pair, found while its row is worked through: entries
+        // left out are infinite (culled, and no contact before), and scanning partners in
+        // ascending order with a strict comparison picks the same pair as `best_of_row`.
+        let mut rows = [(f64::INFINITY, 0); 2];
         for (k, &id) in touched.iter().enumerate() {
             if self.kin.live[id] == 3 {
                 self.kin.cull_row(id, t, contact);
             } else {
                 self.kin.gap.fill(f64::NEG_INFINITY);
             }
+            let (mut least, mut at) = (f64::INFINITY, 0);
             for base in (0..n).step_by(64) {
                 // Most pairs are culled and had no contact before either: nothing changes for
                 // them. Mark the others, 64 at a time in a tight loop (the row's later entries
@@ -953,20 +958,43 @@ impl Simulation {
                 while mask != 0 {
                     let j = base + mask.trailing_zeros() as usize;
                     mask &= mask - 1;
-                    // A pair of two touched balls is solved once.
-                    if j == id || touched[..k].contains(&j) {
+                    if j == id {
                         continue;
                     }
-                    let time = self.solve_pair(id, j, t, self.kin.may_touch(j));
-                    if time != self.pairs[id * n + j] {
-                        self.set_pair(id, j, time);
-                        affected.push(j);
+                    // A pair of two touched balls is solved once.
+                    let time = if touched[..k].contains(&j) {
+                        self.pairs[id * n + j]
+                    } else {
+                        let time = self.solve_pair(id, j, t, self.kin.may_touch(j));
+                        if time != self.pairs[id * n + j] {
+                            self.set_pair(id, j, time);
+                            affected.push(j);
+                        }
+                        time
+                    };
+                    if time < least {
+                        (least, at) = (time, j);
                     }
                 }
             }
+            if let Some(row) = rows.get_mut(k) {
+                *row = (least, at);
+            }
         }
-        for &id in touched {
-            let p = self.best_of_row(id);
+        for (k, &id) in touched.iter().enumerate() {
+            // (An event touches at most two balls; any more would take their best from the
+            // table.)
+            let p = match rows.get(k) {
+                Some(&(least, at)) => {
+                    let pair = (least < f64::INFINITY).then(|| Pending {
+                        time: least,
+                        kind: PendingKind::Pair(id.min(at), id.max(at)),
+                    });
+                    earlier(self.own[id], pair)
+                }
+                None => self.best_of_row(id),
+            };
+            debug_assert_eq!(p, self.best_of_row(id));
             self.cache.set(id, p, rank(p));
         }
         // A ball may appear twice (paired with both touched balls): updating it is idempotent.
