@@ -790,7 +790,8 @@ impl Simulation {
             // The first test of `detect::ball_line`, made once for all four cushions: one the
             // ball moves away from, never turning back, has no contact, and is skipped before
             // any position or root is computed (the same values: `cushion_contact` starts at
-            // `t + 0.0`).
+            // `t + 0.0`). A ball decelerating along its velocity stops before it could turn
+            // back (`Segment::straight`): only the cushions ahead of it are searched.
             let v = seg.velocity_at(t + 0.0);
             let a = match kin {
                 Kinematics::Exact => seg.acceleration,
@@ -798,7 +799,7 @@ impl Simulation {
             };
             for c in Cushion::ALL {
                 let n = c.inward_normal();
-                if n.dot(v) >= 0.0 && n.dot(a) >= 0.0 {
+                if n.dot(v) >= 0.0 && (seg.straight || n.dot(a) >= 0.0) {
                     continue;
                 }
                 if let Some(tau) = self.cushion_contact(seg, t, c, horizon, kin) {
