@@ -797,21 +797,35 @@ impl Simulation {
                 Kinematics::Exact => seg.acceleration,
                 Kinematics::Linear => Vec2::ZERO,
             };
+            // The position once for all four (what `cushion_contact` computes first).
+            let p = seg.position_at(t + 0.0);
             for c in Cushion::ALL {
                 let n = c.inward_normal();
                 if n.dot(v) >= 0.0 && (seg.straight || n.dot(a) >= 0.0) {
                     continue;
                 }
-                if let Some(tau) = self.cushion_contact(seg, t, c, horizon, kin) {
-                    let kind = PendingKind::Cushion(id, c);
-                    best = earlier(
-                        best,
-                        Some(Pending {
-                            time: t + tau,
-                            kind,
-                        }),
-                    );
-                }
+                let limit = self.cushion_limit(c);
+                let tau = match detect::line_contact(p, v, a, n, limit, horizon) {
+                    None => continue,
+                    // A contact in a mouth of a table with jaws: the full search goes on.
+                    Some(tau)
+                        if self.table.pockets != PocketShape::Mouth
+                            && !self.table.on_cushion(c, seg.position_at(t + tau)) =>
+                    {
+                        match self.cushion_contact(seg, t, c, horizon, kin) {
+                            Some(tau) => tau,
+                            None => continue,
+                        }
+                    }
+                    Some(tau) => tau,
+                };
+                best = earlier(
+                    best,
+                    Some(Pending {
+                        time: t + tau,
+                        kind: PendingKind::Cushion(id, c),
+                    }),
+                );
             }
             let jaw_contact = self.params.ball.radius + self.jaw_radius();
             for (k, jaw) in self.jaws.iter().enumerate() {
@@ -1080,6 +1094,14 @@ impl Simulation {
         seen
     }
 
+    /// How far the centre may go from the table's centre line towards `cushion`.
+    fn cushion_limit(&self, cushion: Cushion) -> f64 {
+        match cushion {
+            Cushion::Head | Cushion::Foot => self.bounds.x,
+            Cushion::Left | Cushion::Right => self.bounds.y,
+        }
+    }
+
     fn jaw_radius(&self) -> f64 {
         match self.table.pockets {
             PocketShape::Jaws { radius } => radius,
@@ -1099,10 +1121,7 @@ impl Simulation {
         horizon: f64,
         kin: Kinematics,
     ) -> Option<f64> {
-        let limit = match cushion {
-            Cushion::Head | Cushion::Foot => self.bounds.x,
-            Cushion::Left | Cushion::Right => self.bounds.y,
-        };
+        let limit = self.cushion_limit(cushion);
         let n = cushion.inward_normal();
         let mut from = 0.0;
         // A path is a parabola: it crosses a line at most twice, so two retries suffice.
@@ -1291,10 +1310,7 @@ impl Simulation {
                     self.record(EventKind::Pocketed { ball: id, pocket });
                 } else {
                     let n = cushion.inward_normal();
-                    let limit = match cushion {
-                        Cushion::Head | Cushion::Foot => self.bounds.x,
-                        Cushion::Left | Cushion::Right => self.bounds.y,
-                    };
+                    let limit = self.cushion_limit(cushion);
                     let depth = -(limit + n.dot(s.position));
                     let repeat = self.repeats((0, id, cushion as usize));
                     let (v, w) = self.fixed_contact(id, &s, n, depth, repeat);

@@ -38,6 +38,21 @@ pub fn ball_line(
         Kinematics::Exact => seg.acceleration,
         Kinematics::Linear => crate::Vec2::ZERO,
     };
+    line_contact(p, v, a, n, offset, horizon)
+}
+
+/// [`ball_line`] for a centre at `p` with velocity `v` and acceleration `a` (already chosen by
+/// the kinematics) at the start of the search: lets a caller trying several lines compute the
+/// state once.
+#[inline]
+pub fn line_contact(
+    p: crate::Vec2,
+    v: crate::Vec2,
+    a: crate::Vec2,
+    n: crate::Vec2,
+    offset: f64,
+    horizon: f64,
+) -> Option<f64> {
     let (vn, an) = (n.dot(v), n.dot(a));
     // Moving away and never turning back: no contact (the common case, decided without roots).
     if vn >= 0.0 && an >= 0.0 {
