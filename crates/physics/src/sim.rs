@@ -227,8 +227,6 @@ struct Kin {
     until: Vec<f64>,
     /// Moving (bit 0), on the table (bit 1).
     live: Vec<u8>,
-    /// Result of [`Kin::cull_row`]: positive for pairs that cannot touch.
-    gap: Vec<f64>,
     /// How many balls have a non-zero (or NaN) acceleration: with none (a frictionless
     /// scene), the cull drops the acceleration terms.
     accelerating: usize,
@@ -247,7 +245,6 @@ impl Kin {
             ay: z,
             until: vec![f64::INFINITY; n],
             live: vec![0; n],
-            gap: vec![0.0; n],
             accelerating: 0,
         }
     }
@@ -266,19 +263,16 @@ impl Kin {
         self.live[id] = u8::from(s.motion.is_moving()) | u8::from(s.motion.on_table()) << 1;
     }
 
-    /// The verdict of the last [`Kin::cull_row`] on ball `j` (a NaN gap keeps the pair).
-    fn may_touch(&self, j: BallId) -> bool {
-        self.gap[j].is_nan() || self.gap[j] <= 0.0
-    }
-
     /// For every ball `j`, whether balls `i` and `j` may touch between `t` and the earlier
     /// of their own next events: the test of [`detect::misses`] (with the real accelerations,
     /// which only widens it in the linear prediction mode) without branches, so that it
     /// vectorizes; conservative in every degenerate case (a NaN or infinite bound keeps the
     /// pair). Ball `i` must be moving: a resting ball is at rest from its segment's start.
-    fn cull_row(&mut self, i: BallId, t: f64, contact: f64) {
+    /// The verdicts go to `gap`, positive for pairs that cannot touch (a separate argument, so
+    /// the compiler knows it overlaps none of the columns read).
+    fn cull_row(&self, gap: &mut [f64], i: BallId, t: f64, contact: f64) {
         if self.accelerating == 0 {
-            return self.cull_row_straight(i, t, contact);
+            return self.cull_row_straight(gap, i, t, contact);
         }
         let ti = t - self.start[i];
         let (vxi, vyi) = (self.vx[i] + self.ax[i] * ti, self.vy[i] + self.ay[i] * ti);
@@ -290,9 +284,7 @@ impl Kin {
         let rows = self.start.iter().zip(self.px.iter().zip(&self.py));
         let rows = rows.zip(self.vx.iter().zip(&self.vy));
         let rows = rows.zip(self.ax.iter().zip(&self.ay).zip(&self.until));
-        for (gap, (((start, (px, py)), (vx, vy)), ((ax, ay), until))) in
-            self.gap.iter_mut().zip(rows)
-        {
+        for (gap, (((start, (px, py)), (vx, vy)), ((ax, ay), until))) in gap.iter_mut().zip(rows) {
             let tj = t - start;
             let (vxj, vyj) = (vx + ax * tj, vy + ay * tj);
             let (pxj, pyj) = (
@@ -320,14 +312,14 @@ impl Kin {
     /// [`Kin::cull_row`] when no ball accelerates: the same test without the acceleration
     /// terms (each is a zero; `bend` stays `0 h h`, NaN for an unbounded horizon, which keeps
     /// the pair as the general cull does).
-    fn cull_row_straight(&mut self, i: BallId, t: f64, contact: f64) {
+    fn cull_row_straight(&self, gap: &mut [f64], i: BallId, t: f64, contact: f64) {
         let ti = t - self.start[i];
         let (vxi, vyi) = (self.vx[i], self.vy[i]);
         let (pxi, pyi) = (self.px[i] + vxi * ti, self.py[i] + vyi * ti);
         let ui = self.until[i];
         let rows = self.start.iter().zip(self.px.iter().zip(&self.py));
         let rows = rows.zip(self.vx.iter().zip(&self.vy)).zip(&self.until);
-        for (gap, (((start, (px, py)), (vx, vy)), until)) in self.gap.iter_mut().zip(rows) {
+        for (gap, (((start, (px, py)), (vx, vy)), until)) in gap.iter_mut().zip(rows) {
             let tj = t - start;
             let (dpx, dpy) = (px + vx * tj - pxi, py + vy * tj - pyi);
             let (dvx, dvy) = (vx - vxi, vy - vyi);
@@ -391,6 +383,8 @@ pub struct Simulation {
     pairs: Vec<f64>,
     /// Single-cell scenes: every ball's segment for the pair culls (see [`Kin`]).
     kin: Kin,
+    /// Single-cell scenes: the verdicts of the last [`Kin::cull_row`].
+    gap: Vec<f64>,
     /// Scratch: balls whose pair with a touched ball changed in this event.
     affected: Vec<BallId>,
     /// For each ball, the balls whose cached event is a contact with it (may hold stale
@@ -457,6 +451,7 @@ impl Simulation {
             own: vec![None; segments.len()],
             pairs: Vec::new(),
             kin: Kin::default(),
+            gap: Vec::new(),
             affected: Vec::new(),
             dependents: vec![Vec::new(); segments.len()],
             stamps: vec![0; segments.len()],
@@ -927,6 +922,11 @@ impl Simulation {
         earlier(self.own[id], pair)
     }
 
+    /// The verdict of the last [`Kin::cull_row`] on ball `j` (a NaN gap keeps the pair).
+    fn may_touch(&self, j: BallId) -> bool {
+        self.gap[j].is_nan() || self.gap[j] <= 0.0
+    }
+
     /// Stores a pair's contact time in both halves of the table.
     fn set_pair(&mut self, i: BallId, j: BallId, time: f64) {
         let n = self.segments.len();
@@ -953,9 +953,9 @@ impl Simulation {
         let mut rows = [(f64::INFINITY, 0); 2];
         for (k, &id) in touched.iter().enumerate() {
             if self.kin.live[id] == 3 {
-                self.kin.cull_row(id, t, contact);
+                self.kin.cull_row(&mut self.gap, id, t, contact);
             } else {
-                self.kin.gap.fill(f64::NEG_INFINITY);
+                self.gap.fill(f64::NEG_INFINITY);
             }
             let (mut least, mut at) = (f64::INFINITY, 0);
             for base in (0..n).step_by(64) {
@@ -963,7 +963,7 @@ impl Simulation {
                 // them. Mark the others, 64 at a time in a tight loop (the row's later entries
                 // are not written while this block is worked through).
                 let end = n.min(base + 64);
-                let gaps = &self.kin.gap[base..end];
+                let gaps = &self.gap[base..end];
                 let row = &self.pairs[id * n + base..id * n + end];
                 let mut mask = 0u64;
                 for (b, (&g, &p)) in gaps.iter().zip(row).enumerate() {
@@ -980,7 +980,7 @@ impl Simulation {
                     let time = if touched[..k].contains(&j) {
                         self.pairs[id * n + j]
                     } else {
-                        let time = self.solve_pair(id, j, t, self.kin.may_touch(j));
+                        let time = self.solve_pair(id, j, t, self.may_touch(j));
                         if time != self.pairs[id * n + j] {
                             self.set_pair(id, j, time);
                             affected.push(j);
@@ -1164,18 +1164,19 @@ impl Simulation {
                 self.own[id] = self.predict_own(id, t);
             }
             self.kin = Kin::new(n);
+            self.gap = vec![0.0; n];
             for id in 0..n {
                 self.kin.set(id, &self.segments[id], self.own[id]);
             }
             let contact = 2.0 * self.params.ball.radius;
             for i in 0..n {
                 if self.kin.live[i] == 3 {
-                    self.kin.cull_row(i, t, contact);
+                    self.kin.cull_row(&mut self.gap, i, t, contact);
                 } else {
-                    self.kin.gap.fill(f64::NEG_INFINITY);
+                    self.gap.fill(f64::NEG_INFINITY);
                 }
                 for j in i + 1..n {
-                    let time = self.solve_pair(i, j, t, self.kin.may_touch(j));
+                    let time = self.solve_pair(i, j, t, self.may_touch(j));
                     self.set_pair(i, j, time);
                 }
             }
