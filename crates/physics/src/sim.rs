@@ -958,7 +958,8 @@ impl Simulation {
                 self.gap.fill(f64::NEG_INFINITY);
             }
             let (mut least, mut at) = (f64::INFINITY, 0);
-            for base in (0..n).step_by(64) {
+            let mut base = 0;
+            while base < n {
                 // Most pairs are culled and had no contact before either: nothing changes for
                 // them. Mark the others, 64 at a time in a tight loop (the row's later entries
                 // are not written while this block is worked through).
@@ -991,6 +992,7 @@ impl Simulation {
                         (least, at) = (time, j);
                     }
                 }
+                base = end;
             }
             if let Some(row) = rows.get_mut(k) {
                 *row = (least, at);
