@@ -14,6 +14,7 @@ use crate::table::{Cushion, Jaw, Opening, PocketShape, Table, TableError};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
+use std::hint::select_unpredictable;
 
 /// How far two balls may overlap, or a ball cross a cushion line, in a valid starting layout
 /// (metres): exactly touching layouts computed in floating point land within rounding of it.
@@ -794,9 +795,25 @@ impl Simulation {
             };
             // The position once for all four (what `cushion_contact` computes first).
             let p = seg.position_at(t + 0.0);
-            for c in Cushion::ALL {
+            // On a straight path the cushions ahead are one of each pair, picked by the signs
+            // of the velocity without a branch on them (which would be as good as random): the
+            // same ones as the test below, `n·v < 0`.
+            let straight = seg.straight && v.x.is_finite() && v.y.is_finite();
+            let ahead = [
+                (
+                    v.x != 0.0,
+                    select_unpredictable(v.x < 0.0, Cushion::Head, Cushion::Foot),
+                ),
+                (
+                    v.y != 0.0,
+                    select_unpredictable(v.y > 0.0, Cushion::Left, Cushion::Right),
+                ),
+            ];
+            let all = Cushion::ALL.map(|c| (true, c));
+            let cushions: &[(bool, Cushion)] = if straight { &ahead } else { &all };
+            for &(searched, c) in cushions {
                 let n = c.inward_normal();
-                if n.dot(v) >= 0.0 && (seg.straight || n.dot(a) >= 0.0) {
+                if !searched || (n.dot(v) >= 0.0 && (seg.straight || n.dot(a) >= 0.0)) {
                     continue;
                 }
                 let limit = self.cushion_limit(c);
