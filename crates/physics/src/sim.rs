@@ -608,7 +608,7 @@ impl Simulation {
         };
         self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v, w);
         self.record(EventKind::Strike { ball: id, shot });
-        self.repredict(&[id]);
+        self.repredict([id]);
         Ok(())
     }
 
@@ -657,7 +657,7 @@ impl Simulation {
         }
         self.segments[id] = motion::segment_from(&self.params, self.time, position, velocity, spin);
         self.record(EventKind::Placed { ball: id });
-        self.repredict(&[id]);
+        self.repredict([id]);
         Ok(())
     }
 
@@ -954,7 +954,7 @@ impl Simulation {
     /// Single-cell scenes: re-solves the own events of the touched balls and every pair
     /// containing one of them, then updates the best of the touched balls and of every ball
     /// whose pair with one of them changed.
-    fn repredict_pairs(&mut self, touched: &[BallId]) {
+    fn repredict_pairs<const N: usize>(&mut self, touched: &[BallId; N]) {
         let t = self.time;
         let n = self.segments.len();
         for &id in touched {
@@ -967,7 +967,7 @@ impl Simulation {
         // Each touched ball's earliest pair, found while its row is worked through: entries
         // left out are infinite (culled, and no contact before), and scanning partners in
         // ascending order with a strict comparison picks the same pair as `best_of_row`.
-        let mut rows = [(f64::INFINITY, 0); 2];
+        let mut rows = [(f64::INFINITY, 0); N];
         for (k, &id) in touched.iter().enumerate() {
             if self.kin.live[id] == 3 {
                 self.kin.cull_row(&mut self.gap, id, t, contact);
@@ -988,12 +988,13 @@ impl Simulation {
                     let skip = (g > 0.0) & (p == f64::INFINITY);
                     mask |= u64::from(!skip) << b;
                 }
+                // Not the ball with itself (its gap is negative).
+                if (base..end).contains(&id) {
+                    mask &= !(1 << (id - base));
+                }
                 while mask != 0 {
                     let j = base + mask.trailing_zeros() as usize;
                     mask &= mask - 1;
-                    if j == id {
-                        continue;
-                    }
                     // A pair of two touched balls is solved once.
                     let time = if touched[..k].contains(&j) {
                         self.pairs[id * n + j]
@@ -1011,23 +1012,14 @@ impl Simulation {
                 }
                 base = end;
             }
-            if let Some(row) = rows.get_mut(k) {
-                *row = (least, at);
-            }
+            rows[k] = (least, at);
         }
-        for (k, &id) in touched.iter().enumerate() {
-            // (An event touches at most two balls; any more would take their best from the
-            // table.)
-            let p = match rows.get(k) {
-                Some(&(least, at)) => {
-                    let pair = (least < f64::INFINITY).then(|| Pending {
-                        time: least,
-                        kind: PendingKind::Pair(id.min(at), id.max(at)),
-                    });
-                    earlier(self.own[id], pair)
-                }
-                None => self.best_of_row(id),
-            };
+        for (&id, &(least, at)) in touched.iter().zip(&rows) {
+            let pair = (least < f64::INFINITY).then(|| Pending {
+                time: least,
+                kind: PendingKind::Pair(id.min(at), id.max(at)),
+            });
+            let p = earlier(self.own[id], pair);
             debug_assert_eq!(p, self.best_of_row(id));
             self.cache.set(id, p, rank(p));
         }
@@ -1224,20 +1216,22 @@ impl Simulation {
 
     /// Re-predicts the balls an event changed, and every ball whose cached event was a contact
     /// with one of them; all other predictions stay valid.
-    fn repredict(&mut self, touched: &[BallId]) {
+    /// `N` (one or two balls) is a constant, so that every loop over the touched balls is
+    /// unrolled rather than a branch on how many there are.
+    fn repredict<const N: usize>(&mut self, touched: [BallId; N]) {
         if !self.grid.is_split() {
-            return self.repredict_pairs(touched);
+            return self.repredict_pairs(&touched);
         }
         let t = self.time;
         self.round += 1;
-        for &id in touched {
+        for id in touched {
             let on_table = self.segments[id].state.motion.on_table();
             self.grid
                 .set(id, on_table.then(|| self.segments[id].state.position));
             let p = self.predict(id, t);
             self.set_cache(id, p);
         }
-        for &id in touched {
+        for id in touched {
             for m in std::mem::take(&mut self.dependents[id]) {
                 let stale = self.cache.get(m).is_some_and(|p| p.involves(id));
                 if !stale {
@@ -1295,14 +1289,14 @@ impl Simulation {
                 self.segments[id] = motion::after_transition(&self.params, &self.segments[id]);
                 let to = self.segments[id].state.motion;
                 self.record(EventKind::Transition { ball: id, from, to });
-                self.repredict(&[id]);
+                self.repredict([id]);
             }
             PendingKind::Opening(id, k) => {
                 let s = self.segments[id].state_at(t);
                 let pocket = self.openings[k].pocket;
                 self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
                 self.record(EventKind::Pocketed { ball: id, pocket });
-                self.repredict(&[id]);
+                self.repredict([id]);
             }
             PendingKind::Jaw(id, k) => {
                 let s = self.segments[id].state_at(t);
@@ -1317,7 +1311,7 @@ impl Simulation {
                     ball: id,
                     pocket: jaw.pocket,
                 });
-                self.repredict(&[id]);
+                self.repredict([id]);
             }
             PendingKind::Cushion(id, cushion) => {
                 let s = self.segments[id].state_at(t);
@@ -1337,7 +1331,7 @@ impl Simulation {
                     self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
                     self.record(EventKind::Cushion { ball: id, cushion });
                 }
-                self.repredict(&[id]);
+                self.repredict([id]);
             }
             PendingKind::Pair(a, b) => {
                 let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
@@ -1451,7 +1445,7 @@ impl Simulation {
                     nb.angular_velocity,
                 );
                 self.record(EventKind::BallBall { a, b });
-                self.repredict(&[a, b]);
+                self.repredict([a, b]);
             }
         }
     }
