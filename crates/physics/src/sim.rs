@@ -311,13 +311,16 @@ impl Kin {
     }
 
     /// [`Kin::cull_row`] when no ball accelerates: the same test without the acceleration
-    /// terms (each is a zero; `bend` stays `0 h h`, NaN for an unbounded horizon, which keeps
-    /// the pair as the general cull does).
+    /// terms (each is a zero, and `bend` is `0 h h`: zero, or NaN for an unbounded horizon,
+    /// which keeps the pair as the general cull does).
     fn cull_row_straight(&self, gap: &mut [f64], i: BallId, t: f64, contact: f64) {
         let ti = t - self.start[i];
         let (vxi, vyi) = (self.vx[i], self.vy[i]);
         let (pxi, pyi) = (self.px[i] + vxi * ti, self.py[i] + vyi * ti);
         let ui = self.until[i];
+        // `reach` of the general cull with `bend` zero, squared, once for the row.
+        let reach = contact * (1.0 + 1e-9) + 1e-9;
+        let reach2 = reach * reach;
         let rows = self.start.iter().zip(self.px.iter().zip(&self.py));
         let rows = rows.zip(self.vx.iter().zip(&self.vy)).zip(&self.until);
         for (gap, (((start, (px, py)), (vx, vy)), until)) in gap.iter_mut().zip(rows) {
@@ -331,9 +334,10 @@ impl Kin {
             let tau = if tau < h { tau } else { h };
             let tau = if tau > 0.0 { tau } else { 0.0 };
             let (cx, cy) = (dpx + dvx * tau, dpy + dvy * tau);
-            let bend = 0.0 * h * h;
-            let reach = (contact + bend) * (1.0 + 1e-9) + 1e-9;
-            *gap = cx * cx + cy * cy - (reach * reach + 1e-12 * (dpx * dpx + dpy * dpy));
+            // NaN for an unbounded horizon (keeps the pair, as `0 h h` does in the general
+            // cull); zero otherwise, leaving `reach2` as it is.
+            let unbounded = 0.0 * h;
+            *gap = cx * cx + cy * cy - ((reach2 + unbounded) + 1e-12 * (dpx * dpx + dpy * dpy));
         }
     }
 }
