@@ -910,7 +910,8 @@ impl Simulation {
         let h = k.until[i].min(k.until[j]) - t;
         let (si, sj) = (&self.segments[i], &self.segments[j]);
         let r = self.params.ball.radius;
-        detect::ball_ball(si, sj, t, r, h, self.kinematics()).map_or(f64::INFINITY, |tau| t + tau)
+        detect::ball_ball_kept(si, sj, t, r, h, self.kinematics())
+            .map_or(f64::INFINITY, |tau| t + tau)
     }
 
     /// Ball `id`'s earliest event from the pair table and its own events. Scanning partners in

@@ -33,6 +33,43 @@ pub fn ball_ball(
     if misses(dp, dv, da, contact, horizon) {
         return None;
     }
+    reachable_contact(a, b, t, (dp, dv, da), contact, horizon)
+}
+
+/// [`ball_ball`] for a pair that [`misses`] has kept already (the batched cull of a
+/// single-cell scene makes the same test): the reach and sweep culls, then the quartic.
+pub fn ball_ball_kept(
+    a: &Segment,
+    b: &Segment,
+    t: f64,
+    radius: f64,
+    horizon: f64,
+    kin: Kinematics,
+) -> Option<f64> {
+    if !a.state.motion.is_moving() && !b.state.motion.is_moving() {
+        return None;
+    }
+    let dp = b.position_at(t) - a.position_at(t);
+    let dv = b.velocity_at(t) - a.velocity_at(t);
+    let da = match kin {
+        Kinematics::Exact => b.acceleration - a.acceleration,
+        Kinematics::Linear => Vec2::ZERO,
+    };
+    reachable_contact(a, b, t, (dp, dv, da), 2.0 * radius, horizon)
+}
+
+/// The reach and sweep culls of [`ball_ball`], then the contact quartic, for relative
+/// position, velocity and acceleration `(dp, dv, da)` at `t`.
+#[inline]
+fn reachable_contact(
+    a: &Segment,
+    b: &Segment,
+    t: f64,
+    (dp, dv, da): (Vec2, Vec2, Vec2),
+    contact: f64,
+    horizon: f64,
+) -> Option<f64> {
+    let (ma, mb) = (a.state.motion.is_moving(), b.state.motion.is_moving());
     let (ra, rb) = (a.reach(t, horizon), b.reach(t, horizon));
     // Margin covers rounding in the reach bound itself.
     let reach = (ra + rb) * (1.0 + 1e-12) + 1e-12 + contact;

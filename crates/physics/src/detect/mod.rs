@@ -4,7 +4,7 @@
 mod ball_ball;
 mod ball_cushion;
 
-pub use ball_ball::{ball_ball, ball_jaw, misses};
+pub use ball_ball::{ball_ball, ball_ball_kept, ball_jaw, misses};
 pub use ball_cushion::{ball_cushion, ball_line, line_contact};
 
 /// Approach speed (m/s) below which touching bodies count as resting against each other rather
