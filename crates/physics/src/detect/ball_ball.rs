@@ -19,16 +19,7 @@ pub fn ball_ball(
     horizon: f64,
     kin: Kinematics,
 ) -> Option<f64> {
-    let (ma, mb) = (a.state.motion.is_moving(), b.state.motion.is_moving());
-    if !ma && !mb {
-        return None;
-    }
-    let dp = b.position_at(t) - a.position_at(t);
-    let dv = b.velocity_at(t) - a.velocity_at(t);
-    let da = match kin {
-        Kinematics::Exact => b.acceleration - a.acceleration,
-        Kinematics::Linear => Vec2::ZERO,
-    };
+    let (dp, dv, da) = relative(a, b, t, kin)?;
     let contact = 2.0 * radius;
     if misses(dp, dv, da, contact, horizon) {
         return None;
@@ -46,6 +37,14 @@ pub fn ball_ball_kept(
     horizon: f64,
     kin: Kinematics,
 ) -> Option<f64> {
+    let rel = relative(a, b, t, kin)?;
+    reachable_contact(a, b, t, rel, 2.0 * radius, horizon)
+}
+
+/// Position, velocity and acceleration (as the kinematics predict it) of `b` relative to
+/// `a` at `t`; `None` when neither moves.
+#[inline]
+fn relative(a: &Segment, b: &Segment, t: f64, kin: Kinematics) -> Option<(Vec2, Vec2, Vec2)> {
     if !a.state.motion.is_moving() && !b.state.motion.is_moving() {
         return None;
     }
@@ -55,7 +54,7 @@ pub fn ball_ball_kept(
         Kinematics::Exact => b.acceleration - a.acceleration,
         Kinematics::Linear => Vec2::ZERO,
     };
-    reachable_contact(a, b, t, (dp, dv, da), 2.0 * radius, horizon)
+    Some((dp, dv, da))
 }
 
 /// The reach and sweep culls of [`ball_ball`], then the contact quartic, for relative
