@@ -24,7 +24,7 @@ use std::{
     path::{Path, PathBuf},
     sync::{
         Arc,
-        atomic::{AtomicUsize, Ordering},
+        atomic::{AtomicBool, AtomicUsize, Ordering},
     },
     thread::JoinHandle,
 };
@@ -136,6 +136,9 @@ pub enum ReplayCommand {
     Verify,
     /// Start an export on a background thread ([`Replay::export`]).
     Export(ExportRequest),
+    /// Stop the running export after the frame it is on (a GIF is then not written; the PNG
+    /// frames written so far stay).
+    CancelExport,
 }
 
 /// What an export writes.
@@ -419,6 +422,8 @@ pub struct ExportJob {
     pub target: PathBuf,
     done: Arc<AtomicUsize>,
     total: Arc<AtomicUsize>,
+    /// Set to stop the export after its current frame.
+    cancel: Arc<AtomicBool>,
     handle: JoinHandle<Result<usize, String>>,
 }
 
@@ -624,6 +629,11 @@ fn apply_command(world: &mut World, command: ReplayCommand) -> bool {
         }
         ReplayCommand::Verify => replay.verdict = Some(open.recording.verify()),
         ReplayCommand::Export(request) => start_export(replay, request),
+        ReplayCommand::CancelExport => {
+            if let Some(job) = &replay.export {
+                job.cancel.store(true, Ordering::Relaxed);
+            }
+        }
     }
     false
 }
@@ -801,7 +811,9 @@ fn start_export(replay: &mut Replay, request: ExportRequest) {
     let recording = Arc::clone(&open.recording);
     let done = Arc::new(AtomicUsize::new(0));
     let total = Arc::new(AtomicUsize::new(0));
+    let cancel = Arc::new(AtomicBool::new(false));
     let (thread_done, thread_total, out) = (done.clone(), total.clone(), target.clone());
+    let thread_cancel = cancel.clone();
     let format = request.format;
     let spawned = std::thread::Builder::new()
         .name("replay export".to_owned())
@@ -809,6 +821,11 @@ fn start_export(replay: &mut Replay, request: ExportRequest) {
             let mut progress = |frames_done: usize, frames: usize| {
                 thread_total.store(frames, Ordering::Relaxed);
                 thread_done.store(frames_done, Ordering::Relaxed);
+                if thread_cancel.load(Ordering::Relaxed) {
+                    std::ops::ControlFlow::Break(())
+                } else {
+                    std::ops::ControlFlow::Continue(())
+                }
             };
             match format {
                 ExportFormat::Gif => export::gif(&recording, &options, &out, &mut progress),
@@ -824,6 +841,7 @@ fn start_export(replay: &mut Replay, request: ExportRequest) {
                 target,
                 done,
                 total,
+                cancel,
                 handle,
             });
             replay.export_result = None;

@@ -444,6 +444,49 @@ fn the_command_line_file_opens_once_the_table_is_racked() {
 }
 
 #[test]
+fn a_cancelled_export_stops_and_leaves_no_gif() {
+    let (mut app, file) = played_game("export-cancel");
+    command(&mut app, ReplayCommand::Open(file.clone()));
+    command(&mut app, ReplayCommand::Pause);
+    let out = file.with_file_name("whole.gif");
+    // Hundreds of large frames: far longer than the few frames before the cancel is seen.
+    command(
+        &mut app,
+        ReplayCommand::Export(ExportRequest {
+            format: ExportFormat::Gif,
+            scope: ExportScope::WholeGame,
+            fps: 60.0,
+            width: 1280,
+            height: 720,
+            path: Some(out.clone()),
+        }),
+    );
+    assert!(app.world().resource::<Replay>().export.is_some());
+    command(&mut app, ReplayCommand::CancelExport);
+    let mut finished = None;
+    for _ in 0..2_000 {
+        app.update();
+        let replay = app.world().resource::<Replay>();
+        if replay.export.is_none() {
+            finished = replay.export_result.clone();
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    let error = finished.expect("the export ended").unwrap_err();
+    assert!(error.contains("cancelled after"), "{error}");
+    let left: Vec<_> = std::fs::read_dir(file.parent().unwrap())
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|name| name.contains("whole"))
+        .collect();
+    assert!(left.is_empty(), "left behind: {left:?}");
+    // Left behind when the test fails, for a look.
+    let _ = std::fs::remove_dir_all(file.parent().unwrap());
+}
+
+#[test]
 fn an_export_runs_in_the_background_and_reports_its_frames() {
     let (mut app, file) = played_game("export");
     command(&mut app, ReplayCommand::Open(file.clone()));

@@ -358,10 +358,15 @@ fn export_form(
         );
     });
     let running = replay.export.is_some();
-    if ui
-        .add_enabled(!running, egui::Button::new("Export"))
-        .clicked()
-    {
+    if running {
+        if ui
+            .button("Cancel export")
+            .on_hover_text("stop after the current frame: a GIF is not written, PNGs so far stay")
+            .clicked()
+        {
+            commands.write(ReplayCommand::CancelExport);
+        }
+    } else if ui.button("Export").clicked() {
         let path = form.export_path.trim();
         commands.write(ReplayCommand::Export(ExportRequest {
             format: form.format,

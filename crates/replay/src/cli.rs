@@ -430,6 +430,7 @@ fn export_cmd(a: ExportArgs) -> Result<(), String> {
     let mut progress = |done: usize, total: usize| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
+        std::ops::ControlFlow::Continue(())
     };
     if let Some(out) = &a.gif {
         let n = export::gif(&rec, &opts, out, &mut progress).map_err(|e| e.to_string())?;

@@ -4,8 +4,13 @@
 
 use crate::render::{self, Frame};
 use billiards_physics::recording::Recording;
-use std::io::BufWriter;
+use std::io::{BufWriter, Write};
+use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
+
+/// Told (frames done, frames in all) after each frame; `ControlFlow::Break` cancels the
+/// export.
+pub type Progress<'a> = &'a mut dyn FnMut(usize, usize) -> ControlFlow<()>;
 
 /// What to export.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -31,6 +36,9 @@ pub enum ExportError {
     Io(PathBuf, std::io::Error),
     /// The encoder failed.
     Encode(String),
+    /// Cancelled after this many frames (a GIF is then not written at all; the PNG frames
+    /// written so far stay).
+    Cancelled(usize),
 }
 
 impl std::fmt::Display for ExportError {
@@ -40,6 +48,7 @@ impl std::fmt::Display for ExportError {
             ExportError::Recording(s) => write!(f, "recording: {s}"),
             ExportError::Io(p, e) => write!(f, "{}: {e}", p.display()),
             ExportError::Encode(s) => write!(f, "encoding: {s}"),
+            ExportError::Cancelled(done) => write!(f, "cancelled after {done} frames"),
         }
     }
 }
@@ -107,26 +116,28 @@ impl<'a> Prepared<'a> {
     }
 
     /// Renders the frames one at a time into `sink` (so a long export never holds them all),
-    /// calling `progress` with (done, total) after each.
+    /// calling `progress` with (done, total) after each and stopping when it says so.
     fn each(
         &self,
-        progress: &mut dyn FnMut(usize, usize),
+        progress: Progress,
         mut sink: impl FnMut(usize, Frame) -> Result<(), ExportError>,
     ) -> Result<usize, ExportError> {
         for k in 0..self.count {
             sink(k, self.frame(k))?;
-            progress(k + 1, self.count);
+            if progress(k + 1, self.count).is_break() {
+                return Err(ExportError::Cancelled(k + 1));
+            }
         }
         Ok(self.count)
     }
 }
 
 /// The frames of an export, each sampled exactly from the recording's history; `progress`
-/// is called with (done, total).
+/// is told (done, total) and may cancel.
 pub fn frames(
     rec: &Recording,
     opts: &ExportOptions,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: Progress,
 ) -> Result<Vec<Frame>, ExportError> {
     let prepared = Prepared::new(rec, opts)?;
     let mut frames = Vec::with_capacity(prepared.count);
@@ -137,16 +148,39 @@ pub fn frames(
     Ok(frames)
 }
 
-/// Writes an animated GIF, encoding each frame as soon as it is rendered.
+/// Writes an animated GIF, encoding each frame as soon as it is rendered. The frames go to a
+/// temporary file next to `out`, renamed over it once complete: a failed or cancelled export
+/// leaves no truncated GIF (and an earlier file at `out` untouched).
 pub fn gif(
     rec: &Recording,
     opts: &ExportOptions,
     out: &Path,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: Progress,
 ) -> Result<usize, ExportError> {
     let prepared = Prepared::new(rec, opts)?;
-    let io = |e| ExportError::Io(out.to_path_buf(), e);
-    let file = std::fs::File::create(out).map_err(io)?;
+    let name = out
+        .file_name()
+        .map_or_else(|| "export.gif".into(), |n| n.to_string_lossy().into_owned());
+    let part = out.with_file_name(format!(".{name}.part"));
+    let written = write_gif(&prepared, opts, &part, progress).and_then(|n| {
+        std::fs::rename(&part, out).map_err(|e| ExportError::Io(out.to_path_buf(), e))?;
+        Ok(n)
+    });
+    if written.is_err() {
+        // Nothing to keep of a partial file; it may not even exist.
+        std::fs::remove_file(&part).ok();
+    }
+    written
+}
+
+fn write_gif(
+    prepared: &Prepared,
+    opts: &ExportOptions,
+    path: &Path,
+    progress: Progress,
+) -> Result<usize, ExportError> {
+    let io = |e| ExportError::Io(path.to_path_buf(), e);
+    let file = std::fs::File::create(path).map_err(io)?;
     let (w, h) = (opts.width as u16, opts.height as u16);
     let mut enc = gif::Encoder::new(BufWriter::new(file), w, h, &[])
         .map_err(|e| ExportError::Encode(e.to_string()))?;
@@ -154,12 +188,19 @@ pub fn gif(
         .map_err(|e| ExportError::Encode(e.to_string()))?;
     // GIF delays are in hundredths of a second.
     let delay = (100.0 / opts.fps).round().max(1.0) as u16;
-    prepared.each(progress, |_, f| {
+    let n = prepared.each(progress, |_, f| {
         let mut frame = gif::Frame::from_rgb_speed(w, h, &f.rgb, 10);
         frame.delay = delay;
         enc.write_frame(&frame)
             .map_err(|e| ExportError::Encode(e.to_string()))
-    })
+    })?;
+    // The trailer, then every byte on disk before the rename.
+    let mut file = enc
+        .into_inner()
+        .map_err(|e| ExportError::Encode(e.to_string()))?;
+    file.flush().map_err(io)?;
+    file.get_ref().sync_all().map_err(io)?;
+    Ok(n)
 }
 
 /// Writes `frame_00000.png`, `frame_00001.png`, ... into `dir`, each as soon as it is
@@ -168,7 +209,7 @@ pub fn png_sequence(
     rec: &Recording,
     opts: &ExportOptions,
     dir: &Path,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: Progress,
 ) -> Result<usize, ExportError> {
     let prepared = Prepared::new(rec, opts)?;
     std::fs::create_dir_all(dir).map_err(|e| ExportError::Io(dir.to_path_buf(), e))?;
