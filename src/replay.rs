@@ -132,7 +132,8 @@ pub enum ReplayCommand {
     NextShot,
     /// Go to the last strike before the replay time.
     PreviousShot,
-    /// Re-simulate the recording and compare bit for bit ([`Replay::verdict`]).
+    /// Re-simulate the recording on a background thread and compare bit for bit
+    /// ([`Replay::verdict`] once done; [`Replay::verifying`] meanwhile).
     Verify,
     /// Start an export on a background thread ([`Replay::export`]).
     Export(ExportRequest),
@@ -471,6 +472,9 @@ pub struct Replay {
     pub error: Option<String>,
     /// The last verification of the open recording.
     pub verdict: Option<Result<Verdict, String>>,
+    /// A verification running on its own thread (a long recording takes a while to
+    /// re-simulate; the window stays responsive).
+    pub verifying: Option<VerifyJob>,
     /// The export in progress.
     pub export: Option<ExportJob>,
     /// How the last export ended: what was written, or why not.
@@ -487,6 +491,7 @@ impl Default for Replay {
             speed: 1.0,
             error: None,
             verdict: None,
+            verifying: None,
             export: None,
             export_result: None,
             shelf: Vec::new(),
@@ -537,6 +542,7 @@ fn apply_replay(world: &mut World) {
     let dt = world.resource::<Time<Real>>().delta_secs_f64();
     let busy = world.resource_scope(|world, mut replay: Mut<Replay>| {
         finish_export(&mut replay);
+        finish_verify(&mut replay);
         if let Some(open) = &replay.open {
             let end = open.end_time;
             if replay.playing && !moved {
@@ -552,7 +558,7 @@ fn apply_replay(world: &mut World) {
                 show_state(world, entity, &open.history.state_at(id, replay.time));
             }
         }
-        replay.playing || replay.export.is_some()
+        replay.playing || replay.export.is_some() || replay.verifying.is_some()
     });
     if busy {
         world.write_message(RequestRedraw);
@@ -627,7 +633,7 @@ fn apply_command(world: &mut World, command: ReplayCommand) -> bool {
             replay.time = jump(open.previous_shot_time(time));
             return true;
         }
-        ReplayCommand::Verify => replay.verdict = Some(open.recording.verify()),
+        ReplayCommand::Verify => start_verify(replay),
         ReplayCommand::Export(request) => start_export(replay, request),
         ReplayCommand::CancelExport => {
             if let Some(job) = &replay.export {
@@ -847,6 +853,58 @@ fn start_export(replay: &mut Replay, request: ExportRequest) {
             replay.export_result = None;
         }
         Err(error) => replay.export_result = Some(Err(format!("export not started: {error}"))),
+    }
+}
+
+/// A verification of a recording running on its own thread.
+#[derive(Debug)]
+pub struct VerifyJob {
+    /// The recording it re-simulates (its verdict is dropped if another one is open by then).
+    recording: Arc<Recording>,
+    handle: JoinHandle<Result<Verdict, String>>,
+}
+
+fn start_verify(replay: &mut Replay) {
+    let Some(open) = &replay.open else { return };
+    if replay.verifying.is_some() {
+        return;
+    }
+    let recording = Arc::clone(&open.recording);
+    let thread_recording = Arc::clone(&recording);
+    let spawned = std::thread::Builder::new()
+        .name("replay verify".to_owned())
+        .spawn(move || thread_recording.verify());
+    match spawned {
+        Ok(handle) => {
+            replay.verdict = None;
+            replay.verifying = Some(VerifyJob { recording, handle });
+        }
+        Err(error) => replay.verdict = Some(Err(format!("verification not started: {error}"))),
+    }
+}
+
+/// Collects a finished verification's verdict, if it is still about the open recording.
+fn finish_verify(replay: &mut Replay) {
+    if !replay
+        .verifying
+        .as_ref()
+        .is_some_and(|job| job.handle.is_finished())
+    {
+        return;
+    }
+    let Some(job) = replay.verifying.take() else {
+        return;
+    };
+    let verdict = job
+        .handle
+        .join()
+        .unwrap_or_else(|_| Err("the verification thread panicked".to_owned()));
+    if replay
+        .open
+        .as_ref()
+        .is_some_and(|open| Arc::ptr_eq(&open.recording, &job.recording))
+    {
+        replay.verdict = Some(verdict);
     }
 }
 

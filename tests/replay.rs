@@ -377,10 +377,20 @@ fn another_ball_count_gets_its_own_balls_and_the_live_ones_come_back() {
         assert_eq!(position, DVec2::new(s.position.x, s.position.y));
     }
 
-    // Verify re-simulates the recording.
+    // Verify re-simulates the recording, on its own thread.
     command(&mut app, ReplayCommand::Verify);
+    for _ in 0..2_000 {
+        if app.world().resource::<Replay>().verifying.is_none() {
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(5));
+        app.update();
+    }
     let replay = app.world().resource::<Replay>();
-    let verdict = replay.verdict.clone().unwrap();
+    let verdict = replay
+        .verdict
+        .clone()
+        .expect("a verdict once the thread is done");
     assert!(
         matches!(verdict, Ok(Verdict::Reproduced { events }) if events == recording.events.len())
     );

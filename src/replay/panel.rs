@@ -288,13 +288,16 @@ fn timeline(
     };
     ui.horizontal(|ui| {
         if ui
-            .button("Verify")
+            .add_enabled(replay.verifying.is_none(), egui::Button::new("Verify"))
             .on_hover_text("re-simulate the inputs and compare every event bit for bit")
             .clicked()
         {
             commands.write(ReplayCommand::Verify);
         }
-        if let Some(verdict) = &replay.verdict {
+        if replay.verifying.is_some() {
+            ui.spinner();
+            ui.label("re-simulating…");
+        } else if let Some(verdict) = &replay.verdict {
             let colour = if matches!(
                 verdict,
                 Ok(billiards_physics::recording::Verdict::Reproduced { .. })
