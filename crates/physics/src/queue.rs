@@ -58,8 +58,7 @@ impl<K: Copy> Tournament<K> {
         // stop (when the winner above is unchanged) would save.
         while node > 1 {
             let other = self.nodes[node ^ 1];
-            // Ties go to the left child. Slots below a node's left child are lower than those below its right child, so
-            // "ties go left" is "the lower (rank, slot) wins".
+            // Ties go to the left child, whose slots are all lower: the lower (rank, slot) wins.
             best = std::hint::select_unpredictable(other < best, other, best);
             node /= 2;
             self.nodes[node] = best;

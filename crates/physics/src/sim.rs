@@ -787,39 +787,35 @@ impl Simulation {
             kind: PendingKind::Transition(id),
         });
         if seg.state.motion.is_moving() {
-            // The first test of `detect::ball_line`, made once for all four cushions: one the
-            // ball moves away from, never turning back, has no contact, and is skipped before
-            // any position or root is computed (the same values: `cushion_contact` starts at
-            // `t + 0.0`). A ball decelerating along its velocity stops before it could turn
-            // back (`Segment::straight`): only the cushions ahead of it are searched.
+            // The ball's state once for all four cushions (`cushion_contact` starts at `t + 0.0`
+            // too); `line_contact` skips a cushion the ball leaves for good before any root.
             let v = seg.velocity_at(t + 0.0);
             let a = match kin {
                 Kinematics::Exact => seg.acceleration,
                 Kinematics::Linear => Vec2::ZERO,
             };
-            // The position once for all four (what `cushion_contact` computes first).
             let p = seg.position_at(t + 0.0);
-            // On a straight path the cushions ahead are one of each pair, picked by the signs
-            // of the velocity without a branch on them (which would be as good as random): the
-            // same ones as the test below, `n·v < 0`.
-            let straight = seg.straight && v.x.is_finite() && v.y.is_finite();
+            // A ball decelerating along its velocity stops before it could turn back
+            // (`Segment::straight`): only the cushion of each pair ahead of it (`n·v < 0`) is
+            // searched, picked by the signs of the velocity without a branch on them (which
+            // would be as good as random).
             let ahead = [
-                (
-                    v.x != 0.0,
-                    select_unpredictable(v.x < 0.0, Cushion::Head, Cushion::Foot),
-                ),
-                (
-                    v.y != 0.0,
-                    select_unpredictable(v.y > 0.0, Cushion::Left, Cushion::Right),
-                ),
+                (v.x != 0.0).then_some(select_unpredictable(
+                    v.x < 0.0,
+                    Cushion::Head,
+                    Cushion::Foot,
+                )),
+                (v.y != 0.0).then_some(select_unpredictable(
+                    v.y > 0.0,
+                    Cushion::Left,
+                    Cushion::Right,
+                )),
             ];
-            let all = Cushion::ALL.map(|c| (true, c));
-            let cushions: &[(bool, Cushion)] = if straight { &ahead } else { &all };
-            for &(searched, c) in cushions {
+            let all = Cushion::ALL.map(Some);
+            let straight = seg.straight && v.x.is_finite() && v.y.is_finite();
+            let cushions: &[Option<Cushion>] = if straight { &ahead } else { &all };
+            for &c in cushions.iter().flatten() {
                 let n = c.inward_normal();
-                if !searched || (n.dot(v) >= 0.0 && (seg.straight || n.dot(a) >= 0.0)) {
-                    continue;
-                }
                 let limit = self.cushion_limit(c);
                 let tau = match detect::line_contact(p, v, a, n, limit, horizon) {
                     None => continue,
