@@ -885,14 +885,7 @@ fn start_verify(replay: &mut Replay) {
 
 /// Collects a finished verification's verdict, if it is still about the open recording.
 fn finish_verify(replay: &mut Replay) {
-    if !replay
-        .verifying
-        .as_ref()
-        .is_some_and(|job| job.handle.is_finished())
-    {
-        return;
-    }
-    let Some(job) = replay.verifying.take() else {
+    let Some(job) = replay.verifying.take_if(|job| job.handle.is_finished()) else {
         return;
     };
     let verdict = job
@@ -910,14 +903,7 @@ fn finish_verify(replay: &mut Replay) {
 
 /// Collects a finished export's outcome.
 fn finish_export(replay: &mut Replay) {
-    if !replay
-        .export
-        .as_ref()
-        .is_some_and(|job| job.handle.is_finished())
-    {
-        return;
-    }
-    let Some(job) = replay.export.take() else {
+    let Some(job) = replay.export.take_if(|job| job.handle.is_finished()) else {
         return;
     };
     let result = job
