@@ -199,6 +199,17 @@ fn rolling(
     Segment::new(start, state, a, alpha, end)
 }
 
+/// The segment a ball on `seg` continues on from `t` when the parameters become `params`: a
+/// moving or spinning ball goes on from its state at `t` under the new ones; a ball at rest
+/// (or pocketed) keeps its segment.
+pub fn under_new_params(params: &Params, t: f64, seg: &Segment) -> Segment {
+    if !seg.state.motion.on_table() || seg.state.motion.is_at_rest() {
+        return *seg;
+    }
+    let s = seg.state_at(t);
+    segment_from(params, t, s.position, s.velocity, s.angular_velocity)
+}
+
 /// The segment after `seg` reaches its end by itself. The new motion state is set explicitly,
 /// never re-derived from the velocities, so a transition cannot fire again at the same
 /// instant: sliding turns to rolling (paper: at exactly the threshold speed), rolling stops

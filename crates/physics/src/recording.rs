@@ -206,37 +206,28 @@ impl Recording {
     /// any instant can be sampled exactly with [`History::states_at`].
     pub fn history(&self) -> Result<History, String> {
         let sim = self.start().map_err(|e| format!("setup: {e}"))?;
-        let mut segments: Vec<Segment> = (0..sim.ball_count()).map(|i| *sim.segment(i)).collect();
-        let mut history = History::new(&segments, self.params);
-        let mut params = self.params;
+        let initial: Vec<Segment> = (0..sim.ball_count()).map(|i| *sim.segment(i)).collect();
+        let mut history = History::new(&initial, self.params);
         let mut param_changes = self.inputs.iter().filter_map(|i| match i.action {
             Action::SetParams { params } => Some(params),
             _ => None,
         });
         for e in &self.events {
             if e.kind == EventKind::ParamsChanged {
-                params = param_changes
+                let params = param_changes
                     .next()
                     .ok_or("a parameter change has no recorded parameters")?;
-                for seg in &mut segments {
-                    if seg.state.motion.on_table() && !seg.state.motion.is_at_rest() {
-                        let s = seg.state_at(e.time);
-                        *seg = motion::segment_from(
-                            &params,
-                            e.time,
-                            s.position,
-                            s.velocity,
-                            s.angular_velocity,
-                        );
-                    }
-                }
+                // Every ball continues from where its segment so far has taken it.
+                let segments: Vec<Segment> = (0..history.ball_count())
+                    .map(|id| {
+                        let seg = history.segment(id, history.track_len(id) - 1);
+                        motion::under_new_params(&params, e.time, &seg)
+                    })
+                    .collect();
                 history.push_all(*e, &segments, params);
-                continue;
+            } else {
+                history.push(*e);
             }
-            for (id, state) in e.states_after() {
-                segments[id] = motion::segment_with_motion(&params, e.time, state);
-            }
-            history.push(*e);
         }
         Ok(history)
     }

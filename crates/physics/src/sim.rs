@@ -683,16 +683,7 @@ impl Simulation {
         }
         self.params = params;
         for seg in &mut self.segments {
-            if seg.state.motion.on_table() && !seg.state.motion.is_at_rest() {
-                let s = seg.state_at(self.time);
-                *seg = motion::segment_from(
-                    &params,
-                    self.time,
-                    s.position,
-                    s.velocity,
-                    s.angular_velocity,
-                );
-            }
+            *seg = motion::under_new_params(&params, self.time, seg);
         }
         let event = Event {
             time: self.time,
