@@ -129,7 +129,7 @@ pub enum Violation {
         before: f64,
         /// Energy after, joules.
         after: f64,
-        /// "at <event>" or "between events".
+        /// "at `<event>`" or "between events".
         what: String,
     },
     /// A ball–ball contact changed the pair's momentum.
