@@ -10,207 +10,22 @@ use crate::motion;
 use crate::params::{CushionModel, Model, ParamError, Params, Prediction};
 use crate::queue::Tournament;
 use crate::resolve;
-use crate::table::{Cushion, Jaw, Opening, PocketShape, Table, TableError};
+use crate::table::{Cushion, Jaw, Opening, PocketShape, Table};
+use pending::{Pending, PendingKind, earlier, rank};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use serde::{Deserialize, Serialize};
 use std::hint::select_unpredictable;
 
-/// How far two balls may overlap, or a ball cross a cushion line, in a valid starting layout
-/// (metres): exactly touching layouts computed in floating point land within rounding of it.
-pub const PLACEMENT_TOLERANCE: f64 = 1e-9;
+mod pending;
+mod setup;
 
-/// A ball as given to [`Simulation::new`].
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct BallSetup {
-    /// Number painted on the ball (0 for the cue ball).
-    pub number: u8,
-    /// Centre, metres.
-    pub position: Vec2,
-    /// Velocity, m/s.
-    #[serde(default)]
-    pub velocity: Vec2,
-    /// Angular velocity, rad/s (ignored by the paper's model, which has no spin).
-    #[serde(default)]
-    pub spin: Vec3,
-}
-
-impl BallSetup {
-    /// A ball at rest.
-    pub fn at(number: u8, position: Vec2) -> Self {
-        Self {
-            number,
-            position,
-            velocity: Vec2::ZERO,
-            spin: Vec3::ZERO,
-        }
-    }
-
-    /// A ball moving with `velocity` and no spin.
-    pub fn moving(number: u8, position: Vec2, velocity: Vec2) -> Self {
-        Self {
-            velocity,
-            ..Self::at(number, position)
-        }
-    }
-}
-
-/// Why a simulation could not be built or changed.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum SetupError {
-    /// A parameter is out of range.
-    #[error(transparent)]
-    Param(#[from] ParamError),
-    /// The table is malformed.
-    #[error(transparent)]
-    Table(#[from] TableError),
-    /// A ball's position or velocity is NaN or infinite.
-    #[error("ball {ball} has a non-finite {what}")]
-    NonFinite {
-        /// Ball index.
-        ball: BallId,
-        /// "position" or "velocity".
-        what: &'static str,
-    },
-    /// A ball's centre is outside the area its centre may occupy.
-    #[error("ball {ball} at ({x}, {y}) is outside the table")]
-    OutsideTable {
-        /// Ball index.
-        ball: BallId,
-        /// Its x.
-        x: f64,
-        /// Its y.
-        y: f64,
-    },
-    /// Two balls overlap.
-    #[error("balls {a} and {b} overlap by {overlap} m")]
-    Overlap {
-        /// First ball.
-        a: BallId,
-        /// Second ball.
-        b: BallId,
-        /// Depth of the overlap, metres.
-        overlap: f64,
-    },
-    /// There is no ball with this index.
-    #[error("there is no ball {0}")]
-    NoSuchBall(BallId),
-    /// The ball has been pocketed.
-    #[error("ball {0} is pocketed")]
-    Pocketed(BallId),
-    /// The cue tip offset is beyond the miscue limit.
-    #[error(transparent)]
-    Miscue(#[from] resolve::cue::Miscue),
-    /// A shot's angle or speed is NaN, infinite, or the speed negative.
-    #[error("shot angle {angle} rad and speed {speed} m/s must be finite, speed >= 0")]
-    BadShot {
-        /// Angle given.
-        angle: f64,
-        /// Speed given.
-        speed: f64,
-    },
-}
-
-/// Why the simulation stopped short of the requested time.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum SimError {
-    /// More events than `Params::max_events` in one call: the state is valid, at `time`.
-    #[error("event cap of {cap} reached at t = {time} s without coming to rest")]
-    EventCap {
-        /// The cap.
-        cap: usize,
-        /// Simulation time reached.
-        time: f64,
-    },
-    /// A step with negative or non-finite length.
-    #[error("cannot advance by {0} s: time steps must be finite and non-negative")]
-    BadStep(f64),
-}
+pub use setup::{BallSetup, PLACEMENT_TOLERANCE, SetupError, SimError};
 
 /// What one [`Simulation::advance`] did.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Advance {
     /// Index range of the events it processed, into [`History::events`].
     pub events: std::ops::Range<usize>,
-}
-
-/// A predicted event, cached per ball until one of its balls changes.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Pending {
-    time: f64,
-    kind: PendingKind,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum PendingKind {
-    /// Internal: the ball leaves its grid cell (no physical effect, not recorded).
-    Crossing(BallId, Side),
-    Transition(BallId),
-    Cushion(BallId, Cushion),
-    /// Contact with jaw `k` of `Simulation::jaws`.
-    Jaw(BallId, usize),
-    /// The ball's centre crosses pocket opening `k` of `Simulation::openings`.
-    Opening(BallId, usize),
-    Pair(BallId, BallId),
-}
-
-impl Pending {
-    /// Tie order between events at equal times: grid crossings (bookkeeping, so that a
-    /// contact at the same instant is seen), state transitions, then cushions, then ball
-    /// pairs (after pooltool), each by ball index, then by cushion order.
-    fn key(&self) -> (u8, BallId, usize) {
-        match self.kind {
-            PendingKind::Crossing(b, s) => (0, b, s as usize),
-            PendingKind::Transition(b) => (1, b, 0),
-            PendingKind::Opening(b, k) => (2, b, k),
-            PendingKind::Cushion(b, c) => (3, b, c as usize),
-            PendingKind::Jaw(b, k) => (4, b, k),
-            PendingKind::Pair(a, b) => (5, a, b),
-        }
-    }
-
-    /// The order of events as one integer: the time (its bits mapped so that integer order
-    /// is `f64::total_cmp` order), then the tie order of [`Pending::key`].
-    fn rank(&self) -> u128 {
-        let time = time_order(self.time);
-        let (kind, a, b) = self.key();
-        debug_assert!(
-            a < 1 << 30 && b < 1 << 30,
-            "ball and part indices fit in 30 bits"
-        );
-        let tie = (kind as u64) << 60 | (a as u64) << 30 | b as u64;
-        (time as u128) << 64 | tie as u128
-    }
-
-    #[inline]
-    fn precedes(&self, other: &Pending) -> bool {
-        // Times nearly always differ: compare them first, in the same order as `rank`.
-        let (a, b) = (time_order(self.time), time_order(other.time));
-        if a != b {
-            return a < b;
-        }
-        self.rank() < other.rank()
-    }
-
-    /// The other ball of a pair event, seen from `id`.
-    fn partner(&self, id: BallId) -> Option<BallId> {
-        match self.kind {
-            PendingKind::Pair(a, b) if a == id => Some(b),
-            PendingKind::Pair(a, b) if b == id => Some(a),
-            _ => None,
-        }
-    }
-
-    fn involves(&self, id: BallId) -> bool {
-        match self.kind {
-            PendingKind::Crossing(b, _)
-            | PendingKind::Transition(b)
-            | PendingKind::Cushion(b, _)
-            | PendingKind::Jaw(b, _)
-            | PendingKind::Opening(b, _) => b == id,
-            PendingKind::Pair(a, b) => a == id || b == id,
-        }
-    }
 }
 
 /// Every ball's segment (start, position, velocity, acceleration) and the time of its own
@@ -342,31 +157,6 @@ impl Kin {
     }
 }
 
-/// The bits of a time mapped so that integer order is `f64::total_cmp` order.
-#[inline]
-fn time_order(t: f64) -> u64 {
-    let bits = t.to_bits();
-    if bits >> 63 == 1 {
-        !bits
-    } else {
-        bits | 1 << 63
-    }
-}
-
-/// Rank of an optional prediction in the tournament (see [`Pending::rank`]).
-fn rank(p: Option<Pending>) -> u128 {
-    p.map_or(Tournament::<Pending>::EMPTY, |p| p.rank())
-}
-
-#[inline]
-fn earlier(a: Option<Pending>, b: Option<Pending>) -> Option<Pending> {
-    match (a, b) {
-        (Some(x), Some(y)) => Some(if y.precedes(&x) { y } else { x }),
-        (x, None) => x,
-        (None, y) => y,
-    }
-}
-
 /// An exact, event-driven billiards simulation.
 ///
 /// Each ball follows a closed-form segment from its last event; positions are always evaluated
@@ -419,30 +209,7 @@ impl Simulation {
         let r = params.ball.radius;
         table.validate(r)?;
         let bounds = table.centre_bounds(r);
-        for (id, b) in balls.iter().enumerate() {
-            if !b.position.is_finite() {
-                return Err(SetupError::NonFinite {
-                    ball: id,
-                    what: "position",
-                });
-            }
-            if !b.velocity.is_finite() {
-                return Err(SetupError::NonFinite {
-                    ball: id,
-                    what: "velocity",
-                });
-            }
-            if b.position.x.abs() > bounds.x + PLACEMENT_TOLERANCE
-                || b.position.y.abs() > bounds.y + PLACEMENT_TOLERANCE
-            {
-                return Err(SetupError::OutsideTable {
-                    ball: id,
-                    x: b.position.x,
-                    y: b.position.y,
-                });
-            }
-        }
-        check_overlaps(balls, r)?;
+        setup::check_layout(balls, r, bounds)?;
         let segments: Vec<Segment> = balls
             .iter()
             .map(|b| motion::segment_from(&params, 0.0, b.position, b.velocity, b.spin))
@@ -628,35 +395,11 @@ impl Simulation {
         if id >= self.segments.len() {
             return Err(SetupError::NoSuchBall(id));
         }
-        for (what, ok) in [
-            ("position", position.is_finite()),
-            ("velocity", velocity.is_finite()),
-            ("spin", spin.is_finite()),
-        ] {
-            if !ok {
-                return Err(SetupError::NonFinite { ball: id, what });
-            }
-        }
-        if position.x.abs() > self.bounds.x + PLACEMENT_TOLERANCE
-            || position.y.abs() > self.bounds.y + PLACEMENT_TOLERANCE
-        {
-            return Err(SetupError::OutsideTable {
-                ball: id,
-                x: position.x,
-                y: position.y,
-            });
-        }
+        setup::check_ball(id, position, velocity, spin, self.bounds)?;
         let r = self.params.ball.radius;
         for (j, seg) in self.segments.iter().enumerate() {
             if j != id && seg.state.motion.on_table() {
-                let overlap = 2.0 * r - (seg.position_at(self.time) - position).length();
-                if overlap > PLACEMENT_TOLERANCE {
-                    return Err(SetupError::Overlap {
-                        a: id.min(j),
-                        b: id.max(j),
-                        overlap,
-                    });
-                }
+                setup::check_clear((id, position), (j, seg.position_at(self.time)), r)?;
             }
         }
         self.segments[id] = motion::segment_from(&self.params, self.time, position, velocity, spin);
@@ -1509,26 +1252,4 @@ fn keep_rolling(s: &BallState, v: Vec2, radius: f64) -> Vec3 {
     }
     let dv = v - s.velocity;
     s.angular_velocity + Vec3::new(-dv.y / radius, dv.x / radius, 0.0)
-}
-
-fn check_overlaps(balls: &[BallSetup], r: f64) -> Result<(), SetupError> {
-    // Sort by x so only neighbours within 2R in x are compared (large layouts stay fast).
-    let mut order: Vec<usize> = (0..balls.len()).collect();
-    order.sort_by(|&i, &j| balls[i].position.x.total_cmp(&balls[j].position.x));
-    for (k, &i) in order.iter().enumerate() {
-        for &j in &order[k + 1..] {
-            if balls[j].position.x - balls[i].position.x >= 2.0 * r {
-                break;
-            }
-            let overlap = 2.0 * r - (balls[j].position - balls[i].position).length();
-            if overlap > PLACEMENT_TOLERANCE {
-                return Err(SetupError::Overlap {
-                    a: i.min(j),
-                    b: i.max(j),
-                    overlap,
-                });
-            }
-        }
-    }
-    Ok(())
 }
