@@ -1,6 +1,7 @@
 //! The event loop: the paper's `Progress(T)` (section 4.2) as a loop over exact events.
 
 use crate::ball::{BallId, BallState, Motion, Segment};
+use crate::detect::cull::{PathColumns, kept};
 use crate::detect::{self, Kinematics};
 use crate::event::{Event, EventKind, Shot};
 use crate::grid::{Grid, Side};
@@ -28,135 +29,6 @@ pub struct Advance {
     pub events: std::ops::Range<usize>,
 }
 
-/// Every ball's segment (start, position, velocity, acceleration) and the time of its own
-/// next event (infinity for none), one array per component so that the cull of a row of
-/// pairs is a loop the compiler vectorizes. Updated only for the balls an event changes.
-#[derive(Clone, Debug, Default)]
-struct Kin {
-    start: Vec<f64>,
-    px: Vec<f64>,
-    py: Vec<f64>,
-    vx: Vec<f64>,
-    vy: Vec<f64>,
-    ax: Vec<f64>,
-    ay: Vec<f64>,
-    until: Vec<f64>,
-    /// Moving (bit 0), on the table (bit 1).
-    live: Vec<u8>,
-    /// How many balls have a non-zero (or NaN) acceleration: with none (a frictionless
-    /// scene), the cull drops the acceleration terms.
-    accelerating: usize,
-}
-
-impl Kin {
-    fn new(n: usize) -> Self {
-        let z = vec![0.0; n];
-        Self {
-            start: z.clone(),
-            px: z.clone(),
-            py: z.clone(),
-            vx: z.clone(),
-            vy: z.clone(),
-            ax: z.clone(),
-            ay: z,
-            until: vec![f64::INFINITY; n],
-            live: vec![0; n],
-            accelerating: 0,
-        }
-    }
-
-    /// Records ball `id`'s segment and the time of its own next event.
-    fn set(&mut self, id: BallId, seg: &Segment, own: Option<Pending>) {
-        let s = &seg.state;
-        let was = self.ax[id] != 0.0 || self.ay[id] != 0.0;
-        let now = seg.acceleration.x != 0.0 || seg.acceleration.y != 0.0;
-        self.accelerating = self.accelerating + usize::from(now) - usize::from(was);
-        self.start[id] = seg.start;
-        (self.px[id], self.py[id]) = (s.position.x, s.position.y);
-        (self.vx[id], self.vy[id]) = (s.velocity.x, s.velocity.y);
-        (self.ax[id], self.ay[id]) = (seg.acceleration.x, seg.acceleration.y);
-        self.until[id] = own.map_or(f64::INFINITY, |p| p.time);
-        self.live[id] = u8::from(s.motion.is_moving()) | u8::from(s.motion.on_table()) << 1;
-    }
-
-    /// For every ball `j`, whether balls `i` and `j` may touch between `t` and the earlier
-    /// of their own next events: the test of [`detect::misses`] (with the real accelerations,
-    /// which only widens it in the linear prediction mode) without branches, so that it
-    /// vectorizes; conservative in every degenerate case (a NaN or infinite bound keeps the
-    /// pair). Ball `i` must be moving: a resting ball is at rest from its segment's start.
-    /// The verdicts go to `gap`, positive for pairs that cannot touch (a separate argument, so
-    /// the compiler knows it overlaps none of the columns read).
-    fn cull_row(&self, gap: &mut [f64], i: BallId, t: f64, contact: f64) {
-        if self.accelerating == 0 {
-            return self.cull_row_straight(gap, i, t, contact);
-        }
-        let ti = t - self.start[i];
-        let (vxi, vyi) = (self.vx[i] + self.ax[i] * ti, self.vy[i] + self.ay[i] * ti);
-        let (pxi, pyi) = (
-            self.px[i] + (self.vx[i] + self.ax[i] * (0.5 * ti)) * ti,
-            self.py[i] + (self.vy[i] + self.ay[i] * (0.5 * ti)) * ti,
-        );
-        let (axi, ayi, ui) = (self.ax[i], self.ay[i], self.until[i]);
-        let rows = self.start.iter().zip(self.px.iter().zip(&self.py));
-        let rows = rows.zip(self.vx.iter().zip(&self.vy));
-        let rows = rows.zip(self.ax.iter().zip(&self.ay).zip(&self.until));
-        for (gap, (((start, (px, py)), (vx, vy)), ((ax, ay), until))) in gap.iter_mut().zip(rows) {
-            let tj = t - start;
-            let (vxj, vyj) = (vx + ax * tj, vy + ay * tj);
-            let (pxj, pyj) = (
-                px + (vx + ax * (0.5 * tj)) * tj,
-                py + (vy + ay * (0.5 * tj)) * tj,
-            );
-            let (dpx, dpy, dvx, dvy) = (pxj - pxi, pyj - pyi, vxj - vxi, vyj - vyi);
-            let (dax, day) = (ax - axi, ay - ayi);
-            // Plain selects rather than `f64::min`/`max` (no NaN fix-ups in the vector code):
-            // a NaN closest time (no relative motion) becomes `h`, still a valid time.
-            let h = if *until < ui { *until } else { ui } - t;
-            let pv = dpx * dvx + dpy * dvy;
-            let vv = dvx * dvx + dvy * dvy;
-            let tau = -pv / vv;
-            let tau = if tau < h { tau } else { h };
-            let tau = if tau > 0.0 { tau } else { 0.0 };
-            let (cx, cy) = (dpx + dvx * tau, dpy + dvy * tau);
-            let bend = 0.5 * (dax * dax + day * day).sqrt() * h * h;
-            let reach = (contact + bend) * (1.0 + 1e-9) + 1e-9;
-            // (With h < 0, tau is 0 and a touching pair is kept.)
-            *gap = cx * cx + cy * cy - (reach * reach + 1e-12 * (dpx * dpx + dpy * dpy));
-        }
-    }
-
-    /// [`Kin::cull_row`] when no ball accelerates: the same test without the acceleration
-    /// terms (each is a zero, and `bend` is `0 h h`: zero, or NaN for an unbounded horizon,
-    /// which keeps the pair as the general cull does).
-    fn cull_row_straight(&self, gap: &mut [f64], i: BallId, t: f64, contact: f64) {
-        let ti = t - self.start[i];
-        let (vxi, vyi) = (self.vx[i], self.vy[i]);
-        let (pxi, pyi) = (self.px[i] + vxi * ti, self.py[i] + vyi * ti);
-        let ui = self.until[i];
-        // `reach` of the general cull with `bend` zero, squared, once for the row.
-        let reach = contact * (1.0 + 1e-9) + 1e-9;
-        let reach2 = reach * reach;
-        let rows = self.start.iter().zip(self.px.iter().zip(&self.py));
-        let rows = rows.zip(self.vx.iter().zip(&self.vy)).zip(&self.until);
-        for (gap, (((start, (px, py)), (vx, vy)), until)) in gap.iter_mut().zip(rows) {
-            let tj = t - start;
-            let (dpx, dpy) = (px + vx * tj - pxi, py + vy * tj - pyi);
-            let (dvx, dvy) = (vx - vxi, vy - vyi);
-            let h = if *until < ui { *until } else { ui } - t;
-            let pv = dpx * dvx + dpy * dvy;
-            let vv = dvx * dvx + dvy * dvy;
-            let tau = -pv / vv;
-            let tau = if tau < h { tau } else { h };
-            let tau = if tau > 0.0 { tau } else { 0.0 };
-            let (cx, cy) = (dpx + dvx * tau, dpy + dvy * tau);
-            // NaN for an unbounded horizon (keeps the pair, as `0 h h` does in the general
-            // cull); zero otherwise, leaving `reach2` as it is.
-            let unbounded = 0.0 * h;
-            *gap = cx * cx + cy * cy - ((reach2 + unbounded) + 1e-12 * (dpx * dpx + dpy * dpy));
-        }
-    }
-}
-
 /// An exact, event-driven billiards simulation.
 ///
 /// Each ball follows a closed-form segment from its last event; positions are always evaluated
@@ -176,10 +48,10 @@ pub struct Simulation {
     /// none), valid until either ball's segment changes; an event then re-solves only the
     /// pairs of the balls it touched, and every other ball takes its best from its row.
     pairs: Vec<f64>,
-    /// Single-cell scenes: every ball's segment for the pair culls (see [`Kin`]).
-    kin: Kin,
-    /// Single-cell scenes: the verdicts of the last [`Kin::cull_row`].
-    gap: Vec<f64>,
+    /// Single-cell scenes: every ball's segment for the pair culls.
+    paths: PathColumns,
+    /// Single-cell scenes: the verdicts of the last [`PathColumns::cull_row`].
+    clearance: Vec<f64>,
     /// Scratch: balls whose pair with a touched ball changed in this event.
     affected: Vec<BallId>,
     /// For each ball, the balls whose cached event is a contact with it (may hold stale
@@ -222,8 +94,8 @@ impl Simulation {
             cache: Tournament::new(segments.len()),
             own: vec![None; segments.len()],
             pairs: Vec::new(),
-            kin: Kin::default(),
-            gap: Vec::new(),
+            paths: PathColumns::default(),
+            clearance: Vec::new(),
             affected: Vec::new(),
             dependents: vec![Vec::new(); segments.len()],
             stamps: vec![0; segments.len()],
@@ -549,21 +421,12 @@ impl Simulation {
             let straight = seg.straight && v.x.is_finite() && v.y.is_finite();
             let cushions: &[Option<Cushion>] = if straight { &ahead } else { &all };
             for &c in cushions.iter().flatten() {
-                let n = c.inward_normal();
                 let limit = self.cushion_limit(c);
-                let tau = match detect::line_contact(p, v, a, n, limit, horizon) {
-                    None => continue,
-                    // A contact in a mouth of a table with jaws: the full search goes on.
-                    Some(tau)
-                        if self.table.pockets != PocketShape::Mouth
-                            && !self.table.on_cushion(c, seg.position_at(t + tau)) =>
-                    {
-                        match self.cushion_contact(seg, t, c, horizon, kin) {
-                            Some(tau) => tau,
-                            None => continue,
-                        }
-                    }
-                    Some(tau) => tau,
+                let table = &self.table;
+                let Some(tau) =
+                    detect::cushion_contact(seg, t, (p, v, a), c, limit, table, horizon)
+                else {
+                    continue;
                 };
                 best = earlier(
                     best,
@@ -629,15 +492,13 @@ impl Simulation {
     /// Contact time of balls `i` and `j` from time `t` on (infinity for none), searched only
     /// up to the earlier of their own next events: each of those changes a segment (there are
     /// no crossings in a single cell) and wins ties, so a later contact could never happen.
-    /// `keep` is the cull's verdict ([`Kin::cull_row`]): a culled pair has no contact.
+    /// `keep` is the cull's verdict ([`PathColumns::cull_row`]): a culled pair has no contact.
     fn solve_pair(&self, i: BallId, j: BallId, t: f64, keep: bool) -> f64 {
-        let k = &self.kin;
-        // Both on the table, and one of them moving.
-        let (li, lj) = (k.live[i], k.live[j]);
-        if !keep || li & lj & 2 == 0 || (li | lj) & 1 == 0 {
+        let paths = &self.paths;
+        if !keep || !paths.may_meet(i, j) {
             return f64::INFINITY;
         }
-        let h = k.until[i].min(k.until[j]) - t;
+        let h = paths.until(i).min(paths.until(j)) - t;
         let (si, sj) = (&self.segments[i], &self.segments[j]);
         let r = self.params.ball.radius;
         detect::ball_ball_kept(si, sj, t, r, h, self.kinematics())
@@ -674,11 +535,6 @@ impl Simulation {
         earlier(self.own[id], pair)
     }
 
-    /// The verdict of the last [`Kin::cull_row`] on ball `j` (a NaN gap keeps the pair).
-    fn may_touch(&self, j: BallId) -> bool {
-        self.gap[j].is_nan() || self.gap[j] <= 0.0
-    }
-
     /// Stores a pair's contact time in both halves of the table.
     fn set_pair(&mut self, i: BallId, j: BallId, time: f64) {
         let n = self.segments.len();
@@ -694,7 +550,11 @@ impl Simulation {
         let n = self.segments.len();
         for &id in touched {
             self.own[id] = self.predict_own(id, t);
-            self.kin.set(id, &self.segments[id], self.own[id]);
+            self.paths.set(
+                id,
+                &self.segments[id],
+                self.own[id].map_or(f64::INFINITY, |p| p.time),
+            );
         }
         let contact = 2.0 * self.params.ball.radius;
         let mut affected = std::mem::take(&mut self.affected);
@@ -704,10 +564,10 @@ impl Simulation {
         // ascending order with a strict comparison picks the same pair as `best_of_row`.
         let mut rows = [(f64::INFINITY, 0); N];
         for (k, &id) in touched.iter().enumerate() {
-            if self.kin.live[id] == 3 {
-                self.kin.cull_row(&mut self.gap, id, t, contact);
+            if self.paths.moving_on_table(id) {
+                self.paths.cull_row(&mut self.clearance, id, t, contact);
             } else {
-                self.gap.fill(f64::NEG_INFINITY);
+                self.clearance.fill(f64::NEG_INFINITY);
             }
             let (mut least, mut at) = (f64::INFINITY, 0);
             let mut base = 0;
@@ -716,7 +576,7 @@ impl Simulation {
                 // them. Mark the others, 64 at a time in a tight loop (the row's later entries
                 // are not written while this block is worked through).
                 let end = n.min(base + 64);
-                let gaps = &self.gap[base..end];
+                let gaps = &self.clearance[base..end];
                 let row = &self.pairs[id * n + base..id * n + end];
                 let mut mask = 0u64;
                 for (b, (&g, &p)) in gaps.iter().zip(row).enumerate() {
@@ -734,7 +594,7 @@ impl Simulation {
                     let time = if touched[..k].contains(&j) {
                         self.pairs[id * n + j]
                     } else {
-                        let time = self.solve_pair(id, j, t, self.may_touch(j));
+                        let time = self.solve_pair(id, j, t, kept(self.clearance[j]));
                         if time != self.pairs[id * n + j] {
                             self.set_pair(id, j, time);
                             affected.push(j);
@@ -855,53 +715,6 @@ impl Simulation {
         }
     }
 
-    /// When the ball of `seg` next touches `cushion`. With the paper's mouths, any contact
-    /// with the cushion line counts (a contact inside a mouth pockets the ball). With jaws,
-    /// only contacts on the cushion itself count: a root in a mouth means the ball crossed the
-    /// line's extension into the mouth, and the search goes on from where it comes back out.
-    fn cushion_contact(
-        &self,
-        seg: &Segment,
-        t: f64,
-        cushion: Cushion,
-        horizon: f64,
-        kin: Kinematics,
-    ) -> Option<f64> {
-        let limit = self.cushion_limit(cushion);
-        let n = cushion.inward_normal();
-        let mut from = 0.0;
-        // A path is a parabola: it crosses a line at most twice, so two retries suffice.
-        for _ in 0..3 {
-            let tau = detect::ball_line(seg, t + from, n, limit, horizon - from, kin)? + from;
-            if self.table.pockets == PocketShape::Mouth
-                || self.table.on_cushion(cushion, seg.position_at(t + tau))
-            {
-                return Some(tau);
-            }
-            // In a mouth: skip to where the centre is back on the table side of the line.
-            let p = seg.position_at(t + tau);
-            let v = seg.velocity_at(t + tau);
-            let a = match kin {
-                Kinematics::Exact => seg.acceleration,
-                Kinematics::Linear => Vec2::ZERO,
-            };
-            let back = crate::poly::Poly::new([
-                -(limit + n.dot(p)) + detect::SEPARATION,
-                -n.dot(v),
-                -0.5 * n.dot(a),
-                0.0,
-                0.0,
-            ]);
-            let out = crate::poly::first_entry(
-                &back,
-                0.0,
-                (horizon - tau).min(crate::poly::root_bound(&back)),
-            )?;
-            from = tau + out.max(f64::EPSILON * (t + tau).abs());
-        }
-        None
-    }
-
     fn predict_all(&mut self) {
         if !self.grid.is_split() {
             let (n, t) = (self.segments.len(), self.time);
@@ -909,20 +722,24 @@ impl Simulation {
             for id in 0..n {
                 self.own[id] = self.predict_own(id, t);
             }
-            self.kin = Kin::new(n);
-            self.gap = vec![0.0; n];
+            self.paths = PathColumns::new(n);
+            self.clearance = vec![0.0; n];
             for id in 0..n {
-                self.kin.set(id, &self.segments[id], self.own[id]);
+                self.paths.set(
+                    id,
+                    &self.segments[id],
+                    self.own[id].map_or(f64::INFINITY, |p| p.time),
+                );
             }
             let contact = 2.0 * self.params.ball.radius;
             for i in 0..n {
-                if self.kin.live[i] == 3 {
-                    self.kin.cull_row(&mut self.gap, i, t, contact);
+                if self.paths.moving_on_table(i) {
+                    self.paths.cull_row(&mut self.clearance, i, t, contact);
                 } else {
-                    self.gap.fill(f64::NEG_INFINITY);
+                    self.clearance.fill(f64::NEG_INFINITY);
                 }
                 for j in i + 1..n {
-                    let time = self.solve_pair(i, j, t, self.may_touch(j));
+                    let time = self.solve_pair(i, j, t, kept(self.clearance[j]));
                     self.set_pair(i, j, time);
                 }
             }
