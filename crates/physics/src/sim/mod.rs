@@ -8,13 +8,11 @@ use crate::grid::{Grid, Side};
 use crate::history::History;
 use crate::math::{Vec2, Vec3};
 use crate::motion;
-use crate::params::{CushionModel, Model, ParamError, Params, Prediction};
+use crate::params::{ParamError, Params, Prediction};
 use crate::queue::Tournament;
-use crate::resolve;
+use crate::resolve::{self, FixedBody, FixedContact, InstantContacts, Laws, NormalPerturbation};
 use crate::table::{Cushion, Jaw, Opening, PocketShape, Table};
 use pending::{Pending, PendingKind, earlier, rank};
-use rand::{Rng, SeedableRng};
-use rand_chacha::ChaCha8Rng;
 use std::hint::select_unpredictable;
 
 mod pending;
@@ -66,12 +64,11 @@ pub struct Simulation {
     openings: Vec<Opening>,
     time: f64,
     history: History,
-    rng: Option<ChaCha8Rng>,
+    /// The rotation of collision normals (paper 5), if randomization is on.
+    perturbation: NormalPerturbation,
     bounds: Vec2,
-    /// The fixed-body contacts (cushion or jaw, ball, which) resolved at the current instant
-    /// `instant_time`: a resting contact that repeats within one instant is plastic.
-    instant: Vec<(u8, BallId, usize)>,
-    instant_time: f64,
+    /// The contacts with cushions and jaws resolved at the current instant.
+    instant_contacts: InstantContacts,
 }
 
 impl Simulation {
@@ -108,12 +105,9 @@ impl Simulation {
             },
             segments,
             time: 0.0,
-            rng: params
-                .randomization
-                .map(|r| ChaCha8Rng::seed_from_u64(r.seed)),
+            perturbation: NormalPerturbation::new(params.randomization),
             bounds,
-            instant: Vec::new(),
-            instant_time: f64::NAN,
+            instant_contacts: InstantContacts::default(),
         };
         sim.predict_all();
         Ok(sim)
@@ -244,11 +238,8 @@ impl Simulation {
         }
         let state = self.ball_checked(id)?;
         let dir = Vec2::from_angle(shot.angle);
-        let (r, mass) = (self.params.ball.radius, self.params.ball.mass);
-        let (v, w) = match self.params.model {
-            Model::Paper(_) => (dir * shot.speed, Vec3::ZERO),
-            Model::Spin(m) => resolve::cue::strike(&m, mass, r, dir, shot.speed, shot.tip)?,
-        };
+        let cue = Laws::of(&self.params.model).cue;
+        let (v, w) = cue.strike(&self.params.ball, dir, shot.speed, shot.tip)?;
         self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v, w);
         self.record(EventKind::Strike { ball: id, shot });
         self.repredict([id]);
@@ -292,9 +283,7 @@ impl Simulation {
             }));
         }
         if params.randomization != self.params.randomization {
-            self.rng = params
-                .randomization
-                .map(|r| ChaCha8Rng::seed_from_u64(r.seed));
+            self.perturbation = NormalPerturbation::new(params.randomization);
         }
         self.params = params;
         for seg in &mut self.segments {
@@ -651,55 +640,6 @@ impl Simulation {
         self.affected = affected;
     }
 
-    /// Response of ball `id` in state `s` to a fixed body (cushion or jaw) with unit normal `n`
-    /// pointing towards the ball, `depth` metres into it: a resting contact (see [`resting`])
-    /// or the model's cushion response. A slow spinning ball settles against a cushion or a
-    /// jaw (soak seeds 10288 and 260383: rebounds that cloth friction on the spin sent
-    /// straight back, or a ball wedged between a jaw and a ball).
-    fn fixed_contact(
-        &mut self,
-        id: BallId,
-        s: &BallState,
-        n: Vec2,
-        depth: f64,
-        repeat: bool,
-    ) -> (Vec2, Vec3) {
-        let pressing = -self.segments[id].acceleration.dot(n);
-        let approach = -s.velocity.dot(n);
-        if matches!(self.params.model, Model::Spin(_)) && approach.abs() < resolve::SETTLE_SPEED {
-            // Slow contact in the spin model: cloth friction on the spin would bring a
-            // rebound straight back (see `resolve::SETTLE_SPEED`).
-            return resolve::settle(s.velocity, s.angular_velocity, n);
-        }
-        if resting(depth, approach, pressing) {
-            let v = if repeat {
-                // A second resting contact with the same body in one instant: a ball wedged
-                // between a jaw and a ball held by the other jaw bounced elastically between
-                // them forever at that instant (soak seed 349173). Plastic: the approach
-                // goes, no hop, and the wedge's contacts converge.
-                s.velocity + n * approach.max(0.0)
-            } else {
-                resolve::resting_reflect(s.velocity, n, pressing, detect::RESTING_HOP)
-            };
-            (v, keep_rolling(s, v, self.params.ball.radius))
-        } else {
-            self.cushion_response(s, n)
-        }
-    }
-
-    /// Has this contact already been resolved at the current instant? Records it if not.
-    fn repeats(&mut self, contact: (u8, BallId, usize)) -> bool {
-        if self.instant_time != self.time {
-            self.instant.clear();
-            self.instant_time = self.time;
-        }
-        let seen = self.instant.contains(&contact);
-        if !seen {
-            self.instant.push(contact);
-        }
-        seen
-    }
-
     /// How far the centre may go from the table's centre line towards `cushion`.
     fn cushion_limit(&self, cushion: Cushion) -> f64 {
         match cushion {
@@ -815,16 +755,6 @@ impl Simulation {
         self.history.push(event);
     }
 
-    /// A Gaussian rotation of a collision normal (paper 5), if randomization is on.
-    fn perturbation(&mut self) -> Option<f64> {
-        let spread = self.params.randomization?.spread;
-        let rng = self.rng.as_mut()?;
-        // Box–Muller from two uniforms in (0, 1].
-        let u1: f64 = 1.0 - rng.random::<f64>();
-        let u2: f64 = rng.random::<f64>();
-        Some(spread * (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos())
-    }
-
     fn process(&mut self, p: Pending) {
         debug_assert!(p.time >= self.time, "time never goes back");
         self.time = p.time;
@@ -854,11 +784,15 @@ impl Simulation {
                 let s = self.segments[id].state_at(t);
                 let jaw = self.jaws[k];
                 let d = s.position - jaw.centre;
-                let n = d.normalized().unwrap_or(Vec2::new(0.0, 1.0));
+                let normal = d.normalized().unwrap_or(Vec2::new(0.0, 1.0));
                 let depth = self.params.ball.radius + self.jaw_radius() - d.length();
-                let repeat = self.repeats((1, id, k));
-                let (v, w) = self.fixed_contact(id, &s, n, depth, repeat);
-                self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
+                let repeat = self.instant_contacts.repeats(t, id, FixedBody::Jaw(k));
+                let contact = FixedContact {
+                    normal,
+                    depth,
+                    repeat,
+                };
+                self.resolve_fixed_body(id, &s, contact);
                 self.record(EventKind::Jaw {
                     ball: id,
                     pocket: jaw.pocket,
@@ -875,113 +809,31 @@ impl Simulation {
                     self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
                     self.record(EventKind::Pocketed { ball: id, pocket });
                 } else {
-                    let n = cushion.inward_normal();
+                    let normal = cushion.inward_normal();
                     let limit = self.cushion_limit(cushion);
-                    let depth = -(limit + n.dot(s.position));
-                    let repeat = self.repeats((0, id, cushion as usize));
-                    let (v, w) = self.fixed_contact(id, &s, n, depth, repeat);
-                    self.segments[id] = motion::segment_from(&self.params, t, s.position, v, w);
+                    let depth = -(limit + normal.dot(s.position));
+                    let body = FixedBody::Cushion(cushion);
+                    let repeat = self.instant_contacts.repeats(t, id, body);
+                    let contact = FixedContact {
+                        normal,
+                        depth,
+                        repeat,
+                    };
+                    self.resolve_fixed_body(id, &s, contact);
                     self.record(EventKind::Cushion { ball: id, cushion });
                 }
                 self.repredict([id]);
             }
             PendingKind::Pair(a, b) => {
                 let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
-                let d = sb.position - sa.position;
-                let n = d.normalized().unwrap_or(Vec2::new(1.0, 0.0));
-                let depth = 2.0 * self.params.ball.radius - d.length();
-                let dv = sb.velocity - sa.velocity;
-                let da = self.segments[b].acceleration - self.segments[a].acceleration;
-                // Relative normal acceleration pushing the pair together, less the centripetal
-                // term of their sliding past each other (which pulls them apart).
-                let pressing =
-                    -da.dot(n) - dv.perp_dot(n).powi(2) / d.length().max(f64::MIN_POSITIVE);
-                let (na, nb) = if resting(depth, -dv.dot(n), pressing) {
-                    let (va, vb) = resolve::resting_contact(
-                        sa.velocity,
-                        sb.velocity,
-                        n,
-                        pressing,
-                        detect::RESTING_HOP,
-                    );
-                    let r = self.params.ball.radius;
-                    // Pressed head-on with no tangential speed to turn into the hop (a sliding
-                    // ball driven into another by its own spin, as after a follow shot): its
-                    // spin pays for the hop, as its cloth friction would by pushing.
-                    let (mut va, mut vb, mut wa, mut wb) =
-                        (va, vb, sa.angular_velocity, sb.angular_velocity);
-                    let want = (2.0 * pressing.max(0.0) * detect::RESTING_HOP).sqrt();
-                    let got = (vb - va).dot(n);
-                    if got < want {
-                        let half = n * (0.5 * (want - got));
-                        let (va2, vb2) = (va - half, vb + half);
-                        let m = self.params.ball.mass;
-                        let cost = 0.5
-                            * m
-                            * (va2.length_squared() + vb2.length_squared()
-                                - va.length_squared()
-                                - vb.length_squared());
-                        let inertia = 0.4 * m * r * r;
-                        let spin_energy = |w: Vec3| 0.5 * inertia * (w.x * w.x + w.y * w.y);
-                        let payer = [(&sa, &mut wa), (&sb, &mut wb)]
-                            .into_iter()
-                            .filter(|(s, w)| {
-                                s.motion == Motion::Sliding && spin_energy(**w) > 2.0 * cost
-                            })
-                            .max_by(|x, y| spin_energy(*x.1).total_cmp(&spin_energy(*y.1)));
-                        if cost <= 0.0 {
-                            (va, vb) = (va2, vb2);
-                        } else if let Some((_, w)) = payer {
-                            let k = (1.0 - cost * (1.0 + 1e-9) / spin_energy(*w)).sqrt();
-                            *w = Vec3::new(w.x * k, w.y * k, w.z);
-                            (va, vb) = (va2, vb2);
-                        } else {
-                            // Nothing to pay a hop with (soak seed 16706: a ball with next to
-                            // no roll spin driven by its slip into a ball held by a rail): the
-                            // contact holds, and its slip into the other ball goes, as cloth
-                            // friction would remove it within microseconds.
-                            if sa.motion == Motion::Sliding {
-                                wa = resolve::unpress(va, wa, n, r).unwrap_or(wa);
-                            }
-                            if sb.motion == Motion::Sliding {
-                                wb = resolve::unpress(vb, wb, -n, r).unwrap_or(wb);
-                            }
-                        }
-                    }
-                    let sa = BallState {
-                        angular_velocity: wa,
-                        ..sa
-                    };
-                    let sb = BallState {
-                        angular_velocity: wb,
-                        ..sb
-                    };
-                    // Both rolling: the pair's energy is 7/10 m (|va|^2 + |vb|^2), which the
-                    // resting contact never raises. Otherwise only a ball that slows may keep
-                    // rolling (its spin energy then falls too).
-                    let both = sa.motion == Motion::Rolling && sb.motion == Motion::Rolling;
-                    let roll = |s: &BallState, v: Vec2| {
-                        if both || v.length_squared() <= s.velocity.length_squared() {
-                            keep_rolling(s, v, r)
-                        } else {
-                            s.angular_velocity
-                        }
-                    };
-                    (
-                        BallState {
-                            velocity: va,
-                            angular_velocity: roll(&sa, va),
-                            ..sa
-                        },
-                        BallState {
-                            velocity: vb,
-                            angular_velocity: roll(&sb, vb),
-                            ..sb
-                        },
-                    )
-                } else {
-                    self.pair_response(&sa, &sb, n)
-                };
+                let laws = Laws::of(&self.params.model);
+                let (na, nb) = resolve::ball_pair(
+                    &laws,
+                    (sa, self.segments[a].acceleration),
+                    (sb, self.segments[b].acceleration),
+                    &self.params.ball,
+                    &mut self.perturbation,
+                );
                 self.segments[a] = motion::segment_from(
                     &self.params,
                     t,
@@ -1001,72 +853,15 @@ impl Simulation {
             }
         }
     }
-
-    /// Velocity and spin after a cushion contact with inward normal `n`, under the model in
-    /// force; with randomization the normal is perturbed, unless that would send the ball out.
-    fn cushion_response(&mut self, s: &BallState, n: Vec2) -> (Vec2, Vec3) {
-        let (v, w, r) = (s.velocity, s.angular_velocity, self.params.ball.radius);
-        let model = self.params.model;
-        let respond = |n: Vec2| match model {
-            Model::Paper(m) => resolve::reflect(v, n, m.e_cushion).map(|v| (v, w)),
-            Model::Spin(m) => match m.cushion {
-                CushionModel::Reflect { e } => resolve::reflect(v, n, e).map(|v| (v, w)),
-                CushionModel::Han2005 { e, mu } => {
-                    resolve::han_2005(v, w, n, e, mu, r, 2.0 * r * m.cushion_height)
-                }
-            },
-        };
-        let perturbed = self.perturbation().map(|a| n.rotated(a));
-        perturbed
-            .and_then(respond)
-            .filter(|(v, _)| v.dot(n) >= 0.0)
-            .or_else(|| respond(n))
-            .unwrap_or((v, w))
-    }
-
-    /// States after a ball–ball contact along unit normal `n` (from `a` to `b`), under the
-    /// model in force; with randomization the normal is perturbed, unless that would leave the
-    /// balls approaching along the true normal.
-    fn pair_response(&mut self, a: &BallState, b: &BallState, n: Vec2) -> (BallState, BallState) {
-        let (r, model) = (self.params.ball.radius, self.params.model);
-        let respond = |n: Vec2| match model {
-            Model::Paper(m) => resolve::equal_mass_restitution(a.velocity, b.velocity, n, m.e_ball)
-                .map(|(va, vb)| {
-                    (
-                        BallState { velocity: va, ..*a },
-                        BallState { velocity: vb, ..*b },
-                    )
-                }),
-            Model::Spin(m) => resolve::frictional_spheres(a, b, n, m.e_ball, m.mu_ball, r),
-        };
-        let separating = |(x, y): &(BallState, BallState)| (x.velocity - y.velocity).dot(n) <= 0.0;
-        let perturbed = self.perturbation().map(|ang| n.rotated(ang));
-        perturbed
-            .and_then(respond)
-            .filter(separating)
-            .or_else(|| respond(n))
-            .unwrap_or((*a, *b))
-    }
 }
 
-/// Is a contact a resting one (resolved by [`resolve::resting_contact`]): sunk past half the
-/// resting depth, or pressed together and approaching too slowly to hop apart by the resting
-/// depth on its own? Such contacts bounce elastically with a minimum hop, so that neither a
-/// pressed pair (a Zeno cascade of ever smaller bounces) nor an inelastic collapse can make
-/// unboundedly many events per second.
-fn resting(depth: f64, approach: f64, pressing: f64) -> bool {
-    depth > 0.5 * detect::RESTING_DEPTH
-        || (pressing > 0.0 && approach * approach < 8.0 * pressing * detect::RESTING_DEPTH)
-}
-
-/// Spin of a ball in state `s` whose velocity a resting contact changed to `v`: a rolling ball
-/// keeps rolling (its spin follows the small change of velocity), so a micro-impulse does not
-/// leave a tiny slip whose sliding friction, large against it, would press the pair together
-/// again within femtoseconds (the spin model); any other ball keeps its spin.
-fn keep_rolling(s: &BallState, v: Vec2, radius: f64) -> Vec3 {
-    if s.motion != Motion::Rolling {
-        return s.angular_velocity;
+impl Simulation {
+    /// Ball `id`, in state `s` now, after `contact` with a cushion or jaw.
+    fn resolve_fixed_body(&mut self, id: BallId, s: &BallState, contact: FixedContact) {
+        let laws = Laws::of(&self.params.model);
+        let (r, acceleration) = (self.params.ball.radius, self.segments[id].acceleration);
+        let (v, w) =
+            resolve::fixed_body(&laws, s, acceleration, contact, r, &mut self.perturbation);
+        self.segments[id] = motion::segment_from(&self.params, self.time, s.position, v, w);
     }
-    let dv = v - s.velocity;
-    s.angular_velocity + Vec3::new(-dv.y / radius, dv.x / radius, 0.0)
 }
