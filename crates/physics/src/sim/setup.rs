@@ -2,6 +2,7 @@
 //! shared by [`Simulation::new`] and [`Simulation::place`]) and the errors they report.
 
 use crate::ball::BallId;
+use crate::event::Shot;
 use crate::math::{Vec2, Vec3};
 use crate::params::ParamError;
 use crate::resolve;
@@ -186,6 +187,22 @@ pub(super) fn check_layout(balls: &[BallSetup], r: f64, bounds: Vec2) -> Result<
             }
             check_clear((i, balls[i].position), (j, balls[j].position), r)?;
         }
+    }
+    Ok(())
+}
+
+/// Checks a shot as given to [`Simulation::strike`]: its angle, speed and tip offset are
+/// finite and its speed is not negative.
+pub(super) fn check_shot(shot: &Shot) -> Result<(), SetupError> {
+    let finite = shot.angle.is_finite()
+        && shot.speed.is_finite()
+        && shot.tip.side.is_finite()
+        && shot.tip.height.is_finite();
+    if !(finite && shot.speed >= 0.0) {
+        return Err(SetupError::BadShot {
+            angle: shot.angle,
+            speed: shot.speed,
+        });
     }
     Ok(())
 }
