@@ -54,8 +54,18 @@ impl Grid {
     /// A grid over the rectangle of half extents `half` for `count` balls of radius `radius`:
     /// about two balls per cell on average, cells never narrower than `4R`.
     pub fn new(half: Vec2, radius: f64, count: usize) -> Self {
+        Self::with_cells(half, radius, count, count >= MIN_BALLS_FOR_GRID)
+    }
+
+    /// [`Grid::new`] split into cells however few the balls (to test the cell lists on scenes
+    /// small enough for the pair table).
+    pub(crate) fn split(half: Vec2, radius: f64, count: usize) -> Self {
+        Self::with_cells(half, radius, count, true)
+    }
+
+    fn with_cells(half: Vec2, radius: f64, count: usize, split: bool) -> Self {
         let (w, h) = (2.0 * half.x, 2.0 * half.y);
-        let (nx, ny) = if count < MIN_BALLS_FOR_GRID {
+        let (nx, ny) = if !split {
             (1, 1)
         } else {
             let side = (w * h * 2.0 / count as f64).sqrt().max(4.0 * radius);

@@ -1,5 +1,6 @@
 //! Ball–ball time of impact: the smallest non-negative root of a quartic.
 
+use super::cull::misses;
 use super::{Kinematics, RESTING_DEPTH, RESTING_SPEED, SEPARATION};
 use crate::ball::Segment;
 use crate::math::Vec2;
@@ -129,38 +130,15 @@ fn apart((p, q): (Vec2, Vec2), (r, s): (Vec2, Vec2)) -> f64 {
         .min(to(s, p, q))
 }
 
-/// Can `|dp + dv τ + da τ²/2|` surely not come down to `contact` for τ in `[0, h]`? The
-/// closest approach of the linear part over the interval, less the most the acceleration
-/// term can close (`|da| h² / 2`), with a margin far above the rounding of the quartic's
-/// coefficients (so a pair it rejects has no root there either). Cheaper than the reach
-/// bound and much tighter for fast pairs that pass each other.
-#[inline]
-pub fn misses(dp: Vec2, dv: Vec2, da: Vec2, contact: f64, h: f64) -> bool {
-    if h.is_nan() || h < 0.0 {
-        return false;
-    }
-    let (pv, vv) = (dp.dot(dv), dv.length_squared());
-    let tau = if pv >= 0.0 {
-        0.0
-    } else if -pv >= vv * h {
-        h
-    } else {
-        -pv / vv
-    };
-    let bend = if da == Vec2::ZERO {
-        0.0
-    } else {
-        0.5 * da.length() * h * h
-    };
-    let closest = dp + dv * tau;
-    let reach = (contact + bend) * (1.0 + 1e-9) + 1e-9;
-    // False whenever a bound is infinite or NaN (unbounded horizon): then nothing is culled.
-    closest.length_squared() > reach * reach + 1e-12 * dp.length_squared()
-}
-
 /// First time within `horizon` at which `|dp + dv τ + da τ²/2|` comes down to `contact`
 /// (a contact that starts; see [`first_contact`]).
-fn contact_quartic(dp: Vec2, dv: Vec2, da: Vec2, contact: f64, horizon: f64) -> Option<f64> {
+pub(super) fn contact_quartic(
+    dp: Vec2,
+    dv: Vec2,
+    da: Vec2,
+    contact: f64,
+    horizon: f64,
+) -> Option<f64> {
     let f = Poly::new([
         dp.length_squared() - contact * contact,
         2.0 * dp.dot(dv),
@@ -176,29 +154,4 @@ fn contact_quartic(dp: Vec2, dv: Vec2, da: Vec2, contact: f64, horizon: f64) -> 
         depth: 2.0 * contact * RESTING_DEPTH,
     };
     first_contact(&f, horizon, tol)
-}
-
-/// Time after `t` at which the ball of `seg` touches a fixed circle (a rounded pocket jaw)
-/// centred at `centre`, their centres then `contact` apart: the same quartic as two balls.
-pub fn ball_jaw(
-    seg: &Segment,
-    t: f64,
-    centre: Vec2,
-    contact: f64,
-    horizon: f64,
-    kin: Kinematics,
-) -> Option<f64> {
-    if !seg.state.motion.is_moving() {
-        return None;
-    }
-    let dp = seg.position_at(t) - centre;
-    let reach = seg.reach(t, horizon) * (1.0 + 1e-12) + 1e-12 + contact;
-    if dp.length_squared() > reach * reach {
-        return None;
-    }
-    let a = match kin {
-        Kinematics::Exact => seg.acceleration,
-        Kinematics::Linear => Vec2::ZERO,
-    };
-    contact_quartic(dp, seg.velocity_at(t), a, contact, horizon)
 }

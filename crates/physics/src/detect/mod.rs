@@ -3,9 +3,13 @@
 
 mod ball_ball;
 mod ball_cushion;
+mod ball_jaw;
+pub(crate) mod cull;
 
-pub use ball_ball::{ball_ball, ball_ball_kept, ball_jaw, misses};
-pub use ball_cushion::{ball_cushion, ball_line, line_contact};
+pub use ball_ball::{ball_ball, ball_ball_kept};
+pub use ball_cushion::{ball_cushion, ball_line, cushion_contact, line_contact};
+pub use ball_jaw::ball_jaw;
+pub use cull::{MISS_ABSOLUTE_MARGIN, MISS_RELATIVE_MARGIN, MISS_ROUNDING, misses};
 
 /// Approach speed (m/s) below which touching bodies count as resting against each other rather
 /// than colliding. Far above rounding noise in velocities (about 1e-15 m/s at break speeds),

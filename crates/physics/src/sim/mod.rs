@@ -1,0 +1,420 @@
+//! The simulation and its event loop: the paper's `Progress(T)` (section 4.2) as a loop over
+//! exact events. Take the earliest predicted event (`predict.rs`), move the clock to it,
+//! resolve it ([`crate::resolve`]) into new segments for the balls it touched, record it, and
+//! re-predict only those balls and the balls whose prediction involved them.
+
+use crate::ball::{BallId, BallState, Motion, Segment};
+use crate::event::{Event, EventKind, Shot};
+use crate::history::History;
+use crate::math::{Vec2, Vec3};
+use crate::motion;
+use crate::params::{ParamError, Params};
+use crate::resolve::{self, FixedBody, FixedContact, InstantContacts, Laws, NormalPerturbation};
+use crate::table::{Cushion, Pocket, PocketShape, Table};
+use pending::{Pending, PendingKind};
+use predict::{Bodies, Predictions, Scene, StrategyChoice};
+
+mod cell_lists;
+mod pair_table;
+mod pending;
+mod predict;
+mod setup;
+
+pub use setup::{BallSetup, PLACEMENT_TOLERANCE, SetupError, SimError};
+
+/// What one [`Simulation::advance`] did.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Advance {
+    /// Index range of the events it processed, into [`History::events`].
+    pub events: std::ops::Range<usize>,
+}
+
+/// An exact, event-driven billiards simulation.
+///
+/// Each ball follows a closed-form segment from its last event; positions are always evaluated
+/// from there, never accumulated per step, so the trajectory does not depend on how time is
+/// sliced. Predictions are cached per ball and redone only for the balls an event touched.
+#[derive(Clone, Debug)]
+pub struct Simulation {
+    params: Params,
+    numbers: Vec<u8>,
+    segments: Vec<Segment>,
+    /// The table's cushions, jaws and pocket openings.
+    bodies: Bodies,
+    /// Every ball's next event, and the strategy that keeps them up to date.
+    predictions: Predictions,
+    time: f64,
+    history: History,
+    /// The rotation of collision normals (paper 5), if randomization is on.
+    perturbation: NormalPerturbation,
+    /// The contacts with cushions and jaws resolved at the current instant.
+    instant_contacts: InstantContacts,
+}
+
+impl Simulation {
+    /// Builds a simulation at time 0, checking the table, the parameters and the layout.
+    pub fn new(table: Table, params: Params, balls: &[BallSetup]) -> Result<Self, SetupError> {
+        Self::with_strategy(table, params, balls, StrategyChoice::Auto)
+    }
+
+    /// [`Simulation::new`] with the strategy that finds ball contacts chosen by `choice`.
+    pub(crate) fn with_strategy(
+        table: Table,
+        params: Params,
+        balls: &[BallSetup],
+        choice: StrategyChoice,
+    ) -> Result<Self, SetupError> {
+        params.validate()?;
+        let r = params.ball.radius;
+        table.validate(r)?;
+        let bodies = Bodies::new(table, r);
+        setup::check_layout(balls, r, bodies.bounds)?;
+        let segments: Vec<Segment> = balls
+            .iter()
+            .map(|b| motion::segment_from(&params, 0.0, b.position, b.velocity, b.spin))
+            .collect();
+        let n = segments.len();
+        let mut sim = Self {
+            params,
+            numbers: balls.iter().map(|b| b.number).collect(),
+            history: History::new(&segments, params),
+            predictions: Predictions::new(n, bodies.bounds, r, choice),
+            bodies,
+            segments,
+            time: 0.0,
+            perturbation: NormalPerturbation::new(params.randomization),
+            instant_contacts: InstantContacts::default(),
+        };
+        sim.predict_all();
+        Ok(sim)
+    }
+
+    /// Current simulation time, seconds.
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// The table.
+    pub fn table(&self) -> &Table {
+        &self.bodies.table
+    }
+
+    /// The parameters in force.
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+
+    /// Number of balls (pocketed ones included).
+    pub fn ball_count(&self) -> usize {
+        self.segments.len()
+    }
+
+    /// The number painted on each ball.
+    pub fn numbers(&self) -> &[u8] {
+        &self.numbers
+    }
+
+    /// Ball `id`'s state now.
+    pub fn ball(&self, id: BallId) -> BallState {
+        self.segments[id].state_at(self.time)
+    }
+
+    /// Every ball's state now.
+    pub fn balls(&self) -> impl ExactSizeIterator<Item = BallState> + '_ {
+        self.segments.iter().map(|s| s.state_at(self.time))
+    }
+
+    /// Ball `id`'s current closed-form segment.
+    pub fn segment(&self, id: BallId) -> &Segment {
+        &self.segments[id]
+    }
+
+    /// The event history.
+    pub fn history(&self) -> &History {
+        &self.history
+    }
+
+    /// No ball is moving.
+    pub fn is_at_rest(&self) -> bool {
+        self.segments.iter().all(|s| s.state.motion.is_at_rest())
+    }
+
+    /// Time of the next event, if any.
+    pub fn next_event_time(&self) -> Option<f64> {
+        self.predictions.next().map(|p| p.time)
+    }
+
+    /// The paper's `Progress(T)`: processes every event up to `time + dt` in time order, then
+    /// leaves the state at `time + dt`.
+    pub fn advance(&mut self, dt: f64) -> Result<Advance, SimError> {
+        if !(dt.is_finite() && dt >= 0.0) {
+            return Err(SimError::BadStep(dt));
+        }
+        self.advance_to(self.time + dt)
+    }
+
+    /// Processes every event up to absolute time `t`, then sets the clock to `t`.
+    pub fn advance_to(&mut self, t: f64) -> Result<Advance, SimError> {
+        if !(t.is_finite() && t >= self.time) {
+            return Err(SimError::BadStep(t - self.time));
+        }
+        let advance = self.process_until(t)?;
+        self.time = t;
+        Ok(advance)
+    }
+
+    /// Advances exactly to the next event and processes it (and only it); `None` at rest.
+    pub fn step_event(&mut self) -> Option<Event> {
+        let before = self.history.events().len();
+        // Grid crossings are internal: keep going until a physical event is recorded.
+        while self.history.events().len() == before {
+            let p = self.predictions.next()?;
+            self.process(p);
+        }
+        self.history.events().last().copied()
+    }
+
+    /// Runs until every ball rests; the clock ends at the last event.
+    pub fn run_to_rest(&mut self) -> Result<Advance, SimError> {
+        self.process_until(f64::INFINITY)
+    }
+
+    /// The event loop: processes the next event while it is due by `t`, at most
+    /// `params.max_events` of them.
+    fn process_until(&mut self, t: f64) -> Result<Advance, SimError> {
+        let first = self.history.events().len();
+        let mut count = 0;
+        while let Some(p) = self.predictions.next().filter(|p| p.time <= t) {
+            if count == self.params.max_events {
+                return Err(SimError::EventCap {
+                    cap: count,
+                    time: self.time,
+                });
+            }
+            self.process(p);
+            count += 1;
+        }
+        Ok(Advance {
+            events: first..self.history.events().len(),
+        })
+    }
+
+    /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
+    /// takes the tip offset (the paper's model has no spin and ignores it).
+    pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
+        setup::check_shot(&shot)?;
+        let state = self.ball_checked(id)?;
+        let dir = Vec2::from_angle(shot.angle);
+        let cue = Laws::of(&self.params.model).cue;
+        let (v, w) = cue.strike(&self.params.ball, dir, shot.speed, shot.tip)?;
+        self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v, w);
+        self.record(EventKind::Strike { ball: id, shot });
+        self.repredict([id]);
+        Ok(())
+    }
+
+    /// Sets ball `id`'s position and velocity now (editing, respotting). The new position must
+    /// be on the table and clear of the other balls.
+    pub fn place(
+        &mut self,
+        id: BallId,
+        position: Vec2,
+        velocity: Vec2,
+        spin: Vec3,
+    ) -> Result<(), SetupError> {
+        if id >= self.segments.len() {
+            return Err(SetupError::NoSuchBall(id));
+        }
+        setup::check_ball(id, position, velocity, spin, self.bodies.bounds)?;
+        let r = self.params.ball.radius;
+        for (j, seg) in self.segments.iter().enumerate() {
+            if j != id && seg.state.motion.on_table() {
+                setup::check_clear((id, position), (j, seg.position_at(self.time)), r)?;
+            }
+        }
+        self.segments[id] = motion::segment_from(&self.params, self.time, position, velocity, spin);
+        self.record(EventKind::Placed { ball: id });
+        self.repredict([id]);
+        Ok(())
+    }
+
+    /// Replaces the parameters now; moving balls continue from their current state under the
+    /// new ones. The ball size cannot change mid-game.
+    pub fn set_params(&mut self, params: Params) -> Result<(), SetupError> {
+        params.validate()?;
+        if params.ball != self.params.ball {
+            return Err(SetupError::Param(ParamError {
+                name: "ball",
+                value: params.ball.radius,
+                expected: "unchanged while balls are on the table",
+            }));
+        }
+        if params.randomization != self.params.randomization {
+            self.perturbation = NormalPerturbation::new(params.randomization);
+        }
+        self.params = params;
+        for seg in &mut self.segments {
+            *seg = motion::under_new_params(&params, self.time, seg);
+        }
+        let event = Event {
+            time: self.time,
+            kind: EventKind::ParamsChanged,
+            after: Default::default(),
+        };
+        self.history.push_all(event, &self.segments, params);
+        self.predict_all();
+        Ok(())
+    }
+
+    fn ball_checked(&self, id: BallId) -> Result<BallState, SetupError> {
+        let seg = self.segments.get(id).ok_or(SetupError::NoSuchBall(id))?;
+        if !seg.state.motion.on_table() {
+            return Err(SetupError::Pocketed(id));
+        }
+        Ok(self.ball(id))
+    }
+
+    /// Processes event `p`, the earliest pending: the clock moves to it, the balls it
+    /// touches get new segments, and the event is recorded (all but grid crossings, which
+    /// are bookkeeping) and its balls re-predicted.
+    fn process(&mut self, p: Pending) {
+        debug_assert!(p.time >= self.time, "time never goes back");
+        self.time = p.time;
+        match p.kind {
+            PendingKind::Crossing(id, side) => {
+                let scene = Scene {
+                    segments: &self.segments,
+                    params: &self.params,
+                    bodies: &self.bodies,
+                };
+                self.predictions.cross(&scene, id, side, self.time);
+            }
+            PendingKind::Transition(id) => self.transition(id),
+            PendingKind::Opening(id, k) => self.pocket(id, self.bodies.openings[k].pocket),
+            PendingKind::Cushion(id, cushion) => self.cushion(id, cushion),
+            PendingKind::Jaw(id, k) => self.jaw(id, k),
+            PendingKind::Pair(a, b) => self.ball_pair(a, b),
+        }
+    }
+
+    /// Ball `id`'s motion changes by itself (slide to roll, roll to rest).
+    fn transition(&mut self, id: BallId) {
+        let from = self.segments[id].state.motion;
+        self.segments[id] = motion::after_transition(&self.params, &self.segments[id]);
+        let to = self.segments[id].state.motion;
+        self.record(EventKind::Transition { ball: id, from, to });
+        self.repredict([id]);
+    }
+
+    /// Ball `id` drops into `pocket`.
+    fn pocket(&mut self, id: BallId, pocket: Pocket) {
+        let t = self.time;
+        let s = self.segments[id].state_at(t);
+        self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
+        self.record(EventKind::Pocketed { ball: id, pocket });
+        self.repredict([id]);
+    }
+
+    /// Ball `id` reaches `cushion`'s line: in a mouth of the paper's table it drops, anywhere
+    /// else it rebounds.
+    fn cushion(&mut self, id: BallId, cushion: Cushion) {
+        let s = self.segments[id].state_at(self.time);
+        let table = &self.bodies.table;
+        let mouth = match table.pockets {
+            PocketShape::Mouth => table.pocket_at(cushion, s.position),
+            PocketShape::Jaws { .. } => None,
+        };
+        if let Some(pocket) = mouth {
+            return self.pocket(id, pocket);
+        }
+        let normal = cushion.inward_normal();
+        let depth = -(self.bodies.cushion_limit(cushion) + normal.dot(s.position));
+        self.fixed_body(id, &s, FixedBody::Cushion(cushion), normal, depth);
+        self.record(EventKind::Cushion { ball: id, cushion });
+        self.repredict([id]);
+    }
+
+    /// Ball `id` meets jaw `k`.
+    fn jaw(&mut self, id: BallId, k: usize) {
+        let s = self.segments[id].state_at(self.time);
+        let jaw = self.bodies.jaws[k];
+        let d = s.position - jaw.centre;
+        let normal = d.normalized().unwrap_or(Vec2::new(0.0, 1.0));
+        let depth = self.params.ball.radius + self.bodies.jaw_radius() - d.length();
+        self.fixed_body(id, &s, FixedBody::Jaw(k), normal, depth);
+        let pocket = jaw.pocket;
+        self.record(EventKind::Jaw { ball: id, pocket });
+        self.repredict([id]);
+    }
+
+    /// Ball `id`, in state `s` now, touches `body` of unit normal `normal` (towards the
+    /// ball), `depth` metres into it: its new segment.
+    fn fixed_body(&mut self, id: BallId, s: &BallState, body: FixedBody, normal: Vec2, depth: f64) {
+        let repeat = self.instant_contacts.repeats(self.time, id, body);
+        let contact = FixedContact {
+            normal,
+            depth,
+            repeat,
+        };
+        let laws = Laws::of(&self.params.model);
+        let (r, acceleration) = (self.params.ball.radius, self.segments[id].acceleration);
+        let (v, w) =
+            resolve::fixed_body(&laws, s, acceleration, contact, r, &mut self.perturbation);
+        self.segments[id] = motion::segment_from(&self.params, self.time, s.position, v, w);
+    }
+
+    /// Balls `a` and `b` touch.
+    fn ball_pair(&mut self, a: BallId, b: BallId) {
+        let t = self.time;
+        let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
+        let laws = Laws::of(&self.params.model);
+        let (na, nb) = resolve::ball_pair(
+            &laws,
+            (sa, self.segments[a].acceleration),
+            (sb, self.segments[b].acceleration),
+            &self.params.ball,
+            &mut self.perturbation,
+        );
+        let params = &self.params;
+        self.segments[a] =
+            motion::segment_from(params, t, sa.position, na.velocity, na.angular_velocity);
+        self.segments[b] =
+            motion::segment_from(params, t, sb.position, nb.velocity, nb.angular_velocity);
+        self.record(EventKind::BallBall { a, b });
+        self.repredict([a, b]);
+    }
+
+    fn record(&mut self, kind: EventKind) {
+        let mut after = [BallState::default(); 2];
+        for (slot, id) in after.iter_mut().zip(kind.balls()) {
+            *slot = self.segments[id].state;
+        }
+        let event = Event {
+            time: self.time,
+            kind,
+            after,
+        };
+        self.history.push(event);
+    }
+
+    /// Predicts every ball from now.
+    fn predict_all(&mut self) {
+        let scene = Scene {
+            segments: &self.segments,
+            params: &self.params,
+            bodies: &self.bodies,
+        };
+        self.predictions.predict_all(&scene, self.time);
+    }
+
+    /// Re-predicts after an event changed the balls `touched` (one or two).
+    #[inline]
+    fn repredict<const N: usize>(&mut self, touched: [BallId; N]) {
+        let scene = Scene {
+            segments: &self.segments,
+            params: &self.params,
+            bodies: &self.bodies,
+        };
+        self.predictions.repredict(&scene, touched, self.time);
+    }
+}
