@@ -5,6 +5,7 @@ use crate::detect::{self, Kinematics};
 use crate::event::{Event, EventKind, Shot};
 use crate::grid::{Grid, Side};
 use crate::history::History;
+use crate::limits::{self, LimitError};
 use crate::math::{Vec2, Vec3};
 use crate::motion;
 use crate::params::{CushionModel, Model, ParamError, Params, Prediction};
@@ -101,14 +102,9 @@ pub enum SetupError {
     /// The cue tip offset is beyond the miscue limit.
     #[error(transparent)]
     Miscue(#[from] resolve::cue::Miscue),
-    /// A shot's angle or speed is NaN, infinite, or the speed negative.
-    #[error("shot angle {angle} rad and speed {speed} m/s must be finite, speed >= 0")]
-    BadShot {
-        /// Angle given.
-        angle: f64,
-        /// Speed given.
-        speed: f64,
-    },
+    /// A value outside the input contract (a shot, a ball's speed or spin, the clock).
+    #[error(transparent)]
+    Limit(#[from] LimitError),
 }
 
 /// Why the simulation stopped short of the requested time.
@@ -125,6 +121,9 @@ pub enum SimError {
     /// A step with negative or non-finite length.
     #[error("cannot advance by {0} s: time steps must be finite and non-negative")]
     BadStep(f64),
+    /// A step that would end past [`crate::limits::MAX_TIME`].
+    #[error(transparent)]
+    Limit(#[from] LimitError),
 }
 
 /// What one [`Simulation::advance`] did.
@@ -442,6 +441,7 @@ impl Simulation {
                 });
             }
         }
+        limits::check_setups(balls, r)?;
         check_overlaps(balls, r)?;
         let segments: Vec<Segment> = balls
             .iter()
@@ -549,6 +549,7 @@ impl Simulation {
         if !(t.is_finite() && t >= self.time) {
             return Err(SimError::BadStep(t - self.time));
         }
+        limits::check_clock(t)?;
         let advance = self.process_until(t)?;
         self.time = t;
         Ok(advance)
@@ -593,17 +594,9 @@ impl Simulation {
     /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
     /// takes the tip offset (the paper's model has no spin and ignores it).
     pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
-        let finite = shot.angle.is_finite()
-            && shot.speed.is_finite()
-            && shot.tip.side.is_finite()
-            && shot.tip.height.is_finite();
-        if !(finite && shot.speed >= 0.0) {
-            return Err(SetupError::BadShot {
-                angle: shot.angle,
-                speed: shot.speed,
-            });
-        }
         let state = self.ball_checked(id)?;
+        limits::check_shot(&shot).map_err(|e| e.for_ball(id, self.numbers[id]))?;
+        limits::check_clock(self.time)?;
         let dir = Vec2::from_angle(shot.angle);
         let (r, mass) = (self.params.ball.radius, self.params.ball.mass);
         let (v, w) = match self.params.model {
@@ -637,6 +630,10 @@ impl Simulation {
                 return Err(SetupError::NonFinite { ball: id, what });
             }
         }
+        let radius = self.params.ball.radius;
+        limits::check_motion(velocity, spin, radius)
+            .map_err(|e| e.for_ball(id, self.numbers[id]))?;
+        limits::check_clock(self.time)?;
         if position.x.abs() > self.bounds.x + PLACEMENT_TOLERANCE
             || position.y.abs() > self.bounds.y + PLACEMENT_TOLERANCE
         {
