@@ -25,6 +25,7 @@ pub mod detect;
 pub mod event;
 pub mod grid;
 pub mod history;
+pub mod limits;
 pub mod math;
 pub mod motion;
 pub mod params;
@@ -41,6 +42,7 @@ pub mod table;
 pub use ball::{BallId, BallState, Motion, Segment};
 pub use event::{Event, EventKind, Shot};
 pub use history::History;
+pub use limits::LimitError;
 pub use math::{Vec2, Vec3};
 pub use params::{
     BallSpec, CushionModel, G, Model, PaperModel, ParamError, Params, Prediction, Randomization,

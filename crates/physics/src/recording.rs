@@ -14,6 +14,7 @@ use crate::ball::BallId;
 use crate::ball::Segment;
 use crate::event::{Event, EventKind, Shot};
 use crate::history::History;
+use crate::limits;
 use crate::math::{Vec2, Vec3};
 use crate::motion;
 use crate::params::Params;
@@ -296,16 +297,11 @@ impl Recording {
         Ok(rec)
     }
 
-    /// Physical validity: the setup builds, inputs are finite and in time order, events are
-    /// in time order and finite.
+    /// Physical validity: the setup builds, inputs are within the contract ([`crate::limits`])
+    /// and in time order, events are in time order and finite.
     pub fn check(&self) -> Result<(), String> {
-        self.start().map_err(|e| format!("setup: {e}"))?;
-        if !(self.end_time.is_finite() && self.end_time >= 0.0) {
-            return Err(format!(
-                "end_time {} is not a finite non-negative time",
-                self.end_time
-            ));
-        }
+        let sim = self.start().map_err(|e| format!("setup: {e}"))?;
+        limits::check_clock(self.end_time).map_err(|e| format!("end_time: {e}"))?;
         let mut last = 0.0;
         for (k, input) in self.inputs.iter().enumerate() {
             if !(input.time.is_finite() && input.time >= last && input.time <= self.end_time) {
@@ -314,6 +310,7 @@ impl Recording {
                     input.time
                 ));
             }
+            check_action(&sim, &input.action).map_err(|e| format!("input {k}: {e}"))?;
             last = input.time;
         }
         let mut last = 0.0;
@@ -334,6 +331,33 @@ impl Recording {
             last = e.time;
         }
         Ok(())
+    }
+}
+
+/// An input's own values against the contract, naming its ball (whether the ball is on the
+/// table, or the tip within the miscue limit, only the replay can tell).
+fn check_action(sim: &Simulation, action: &Action) -> Result<(), String> {
+    let number = |ball: BallId| {
+        sim.numbers()
+            .get(ball)
+            .copied()
+            .ok_or_else(|| format!("there is no ball {ball}"))
+    };
+    match *action {
+        Action::Strike { ball, shot } => {
+            let n = number(ball)?;
+            limits::check_shot(&shot).map_err(|e| e.for_ball(ball, n).to_string())
+        }
+        Action::Place {
+            ball,
+            velocity,
+            spin,
+            ..
+        } => {
+            let (n, r) = (number(ball)?, sim.params().ball.radius);
+            limits::check_motion(velocity, spin, r).map_err(|e| e.for_ball(ball, n).to_string())
+        }
+        Action::SetParams { params } => params.validate().map_err(|e| e.to_string()),
     }
 }
 

@@ -3,6 +3,7 @@
 
 use crate::ball::BallState;
 use crate::event::{Event, Shot};
+use crate::limits;
 use crate::math::Vec2;
 use crate::params::Params;
 use crate::racks::Rack;
@@ -93,8 +94,8 @@ pub enum SceneError {
     /// The scene is physically invalid.
     #[error("scene is invalid: {0}")]
     Setup(#[from] SetupError),
-    /// A duration that is negative or not finite.
-    #[error("duration must be finite and non-negative, got {0}")]
+    /// A duration that is negative, not finite, or past [`crate::limits::MAX_TIME`].
+    #[error("duration {0} s is out of range: from 0 to {max} s", max = crate::limits::MAX_TIME)]
     BadDuration(f64),
 }
 
@@ -127,7 +128,7 @@ impl Scene {
         let mut sim = self.build()?;
         let outcome = match self.duration {
             Duration::UntilRest => sim.run_to_rest().map(|_| ()),
-            Duration::Seconds(s) if s.is_finite() && s >= 0.0 => sim.advance(s).map(|_| ()),
+            Duration::Seconds(s) if limits::check_clock(s).is_ok() => sim.advance(s).map(|_| ()),
             Duration::Seconds(s) => return Err(SceneError::BadDuration(s)),
         };
         Ok(SceneResult {

@@ -76,7 +76,8 @@ pub struct SimulateArgs {
     #[arg(long, value_enum, default_value = "spin")]
     pub model: ModelArg,
     /// A shot of the cue ball, `ANGLE_DEG:SPEED[:SIDE:HEIGHT]`; repeat for several shots,
-    /// each played once everything rests.
+    /// each played once everything rests. SPEED in m/s: 0 or from 1e-10 to 100 (a hard break
+    /// is 12); ANGLE_DEG any finite; SIDE and HEIGHT in ball radii, within the miscue limit.
     #[arg(long = "shot", value_parser = parse_shot)]
     pub shots: Vec<Shot>,
     /// Seed of the collision-normal randomization (off if absent).
@@ -124,14 +125,16 @@ fn parse_shot(s: &str) -> Result<Shot, String> {
         .split(':')
         .map(|x| x.trim().parse::<f64>().map_err(|e| format!("{x:?}: {e}")))
         .collect::<Result<_, _>>()?;
-    match v[..] {
-        [a, speed] => Ok(Shot::new(a.to_radians(), speed)),
-        [a, speed, side, height] => Ok(Shot {
+    let shot = match v[..] {
+        [a, speed] => Shot::new(a.to_radians(), speed),
+        [a, speed, side, height] => Shot {
             tip: TipOffset { side, height },
             ..Shot::new(a.to_radians(), speed)
-        }),
-        _ => Err("expected ANGLE_DEG:SPEED or ANGLE_DEG:SPEED:SIDE:HEIGHT".into()),
-    }
+        },
+        _ => return Err("expected ANGLE_DEG:SPEED or ANGLE_DEG:SPEED:SIDE:HEIGHT".into()),
+    };
+    limits::check_shot(&shot).map_err(|e| e.to_string())?;
+    Ok(shot)
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {

@@ -300,6 +300,76 @@ fn killing_the_recorder_mid_game_leaves_the_last_complete_shot_on_disk() {
 }
 
 #[test]
+fn shots_outside_the_contract_fail_naming_the_speed_and_the_limit() {
+    use billiards_physics::limits::{MAX_SPEED, MIN_SPEED};
+    let simulate =
+        |shot: &str| run(bin().args(["simulate", "--rack", "nine-ball", "--shot", shot]));
+    // The limits themselves are played.
+    for speed in [0.0, MIN_SPEED, MAX_SPEED] {
+        let (ok, _, err) = simulate(&format!("0:{speed:e}"));
+        assert!(ok, "{speed}: {err}");
+    }
+    let up = |x: f64| f64::from_bits(x.to_bits() + 1);
+    let down = |x: f64| f64::from_bits(x.to_bits() - 1);
+    for speed in [up(MAX_SPEED), down(MIN_SPEED), 1e308, 1e-308, -1.0] {
+        let out = bin()
+            .args(["simulate", "--rack", "nine-ball", "--shot"])
+            .arg(format!("0:{speed:e}"))
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !out.status.success() && out.status.code() != Some(0),
+            "{speed}"
+        );
+        assert!(
+            err.contains("shot speed") && err.contains("m/s"),
+            "{speed}: {err}"
+        );
+    }
+    let (_, _, err) = simulate("0:1e308");
+    assert!(
+        err.contains("shot speed 1e308 m/s") && err.contains("from 1e-10 to 100 m/s"),
+        "{err}"
+    );
+    // The help states the range.
+    let (ok, help, _) = run(bin().args(["simulate", "--help"]));
+    assert!(ok && help.contains("0 or from 1e-10 to 100"), "{help}");
+}
+
+#[test]
+fn scenes_and_recordings_outside_the_contract_fail_naming_the_value() {
+    let dir = temp("limits");
+    let scene = dir.join("scene.json");
+    std::fs::write(
+        &scene,
+        r#"{"rack": "nine_ball", "shots": [{"angle": 0, "speed": 1e308}]}"#,
+    )
+    .unwrap();
+    let (ok, _, err) = run(bin().args(["simulate", "--scene"]).arg(&scene));
+    assert!(!ok && err.contains("shot speed 1e308"), "{err}");
+    // A recording whose strike was edited past the limit: refused on load, not replayed.
+    let mut rec = break_recording();
+    let file = dir.join("fast.json");
+    if let recording::Action::Strike { shot, .. } = &mut rec.inputs[0].action {
+        shot.speed = 1e308;
+    }
+    rec.save(&file).unwrap();
+    for cmd in ["verify", "export"] {
+        let (ok, _, err) = run(bin().arg(cmd).arg(&file).args(
+            ["--gif", "/dev/null"]
+                .iter()
+                .take(if cmd == "export" { 2 } else { 0 }),
+        ));
+        assert!(
+            !ok && err.contains("fast.json") && err.contains("shot speed 1e308"),
+            "{cmd}: {err}"
+        );
+    }
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
 fn shots_count_from_one_in_simulate_and_export() {
     let dir = temp("shot-numbers");
     let file = dir.join("game.json");

@@ -7,6 +7,7 @@ use crate::ball::{BallId, BallState, Motion, Segment};
 use crate::event::{Event, EventKind, Shot};
 use crate::history::History;
 use crate::math::{Vec2, Vec3};
+use crate::limits;
 use crate::motion;
 use crate::params::{ParamError, Params};
 use crate::resolve::{self, FixedBody, FixedContact, InstantContacts, Laws, NormalPerturbation};
@@ -158,6 +159,7 @@ impl Simulation {
         if !(t.is_finite() && t >= self.time) {
             return Err(SimError::BadStep(t - self.time));
         }
+        limits::check_clock(t)?;
         let advance = self.process_until(t)?;
         self.time = t;
         Ok(advance)
@@ -202,8 +204,8 @@ impl Simulation {
     /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
     /// takes the tip offset (the paper's model has no spin and ignores it).
     pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
-        setup::check_shot(&shot)?;
         let state = self.ball_checked(id)?;
+        setup::check_shot(id, self.numbers[id], &shot, self.time)?;
         let dir = Vec2::from_angle(shot.angle);
         let cue = Laws::of(&self.params.model).cue;
         let (v, w) = cue.strike(&self.params.ball, dir, shot.speed, shot.tip)?;
@@ -225,8 +227,15 @@ impl Simulation {
         if id >= self.segments.len() {
             return Err(SetupError::NoSuchBall(id));
         }
-        setup::check_ball(id, position, velocity, spin, self.bodies.bounds)?;
         let r = self.params.ball.radius;
+        let ball = BallSetup {
+            number: self.numbers[id],
+            position,
+            velocity,
+            spin,
+        };
+        setup::check_ball(id, &ball, r, self.bodies.bounds)?;
+        limits::check_clock(self.time)?;
         for (j, seg) in self.segments.iter().enumerate() {
             if j != id && seg.state.motion.on_table() {
                 setup::check_clear((id, position), (j, seg.position_at(self.time)), r)?;

@@ -3,6 +3,7 @@
 
 use crate::ball::BallId;
 use crate::event::Shot;
+use crate::limits::{self, LimitError};
 use crate::math::{Vec2, Vec3};
 use crate::params::ParamError;
 use crate::resolve;
@@ -97,14 +98,9 @@ pub enum SetupError {
     /// The cue tip offset is beyond the miscue limit.
     #[error(transparent)]
     Miscue(#[from] resolve::cue::Miscue),
-    /// A shot's angle or speed is NaN, infinite, or the speed negative.
-    #[error("shot angle {angle} rad and speed {speed} m/s must be finite, speed >= 0")]
-    BadShot {
-        /// Angle given.
-        angle: f64,
-        /// Speed given.
-        speed: f64,
-    },
+    /// A value outside the input contract (a shot, a ball's speed or spin, the clock).
+    #[error(transparent)]
+    Limit(#[from] LimitError),
 }
 
 /// Why the simulation stopped short of the requested time.
@@ -121,18 +117,27 @@ pub enum SimError {
     /// A step with negative or non-finite length.
     #[error("cannot advance by {0} s: time steps must be finite and non-negative")]
     BadStep(f64),
+    /// A step that would end past [`crate::limits::MAX_TIME`].
+    #[error(transparent)]
+    Limit(#[from] LimitError),
 }
 
-/// Checks one ball as given to [`Simulation::new`] or [`Simulation::place`]: its position,
-/// velocity and spin are finite and its centre lies within `bounds` (the half extents of the
-/// area a centre may occupy, [`crate::Table::centre_bounds`]), up to [`PLACEMENT_TOLERANCE`].
+/// Checks one ball (index `id`) as given to [`Simulation::new`] or [`Simulation::place`]: its
+/// position, velocity and spin are finite, its speed and spin within the input contract
+/// ([`crate::limits`]), and its centre within `bounds` (the half extents of the area a centre
+/// may occupy, [`crate::Table::centre_bounds`]) up to [`PLACEMENT_TOLERANCE`].
 pub(super) fn check_ball(
     id: BallId,
-    position: Vec2,
-    velocity: Vec2,
-    spin: Vec3,
+    ball: &BallSetup,
+    radius: f64,
     bounds: Vec2,
 ) -> Result<(), SetupError> {
+    let BallSetup {
+        number,
+        position,
+        velocity,
+        spin,
+    } = *ball;
     for (what, ok) in [
         ("position", position.is_finite()),
         ("velocity", velocity.is_finite()),
@@ -142,6 +147,7 @@ pub(super) fn check_ball(
             return Err(SetupError::NonFinite { ball: id, what });
         }
     }
+    limits::check_motion(velocity, spin, radius).map_err(|e| e.for_ball(id, number))?;
     if position.x.abs() > bounds.x + PLACEMENT_TOLERANCE
         || position.y.abs() > bounds.y + PLACEMENT_TOLERANCE
     {
@@ -175,7 +181,7 @@ pub(super) fn check_clear(
 /// Checks every ball of a layout with [`check_ball`], then every pair with [`check_clear`].
 pub(super) fn check_layout(balls: &[BallSetup], r: f64, bounds: Vec2) -> Result<(), SetupError> {
     for (id, b) in balls.iter().enumerate() {
-        check_ball(id, b.position, b.velocity, b.spin, bounds)?;
+        check_ball(id, b, r, bounds)?;
     }
     // Sort by x so only neighbours within 2R in x are compared (large layouts stay fast).
     let mut order: Vec<usize> = (0..balls.len()).collect();
@@ -191,18 +197,10 @@ pub(super) fn check_layout(balls: &[BallSetup], r: f64, bounds: Vec2) -> Result<
     Ok(())
 }
 
-/// Checks a shot as given to [`Simulation::strike`]: its angle, speed and tip offset are
-/// finite and its speed is not negative.
-pub(super) fn check_shot(shot: &Shot) -> Result<(), SetupError> {
-    let finite = shot.angle.is_finite()
-        && shot.speed.is_finite()
-        && shot.tip.side.is_finite()
-        && shot.tip.height.is_finite();
-    if !(finite && shot.speed >= 0.0) {
-        return Err(SetupError::BadShot {
-            angle: shot.angle,
-            speed: shot.speed,
-        });
-    }
+/// Checks a shot of ball `id` (numbered `number`) as given to [`Simulation::strike`] at
+/// `time`: the shot and the clock within the input contract ([`crate::limits`]).
+pub(super) fn check_shot(id: BallId, number: u8, shot: &Shot, time: f64) -> Result<(), SetupError> {
+    limits::check_shot(shot).map_err(|e| e.for_ball(id, number))?;
+    limits::check_clock(time)?;
     Ok(())
 }
