@@ -115,7 +115,13 @@ fn new_and_place_check_speeds_and_spins() {
     // `new` used to take a NaN spin; the shared setup check names it as `place` does.
     let nan = Vec3::new(f64::NAN, 0.0, 0.0);
     let e = Simulation::new(table, params, &[ball(Vec2::ZERO, nan)]).unwrap_err();
-    assert_eq!(e, SetupError::NonFinite { ball: 0, what: "spin" });
+    assert_eq!(
+        e,
+        SetupError::NonFinite {
+            ball: 0,
+            what: "spin"
+        }
+    );
 }
 
 #[test]

@@ -6,8 +6,8 @@
 use crate::ball::{BallId, BallState, Motion, Segment};
 use crate::event::{Event, EventKind, Shot};
 use crate::history::History;
-use crate::math::{Vec2, Vec3};
 use crate::limits;
+use crate::math::{Vec2, Vec3};
 use crate::motion;
 use crate::params::{ParamError, Params};
 use crate::resolve::{self, FixedBody, FixedContact, InstantContacts, Laws, NormalPerturbation};
