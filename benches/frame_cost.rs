@@ -12,7 +12,7 @@ use std::time::{Duration, Instant};
 
 use bevy::{prelude::*, time::TimeUpdateStrategy};
 use billiards::{
-    settings,
+    mode, settings,
     sim::{self, RackRequested, ShotRequested, SimStatus},
 };
 use billiards_physics::{Rack, TipOffset};
@@ -21,7 +21,7 @@ const FRAME: Duration = Duration::from_micros(16_667);
 
 fn game(rack: Rack) -> App {
     let mut app = App::new();
-    app.add_plugins((MinimalPlugins, settings::plugin, sim::plugin));
+    app.add_plugins((MinimalPlugins, mode::plugin, settings::plugin, sim::plugin));
     app.insert_resource(TimeUpdateStrategy::ManualDuration(FRAME));
     app.update();
     app.world_mut().write_message(RackRequested(rack));

@@ -25,7 +25,7 @@ pub fn plugin(app: &mut App) {
             .chain()
             .after(SimSystems::Commands)
             // A replay shows the recording's balls, not the live table's next shot.
-            .run_if(crate::replay::playing),
+            .run_if(in_state(crate::mode::GameMode::Play)),
     );
 }
 

@@ -5,14 +5,15 @@
 
 use std::f32::consts::FRAC_PI_2;
 
+use crate::{
+    balls::{Ball, Pocketed},
+    input::InputSystems,
+};
 use bevy::{
     input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
     prelude::*,
     window::RequestRedraw,
 };
-use bevy_egui::input::{egui_wants_any_keyboard_input, egui_wants_any_pointer_input};
-
-use crate::balls::{Ball, Pocketed};
 
 /// Registers the camera and its controls.
 pub fn plugin(app: &mut App) {
@@ -21,8 +22,8 @@ pub fn plugin(app: &mut App) {
         .add_systems(
             Update,
             (
-                orbit_and_zoom.run_if(not(egui_wants_any_pointer_input)),
-                camera_keys.run_if(not(egui_wants_any_keyboard_input)),
+                orbit_and_zoom.in_set(InputSystems::Pointer),
+                camera_keys.in_set(InputSystems::Keyboard),
                 follow_cue_ball,
                 ease_camera,
             )

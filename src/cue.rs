@@ -6,20 +6,20 @@
 //! - Left/Right arrows: turn the aim (hold Shift for fine steps); Up/Down: power;
 //! - Space: shoot.
 
+use crate::{
+    balls::{Ball, BallMotion, Pocketed, world_velocity},
+    camera::{CameraSystems, TableCamera},
+    geometry::{TableSpec, table_dir_to_world, to_table_plane},
+    input::InputSystems,
+    mode::GameMode,
+    settings::{ClampReport, ShotSettings, ViewSettings, apply_shot_edit},
+    sim::{ShotRequested, SimStatus, SimSystems, move_ball_in_hand},
+};
 use bevy::{
     input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
     math::DVec2,
     prelude::*,
     window::{PrimaryWindow, RequestRedraw},
-};
-use bevy_egui::input::{egui_wants_any_keyboard_input, egui_wants_any_pointer_input};
-
-use crate::{
-    balls::{Ball, BallMotion, Pocketed, world_velocity},
-    camera::{CameraSystems, TableCamera},
-    geometry::{TableSpec, table_dir_to_world, to_table_plane},
-    settings::{ClampReport, ShotSettings, ViewSettings},
-    sim::{ShotRequested, SimStatus, SimSystems, move_ball_in_hand},
 };
 
 /// Registers the cue stick and its controls.
@@ -30,18 +30,20 @@ pub fn plugin(app: &mut App) {
         .add_systems(
             Update,
             (
-                aim_with_mouse.run_if(not(egui_wants_any_pointer_input)),
-                cue_keys.run_if(not(egui_wants_any_keyboard_input)),
+                aim_with_mouse.in_set(InputSystems::Pointer),
+                cue_keys.in_set(InputSystems::Keyboard),
             )
                 .chain()
                 .after(CameraSystems)
                 .before(SimSystems::Commands)
-                .run_if(crate::replay::playing),
+                .run_if(in_state(GameMode::Play)),
         )
         .add_systems(
             Update,
-            (place_cue, draw_vectors).after(SimSystems::Commands),
-        );
+            (place_cue.run_if(in_state(GameMode::Play)), draw_vectors).after(SimSystems::Commands),
+        )
+        // No cue over a recording; back in play, `place_cue` shows it again when it may.
+        .add_systems(OnEnter(GameMode::Replay), hide_cue);
 }
 
 /// The cue stick.
@@ -196,19 +198,6 @@ fn aim_with_mouse(
     apply_shot_edit(next, &mut shot, &mut report);
 }
 
-/// Writes an edited shot back (only if it changed, to keep change detection meaningful),
-/// clamped, with any clamp reported to the panel.
-pub fn apply_shot_edit(mut next: ShotSettings, shot: &mut ShotSettings, report: &mut ClampReport) {
-    if next == *shot {
-        return;
-    }
-    let notes = next.clamp_to_physical();
-    if !notes.is_empty() {
-        report.notes = notes;
-    }
-    *shot = next;
-}
-
 /// Arrow keys turn the aim and change the power; Space shoots.
 fn cue_keys(
     keys: Res<ButtonInput<KeyCode>>,
@@ -285,14 +274,14 @@ fn draw_vectors(
     shot: Res<ShotSettings>,
     status: Res<SimStatus>,
     balls: Query<(&Ball, &BallMotion), Without<Pocketed>>,
-    mode: Option<Res<crate::replay::AppMode>>,
+    mode: Res<State<GameMode>>,
     mut gizmos: Gizmos,
 ) {
     if !view.show_vectors {
         return;
     }
     // The cue vector belongs to the live shot; a replay shows only the balls' velocities.
-    let live = crate::replay::playing(mode);
+    let live = *mode.get() == GameMode::Play;
     // Drawn just above the cloth so the balls do not hide them: 5 cm per m/s.
     const METRES_PER_MPS: f32 = 0.05;
     let lift = Vec3::Y * (2.05 * spec.ball_radius as f32);
@@ -310,5 +299,11 @@ fn draw_vectors(
             let end = start + world_velocity(motion) * METRES_PER_MPS;
             gizmos.arrow(start, end, Color::srgb(0.15, 0.35, 1.0));
         }
+    }
+}
+
+fn hide_cue(mut cue: Query<&mut Visibility, With<CueStick>>) {
+    for mut visibility in &mut cue {
+        visibility.set_if_neq(Visibility::Hidden);
     }
 }

@@ -1,13 +1,16 @@
 //! A 3D pool game on Bevy, on top of the exact event-driven solver `billiards-physics`.
 //!
-//! One plugin per feature; [`GamePlugin`] puts them together with Bevy's and egui's.
+//! One plugin per feature; [`GamePlugin`] puts them together with Bevy's. The game's modes are
+//! [`mode::GameMode`]; every egui part lives in [`ui`], which also adds egui itself.
 
 pub mod aim;
 pub mod balls;
 pub mod camera;
 pub mod cue;
 pub mod geometry;
+pub mod input;
 pub mod lighting;
+pub mod mode;
 pub mod options;
 pub mod recording;
 pub mod replay;
@@ -19,11 +22,10 @@ pub mod table_mesh;
 pub mod ui;
 
 use bevy::{prelude::*, window::WindowResolution, winit::WinitSettings};
-use bevy_egui::EguiPlugin;
 
 pub use options::{ArgsError, LaunchOptions};
 
-/// The whole game: Bevy's default plugins, egui, and the game's feature plugins.
+/// The whole game: Bevy's default plugins and the game's feature plugins.
 #[derive(Debug, Clone, Default)]
 pub struct GamePlugin {
     /// What the command line asked for.
@@ -40,7 +42,7 @@ impl Plugin for GamePlugin {
             }),
             ..default()
         }))
-        .add_plugins(EguiPlugin::default())
+        .add_plugins(mode::plugin)
         .add_plugins((
             settings::plugin,
             sim::plugin,
@@ -52,8 +54,8 @@ impl Plugin for GamePlugin {
             lighting::plugin,
             ui::plugin,
             recording::plugin,
-        ))
-        .add_plugins((replay::plugin, replay::panel::plugin));
+            replay::plugin,
+        ));
         if let Some(file) = &self.options.replay {
             app.insert_resource(replay::OpenAtStart(file.clone()));
         }

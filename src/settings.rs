@@ -462,6 +462,19 @@ impl Default for ViewSettings {
     }
 }
 
+/// Writes an edited shot back (only if it changed, to keep change detection meaningful),
+/// clamped, with any clamp reported to the panel.
+pub fn apply_shot_edit(mut next: ShotSettings, shot: &mut ShotSettings, report: &mut ClampReport) {
+    if next == *shot {
+        return;
+    }
+    let notes = next.clamp_to_physical();
+    if !notes.is_empty() {
+        report.notes = notes;
+    }
+    *shot = next;
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

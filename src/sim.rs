@@ -27,6 +27,7 @@ use billiards_physics::{
 use crate::{
     balls::{Ball, BallMotion, MotionState, Pocketed},
     geometry::TableSpec,
+    mode::GameMode,
     settings::{CushionChoice, PhysicsModel, PhysicsSettings},
 };
 
@@ -46,6 +47,13 @@ pub fn plugin(app: &mut App) {
         .configure_sets(
             Update,
             (SimSystems::Step, SimSystems::Flow, SimSystems::Commands).chain(),
+        )
+        // The live solver neither advances nor takes commands while a recording is shown.
+        .configure_sets(Update, SimSystems::Step.run_if(in_state(GameMode::Play)))
+        .configure_sets(Update, SimSystems::Flow.run_if(in_state(GameMode::Play)))
+        .configure_sets(
+            Update,
+            SimSystems::Commands.run_if(in_state(GameMode::Play)),
         )
         .add_systems(Startup, request_default_rack)
         .add_systems(
@@ -634,13 +642,13 @@ fn strike_cue_ball(
     }
 }
 
-/// After a scratch the cue ball goes back on the head string: the head spot, or the nearest
-/// free point along the string. The edit reaches the solver like any other (change detection).
+/// After a scratch the cue ball goes back on the head string, where
+/// [`billiards_rules::cue_ball_spot`] says (the rule the command line plays by too). The edit
+/// reaches the solver like any other (change detection).
 pub fn respot_after_scratch(
     mut commands: Commands,
     mut finished: MessageReader<ShotFinished>,
     solver: Option<Res<Solver>>,
-    spec: Res<TableSpec>,
     mut balls: Query<&mut BallMotion>,
     mut status: ResMut<SimStatus>,
 ) {
@@ -649,20 +657,14 @@ pub fn respot_after_scratch(
     }
     let Some(solver) = solver else { return };
     let Some(cue) = solver.cue_ball() else { return };
-    let others: Vec<DVec2> = (0..solver.simulation().ball_count())
-        .filter(|&id| id != cue)
-        .map(|id| solver.simulation().ball(id))
-        .filter(|state| state.motion.on_table())
-        .map(|state| to_dvec2(state.position))
-        .collect();
-    let Some(spot) = head_string_spot(&spec, &others) else {
+    let Some(spot) = billiards_rules::cue_ball_spot(solver.simulation(), cue) else {
         status.note = Some("no free spot on the head string for the cue ball".to_owned());
         return;
     };
     let entity = solver.entities[cue];
     if let Ok(mut motion) = balls.get_mut(entity) {
         *motion = BallMotion {
-            position: spot,
+            position: to_dvec2(spot),
             velocity: DVec2::ZERO,
             state: MotionState::Stationary,
             spin: bevy::math::DVec3::ZERO,
@@ -692,19 +694,4 @@ pub fn move_ball_in_hand(spec: &TableSpec, motion: &mut BallMotion, y: f64) {
         motion.position = spot;
         motion.velocity = DVec2::ZERO;
     }
-}
-
-/// The free point on the head string (x = -L/4) nearest the head spot, if any: a ball there
-/// must clear every other ball by a millimetre.
-pub fn head_string_spot(spec: &TableSpec, others: &[DVec2]) -> Option<DVec2> {
-    let clearance = 2.0 * spec.ball_radius + 1e-3;
-    let limit = spec.width / 2.0 - spec.ball_radius;
-    let step = spec.ball_radius / 4.0;
-    let free = |p: DVec2| others.iter().all(|o| o.distance(p) >= clearance);
-    (0u32..)
-        .map(|k| f64::from(k) * step)
-        .take_while(|&offset| offset <= limit)
-        .flat_map(|offset| [offset, -offset])
-        .map(|y| DVec2::new(spec.head_spot().x, y))
-        .find(|&p| free(p))
 }

@@ -11,9 +11,10 @@ use bevy::{math::DVec2, prelude::*, time::TimeUpdateStrategy, window::FileDragAn
 use billiards::{
     balls::{Ball, BallMotion, Pocketed},
     geometry::TableSpec,
+    mode::{self, GameMode},
     recording::{self, Autosave, RecordingsFolder},
     replay::{
-        self, AppMode, ExportFormat, ExportRequest, ExportScope, OpenAtStart, Replay, ReplayBall,
+        self, ExportFormat, ExportRequest, ExportScope, OpenAtStart, Replay, ReplayBall,
         ReplayCommand,
     },
     settings::{self, PhysicsSettings},
@@ -38,6 +39,7 @@ fn headless() -> App {
     let mut app = App::new();
     app.add_plugins((
         MinimalPlugins,
+        mode::plugin,
         settings::plugin,
         sim::plugin,
         recording::plugin,
@@ -110,8 +112,8 @@ fn replay_time(app: &App) -> f64 {
     app.world().resource::<Replay>().time
 }
 
-fn mode(app: &App) -> AppMode {
-    *app.world().resource::<AppMode>()
+fn mode(app: &App) -> GameMode {
+    *app.world().resource::<State<GameMode>>().get()
 }
 
 /// Two shots played and autosaved in a 9-ball game; returns the app and the saved file.
@@ -145,7 +147,7 @@ fn a_saved_game_replays_exactly_at_any_time_and_closing_restores_the_live_game()
         .len();
 
     command(&mut app, ReplayCommand::Open(file.clone()));
-    assert_eq!(mode(&app), AppMode::Replay);
+    assert_eq!(mode(&app), GameMode::Replay);
     assert_eq!(app.world().resource::<Replay>().error, None);
     command(&mut app, ReplayCommand::Pause);
 
@@ -207,7 +209,7 @@ fn a_saved_game_replays_exactly_at_any_time_and_closing_restores_the_live_game()
     assert!(app.world().resource::<Solver>().simulation().is_at_rest());
 
     command(&mut app, ReplayCommand::Close);
-    assert_eq!(mode(&app), AppMode::Play);
+    assert_eq!(mode(&app), GameMode::Play);
     assert!(app.world().resource::<Replay>().open.is_none());
     assert_eq!(
         app.world_mut()
@@ -269,7 +271,7 @@ fn stepping_lands_on_event_and_shot_times() {
         .open
         .as_ref()
         .unwrap()
-        .end_time;
+        .end_time();
     command(&mut app, ReplayCommand::Seek(end));
     command(&mut app, ReplayCommand::NextEvent);
     assert_eq!(replay_time(&app), end);
@@ -313,7 +315,7 @@ fn a_bad_file_shows_an_error_and_leaves_the_live_game() {
     let bad = folder.join("broken.json");
     std::fs::write(&bad, "{ \"version\": 1, \"table\": ").unwrap();
     command(&mut app, ReplayCommand::Open(bad.clone()));
-    assert_eq!(mode(&app), AppMode::Play);
+    assert_eq!(mode(&app), GameMode::Play);
     let error = app.world().resource::<Replay>().error.clone().unwrap();
     assert!(error.contains("broken.json"), "{error}");
     assert!(error.contains("not a valid recording"), "{error}");
@@ -321,7 +323,7 @@ fn a_bad_file_shows_an_error_and_leaves_the_live_game() {
 
     let missing = folder.join("missing.json");
     command(&mut app, ReplayCommand::Open(missing));
-    assert_eq!(mode(&app), AppMode::Play);
+    assert_eq!(mode(&app), GameMode::Play);
     assert!(
         app.world()
             .resource::<Replay>()
@@ -366,7 +368,7 @@ fn another_ball_count_gets_its_own_balls_and_the_live_ones_come_back() {
         path_buf: file.clone(),
     });
     app.update();
-    assert_eq!(mode(&app), AppMode::Replay);
+    assert_eq!(mode(&app), GameMode::Replay);
     command(&mut app, ReplayCommand::Pause);
     command(&mut app, ReplayCommand::Seek(1.0));
     let history = recording.history().unwrap();
@@ -401,7 +403,7 @@ fn another_ball_count_gets_its_own_balls_and_the_live_ones_come_back() {
     app.world_mut()
         .write_message(RackRequested(Rack::PaperDefault));
     app.update();
-    assert_eq!(mode(&app), AppMode::Play);
+    assert_eq!(mode(&app), GameMode::Play);
     assert_eq!(balls::<With<Ball>>(&mut app).len(), 1);
     assert_eq!(
         app.world_mut().query::<&Ball>().iter(app.world()).count()
@@ -443,7 +445,7 @@ fn the_command_line_file_opens_once_the_table_is_racked() {
     for _ in 0..3 {
         app.update();
     }
-    assert_eq!(mode(&app), AppMode::Replay);
+    assert_eq!(mode(&app), GameMode::Replay);
     assert!(app.world().get_resource::<OpenAtStart>().is_none());
     // The live table behind it was racked (the starting rack), and comes back on close.
     command(&mut app, ReplayCommand::Close);

@@ -7,6 +7,7 @@ use bevy::{math::DVec2, prelude::*, time::TimeUpdateStrategy};
 use billiards::{
     balls::{Ball, BallMotion, Pocketed},
     geometry::TableSpec,
+    mode,
     settings::{self, PhysicsSettings},
     sim::{
         self, BallPocketed, RackRequested, ShotFinished, ShotRequested, SimStatus, Solver,
@@ -18,7 +19,7 @@ use billiards_physics::{Motion, Rack, Shot, Simulation, TipOffset};
 /// A headless game with the given rack on the table.
 fn game(rack: Rack) -> App {
     let mut app = App::new();
-    app.add_plugins((MinimalPlugins, settings::plugin, sim::plugin));
+    app.add_plugins((MinimalPlugins, mode::plugin, settings::plugin, sim::plugin));
     app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
         16,
     )));

@@ -1,28 +1,18 @@
-//! The egui panels: shot and physics settings on the left, the HUD on the right.
-//!
-//! The 3D view is fitted to the part of the window right of the panel, so the panel never
-//! covers the table and a drag on the table never lands on the panel.
+//! The settings panel's sections: the shot (angle, power, tip picker, ball in hand), friction
+//! and restitution, the simulation clock and racks, the view; then clamp notes and controls.
 
-use bevy::{
-    camera::{CameraOutputMode, Viewport, visibility::RenderLayers},
-    prelude::*,
-    render::render_resource::BlendState,
-    window::PrimaryWindow,
-};
-use bevy_egui::{
-    EguiContexts, EguiGlobalSettings, EguiPrimaryContextPass, PrimaryEguiContext,
-    egui::{self, Color32, RichText},
-};
+use bevy::prelude::*;
+use bevy_egui::egui::{self, Color32, RichText};
 
+use super::layout::{TIP_PICKER_SIZE, WARNING};
 use crate::{
     aim::AimPrediction,
     balls::{Ball, BallMotion, Pocketed},
-    camera::{CameraMode, OrbitCamera, TableCamera},
-    cue::apply_shot_edit,
+    camera::{CameraMode, OrbitCamera},
     geometry::TableSpec,
     settings::{
         ClampReport, CushionChoice, PREDICTIONS, ParamRange, PhysicsModel, PhysicsSettings,
-        ShotSettings, ViewSettings, prediction_label,
+        ShotSettings, ViewSettings, apply_shot_edit, prediction_label,
     },
     sim::{
         RACKS, RackRequested, ShotRequested, SimStatus, StepRequested, move_ball_in_hand,
@@ -30,39 +20,9 @@ use crate::{
     },
 };
 
-/// Registers the panels.
-pub fn plugin(app: &mut App) {
-    app.add_systems(Startup, spawn_ui_camera)
-        .add_systems(EguiPrimaryContextPass, panels);
-}
-
-/// Width of the settings panel, in logical pixels.
-pub const PANEL_WIDTH: f32 = 340.0;
-
-/// The egui context gets a camera of its own that draws nothing but the UI, on top of the
-/// table camera; the table camera can then take a viewport beside the panel.
-fn spawn_ui_camera(mut commands: Commands, mut egui_settings: ResMut<EguiGlobalSettings>) {
-    egui_settings.auto_create_primary_context = false;
-    commands.spawn((
-        Name::new("UI camera"),
-        PrimaryEguiContext,
-        Camera2d,
-        RenderLayers::none(),
-        Camera {
-            order: 1,
-            output_mode: CameraOutputMode::Write {
-                blend_state: Some(BlendState::ALPHA_BLENDING),
-                clear_color: ClearColorConfig::None,
-            },
-            clear_color: ClearColorConfig::Custom(Color::NONE),
-            ..default()
-        },
-    ));
-}
-
-/// Everything the panels edit or show, bundled so the system stays readable.
+/// Everything the settings panel edits or shows, bundled so the system stays readable.
 #[derive(bevy::ecs::system::SystemParam)]
-struct PanelState<'w, 's> {
+pub struct SettingsParam<'w, 's> {
     shot: ResMut<'w, ShotSettings>,
     physics: ResMut<'w, PhysicsSettings>,
     view: ResMut<'w, ViewSettings>,
@@ -72,63 +32,13 @@ struct PanelState<'w, 's> {
     racks: MessageWriter<'w, RackRequested>,
     steps: MessageWriter<'w, StepRequested>,
     shots: MessageWriter<'w, ShotRequested>,
-    pocketed: Query<'w, 's, &'static Ball, With<Pocketed>>,
     aim: Res<'w, AimPrediction>,
     spec: Res<'w, TableSpec>,
     cue_ball: Query<'w, 's, (&'static Ball, &'static mut BallMotion), Without<Pocketed>>,
-    replay: crate::replay::panel::RecordingsParam<'w>,
-    mode: Option<Res<'w, crate::replay::AppMode>>,
 }
 
-fn panels(
-    mut contexts: EguiContexts,
-    mut state: PanelState,
-    window: Single<&Window, With<PrimaryWindow>>,
-    mut camera: Single<&mut Camera, With<TableCamera>>,
-) -> Result {
-    let ctx = contexts.ctx_mut()?.clone();
-    let mut root = egui::Ui::new(
-        ctx.clone(),
-        "root".into(),
-        egui::UiBuilder::new()
-            .layer_id(egui::LayerId::background())
-            .max_rect(ctx.viewport_rect()),
-    );
-    let panel_width = egui::Panel::left("settings")
-        .resizable(false)
-        .exact_size(PANEL_WIDTH)
-        .show(&mut root, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| settings_panel(ui, &mut state));
-        })
-        .response
-        .rect
-        .width();
-    hud(&ctx, &state);
-    fit_viewport(&window, &mut camera, panel_width);
-    Ok(())
-}
-
-/// Gives the table camera the window area right of the panel.
-fn fit_viewport(window: &Window, camera: &mut Camera, panel_width: f32) {
-    let left = ((panel_width * window.scale_factor()) as u32).min(window.physical_width() - 1);
-    let viewport = Viewport {
-        physical_position: UVec2::new(left, 0),
-        physical_size: UVec2::new(
-            window.physical_width() - left,
-            window.physical_height().max(1),
-        ),
-        ..default()
-    };
-    let unchanged = camera.viewport.as_ref().is_some_and(|current| {
-        current.physical_position == viewport.physical_position
-            && current.physical_size == viewport.physical_size
-    });
-    if !unchanged {
-        camera.viewport = Some(viewport);
-    }
-}
-
-fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
+/// The panel's sections: shot, friction and restitution, simulation, view.
+pub fn sections(ui: &mut egui::Ui, state: &mut SettingsParam) {
     ui.heading("Billiards");
 
     section(ui, "Shot", |ui| {
@@ -178,7 +88,7 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
             }
         }
         if let Some(note) = &state.aim.note {
-            ui.colored_label(Color32::from_rgb(255, 170, 60), note);
+            ui.colored_label(WARNING, note);
         }
         apply_shot_edit(next, &mut state.shot, &mut state.report);
         ui.horizontal(|ui| {
@@ -312,13 +222,15 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
             }
         });
     });
+}
 
-    crate::replay::panel::recordings_section(ui, &mut state.replay);
-
+/// The clamp notes (what was clamped and to what) and the list of controls, at the end of the
+/// panel.
+pub fn notes_and_controls(ui: &mut egui::Ui, state: &mut SettingsParam) {
     if !state.report.notes.is_empty() {
         ui.separator();
         for note in &state.report.notes {
-            ui.colored_label(Color32::from_rgb(255, 170, 60), note.to_string());
+            ui.colored_label(WARNING, note.to_string());
         }
         if ui.small_button("dismiss").clicked() {
             state.report.notes.clear();
@@ -342,7 +254,7 @@ fn settings_panel(ui: &mut egui::Ui, state: &mut PanelState) {
 /// The cue ball seen from behind the cue: click or drag where the tip should strike. The red
 /// ring is the miscue limit; the blue dot is the tip (drawn to scale, 13 mm across).
 fn tip_picker(ui: &mut egui::Ui, tip: &mut billiards_physics::TipOffset) {
-    let size = 96.0;
+    let size = TIP_PICKER_SIZE;
     let (response, painter) =
         ui.allocate_painter(egui::vec2(size, size), egui::Sense::click_and_drag());
     let centre = response.rect.center();
@@ -411,7 +323,7 @@ fn param_slider(ui: &mut egui::Ui, value: &mut f64, range: ParamRange) {
     );
 }
 
-fn apply_physics_edit(mut next: PhysicsSettings, state: &mut PanelState) {
+fn apply_physics_edit(mut next: PhysicsSettings, state: &mut SettingsParam) {
     if next == *state.physics {
         return;
     }
@@ -420,61 +332,4 @@ fn apply_physics_edit(mut next: PhysicsSettings, state: &mut PanelState) {
         state.report.notes = notes;
     }
     *state.physics = next;
-}
-
-/// The HUD in the top-right corner: shot count, times, events, solver cost, pocketed balls.
-fn hud(ctx: &egui::Context, state: &PanelState) {
-    let status = &*state.status;
-    egui::Window::new("HUD")
-        .title_bar(false)
-        .resizable(false)
-        .anchor(egui::Align2::RIGHT_TOP, [-10.0, 10.0])
-        .show(ctx, |ui| {
-            if state
-                .mode
-                .as_deref()
-                .is_some_and(|mode| *mode == crate::replay::AppMode::Replay)
-            {
-                ui.colored_label(
-                    Color32::from_rgb(120, 190, 255),
-                    "replaying a recording: the live game below waits",
-                );
-            }
-            ui.label(format!("shots: {}", status.shots));
-            ui.label(format!("simulated time: {:.3} s", status.sim_time));
-            ui.label(format!("events this shot: {}", status.events_this_shot));
-            ui.label(format!(
-                "solver: {:.3} ms/frame",
-                status.solver_seconds_last_frame * 1e3
-            ));
-            let mut pocketed: Vec<u8> = state.pocketed.iter().map(|b| b.number).collect();
-            pocketed.sort_unstable();
-            let list = if pocketed.is_empty() {
-                "none".to_owned()
-            } else {
-                pocketed
-                    .iter()
-                    .map(|n| {
-                        if *n == 0 {
-                            "cue".to_owned()
-                        } else {
-                            n.to_string()
-                        }
-                    })
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            };
-            ui.label(format!("pocketed: {list}"));
-            let state_text = if state.physics.paused {
-                "paused"
-            } else if status.at_rest {
-                "at rest: ready to shoot"
-            } else {
-                "balls moving"
-            };
-            ui.label(state_text);
-            if let Some(note) = &status.note {
-                ui.colored_label(Color32::from_rgb(255, 170, 60), note);
-            }
-        });
 }

@@ -1,44 +1,24 @@
-//! The replay viewer's egui parts: the "Recordings" section of the left panel and the
-//! timeline window shown while a recording is open, plus the replay keys. They only read
-//! [`Replay`] and write [`ReplayCommand`]s; the systems in [`super`] apply them.
+//! The replay timeline, anchored at the bottom of the 3D view while a recording is open:
+//! transport buttons, speed, a scrub bar, the event under the replay time, Verify, Close and
+//! the Export form. It only reads [`Replay`] and writes [`ReplayCommand`]s.
 
 use std::path::PathBuf;
 
-use bevy::{ecs::system::SystemParam, prelude::*};
+use bevy::prelude::*;
 use bevy_egui::{
-    EguiContexts, EguiPrimaryContextPass,
-    egui::{self, Color32, RichText},
-    input::egui_wants_any_keyboard_input,
+    EguiContexts,
+    egui::{self, RichText},
 };
 
-use super::{
+use super::layout::{PANEL_WIDTH, SUCCESS, TIMELINE_WIDTH, WARNING, WINDOW_MARGIN};
+use crate::replay::{
     ExportFormat, ExportRequest, ExportScope, MAX_SPEED, MIN_SPEED, OpenRecording, Replay,
-    ReplayCommand, replaying,
+    ReplayCommand,
 };
-use crate::recording::{Autosave, RecordingsFolder, list_recordings};
 
-/// Registers the timeline window and the replay keys (needs egui and a window; the replay
-/// logic itself is [`super::plugin`]).
-pub fn plugin(app: &mut App) {
-    app.init_resource::<ReplayForm>()
-        .add_systems(EguiPrimaryContextPass, timeline_window.run_if(replaying))
-        .add_systems(
-            Update,
-            replay_keys
-                .run_if(replaying)
-                .run_if(not(egui_wants_any_keyboard_input)),
-        );
-}
-
-/// What the replay widgets edit between frames.
+/// What the Export form edits between frames.
 #[derive(Resource, Debug, Clone, PartialEq)]
-pub struct ReplayForm {
-    /// The path typed into the "open" field.
-    pub path: String,
-    /// The recordings folder's files, newest first, as last listed.
-    pub files: Vec<PathBuf>,
-    /// Whether `files` has been listed at all.
-    pub listed: bool,
+pub struct ExportForm {
     /// Export format.
     pub format: ExportFormat,
     /// Export scope.
@@ -53,12 +33,9 @@ pub struct ReplayForm {
     pub export_path: String,
 }
 
-impl Default for ReplayForm {
+impl Default for ExportForm {
     fn default() -> Self {
         Self {
-            path: String::new(),
-            files: Vec::new(),
-            listed: false,
             format: ExportFormat::Gif,
             scope: ExportScope::CurrentShot,
             fps: 30.0,
@@ -69,108 +46,8 @@ impl Default for ReplayForm {
     }
 }
 
-/// What the "Recordings" section of the left panel needs.
-#[derive(SystemParam)]
-pub struct RecordingsParam<'w> {
-    replay: Res<'w, Replay>,
-    form: ResMut<'w, ReplayForm>,
-    folder: Res<'w, RecordingsFolder>,
-    autosave: Option<Res<'w, Autosave>>,
-    commands: MessageWriter<'w, ReplayCommand>,
-}
-
-/// Most recordings listed in the panel at once (the newest).
-const LISTED: usize = 50;
-
-/// The "Recordings" section of the left panel: the folder's files with an Open button each,
-/// a path field, the last error, the open replay and a running export.
-pub fn recordings_section(ui: &mut egui::Ui, param: &mut RecordingsParam) {
-    egui::CollapsingHeader::new("Recordings")
-        .default_open(true)
-        .show(ui, |ui| recordings(ui, param));
-}
-
-fn recordings(ui: &mut egui::Ui, param: &mut RecordingsParam) {
-    let RecordingsParam {
-        replay,
-        form,
-        folder,
-        autosave,
-        commands,
-    } = param;
-    let saved_since = autosave
-        .as_ref()
-        .is_some_and(|autosave| autosave.is_changed());
-    match &folder.0 {
-        None => {
-            ui.label(RichText::new("not recording (--no-record)").weak());
-        }
-        Some(dir) => {
-            if !form.listed || saved_since {
-                form.files = list_recordings(dir);
-                form.listed = true;
-            }
-            ui.horizontal(|ui| {
-                ui.label(RichText::new(dir.display().to_string()).weak());
-                if ui.small_button("refresh").clicked() {
-                    form.files = list_recordings(dir);
-                }
-            });
-            if form.files.is_empty() {
-                ui.label(RichText::new("no recordings yet: every shot is saved").weak());
-            }
-            egui::ScrollArea::vertical()
-                .id_salt("recordings list")
-                .max_height(140.0)
-                .show(ui, |ui| {
-                    for file in form.files.iter().take(LISTED) {
-                        ui.horizontal(|ui| {
-                            if ui.small_button("Open").clicked() {
-                                commands.write(ReplayCommand::Open(file.clone()));
-                            }
-                            let name = file.file_name().unwrap_or_default().to_string_lossy();
-                            ui.label(name).on_hover_text(file.display().to_string());
-                        });
-                    }
-                });
-        }
-    }
-    ui.horizontal(|ui| {
-        let field = ui.add(
-            egui::TextEdit::singleline(&mut form.path)
-                .hint_text("recording.json (or drop a file)")
-                .desired_width(200.0),
-        );
-        let entered = field.lost_focus() && ui.input(|input| input.key_pressed(egui::Key::Enter));
-        let path = form.path.trim();
-        if (ui.button("Open").clicked() || entered) && !path.is_empty() {
-            commands.write(ReplayCommand::Open(PathBuf::from(path)));
-        }
-    });
-    if let Some(error) = &replay.error {
-        ui.colored_label(Color32::from_rgb(255, 170, 60), error);
-    }
-    if let Some(open) = &replay.open {
-        ui.horizontal(|ui| {
-            ui.label(format!("replaying {}", file_name(open)));
-            if ui.button("Close replay").clicked() {
-                commands.write(ReplayCommand::Close);
-            }
-        });
-    }
-    export_status(ui, replay);
-}
-
-fn file_name(open: &OpenRecording) -> String {
-    open.path
-        .file_name()
-        .unwrap_or(open.path.as_os_str())
-        .to_string_lossy()
-        .into_owned()
-}
-
 /// The running export's progress bar, or how the last one ended.
-fn export_status(ui: &mut egui::Ui, replay: &Replay) {
+pub fn export_status(ui: &mut egui::Ui, replay: &Replay) {
     if let Some(job) = &replay.export {
         let (done, total) = job.progress();
         ui.add(
@@ -180,30 +57,30 @@ fn export_status(ui: &mut egui::Ui, replay: &Replay) {
     } else if let Some(result) = &replay.export_result {
         match result {
             Ok(written) => ui.label(format!("exported {written}")),
-            Err(error) => ui.colored_label(Color32::from_rgb(255, 170, 60), error),
+            Err(error) => ui.colored_label(WARNING, error),
         };
     }
 }
 
 /// The timeline, anchored at the bottom of the 3D view.
-fn timeline_window(
+pub fn timeline_window(
     mut contexts: EguiContexts,
     replay: Res<Replay>,
-    mut form: ResMut<ReplayForm>,
+    mut form: ResMut<ExportForm>,
     mut commands: MessageWriter<ReplayCommand>,
 ) -> Result {
     let Some(open) = &replay.open else {
         return Ok(());
     };
     let ctx = contexts.ctx_mut()?.clone();
-    egui::Window::new(format!("Replay: {}", file_name(open)))
+    egui::Window::new(format!("Replay: {}", open.file_name()))
         .id(egui::Id::new("replay timeline"))
         .anchor(
             egui::Align2::CENTER_BOTTOM,
-            [crate::ui::PANEL_WIDTH / 2.0, -10.0],
+            [PANEL_WIDTH / 2.0, -WINDOW_MARGIN],
         )
         .resizable(false)
-        .default_width(620.0)
+        .default_width(TIMELINE_WIDTH)
         .show(&ctx, |ui| {
             timeline(ui, &replay, open, &mut form, &mut commands);
         });
@@ -214,7 +91,7 @@ fn timeline(
     ui: &mut egui::Ui,
     replay: &Replay,
     open: &OpenRecording,
-    form: &mut ReplayForm,
+    form: &mut ExportForm,
     commands: &mut MessageWriter<ReplayCommand>,
 ) {
     let t = replay.time;
@@ -263,7 +140,7 @@ fn timeline(
     ui.scope(|ui| {
         ui.spacing_mut().slider_width = (ui.available_width() - 10.0).max(100.0);
         let mut scrub = t;
-        let slider = egui::Slider::new(&mut scrub, 0.0..=open.end_time.max(1e-9))
+        let slider = egui::Slider::new(&mut scrub, 0.0..=open.end_time().max(1e-9))
             .show_value(false)
             .smart_aim(false);
         if ui.add(slider).changed() {
@@ -272,7 +149,7 @@ fn timeline(
     });
     ui.label(format!(
         "time {t:.4} s of {:.3} s    shot {} of {}",
-        open.end_time,
+        open.end_time(),
         open.shot_at(t),
         open.shots.len()
     ));
@@ -302,9 +179,9 @@ fn timeline(
                 verdict,
                 Ok(billiards_physics::recording::Verdict::Reproduced { .. })
             ) {
-                Color32::from_rgb(120, 220, 120)
+                SUCCESS
             } else {
-                Color32::from_rgb(255, 170, 60)
+                WARNING
             };
             ui.colored_label(colour, open.verdict_text(verdict));
         }
@@ -323,7 +200,7 @@ fn export_form(
     ui: &mut egui::Ui,
     replay: &Replay,
     open: &OpenRecording,
-    form: &mut ReplayForm,
+    form: &mut ExportForm,
     commands: &mut MessageWriter<ReplayCommand>,
 ) {
     let (shot, _) = open.export_span(ExportScope::CurrentShot, replay.time);
@@ -381,22 +258,4 @@ fn export_form(
         }));
     }
     export_status(ui, replay);
-}
-
-/// Space: play or pause; Left/Right: previous/next event; Page Up/Down: previous/next shot;
-/// Esc: close the replay.
-fn replay_keys(keys: Res<ButtonInput<KeyCode>>, mut commands: MessageWriter<ReplayCommand>) {
-    let bindings = [
-        (KeyCode::Space, ReplayCommand::TogglePlay),
-        (KeyCode::ArrowLeft, ReplayCommand::PreviousEvent),
-        (KeyCode::ArrowRight, ReplayCommand::NextEvent),
-        (KeyCode::PageUp, ReplayCommand::PreviousShot),
-        (KeyCode::PageDown, ReplayCommand::NextShot),
-        (KeyCode::Escape, ReplayCommand::Close),
-    ];
-    for (key, command) in bindings {
-        if keys.just_pressed(key) {
-            commands.write(command);
-        }
-    }
 }

@@ -1,0 +1,15 @@
+//! Where the player's pointer and keyboard input goes. The game's input systems (aiming, the
+//! camera, the timeline's keys) sit in these sets; the UI plugin ([`crate::ui`]) turns a set
+//! off while the UI has claimed that input, so a click or key meant for a widget never also
+//! reaches the table. No plugin has to know about the UI to be kept out of its way.
+
+use bevy::prelude::*;
+
+/// The input systems of every plugin, by the device they read.
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum InputSystems {
+    /// Systems that read the mouse (buttons, motion, wheel) to act on the table or camera.
+    Pointer,
+    /// Systems that read the keyboard.
+    Keyboard,
+}

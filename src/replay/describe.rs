@@ -1,0 +1,107 @@
+//! What the replay says in words: an event with the balls by number ("ball 3 hit the foot
+//! cushion") and the outcome of a verification.
+
+use billiards_physics::{Cushion, Event, EventKind, Motion, Pocket, recording::Verdict};
+
+use super::open::OpenRecording;
+
+impl OpenRecording {
+    /// What happened at an event, with the balls by number (`"ball 3 hit the foot cushion"`).
+    pub fn describe(&self, event: &Event) -> String {
+        let ball = |id: usize| match self.number(id) {
+            0 => "cue ball".to_owned(),
+            n => format!("ball {n}"),
+        };
+        match event.kind {
+            EventKind::Strike { ball: id, shot } => format!(
+                "strike: {} at {:.1} deg, {:.2} m/s",
+                ball(id),
+                shot.angle.to_degrees(),
+                shot.speed
+            ),
+            EventKind::Placed { ball: id } => format!("{} placed", ball(id)),
+            EventKind::ParamsChanged => "parameters changed".to_owned(),
+            EventKind::Transition { ball: id, from, to } => {
+                format!(
+                    "{}: {} to {}",
+                    ball(id),
+                    motion_label(from),
+                    motion_label(to)
+                )
+            }
+            EventKind::Cushion { ball: id, cushion } => {
+                format!("{} hit the {} cushion", ball(id), cushion_label(cushion))
+            }
+            EventKind::Jaw { ball: id, pocket } => {
+                format!(
+                    "{} hit a jaw of the {} pocket",
+                    ball(id),
+                    pocket_label(pocket)
+                )
+            }
+            EventKind::Pocketed { ball: id, pocket } => {
+                format!(
+                    "{} pocketed in the {} pocket",
+                    ball(id),
+                    pocket_label(pocket)
+                )
+            }
+            EventKind::BallBall { a, b } => format!("{} hit {}", ball(a), ball(b)),
+        }
+    }
+
+    /// The outcome of [`Recording::verify`](billiards_physics::recording::Recording::verify)
+    /// for the player.
+    pub fn verdict_text(&self, verdict: &Result<Verdict, String>) -> String {
+        let event = |e: &Option<Box<Event>>| {
+            e.as_ref().map_or("nothing".to_owned(), |e| {
+                format!("{} at {:.6} s", self.describe(e), e.time)
+            })
+        };
+        match verdict {
+            Ok(Verdict::Reproduced { events }) => {
+                format!("reproduced bit for bit ({events} events)")
+            }
+            Ok(Verdict::Differs {
+                index,
+                recorded,
+                replayed,
+            }) => format!(
+                "differs at event {index}: recorded {}, re-simulated {}",
+                event(recorded),
+                event(replayed)
+            ),
+            Err(error) => format!("cannot re-simulate: {error}"),
+        }
+    }
+}
+
+fn cushion_label(cushion: Cushion) -> &'static str {
+    match cushion {
+        Cushion::Head => "head",
+        Cushion::Foot => "foot",
+        Cushion::Left => "left",
+        Cushion::Right => "right",
+    }
+}
+
+fn pocket_label(pocket: Pocket) -> &'static str {
+    match pocket {
+        Pocket::HeadLeft => "head-left corner",
+        Pocket::HeadRight => "head-right corner",
+        Pocket::SideLeft => "left side",
+        Pocket::SideRight => "right side",
+        Pocket::FootLeft => "foot-left corner",
+        Pocket::FootRight => "foot-right corner",
+    }
+}
+
+fn motion_label(motion: Motion) -> &'static str {
+    match motion {
+        Motion::Stationary => "rest",
+        Motion::Sliding => "sliding",
+        Motion::Rolling => "rolling",
+        Motion::Spinning => "spinning in place",
+        Motion::Pocketed(_) => "pocketed",
+    }
+}

@@ -1,0 +1,74 @@
+//! The HUD in the top-right corner of the 3D view: shots, simulated time, events, the
+//! solver's cost per frame, the pocketed balls, what the table is doing and the last note.
+
+use bevy::prelude::*;
+use bevy_egui::{EguiContexts, egui};
+
+use super::layout::{INFO, WARNING, WINDOW_MARGIN};
+use crate::{
+    balls::{Ball, Pocketed},
+    mode::GameMode,
+    settings::PhysicsSettings,
+    sim::SimStatus,
+};
+
+/// What the HUD shows.
+#[derive(bevy::ecs::system::SystemParam)]
+pub struct HudParam<'w, 's> {
+    status: Res<'w, SimStatus>,
+    physics: Res<'w, PhysicsSettings>,
+    pocketed: Query<'w, 's, &'static Ball, With<Pocketed>>,
+    mode: Res<'w, State<GameMode>>,
+}
+
+/// The HUD in the top-right corner: shot count, times, events, solver cost, pocketed balls.
+pub fn hud(mut contexts: EguiContexts, state: HudParam) -> Result {
+    let ctx = contexts.ctx_mut()?.clone();
+    let status = &*state.status;
+    egui::Window::new("HUD")
+        .title_bar(false)
+        .resizable(false)
+        .anchor(egui::Align2::RIGHT_TOP, [-WINDOW_MARGIN, WINDOW_MARGIN])
+        .show(&ctx, |ui| {
+            if *state.mode.get() == GameMode::Replay {
+                ui.colored_label(INFO, "replaying a recording: the live game below waits");
+            }
+            ui.label(format!("shots: {}", status.shots));
+            ui.label(format!("simulated time: {:.3} s", status.sim_time));
+            ui.label(format!("events this shot: {}", status.events_this_shot));
+            ui.label(format!(
+                "solver: {:.3} ms/frame",
+                status.solver_seconds_last_frame * 1e3
+            ));
+            let mut pocketed: Vec<u8> = state.pocketed.iter().map(|b| b.number).collect();
+            pocketed.sort_unstable();
+            let list = if pocketed.is_empty() {
+                "none".to_owned()
+            } else {
+                pocketed
+                    .iter()
+                    .map(|n| {
+                        if *n == 0 {
+                            "cue".to_owned()
+                        } else {
+                            n.to_string()
+                        }
+                    })
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            ui.label(format!("pocketed: {list}"));
+            let state_text = if state.physics.paused {
+                "paused"
+            } else if status.at_rest {
+                "at rest: ready to shoot"
+            } else {
+                "balls moving"
+            };
+            ui.label(state_text);
+            if let Some(note) = &status.note {
+                ui.colored_label(WARNING, note);
+            }
+        });
+    Ok(())
+}

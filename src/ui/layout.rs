@@ -1,0 +1,30 @@
+//! Sizes and colours shared by the game's panels and windows, so they line up and agree.
+
+use bevy_egui::egui::Color32;
+
+/// Width of the settings panel on the left, in logical pixels. The 3D view takes the rest.
+pub const PANEL_WIDTH: f32 = 340.0;
+
+/// Gap between a floating window (HUD, timeline) and the edge of the 3D view.
+pub const WINDOW_MARGIN: f32 = 10.0;
+
+/// Width the replay timeline window asks for.
+pub const TIMELINE_WIDTH: f32 = 620.0;
+
+/// Height of the list of recordings before it scrolls.
+pub const RECORDINGS_LIST_HEIGHT: f32 = 140.0;
+
+/// Width of the path fields (recording to open).
+pub const PATH_FIELD_WIDTH: f32 = 200.0;
+
+/// Side of the cue-ball tip picker.
+pub const TIP_PICKER_SIZE: f32 = 96.0;
+
+/// Something the player should read: a clamp, an error, a refused input.
+pub const WARNING: Color32 = Color32::from_rgb(255, 170, 60);
+
+/// Something went as asked (a verification reproduced).
+pub const SUCCESS: Color32 = Color32::from_rgb(120, 220, 120);
+
+/// A mode note (replaying a recording).
+pub const INFO: Color32 = Color32::from_rgb(120, 190, 255);

@@ -1,0 +1,131 @@
+//! Every egui part of the game, and nothing else: the settings panel on the left, the HUD,
+//! the Recordings section and the replay timeline. Widgets only read resources and write
+//! settings or messages; the game's logic runs without them (the headless tests).
+//!
+//! - [`layout`]: shared sizes and colours;
+//! - [`settings`]: the panel's shot, physics, simulation and view sections;
+//! - [`recordings`]: the Recordings section (open a recording);
+//! - [`timeline`]: the replay timeline window and its Export form;
+//! - [`hud`]: the HUD in the top-right corner.
+//!
+//! The 3D view is fitted to the part of the window right of the panel, so the panel never
+//! covers the table. While egui has claimed the pointer or the keyboard, the game's input
+//! systems ([`InputSystems`]) do not run, so input meant for a widget never reaches the table.
+
+pub mod hud;
+pub mod layout;
+pub mod recordings;
+pub mod settings;
+pub mod timeline;
+
+use bevy::{
+    camera::{CameraOutputMode, Viewport, visibility::RenderLayers},
+    prelude::*,
+    render::render_resource::BlendState,
+    window::PrimaryWindow,
+};
+use bevy_egui::{
+    EguiContexts, EguiGlobalSettings, EguiPlugin, EguiPrimaryContextPass, PrimaryEguiContext, egui,
+    input::{egui_wants_any_keyboard_input, egui_wants_any_pointer_input},
+};
+
+pub use layout::PANEL_WIDTH;
+
+use crate::{camera::TableCamera, input::InputSystems, mode::GameMode};
+
+/// Adds egui, registers the panels and windows, and keeps the game's input away from them.
+pub fn plugin(app: &mut App) {
+    app.add_plugins(EguiPlugin::default())
+        .init_resource::<recordings::RecordingsForm>()
+        .init_resource::<timeline::ExportForm>()
+        .configure_sets(
+            Update,
+            (
+                InputSystems::Pointer.run_if(not(egui_wants_any_pointer_input)),
+                InputSystems::Keyboard.run_if(not(egui_wants_any_keyboard_input)),
+            ),
+        )
+        .add_systems(Startup, spawn_ui_camera)
+        .add_systems(
+            EguiPrimaryContextPass,
+            (
+                left_panel,
+                hud::hud,
+                timeline::timeline_window.run_if(in_state(GameMode::Replay)),
+            ),
+        );
+}
+
+/// The egui context gets a camera of its own that draws nothing but the UI, on top of the
+/// table camera; the table camera can then take a viewport beside the panel.
+fn spawn_ui_camera(mut commands: Commands, mut egui_settings: ResMut<EguiGlobalSettings>) {
+    egui_settings.auto_create_primary_context = false;
+    commands.spawn((
+        Name::new("UI camera"),
+        PrimaryEguiContext,
+        Camera2d,
+        RenderLayers::none(),
+        Camera {
+            order: 1,
+            output_mode: CameraOutputMode::Write {
+                blend_state: Some(BlendState::ALPHA_BLENDING),
+                clear_color: ClearColorConfig::None,
+            },
+            clear_color: ClearColorConfig::Custom(Color::NONE),
+            ..default()
+        },
+    ));
+}
+
+/// The settings panel on the left, with the Recordings section; fits the 3D view beside it.
+fn left_panel(
+    mut contexts: EguiContexts,
+    mut state: settings::SettingsParam,
+    mut recordings: recordings::RecordingsParam,
+    window: Single<&Window, With<PrimaryWindow>>,
+    mut camera: Single<&mut Camera, With<TableCamera>>,
+) -> Result {
+    let ctx = contexts.ctx_mut()?.clone();
+    let mut root = egui::Ui::new(
+        ctx.clone(),
+        "root".into(),
+        egui::UiBuilder::new()
+            .layer_id(egui::LayerId::background())
+            .max_rect(ctx.viewport_rect()),
+    );
+    let panel_width = egui::Panel::left("settings")
+        .resizable(false)
+        .exact_size(PANEL_WIDTH)
+        .show(&mut root, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| {
+                settings::sections(ui, &mut state);
+                recordings::section(ui, &mut recordings);
+                settings::notes_and_controls(ui, &mut state);
+            });
+        })
+        .response
+        .rect
+        .width();
+    fit_viewport(&window, &mut camera, panel_width);
+    Ok(())
+}
+
+/// Gives the table camera the window area right of the panel.
+fn fit_viewport(window: &Window, camera: &mut Camera, panel_width: f32) {
+    let left = ((panel_width * window.scale_factor()) as u32).min(window.physical_width() - 1);
+    let viewport = Viewport {
+        physical_position: UVec2::new(left, 0),
+        physical_size: UVec2::new(
+            window.physical_width() - left,
+            window.physical_height().max(1),
+        ),
+        ..default()
+    };
+    let unchanged = camera.viewport.as_ref().is_some_and(|current| {
+        current.physical_position == viewport.physical_position
+            && current.physical_size == viewport.physical_size
+    });
+    if !unchanged {
+        camera.viewport = Some(viewport);
+    }
+}

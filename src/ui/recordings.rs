@@ -1,0 +1,120 @@
+//! The "Recordings" section of the left panel: the recordings folder's files with an Open
+//! button each, a path field, why the last file could not be opened, the open replay and a
+//! running export. It only reads [`Replay`] and writes [`ReplayCommand`]s.
+
+use std::path::PathBuf;
+
+use bevy::{ecs::system::SystemParam, prelude::*};
+use bevy_egui::egui::{self, RichText};
+
+use super::{
+    layout::{PATH_FIELD_WIDTH, RECORDINGS_LIST_HEIGHT, WARNING},
+    timeline::export_status,
+};
+use crate::{
+    recording::{Autosave, RecordingsFolder, list_recordings},
+    replay::{Replay, ReplayCommand},
+};
+
+/// What the Recordings section edits between frames.
+#[derive(Resource, Debug, Clone, PartialEq, Default)]
+pub struct RecordingsForm {
+    /// The path typed into the "open" field.
+    pub path: String,
+    /// The recordings folder's files, newest first, as last listed.
+    pub files: Vec<PathBuf>,
+    /// Whether `files` has been listed at all.
+    pub listed: bool,
+}
+
+/// What the "Recordings" section of the left panel needs.
+#[derive(SystemParam)]
+pub struct RecordingsParam<'w> {
+    replay: Res<'w, Replay>,
+    form: ResMut<'w, RecordingsForm>,
+    folder: Res<'w, RecordingsFolder>,
+    autosave: Option<Res<'w, Autosave>>,
+    commands: MessageWriter<'w, ReplayCommand>,
+}
+
+/// Most recordings listed in the panel at once (the newest).
+const LISTED: usize = 50;
+
+/// The "Recordings" section of the left panel: the folder's files with an Open button each,
+/// a path field, the last error, the open replay and a running export.
+pub fn section(ui: &mut egui::Ui, param: &mut RecordingsParam) {
+    egui::CollapsingHeader::new("Recordings")
+        .default_open(true)
+        .show(ui, |ui| recordings(ui, param));
+}
+
+fn recordings(ui: &mut egui::Ui, param: &mut RecordingsParam) {
+    let RecordingsParam {
+        replay,
+        form,
+        folder,
+        autosave,
+        commands,
+    } = param;
+    let saved_since = autosave
+        .as_ref()
+        .is_some_and(|autosave| autosave.is_changed());
+    match &folder.0 {
+        None => {
+            ui.label(RichText::new("not recording (--no-record)").weak());
+        }
+        Some(dir) => {
+            if !form.listed || saved_since {
+                form.files = list_recordings(dir);
+                form.listed = true;
+            }
+            ui.horizontal(|ui| {
+                ui.label(RichText::new(dir.display().to_string()).weak());
+                if ui.small_button("refresh").clicked() {
+                    form.files = list_recordings(dir);
+                }
+            });
+            if form.files.is_empty() {
+                ui.label(RichText::new("no recordings yet: every shot is saved").weak());
+            }
+            egui::ScrollArea::vertical()
+                .id_salt("recordings list")
+                .max_height(RECORDINGS_LIST_HEIGHT)
+                .show(ui, |ui| {
+                    for file in form.files.iter().take(LISTED) {
+                        ui.horizontal(|ui| {
+                            if ui.small_button("Open").clicked() {
+                                commands.write(ReplayCommand::Open(file.clone()));
+                            }
+                            let name = file.file_name().unwrap_or_default().to_string_lossy();
+                            ui.label(name).on_hover_text(file.display().to_string());
+                        });
+                    }
+                });
+        }
+    }
+    ui.horizontal(|ui| {
+        let field = ui.add(
+            egui::TextEdit::singleline(&mut form.path)
+                .hint_text("recording.json (or drop a file)")
+                .desired_width(PATH_FIELD_WIDTH),
+        );
+        let entered = field.lost_focus() && ui.input(|input| input.key_pressed(egui::Key::Enter));
+        let path = form.path.trim();
+        if (ui.button("Open").clicked() || entered) && !path.is_empty() {
+            commands.write(ReplayCommand::Open(PathBuf::from(path)));
+        }
+    });
+    if let Some(error) = &replay.error {
+        ui.colored_label(WARNING, error);
+    }
+    if let Some(open) = &replay.open {
+        ui.horizontal(|ui| {
+            ui.label(format!("replaying {}", open.file_name()));
+            if ui.button("Close replay").clicked() {
+                commands.write(ReplayCommand::Close);
+            }
+        });
+    }
+    export_status(ui, replay);
+}
