@@ -5,6 +5,7 @@ use crate::export::{self, ExportOptions};
 use billiards_physics::recording::{Recorder, Recording, Verdict};
 use billiards_physics::scene::Scene;
 use billiards_physics::*;
+use billiards_rules::Shots;
 use clap::{Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use rand::{Rng, SeedableRng};
@@ -113,7 +114,7 @@ pub struct ExportArgs {
     /// Frame size, `WIDTHxHEIGHT`.
     #[arg(long, default_value = "640x360", value_parser = parse_size)]
     pub size: (u32, u32),
-    /// Export only this shot (0 is the first); default the whole game.
+    /// Export only this shot, counted from 1 as in the game's timeline; default the whole game.
     #[arg(long)]
     pub shot: Option<usize>,
 }
@@ -222,27 +223,16 @@ fn setup(a: &SimulateArgs) -> Result<(Table, Params, Vec<BallSetup>, Vec<Shot>),
     ))
 }
 
-/// After a scratch the cue ball goes back to the head spot, or the nearest free place on the
-/// head string (the game's rule).
+/// After a scratch the cue ball goes back on the head string: the rule of
+/// [`billiards_rules::respot`], the same as the game's.
 fn respot_cue_ball(rec: &mut Recorder) -> Result<(), String> {
     if rec.sim().ball(0).motion.on_table() {
         return Ok(());
     }
-    let table = *rec.sim().table();
-    let r = rec.sim().params().ball.radius;
-    let limit = table.centre_bounds(r).y;
-    let spots = (0..)
-        .map(|k| f64::from(k) * 2.1 * r)
-        .take_while(|&d| d <= limit);
-    for d in spots {
-        for y in [d, -d] {
-            let p = Vec2::new(table.head_spot().x, y);
-            if rec.place(0, p, Vec2::ZERO, Vec3::ZERO).is_ok() {
-                return Ok(());
-            }
-        }
-    }
-    Err("no free place on the head string for the cue ball".into())
+    let spot = billiards_rules::cue_ball_spot(rec.sim(), 0)
+        .ok_or("no free place on the head string for the cue ball")?;
+    rec.place(0, spot, Vec2::ZERO, Vec3::ZERO)
+        .map_err(|e| e.to_string())
 }
 
 fn play(rec: &mut Recorder, shot: Shot) -> Result<ShotSummary, String> {
@@ -280,7 +270,8 @@ fn simulate(a: SimulateArgs) -> Result<(), String> {
     }
     let mut rec = Recorder::new(table, params, balls).map_err(|e| e.to_string())?;
     let mut out = Vec::new();
-    for (k, shot) in shots.into_iter().enumerate() {
+    // Shots count from 1, as in the game and `export --shot K` (billiards_rules::shots).
+    for (k, shot) in (1..).zip(shots) {
         let s = play(&mut rec, shot).map_err(|e| format!("shot {k}: {e}"))?;
         out.push(s);
         if let Some(path) = &a.out {
@@ -294,7 +285,7 @@ fn simulate(a: SimulateArgs) -> Result<(), String> {
             serde_json::to_string_pretty(&out).map_err(|e| e.to_string())?
         );
     } else {
-        for (k, s) in out.iter().enumerate() {
+        for (k, s) in (1..).zip(&out) {
             println!(
                 "shot {k}: {} events, pocketed {:?}, rest after {:.3} s",
                 s.events, s.pocketed, s.time_to_rest
@@ -392,29 +383,18 @@ fn verify(file: &std::path::Path) -> Result<(), String> {
     }
 }
 
-/// Simulated time span of shot `k` of a recording: from its strike to the next strike (or the
-/// end).
-pub fn shot_span(rec: &Recording, k: usize) -> Option<(f64, f64)> {
-    let strikes: Vec<f64> = rec
-        .events
-        .iter()
-        .filter(|e| matches!(e.kind, EventKind::Strike { .. }))
-        .map(|e| e.time)
-        .collect();
-    let start = *strikes.get(k)?;
-    let end = strikes.get(k + 1).copied().unwrap_or(rec.end_time);
-    Some((start, end))
-}
-
 fn export_cmd(a: ExportArgs) -> Result<(), String> {
     let rec = Recording::load(&a.file).map_err(|e| e.to_string())?;
+    let shots = Shots::of(&rec);
     let span = match a.shot {
-        Some(k) => shot_span(&rec, k)
-            .ok_or_else(|| format!("{}: there is no shot {k}", a.file.display()))?,
-        None => (
-            0.0,
-            rec.end_time.max(rec.events.last().map_or(0.0, |e| e.time)),
-        ),
+        Some(k) => shots.span(k).ok_or_else(|| {
+            format!(
+                "{}: there is no shot {k} (shots count from 1; this recording has {})",
+                a.file.display(),
+                shots.len()
+            )
+        })?,
+        None => shots.whole(),
     };
     let opts = ExportOptions {
         fps: a.fps,

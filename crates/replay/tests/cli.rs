@@ -298,3 +298,97 @@ fn killing_the_recorder_mid_game_leaves_the_last_complete_shot_on_disk() {
     ));
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn shots_count_from_one_in_simulate_and_export() {
+    let dir = temp("shot-numbers");
+    let file = dir.join("game.json");
+    let (ok, stdout, err) = run(bin()
+        .args([
+            "simulate",
+            "--rack",
+            "nine-ball",
+            "--shot",
+            "0:8",
+            "--shot",
+            "90:1",
+            "--out",
+        ])
+        .arg(&file));
+    assert!(ok, "{err}");
+    assert!(
+        stdout.starts_with("shot 1:") && stdout.contains("\nshot 2:"),
+        "{stdout}"
+    );
+    let export = |shot: &str| {
+        run(bin()
+            .arg("export")
+            .arg(&file)
+            .args(["--fps", "2", "--size", "32x18", "--shot", shot, "--gif"])
+            .arg(dir.join(format!("shot{shot}.gif"))))
+    };
+    for good in ["1", "2"] {
+        let (ok, _, err) = export(good);
+        assert!(ok, "shot {good}: {err}");
+    }
+    for bad in ["0", "3"] {
+        let (ok, _, err) = export(bad);
+        assert!(
+            !ok && err.contains(&format!("there is no shot {bad} (shots count from 1")),
+            "shot {bad}: {err}"
+        );
+    }
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn a_scratch_respots_the_cue_ball_by_the_rules_crate() {
+    // From the head spot straight into the foot-left corner, with only the cue ball and a ball
+    // on the head spot's right: the second shot starts from billiards_rules' spot.
+    let table = Table::wpa_8ft();
+    let r = Params::default().ball.radius;
+    let blocker = table.head_spot() + Vec2::new(0.0, -0.01);
+    let scene = serde_json::json!({
+        "balls": [
+            { "number": 0, "position": table.head_spot() + Vec2::new(0.4, 0.0) },
+            { "number": 1, "position": blocker },
+        ],
+        "shots": [],
+    });
+    let dir = temp("respot");
+    let scene_file = dir.join("scene.json");
+    std::fs::write(&scene_file, scene.to_string()).unwrap();
+    let corner = Vec2::new(table.length / 2.0, table.width / 2.0);
+    let start = table.head_spot() + Vec2::new(0.4, 0.0);
+    let angle = (corner - start).angle().to_degrees();
+    let file = dir.join("game.json");
+    let (ok, _, err) = run(bin()
+        .arg("simulate")
+        .arg("--scene")
+        .arg(&scene_file)
+        .args([
+            "--shot",
+            &format!("{angle}:3"),
+            "--shot",
+            "180:0.5",
+            "--out",
+        ])
+        .arg(&file));
+    assert!(ok, "{err}");
+    let rec = Recording::load(&file).unwrap();
+    let placed: Vec<Vec2> = rec
+        .inputs
+        .iter()
+        .filter_map(|input| match input.action {
+            recording::Action::Place { position, .. } => Some(position),
+            _ => None,
+        })
+        .collect();
+    let want = billiards_rules::head_string_spot(&table, r, &[blocker]).unwrap();
+    assert_eq!(
+        placed,
+        vec![want],
+        "the cue ball was respotted once, at the rule's spot"
+    );
+    std::fs::remove_dir_all(dir).ok();
+}

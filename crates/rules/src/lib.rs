@@ -1,0 +1,14 @@
+//! The rules of the game, in one place that the game, the command line (`billiards-cli`) and
+//! the computer opponent all call. Pure Rust on top of `billiards-physics`: no Bevy, no I/O.
+//!
+//! - [`respot`]: where the cue ball goes back after a scratch (the head string);
+//! - [`shots`]: what a "shot" of a recording is (from one strike to the next), numbered from 1
+//!   everywhere a player sees a shot number.
+//!
+//! Rulesets (8-ball, 9-ball under the WPA rules, free play) grow here behind one interface.
+
+pub mod respot;
+pub mod shots;
+
+pub use respot::{RESPOT_CLEARANCE, cue_ball_spot, head_string_spot};
+pub use shots::Shots;
