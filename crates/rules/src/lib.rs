@@ -3,12 +3,17 @@
 //!
 //! - [`respot`]: where the cue ball goes back after a scratch (the head string);
 //! - [`shots`]: what a "shot" of a recording is (from one strike to the next), numbered from 1
-//!   everywhere a player sees a shot number.
+//!   everywhere a player sees a shot number;
+//! - [`shot`]: the facts of one shot read from the solver's events ([`ShotSummary`]);
+//! - [`racks`]: 8-ball and 9-ball racks with a real rack's small random gaps, from a seed.
 //!
 //! Rulesets (8-ball, 9-ball under the WPA rules, free play) grow here behind one interface.
 
+pub mod racks;
 pub mod respot;
+pub mod shot;
 pub mod shots;
 
 pub use respot::{RESPOT_CLEARANCE, cue_ball_spot, head_string_spot};
+pub use shot::{CUE, ShotSummary, summarise};
 pub use shots::Shots;
