@@ -5,14 +5,27 @@
 //! - [`shots`]: what a "shot" of a recording is (from one strike to the next), numbered from 1
 //!   everywhere a player sees a shot number;
 //! - [`shot`]: the facts of one shot read from the solver's events ([`ShotSummary`]);
-//! - [`racks`]: 8-ball and 9-ball racks with a real rack's small random gaps, from a seed.
-//!
-//! Rulesets (8-ball, 9-ball under the WPA rules, free play) grow here behind one interface.
+//! - [`racks`]: 8-ball and 9-ball racks with a real rack's small random gaps, from a seed;
+//! - [`game`]: one rack of 8-ball, 9-ball (WPA rules) or free play: [`GameState::play`]
+//!   judges a shot and returns its [`Verdict`] and the [`NextShot`];
+//! - [`foul`]: fouls and the ends of games, with sentences a player can read;
+//! - [`race`]: a match, race to N racks.
 
+pub mod eight_ball;
+pub mod foul;
+pub mod game;
+pub mod nine_ball;
+pub mod race;
 pub mod racks;
 pub mod respot;
 pub mod shot;
 pub mod shots;
+
+pub use foul::{BallOn, Foul, Group, WinReason, pocket_name};
+pub use game::{
+    Call, CallRule, Choice, CueBall, Game, GameState, NextShot, Outcome, RuleError, Seat, Verdict,
+};
+pub use race::Match;
 
 pub use respot::{RESPOT_CLEARANCE, cue_ball_spot, head_string_spot};
 pub use shot::{CUE, ShotSummary, summarise};

@@ -37,7 +37,7 @@ pub fn head_string_spot(table: &Table, radius: f64, others: &[Vec2]) -> Option<V
         .filter_map(|other| {
             let dx = other.x - spot.x;
             let half = (reach * reach - dx * dx).sqrt();
-            (half > 0.0).then(|| (other.y - half, other.y + half))
+            (half > 0.0).then_some((other.y - half, other.y + half))
         })
         .collect();
     let free = |y: f64| {
