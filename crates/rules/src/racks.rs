@@ -45,13 +45,19 @@ fn lattice(table: &Table, rows: &[usize], d: f64) -> Vec<Vec2> {
     points
 }
 
-/// Puts `numbers[k]` on lattice point `k`, each moved by a random offset of up to
-/// [`RACK_JITTER`]; the cue ball (number 0) first, on the head spot.
-fn place(table: &Table, points: &[Vec2], numbers: &[u8], rng: &mut ChaCha8Rng) -> Vec<BallSetup> {
+/// Puts `numbers[k]` on lattice point `k`, each moved by a random offset of up to `jitter`;
+/// the cue ball (number 0) first, on the head spot.
+fn place(
+    table: &Table,
+    points: &[Vec2],
+    numbers: &[u8],
+    jitter: f64,
+    rng: &mut ChaCha8Rng,
+) -> Vec<BallSetup> {
     let mut balls = vec![BallSetup::at(0, table.head_spot())];
     for (&p, &n) in points.iter().zip(numbers) {
         // Uniform in the disc: radius by the square root of a uniform draw.
-        let r = RACK_JITTER * rng.random::<f64>().sqrt();
+        let r = jitter * rng.random::<f64>().sqrt();
         let offset = Vec2::from_angle(rng.random_range(0.0..std::f64::consts::TAU)) * r;
         balls.push(BallSetup::at(n, p + offset));
     }
@@ -60,8 +66,14 @@ fn place(table: &Table, points: &[Vec2], numbers: &[u8], rng: &mut ChaCha8Rng) -
 
 /// A 9-ball rack (WPA 2.2) from `seed`: the cue ball on the head spot, then the nine balls.
 pub fn nine_ball(table: &Table, ball: &BallSpec, seed: u64) -> Vec<BallSetup> {
+    nine_ball_spaced(table, ball, seed, RACK_GAP)
+}
+
+/// [`nine_ball`] with another lattice slack `gap` (metres; offsets up to `gap / 2`), for
+/// experiments on how the break depends on the gaps.
+pub fn nine_ball_spaced(table: &Table, ball: &BallSpec, seed: u64, gap: f64) -> Vec<BallSetup> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let points = lattice(table, &DIAMOND, 2.0 * ball.radius + RACK_GAP);
+    let points = lattice(table, &DIAMOND, 2.0 * ball.radius + gap);
     let mut others: Vec<u8> = (2..=8).collect();
     others.shuffle(&mut rng);
     // Lattice order: apex, row 2 (two), row 3 (three, the centre is index 4), rows 4 and 5.
@@ -75,13 +87,18 @@ pub fn nine_ball(table: &Table, ball: &BallSpec, seed: u64) -> Vec<BallSetup> {
             rest.next().expect("seven")
         });
     }
-    place(table, &points, &numbers, &mut rng)
+    place(table, &points, &numbers, 0.5 * gap, &mut rng)
 }
 
 /// An 8-ball rack (WPA 3.2) from `seed`: the cue ball on the head spot, then the fifteen.
 pub fn eight_ball(table: &Table, ball: &BallSpec, seed: u64) -> Vec<BallSetup> {
+    eight_ball_spaced(table, ball, seed, RACK_GAP)
+}
+
+/// [`eight_ball`] with another lattice slack `gap` (metres; offsets up to `gap / 2`).
+pub fn eight_ball_spaced(table: &Table, ball: &BallSpec, seed: u64, gap: f64) -> Vec<BallSetup> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let points = lattice(table, &TRIANGLE, 2.0 * ball.radius + RACK_GAP);
+    let points = lattice(table, &TRIANGLE, 2.0 * ball.radius + gap);
     let mut solids: Vec<u8> = (1..=7).collect();
     let mut stripes: Vec<u8> = (9..=15).collect();
     solids.shuffle(&mut rng);
@@ -103,7 +120,7 @@ pub fn eight_ball(table: &Table, ball: &BallSpec, seed: u64) -> Vec<BallSetup> {
             _ => rest.next().expect("twelve"),
         })
         .collect();
-    place(table, &points, &numbers, &mut rng)
+    place(table, &points, &numbers, 0.5 * gap, &mut rng)
 }
 
 #[cfg(test)]
