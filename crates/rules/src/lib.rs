@@ -9,6 +9,7 @@
 //! - [`racks`]: 8-ball and 9-ball racks with a real rack's small random gaps, from a seed;
 //! - [`game`]: one rack of 8-ball, 9-ball (WPA rules) or free play: [`GameState::play`]
 //!   judges a shot and returns its [`Verdict`] and the [`NextShot`];
+//! - [`hand`]: whether a ball-in-hand placement is allowed;
 //! - [`foul`]: fouls and the ends of games, with sentences a player can read;
 //! - [`race`]: a match, race to N racks;
 //! - [`log`]: the rules side of a recording (calls, choices, verdicts), kept beside it.
@@ -16,6 +17,7 @@
 pub mod eight_ball;
 pub mod foul;
 pub mod game;
+pub mod hand;
 pub mod log;
 pub mod nine_ball;
 pub mod race;
@@ -28,6 +30,7 @@ pub use foul::{BallOn, Foul, Group, WinReason, pocket_name};
 pub use game::{
     Call, CallRule, Choice, CueBall, Game, GameState, NextShot, Outcome, RuleError, Seat, Verdict,
 };
+pub use hand::{PlacementError, check_placement};
 pub use log::{GameLog, LogError, LoggedShot};
 pub use race::Match;
 

@@ -127,3 +127,72 @@ impl GameLog {
         Ok(self.shots.len())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use billiards_physics::recording::Recorder;
+    use billiards_physics::{Params, Shot, Table};
+
+    /// A real 9-ball rack: the break, then a soft shot up the table; logged as played.
+    fn played() -> (GameLog, Vec<Event>, Vec<u8>) {
+        let table = Table::wpa_8ft().with_jaws(0.015);
+        let params = Params::default();
+        let balls = Game::NineBall.rack(&table, &params.ball, 4);
+        let mut rec = Recorder::new(table, params, balls).unwrap();
+        let mut state = GameState::new(Game::NineBall, Seat::A);
+        let mut log = GameLog::new(Game::NineBall, 4, ["A".into(), "B".into()], Seat::A);
+        for shot in [Shot::new(0.0, 9.0), Shot::new(0.3, 1.0)] {
+            if !rec.sim().ball(0).motion.on_table() {
+                let p = crate::cue_ball_spot(rec.sim(), 0).unwrap();
+                rec.place(0, p, Default::default(), Default::default())
+                    .unwrap();
+            }
+            let first = rec.sim().history().events().len();
+            rec.strike(0, shot).unwrap();
+            rec.run_to_rest().unwrap();
+            let s = summarise(&rec.sim().history().events()[first..], rec.sim().numbers());
+            let verdict = state.play(&s, Call::None).unwrap();
+            log.shots.push(LoggedShot {
+                choices: Vec::new(),
+                call: Call::None,
+                verdict,
+            });
+            if state.over.is_some() {
+                break;
+            }
+        }
+        let r = rec.recording();
+        let numbers = r.balls.iter().map(|b| b.number).collect();
+        (log, r.events, numbers)
+    }
+
+    #[test]
+    fn a_log_rejudges_its_recording_and_an_edited_verdict_is_found() {
+        let (log, events, numbers) = played();
+        assert_eq!(log.check(&events, &numbers), Ok(log.shots.len()));
+        // Round trip through JSON.
+        let json = serde_json::to_string(&log).unwrap();
+        assert_eq!(serde_json::from_str::<GameLog>(&json).unwrap(), log);
+        let mut edited = log.clone();
+        edited.shots[0].verdict.fouls.push(crate::Foul::NoRail);
+        assert!(matches!(
+            edited.check(&events, &numbers),
+            Err(LogError::Differs { shot: 1, .. })
+        ));
+        let mut short = log.clone();
+        short.shots.pop();
+        assert!(matches!(
+            short.check(&events, &numbers),
+            Err(LogError::ShotCount { .. })
+        ));
+    }
+
+    #[test]
+    fn the_log_lives_beside_the_recording() {
+        assert_eq!(
+            GameLog::path_beside(Path::new("/tmp/rack.json")),
+            PathBuf::from("/tmp/rack.game.json")
+        );
+    }
+}
