@@ -5,7 +5,7 @@ use crate::export::{self, ExportOptions};
 use billiards_physics::recording::{Recorder, Recording, Verdict};
 use billiards_physics::scene::Scene;
 use billiards_physics::*;
-use billiards_rules::Shots;
+use billiards_rules::{Call, Choice, Game, Shots, Verdict as RulesVerdict};
 use clap::{Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use rand::{Rng, SeedableRng};
@@ -54,6 +54,27 @@ pub enum RackArg {
     NineBall,
 }
 
+/// Games with rules.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum GameArg {
+    /// 9-ball, WPA rules.
+    NineBall,
+    /// 8-ball, WPA rules.
+    EightBall,
+    /// The sandbox: no fouls, a scratch respots the cue ball.
+    FreePlay,
+}
+
+impl From<GameArg> for Game {
+    fn from(g: GameArg) -> Self {
+        match g {
+            GameArg::NineBall => Game::NineBall,
+            GameArg::EightBall => Game::EightBall,
+            GameArg::FreePlay => Game::FreePlay,
+        }
+    }
+}
+
 /// Physics models.
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum ModelArg {
@@ -96,6 +117,24 @@ pub struct SimulateArgs {
     /// Worker threads for batch mode (default: all cores).
     #[arg(long)]
     pub threads: Option<usize>,
+    /// Play a game under its rules: its seeded rack (not `--rack`), every shot judged, the
+    /// verdicts printed and, with `--out`, logged beside the recording (`NAME.game.json`).
+    #[arg(long, value_enum, conflicts_with_all = ["scene", "batch"])]
+    pub game: Option<GameArg>,
+    /// Seed of the game's rack (default: `--seed`, else 0).
+    #[arg(long, requires = "game")]
+    pub rack_seed: Option<u64>,
+    /// The two players' names, `NAME,NAME`; the first breaks.
+    #[arg(long, default_value = "A,B", requires = "game")]
+    pub players: String,
+    /// A call for shot K: `K:BALL:POCKET` (8-ball; pockets head-left, head-right, side-left,
+    /// side-right, foot-left, foot-right), `K:safety` (8-ball) or `K:push-out` (9-ball).
+    #[arg(long = "call", value_parser = parse_call, requires = "game")]
+    pub calls: Vec<(usize, Call)>,
+    /// Choices to take when the rules offer some, in order: `shoot`, `pass`, `spot-eight`
+    /// (default: the first offered). Re-racks are not supported here (one rack a recording).
+    #[arg(long = "choice", value_parser = parse_choice, requires = "game")]
+    pub choices: Vec<Choice>,
 }
 
 /// `export` options.
@@ -137,6 +176,50 @@ fn parse_shot(s: &str) -> Result<Shot, String> {
     Ok(shot)
 }
 
+fn parse_pocket(s: &str) -> Result<Pocket, String> {
+    Pocket::ALL
+        .into_iter()
+        .find(|&p| pocket_arg(p) == s)
+        .ok_or_else(|| format!("{s:?}: expected one of head-left, head-right, side-left, side-right, foot-left, foot-right"))
+}
+
+fn pocket_arg(p: Pocket) -> &'static str {
+    match p {
+        Pocket::HeadLeft => "head-left",
+        Pocket::HeadRight => "head-right",
+        Pocket::SideLeft => "side-left",
+        Pocket::SideRight => "side-right",
+        Pocket::FootLeft => "foot-left",
+        Pocket::FootRight => "foot-right",
+    }
+}
+
+fn parse_call(s: &str) -> Result<(usize, Call), String> {
+    let parts: Vec<&str> = s.split(':').collect();
+    let shot = |k: &str| k.parse::<usize>().map_err(|e| format!("shot {k:?}: {e}"));
+    match parts[..] {
+        [k, "safety"] => Ok((shot(k)?, Call::Safety)),
+        [k, "push-out"] => Ok((shot(k)?, Call::PushOut)),
+        [k, ball, pocket] => Ok((
+            shot(k)?,
+            Call::Ball {
+                ball: ball.parse().map_err(|e| format!("ball {ball:?}: {e}"))?,
+                pocket: parse_pocket(pocket)?,
+            },
+        )),
+        _ => Err("expected K:BALL:POCKET, K:safety or K:push-out".into()),
+    }
+}
+
+fn parse_choice(s: &str) -> Result<Choice, String> {
+    match s {
+        "shoot" => Ok(Choice::ShootFromHere),
+        "pass" => Ok(Choice::PassBack),
+        "spot-eight" => Ok(Choice::SpotEightAndShoot),
+        _ => Err(format!("{s:?}: expected shoot, pass or spot-eight")),
+    }
+}
+
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s.split_once(['x', 'X']).ok_or("expected WIDTHxHEIGHT")?;
     Ok((
@@ -156,6 +239,9 @@ pub struct ShotSummary {
     pub pocketed: Vec<u8>,
     /// Seconds of simulated time until everything rested.
     pub time_to_rest: f64,
+    /// The rules' verdict (with `--game`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub verdict: Option<RulesVerdict>,
 }
 
 /// Runs the command line; returns the process exit code.
@@ -179,7 +265,9 @@ pub fn run(cli: Cli) -> ExitCode {
     }
 }
 
-fn setup(a: &SimulateArgs) -> Result<(Table, Params, Vec<BallSetup>, Vec<Shot>), String> {
+pub(crate) fn setup(
+    a: &SimulateArgs,
+) -> Result<(Table, Params, Vec<BallSetup>, Vec<Shot>), String> {
     let randomization = a.seed.map(|seed| Randomization {
         spread: 0.005,
         seed,
@@ -228,7 +316,7 @@ fn setup(a: &SimulateArgs) -> Result<(Table, Params, Vec<BallSetup>, Vec<Shot>),
 
 /// After a scratch the cue ball goes back on the head string: the rule of
 /// [`billiards_rules::respot`], the same as the game's.
-fn respot_cue_ball(rec: &mut Recorder) -> Result<(), String> {
+pub(crate) fn respot_cue_ball(rec: &mut Recorder) -> Result<(), String> {
     if rec.sim().ball(0).motion.on_table() {
         return Ok(());
     }
@@ -258,10 +346,14 @@ fn play(rec: &mut Recorder, shot: Shot) -> Result<ShotSummary, String> {
         events: events.len(),
         pocketed,
         time_to_rest: sim.time() - start,
+        verdict: None,
     })
 }
 
 fn simulate(a: SimulateArgs) -> Result<(), String> {
+    if let Some(game) = a.game {
+        return crate::game::play_game(&a, game.into());
+    }
     let (table, params, balls, shots) = setup(&a)?;
     if let Some(n) = a.batch {
         return batch(table, params, balls, n, &a);
@@ -373,7 +465,8 @@ fn verify(file: &std::path::Path) -> Result<(), String> {
                 "{}: reproduced bit for bit ({events} events)",
                 file.display()
             );
-            Ok(())
+            // The rules' log, when the game was played under rules (kept beside the file).
+            crate::game::check_log(file, &rec)
         }
         Verdict::Differs {
             index,

@@ -3,4 +3,5 @@
 
 pub mod cli;
 pub mod export;
+pub mod game;
 pub mod render;

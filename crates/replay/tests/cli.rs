@@ -462,3 +462,49 @@ fn a_scratch_respots_the_cue_ball_by_the_rules_crate() {
     );
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn simulate_a_nine_ball_game_prints_verdicts_and_verify_rejudges_them() {
+    let dir = temp("nine");
+    let file = dir.join("rack.json");
+    let (ok, stdout, err) = run(bin()
+        .args(["simulate", "--game", "nine-ball", "--rack-seed", "3"])
+        .args(["--shot", "0:9", "--shot", "10:2", "--call", "2:push-out"])
+        .args(["--choice", "pass", "--shot", "45:2", "--out"])
+        .arg(&file));
+    assert!(ok, "{err}");
+    assert!(stdout.contains("shot 1: A (break): legal; B to shoot (push out allowed)"));
+    assert!(
+        stdout.contains("shot 2: B (push out): legal push out"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("A chooses PassBack"), "{stdout}");
+    assert!(stdout.contains("shot 3: B: foul"), "{stdout}");
+    let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
+    assert!(ok, "{err}");
+    assert!(
+        stdout.contains("3 verdicts of NineBall re-judged identically"),
+        "{stdout}"
+    );
+    // A verdict edited in the log: verify names the shot and fails.
+    let log = dir.join("rack.game.json");
+    let text = std::fs::read_to_string(&log).unwrap();
+    std::fs::write(&log, text.replacen("\"passes\"", "\"continues\"", 1)).unwrap();
+    let (ok, _, err) = run(bin().arg("verify").arg(&file));
+    assert!(!ok && err.contains("shot 1: logged"), "{err}");
+    // A call this game does not use is refused with the rules' reason.
+    let (ok, _, err) = run(bin().args([
+        "simulate",
+        "--game",
+        "nine-ball",
+        "--shot",
+        "0:9",
+        "--call",
+        "1:9:foot-left",
+    ]));
+    assert!(
+        !ok && err.contains("shot 1: NineBall has no called shots"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(dir).ok();
+}

@@ -1,14 +1,42 @@
 //! The rules of the game, in one place that the game, the command line (`billiards-cli`) and
 //! the computer opponent all call. Pure Rust on top of `billiards-physics`: no Bevy, no I/O.
 //!
-//! - [`respot`]: where the cue ball goes back after a scratch (the head string);
+//! - [`respot`]: where the cue ball goes back after a scratch (the head string) and where an
+//!   object ball is spotted (the foot string, WPA 1.4);
 //! - [`shots`]: what a "shot" of a recording is (from one strike to the next), numbered from 1
-//!   everywhere a player sees a shot number.
-//!
-//! Rulesets (8-ball, 9-ball under the WPA rules, free play) grow here behind one interface.
+//!   everywhere a player sees a shot number;
+//! - [`shot`]: the facts of one shot read from the solver's events ([`ShotSummary`]);
+//! - [`racks`]: 8-ball and 9-ball racks with a real rack's small random gaps, from a seed;
+//! - [`game`]: one rack of 8-ball, 9-ball (WPA rules) or free play: [`GameState::play`]
+//!   judges a shot and returns its [`Verdict`] and the [`NextShot`];
+//! - [`hand`]: whether a ball-in-hand placement is allowed;
+//! - [`foul`]: fouls and the ends of games, with sentences a player can read;
+//! - [`race`]: a match, race to N racks;
+//! - [`log`]: the rules side of a recording (calls, choices, verdicts), kept beside it.
 
+pub mod eight_ball;
+pub mod foul;
+pub mod game;
+pub mod hand;
+pub mod log;
+pub mod nine_ball;
+pub mod race;
+pub mod racks;
 pub mod respot;
+pub mod shot;
 pub mod shots;
 
-pub use respot::{RESPOT_CLEARANCE, cue_ball_spot, head_string_spot};
+pub use foul::{BallOn, Foul, Group, WinReason, pocket_name};
+pub use game::{
+    Call, CallRule, Choice, CueBall, Game, GameState, NextShot, Outcome, RuleError, Seat, Verdict,
+};
+pub use hand::{PlacementError, check_placement};
+pub use log::{GameLog, LogError, LoggedShot};
+pub use race::Match;
+
+pub use respot::{
+    RESPOT_CLEARANCE, SPOT_CLEARANCE, cue_ball_spot, foot_spot_position, head_string_spot,
+    object_ball_spot,
+};
+pub use shot::{CUE, ShotSummary, summarise};
 pub use shots::Shots;

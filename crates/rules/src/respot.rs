@@ -67,6 +67,61 @@ pub fn head_string_spot(table: &Table, radius: f64, others: &[Vec2]) -> Option<V
     best.map(|y| Vec2::new(spot.x, y))
 }
 
+/// How far a spotted object ball stays from the ball it is spotted against (metres): WPA
+/// 1.4 freezes it to that ball; a micrometre keeps the solver's placement check clear of
+/// rounding while looking frozen.
+pub const SPOT_CLEARANCE: f64 = 1e-6;
+
+/// Where an object ball is spotted (WPA 1.4): on the long string (`y = 0`), at the foot spot
+/// or as near to it as possible between it and the foot cushion; if that part of the string
+/// is full, as near as possible in front of the foot spot. `others` are the centres of the
+/// balls on the table. `None` when the whole string is blocked.
+pub fn foot_spot_position(table: &Table, radius: f64, others: &[Vec2]) -> Option<Vec2> {
+    let spot = table.foot_spot();
+    let limit = table.centre_bounds(radius).x;
+    let reach = 2.0 * radius + SPOT_CLEARANCE;
+    let blocked = others.iter().filter_map(|other| {
+        let half = (reach * reach - other.y * other.y).sqrt();
+        (half > 0.0).then_some([other.x - half, other.x + half])
+    });
+    let free = |x: f64| {
+        x.abs() <= limit
+            && others
+                .iter()
+                .all(|other| (Vec2::new(x, 0.0) - *other).length() >= reach - PLACEMENT_TOLERANCE)
+    };
+    let candidates: Vec<f64> = std::iter::once(spot.x)
+        .chain(blocked.flatten())
+        .chain([limit, -limit])
+        .filter(|&x| free(x))
+        .collect();
+    let behind = candidates
+        .iter()
+        .copied()
+        .filter(|&x| x >= spot.x)
+        .min_by(f64::total_cmp);
+    let front = || {
+        candidates
+            .iter()
+            .copied()
+            .filter(|&x| x < spot.x)
+            .max_by(f64::total_cmp)
+    };
+    behind.or_else(front).map(|x| Vec2::new(x, 0.0))
+}
+
+/// Where `ball` of `sim` is spotted ([`foot_spot_position`] among the other balls on the
+/// table).
+pub fn object_ball_spot(sim: &Simulation, ball: BallId) -> Option<Vec2> {
+    let others: Vec<Vec2> = sim
+        .balls()
+        .enumerate()
+        .filter(|&(id, ref state)| id != ball && state.motion.on_table())
+        .map(|(_, state)| state.position)
+        .collect();
+    foot_spot_position(sim.table(), sim.params().ball.radius, &others)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -147,5 +202,25 @@ mod tests {
         let p = head_string_spot(&t, R, &others).unwrap();
         assert!(p.y.abs() <= limit);
         assert!(p.y < 0.0, "the right side is nearer: {p:?}");
+    }
+
+    #[test]
+    fn wpa_1_4_a_ball_is_spotted_on_the_foot_spot_or_behind_it_frozen() {
+        let t = table();
+        assert_eq!(foot_spot_position(&t, R, &[]), Some(t.foot_spot()));
+        // A ball on the spot: the spotted ball goes behind it, towards the foot cushion.
+        let p = foot_spot_position(&t, R, &[t.foot_spot()]).unwrap();
+        assert_eq!(p.y, 0.0);
+        assert!((p.x - (t.foot_spot().x + 2.0 * R + SPOT_CLEARANCE)).abs() < 1e-12);
+        // The string behind the spot full: in front of the spot, as near as possible.
+        let limit = t.centre_bounds(R).x;
+        let step = 2.0 * R;
+        let wall: Vec<Vec2> = (0..)
+            .map(|k| t.foot_spot().x + f64::from(k) * step)
+            .take_while(|&x| x <= limit + step)
+            .map(|x| Vec2::new(x, 0.0))
+            .collect();
+        let p = foot_spot_position(&t, R, &wall).unwrap();
+        assert!((p.x - (t.foot_spot().x - 2.0 * R - SPOT_CLEARANCE)).abs() < 1e-12);
     }
 }

@@ -1,0 +1,198 @@
+//! A game's log: the ruleset, the rack seed, the players, and per shot the choices made
+//! before it, the call and the verdict. Saved beside a recording (`NAME.game.json` next to
+//! `NAME.json`), so `billiards-physics` stays free of rules and every existing recording
+//! still loads; [`GameLog::check`] re-judges the recording's shots and compares the verdicts.
+
+use crate::game::{Call, Choice, Game, GameState, RuleError, Seat, Verdict};
+use crate::shot::summarise;
+use billiards_physics::{Event, EventKind};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+/// The format version this build writes.
+pub const LOG_VERSION: u32 = 1;
+
+/// One shot of the log.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct LoggedShot {
+    /// Choices taken before the shot ([`GameState::choose`]), in order.
+    #[serde(default)]
+    pub choices: Vec<Choice>,
+    /// The shooter's call.
+    #[serde(default)]
+    pub call: Call,
+    /// The verdict given.
+    pub verdict: Verdict,
+}
+
+/// The rules side of a recorded game.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct GameLog {
+    /// Format version ([`LOG_VERSION`]).
+    pub version: u32,
+    /// The game.
+    pub game: Game,
+    /// The seed the rack was built from ([`Game::rack`]).
+    pub rack_seed: u64,
+    /// The players' names, by [`Seat::index`].
+    pub players: [String; 2],
+    /// Who broke.
+    pub breaker: Seat,
+    /// The shots, in order (one per strike of the recording).
+    pub shots: Vec<LoggedShot>,
+}
+
+/// Why a log does not match its recording.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum LogError {
+    /// Not as many shots as strikes.
+    #[error("the log has {logged} shots, the recording {recorded} strikes")]
+    ShotCount {
+        /// Shots in the log.
+        logged: usize,
+        /// Strikes in the recording.
+        recorded: usize,
+    },
+    /// A logged choice or call is refused by the rules.
+    #[error("shot {shot}: {error}")]
+    Refused {
+        /// The shot, from 1.
+        shot: usize,
+        /// The rules' answer.
+        error: RuleError,
+    },
+    /// The rules give another verdict than the one logged.
+    #[error("shot {shot}: logged \"{logged}\", re-judged \"{rejudged}\"")]
+    Differs {
+        /// The shot, from 1.
+        shot: usize,
+        /// The logged verdict's reason and outcome.
+        logged: String,
+        /// The new verdict's reason and outcome.
+        rejudged: String,
+    },
+}
+
+impl GameLog {
+    /// An empty log.
+    pub fn new(game: Game, rack_seed: u64, players: [String; 2], breaker: Seat) -> Self {
+        Self {
+            version: LOG_VERSION,
+            game,
+            rack_seed,
+            players,
+            breaker,
+            shots: Vec::new(),
+        }
+    }
+
+    /// Where the log of the recording at `recording` is kept: `NAME.game.json` beside
+    /// `NAME.json`.
+    pub fn path_beside(recording: &Path) -> PathBuf {
+        recording.with_extension("game.json")
+    }
+
+    /// Re-judges every shot of a recording's `events` (`numbers` as in the recording's
+    /// setup) and checks that the verdicts are the logged ones. Returns the shots checked.
+    pub fn check(&self, events: &[Event], numbers: &[u8]) -> Result<usize, LogError> {
+        let strikes: Vec<usize> = events
+            .iter()
+            .enumerate()
+            .filter(|(_, e)| matches!(e.kind, EventKind::Strike { .. }))
+            .map(|(i, _)| i)
+            .collect();
+        if strikes.len() != self.shots.len() {
+            return Err(LogError::ShotCount {
+                logged: self.shots.len(),
+                recorded: strikes.len(),
+            });
+        }
+        let mut state = GameState::new(self.game, self.breaker);
+        for (k, (logged, &at)) in (1..).zip(self.shots.iter().zip(&strikes)) {
+            let refused = |error| LogError::Refused { shot: k, error };
+            for &choice in &logged.choices {
+                state.choose(choice).map_err(refused)?;
+            }
+            let summary = summarise(&events[at..], numbers);
+            let verdict = state.play(&summary, logged.call).map_err(refused)?;
+            if verdict != logged.verdict {
+                let show = |v: &Verdict| format!("{}, {:?}", v.reason(), v.outcome);
+                return Err(LogError::Differs {
+                    shot: k,
+                    logged: show(&logged.verdict),
+                    rejudged: show(&verdict),
+                });
+            }
+        }
+        Ok(self.shots.len())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use billiards_physics::recording::Recorder;
+    use billiards_physics::{Params, Shot, Table};
+
+    /// A real 9-ball rack: the break, then a soft shot up the table; logged as played.
+    fn played() -> (GameLog, Vec<Event>, Vec<u8>) {
+        let table = Table::wpa_8ft().with_jaws(0.015);
+        let params = Params::default();
+        let balls = Game::NineBall.rack(&table, &params.ball, 4);
+        let mut rec = Recorder::new(table, params, balls).unwrap();
+        let mut state = GameState::new(Game::NineBall, Seat::A);
+        let mut log = GameLog::new(Game::NineBall, 4, ["A".into(), "B".into()], Seat::A);
+        for shot in [Shot::new(0.0, 9.0), Shot::new(0.3, 1.0)] {
+            if !rec.sim().ball(0).motion.on_table() {
+                let p = crate::cue_ball_spot(rec.sim(), 0).unwrap();
+                rec.place(0, p, Default::default(), Default::default())
+                    .unwrap();
+            }
+            let first = rec.sim().history().events().len();
+            rec.strike(0, shot).unwrap();
+            rec.run_to_rest().unwrap();
+            let s = summarise(&rec.sim().history().events()[first..], rec.sim().numbers());
+            let verdict = state.play(&s, Call::None).unwrap();
+            log.shots.push(LoggedShot {
+                choices: Vec::new(),
+                call: Call::None,
+                verdict,
+            });
+            if state.over.is_some() {
+                break;
+            }
+        }
+        let r = rec.recording();
+        let numbers = r.balls.iter().map(|b| b.number).collect();
+        (log, r.events, numbers)
+    }
+
+    #[test]
+    fn a_log_rejudges_its_recording_and_an_edited_verdict_is_found() {
+        let (log, events, numbers) = played();
+        assert_eq!(log.check(&events, &numbers), Ok(log.shots.len()));
+        // Round trip through JSON.
+        let json = serde_json::to_string(&log).unwrap();
+        assert_eq!(serde_json::from_str::<GameLog>(&json).unwrap(), log);
+        let mut edited = log.clone();
+        edited.shots[0].verdict.fouls.push(crate::Foul::NoRail);
+        assert!(matches!(
+            edited.check(&events, &numbers),
+            Err(LogError::Differs { shot: 1, .. })
+        ));
+        let mut short = log.clone();
+        short.shots.pop();
+        assert!(matches!(
+            short.check(&events, &numbers),
+            Err(LogError::ShotCount { .. })
+        ));
+    }
+
+    #[test]
+    fn the_log_lives_beside_the_recording() {
+        assert_eq!(
+            GameLog::path_beside(Path::new("/tmp/rack.json")),
+            PathBuf::from("/tmp/rack.game.json")
+        );
+    }
+}
