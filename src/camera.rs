@@ -200,8 +200,11 @@ fn ease_camera(
     let target = orbit.transform();
     // Exponential approach: frame-rate independent, about 95 % of the way in 0.25 s.
     let blend = 1.0 - (-12.0 * time.delta_secs()).exp();
-    let close = camera.translation.distance(target.translation) < 1e-4
-        && camera.rotation.angle_between(target.rotation) < 1e-4;
+    // Quaternion components, not `angle_between`: its f32 acos cannot resolve angles under
+    // about 7e-4 rad, so a 1e-4 rad test never passed and the camera asked for frames forever.
+    let (q, t) = (camera.rotation, target.rotation);
+    let same_turn = q.abs_diff_eq(t, 1e-5) || q.abs_diff_eq(-t, 1e-5);
+    let close = camera.translation.distance(target.translation) < 1e-4 && same_turn;
     if close {
         if **camera != target {
             **camera = target;

@@ -7,11 +7,13 @@ pub mod aim;
 pub mod balls;
 pub mod camera;
 pub mod cue;
+pub mod display;
 pub mod geometry;
 pub mod input;
 pub mod lighting;
 pub mod mode;
 pub mod options;
+pub mod pipelines;
 pub mod recording;
 pub mod replay;
 pub mod screenshot;
@@ -21,7 +23,13 @@ pub mod table;
 pub mod table_mesh;
 pub mod ui;
 
-use bevy::{prelude::*, window::WindowResolution, winit::WinitSettings};
+use std::time::Duration;
+
+use bevy::{
+    prelude::*,
+    window::WindowResolution,
+    winit::{UpdateMode, WinitSettings},
+};
 
 pub use options::{ArgsError, LaunchOptions};
 
@@ -42,7 +50,7 @@ impl Plugin for GamePlugin {
             }),
             ..default()
         }))
-        .add_plugins(mode::plugin)
+        .add_plugins((mode::plugin, pipelines::plugin))
         .add_plugins((
             settings::plugin,
             sim::plugin,
@@ -77,7 +85,13 @@ impl Plugin for GamePlugin {
             // Redraw only on input or when something asks for it (moving balls, the camera
             // easing): an idle table costs no CPU.
             None => {
-                app.insert_resource(WinitSettings::desktop_app());
+                app.add_systems(Update, pipelines::redraw_until_ready);
+                // No periodic wake-up either (`desktop_app` updates every 5 s at idle): a frame
+                // is drawn only for input, a window event or a `RequestRedraw`.
+                app.insert_resource(WinitSettings {
+                    focused_mode: UpdateMode::reactive(Duration::MAX),
+                    unfocused_mode: UpdateMode::reactive_low_power(Duration::MAX),
+                });
             }
         }
     }

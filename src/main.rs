@@ -17,6 +17,10 @@ fn main() -> ExitCode {
         println!("{}", LaunchOptions::USAGE);
         return ExitCode::SUCCESS;
     }
+    if let Err(error) = billiards::display::check(std::env::var("DISPLAY").ok().as_deref()) {
+        eprintln!("billiards: {error}");
+        return ExitCode::FAILURE;
+    }
     match App::new().add_plugins(GamePlugin { options }).run() {
         AppExit::Success => ExitCode::SUCCESS,
         AppExit::Error(code) => ExitCode::from(code.get()),

@@ -35,6 +35,8 @@ pub enum ArgsError {
     },
     /// A flag this binary does not know.
     UnknownArgument(String),
+    /// Two flags that exclude each other were both given.
+    Conflict(&'static str, &'static str),
 }
 
 impl fmt::Display for ArgsError {
@@ -43,6 +45,7 @@ impl fmt::Display for ArgsError {
             Self::MissingValue(flag) => write!(f, "{flag} needs a value"),
             Self::InvalidValue { flag, value } => write!(f, "invalid value {value:?} for {flag}"),
             Self::UnknownArgument(arg) => write!(f, "unknown argument {arg:?}"),
+            Self::Conflict(a, b) => write!(f, "{a} and {b} cannot be used together"),
         }
     }
 }
@@ -106,6 +109,10 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                 _ => return Err(ArgsError::UnknownArgument(arg)),
             }
         }
+        // The usage marks them exclusive: saving nowhere and saving to DIR.
+        if options.no_record && options.recordings.is_some() {
+            return Err(ArgsError::Conflict("--no-record", "--recordings"));
+        }
         Ok(options)
     }
 }
@@ -157,6 +164,10 @@ mod tests {
         assert_eq!(
             parse(&["--fast"]),
             Err(ArgsError::UnknownArgument("--fast".into()))
+        );
+        assert_eq!(
+            parse(&["--no-record", "--recordings", "out"]),
+            Err(ArgsError::Conflict("--no-record", "--recordings"))
         );
     }
 }

@@ -11,7 +11,7 @@ use std::{
 
 use bevy::prelude::*;
 
-use crate::sim::{ShotFinished, SimStatus, SimSystems, Solver, rack_slug};
+use crate::sim::{RackRequested, ShotFinished, SimStatus, SimSystems, Solver, rack_slug};
 
 /// Registers the autosave.
 pub fn plugin(app: &mut App) {
@@ -19,9 +19,12 @@ pub fn plugin(app: &mut App) {
         .init_resource::<Autosave>()
         .add_systems(
             Update,
-            save_finished_shot
-                .in_set(SimSystems::Flow)
-                .after(crate::sim::respot_after_scratch),
+            (
+                save_finished_shot.after(crate::sim::respot_after_scratch),
+                // Flow runs before Commands, where the rack replaces the game.
+                save_before_rack,
+            )
+                .in_set(SimSystems::Flow),
         );
 }
 
@@ -45,6 +48,8 @@ pub struct Autosave {
     pub file: Option<PathBuf>,
     /// Shots in that file.
     pub shots: u32,
+    /// Inputs in that file (a paused shot is an input before it is a finished shot).
+    pub inputs: usize,
     /// The last failure, if the last save failed (the game goes on; the next shot retries).
     pub error: Option<String>,
 }
@@ -61,9 +66,36 @@ fn save_finished_shot(
     if finished.read().count() == 0 {
         return;
     }
+    if let (Some(folder), Some(solver)) = (&folder.0, solver) {
+        save_game(folder, &solver, status.shots, &mut autosave);
+    }
+}
+
+/// Before a rack replaces the game, writes every input not yet in its file (a shot struck
+/// while paused, a placement, a settings change), so nothing the player did is lost.
+fn save_before_rack(
+    mut racks: MessageReader<RackRequested>,
+    folder: Res<RecordingsFolder>,
+    solver: Option<Res<Solver>>,
+    status: Res<SimStatus>,
+    mut autosave: ResMut<Autosave>,
+) {
+    if racks.read().count() == 0 {
+        return;
+    }
     let (Some(folder), Some(solver)) = (&folder.0, solver) else {
         return;
     };
+    let inputs = solver.recorder().recording().inputs.len();
+    let path = game_file(folder, solver.started(), solver.rack());
+    let saved = autosave.file.as_ref() == Some(&path) && autosave.inputs == inputs;
+    if inputs > 0 && !saved {
+        save_game(folder, &solver, status.shots, &mut autosave);
+    }
+}
+
+/// Writes the game in `solver` to its file in `folder` and notes what was written.
+fn save_game(folder: &Path, solver: &Solver, shots: u32, autosave: &mut Autosave) {
     let path = game_file(folder, solver.started(), solver.rack());
     let recording = solver.recorder().recording();
     let result = std::fs::create_dir_all(folder)
@@ -73,7 +105,8 @@ fn save_finished_shot(
         Ok(()) => {
             *autosave = Autosave {
                 file: Some(path),
-                shots: status.shots,
+                shots,
+                inputs: recording.inputs.len(),
                 error: None,
             };
         }

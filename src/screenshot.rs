@@ -1,29 +1,19 @@
 //! `--screenshot PATH`: wait until the scene has really been drawn, save it, exit.
 //!
 //! On a software renderer shader pipelines compile for seconds, and until they have, frames
-//! come out blank. So the render world reports how many pipelines exist and how many are
-//! still compiling; once every pipeline has been ready (and no new one has appeared) for the
-//! settle time, the primary window is captured. The process exits with status 0 once the PNG
+//! come out blank. Once every pipeline has been ready ([`crate::pipelines`]; and no new one has
+//! appeared) for the settle time, the primary window is captured. The process exits with status 0 once the PNG
 //! is written, 1 if it could not be, and 3 if the scene never became ready.
 
-use std::{
-    path::PathBuf,
-    sync::{
-        Arc,
-        atomic::{AtomicUsize, Ordering},
-    },
-    time::Duration,
-};
+use std::{path::PathBuf, time::Duration};
 
 use bevy::{
     prelude::*,
-    render::{
-        Render, RenderApp, RenderSystems,
-        render_resource::PipelineCache,
-        view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk},
-    },
+    render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk},
     winit::WinitSettings,
 };
+
+use crate::pipelines::PipelineProgress;
 
 /// Captures the primary window once the scene is drawn, then exits.
 #[derive(Debug, Clone)]
@@ -39,10 +29,8 @@ const TIMEOUT: Duration = Duration::from_secs(180);
 
 impl Plugin for ScreenshotPlugin {
     fn build(&self, app: &mut App) {
-        let progress = PipelineProgress::default();
         // Keep updating even though nothing moves and the window may be unfocused.
         app.insert_resource(WinitSettings::continuous())
-            .insert_resource(progress.clone())
             .insert_resource(Capture {
                 path: self.path.clone(),
                 settle: self.settle,
@@ -52,35 +40,7 @@ impl Plugin for ScreenshotPlugin {
                 },
             })
             .add_systems(Update, capture_when_drawn);
-        if let Some(render_app) = app.get_sub_app_mut(RenderApp) {
-            render_app
-                .insert_resource(progress)
-                .add_systems(Render, report_pipelines.in_set(RenderSystems::Cleanup));
-        } else {
-            warn!("no render app: the screenshot will wait for its timeout");
-        }
     }
-}
-
-/// Pipeline counts, written by the render world and read by the main world.
-#[derive(Resource, Debug, Clone, Default)]
-struct PipelineProgress(Arc<PipelineCounts>);
-
-#[derive(Debug, Default)]
-struct PipelineCounts {
-    total: AtomicUsize,
-    waiting: AtomicUsize,
-}
-
-fn report_pipelines(cache: Res<PipelineCache>, progress: Res<PipelineProgress>) {
-    progress
-        .0
-        .total
-        .store(cache.pipelines().count(), Ordering::Relaxed);
-    progress
-        .0
-        .waiting
-        .store(cache.waiting_pipelines().count(), Ordering::Relaxed);
 }
 
 #[derive(Resource, Debug)]
@@ -116,8 +76,7 @@ fn capture_when_drawn(
         return;
     };
     let now = time.elapsed();
-    let total = progress.0.total.load(Ordering::Relaxed);
-    let waiting = progress.0.waiting.load(Ordering::Relaxed);
+    let (total, waiting) = progress.counts();
     // A new pipeline appearing restarts the wait: it may belong to something not yet drawn.
     let ready = total > 0 && waiting == 0 && total == pipelines;
     let ready_since = if ready {

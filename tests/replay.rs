@@ -568,3 +568,60 @@ fn an_export_runs_in_the_background_and_reports_its_frames() {
     // Left behind when the test fails, for a look.
     let _ = std::fs::remove_dir_all(file.parent().unwrap());
 }
+
+#[test]
+fn a_shot_struck_while_paused_is_saved_before_a_rack_replaces_the_game() {
+    let folder = temp_folder("paused-shot");
+    let mut app = game(&folder, Rack::NineBall);
+    app.world_mut().resource_mut::<PhysicsSettings>().paused = true;
+    app.update();
+    app.world_mut().write_message(ShotRequested {
+        angle: 0.0,
+        speed: 7.0,
+        tip: Default::default(),
+    });
+    for _ in 0..3 {
+        app.update();
+    }
+    // Nothing finished (paused), so the shot is not saved yet: then a rack is asked for.
+    assert!(app.world().resource::<Autosave>().file.is_none());
+    app.world_mut()
+        .write_message(RackRequested(Rack::FifteenBall));
+    app.update();
+    let saved = app
+        .world()
+        .resource::<Autosave>()
+        .file
+        .clone()
+        .expect("the game was saved before the rack");
+    let recording = Recording::load(&saved).unwrap();
+    let strikes = recording
+        .inputs
+        .iter()
+        .filter(|i| {
+            matches!(
+                i.action,
+                billiards_physics::recording::Action::Strike { .. }
+            )
+        })
+        .count();
+    assert_eq!(strikes, 1, "the paused shot is in the file");
+    assert!(matches!(
+        recording.verify().unwrap(),
+        Verdict::Reproduced { .. }
+    ));
+    // The new rack is on the table.
+    assert_eq!(
+        app.world().resource::<Solver>().simulation().ball_count(),
+        16
+    );
+    // A second rack request with nothing new played writes nothing more.
+    let modified = std::fs::metadata(&saved).unwrap().modified().unwrap();
+    app.world_mut().write_message(RackRequested(Rack::NineBall));
+    app.update();
+    assert_eq!(
+        std::fs::metadata(&saved).unwrap().modified().unwrap(),
+        modified
+    );
+    std::fs::remove_dir_all(folder).ok();
+}

@@ -1,7 +1,7 @@
 //! The HUD in the top-right corner of the 3D view: shots, simulated time, events, the
 //! solver's cost per frame, the pocketed balls, what the table is doing and the last note.
 
-use bevy::prelude::*;
+use bevy::{diagnostic::FrameCount, prelude::*};
 use bevy_egui::{EguiContexts, egui};
 
 use super::layout::{INFO, WARNING, WINDOW_MARGIN};
@@ -19,6 +19,8 @@ pub struct HudParam<'w, 's> {
     physics: Res<'w, PhysicsSettings>,
     pocketed: Query<'w, 's, &'static Ball, With<Pocketed>>,
     mode: Res<'w, State<GameMode>>,
+    frames: Res<'w, FrameCount>,
+    time: Res<'w, Time<Real>>,
 }
 
 /// The HUD in the top-right corner: shot count, times, events, solver cost, pocketed balls.
@@ -34,6 +36,13 @@ pub fn hud(mut contexts: EguiContexts, state: HudParam) -> Result {
                 ui.colored_label(INFO, "replaying a recording: the live game below waits");
             }
             ui.label(format!("shots: {}", status.shots));
+            // The frame number shows whether the window redraws at idle (it should not); the
+            // frame time is the last frame's, from its input to this one.
+            ui.label(format!(
+                "frame {}: {:.1} ms",
+                state.frames.0,
+                state.time.delta_secs_f64() * 1e3
+            ));
             ui.label(format!("simulated time: {:.3} s", status.sim_time));
             ui.label(format!("events this shot: {}", status.events_this_shot));
             ui.label(format!(

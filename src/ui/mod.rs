@@ -25,7 +25,8 @@ use bevy::{
     window::PrimaryWindow,
 };
 use bevy_egui::{
-    EguiContexts, EguiGlobalSettings, EguiPlugin, EguiPrimaryContextPass, PrimaryEguiContext, egui,
+    EguiContexts, EguiGlobalSettings, EguiInput, EguiPlugin, EguiPreUpdateSet,
+    EguiPrimaryContextPass, PrimaryEguiContext, egui,
     input::{egui_wants_any_keyboard_input, egui_wants_any_pointer_input},
 };
 
@@ -45,6 +46,12 @@ pub fn plugin(app: &mut App) {
                 InputSystems::Keyboard.run_if(not(egui_wants_any_keyboard_input)),
             ),
         )
+        .add_systems(
+            PreUpdate,
+            drop_unchanged_modifiers
+                .after(EguiPreUpdateSet::ProcessInput)
+                .before(EguiPreUpdateSet::BeginPass),
+        )
         .add_systems(Startup, spawn_ui_camera)
         .add_systems(
             EguiPrimaryContextPass,
@@ -54,6 +61,26 @@ pub fn plugin(app: &mut App) {
                 timeline::timeline_window.run_if(in_state(GameMode::Replay)),
             ),
         );
+}
+
+/// bevy_egui 0.42 puts a `ModifiersChanged` event into every frame's input, changed or not,
+/// and egui answers any input event with a request for an immediate repaint: the idle window
+/// redrew without end (a frame every few seconds of full CPU under a software renderer). Only a
+/// real change of the modifier keys is passed on; egui keeps the last modifiers between frames.
+fn drop_unchanged_modifiers(
+    mut inputs: Query<&mut EguiInput>,
+    mut last: Local<Option<egui::Modifiers>>,
+) {
+    for mut input in &mut inputs {
+        input.events.retain(|event| match event {
+            egui::Event::ModifiersChanged(modifiers) => {
+                let changed = *last != Some(*modifiers);
+                *last = Some(*modifiers);
+                changed
+            }
+            _ => true,
+        });
+    }
 }
 
 /// The egui context gets a camera of its own that draws nothing but the UI, on top of the
@@ -86,26 +113,32 @@ fn left_panel(
     mut camera: Single<&mut Camera, With<TableCamera>>,
 ) -> Result {
     let ctx = contexts.ctx_mut()?.clone();
-    let mut root = egui::Ui::new(
-        ctx.clone(),
-        "root".into(),
-        egui::UiBuilder::new()
-            .layer_id(egui::LayerId::background())
-            .max_rect(ctx.viewport_rect()),
-    );
-    let panel_width = egui::Panel::left("settings")
-        .resizable(false)
-        .exact_size(PANEL_WIDTH)
-        .show(&mut root, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| {
-                settings::sections(ui, &mut state);
-                recordings::section(ui, &mut recordings);
-                settings::notes_and_controls(ui, &mut state);
-            });
+    // The panel sits in an egui Area, not in a bare root `Ui` on the background layer: egui
+    // knows an area's rect, so it reports the pointer as over the panel and the game's pointer
+    // input (aim, camera) stays off there. A bare root `Ui` is registered nowhere, so clicks and
+    // the wheel on the panel used to reach the table as well.
+    let panel_width = egui::Area::new(egui::Id::new("settings panel"))
+        .order(egui::Order::Middle)
+        .fixed_pos(ctx.viewport_rect().min)
+        .movable(false)
+        .constrain(false)
+        .show(&ctx, |area| {
+            area.set_max_size(ctx.viewport_rect().size());
+            egui::Panel::left("settings")
+                .resizable(false)
+                .exact_size(PANEL_WIDTH)
+                .show(area, |ui| {
+                    egui::ScrollArea::vertical().show(ui, |ui| {
+                        settings::sections(ui, &mut state);
+                        recordings::section(ui, &mut recordings);
+                        settings::notes_and_controls(ui, &mut state);
+                    });
+                })
+                .response
+                .rect
+                .width()
         })
-        .response
-        .rect
-        .width();
+        .inner;
     fit_viewport(&window, &mut camera, panel_width);
     Ok(())
 }
