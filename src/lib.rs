@@ -7,6 +7,7 @@ pub mod aim;
 pub mod balls;
 pub mod camera;
 pub mod cue;
+pub mod game;
 pub mod geometry;
 pub mod input;
 pub mod lighting;
@@ -55,6 +56,8 @@ impl Plugin for GamePlugin {
             ui::plugin,
             recording::plugin,
             replay::plugin,
+            game::plugin,
+            game::table_plugin,
         ));
         if let Some(file) = &self.options.replay {
             app.insert_resource(replay::OpenAtStart(file.clone()));

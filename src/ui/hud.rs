@@ -1,5 +1,6 @@
-//! The HUD in the top-right corner of the 3D view: shots, simulated time, events, the
-//! solver's cost per frame, the pocketed balls, what the table is doing and the last note.
+//! The HUD in the top-right corner of the 3D view: the match in play (`super::game`), shots,
+//! simulated time, events, the solver's cost per frame, the pocketed balls, what the table
+//! is doing and the last note.
 
 use bevy::prelude::*;
 use bevy_egui::{EguiContexts, egui};
@@ -22,7 +23,11 @@ pub struct HudParam<'w, 's> {
 }
 
 /// The HUD in the top-right corner: shot count, times, events, solver cost, pocketed balls.
-pub fn hud(mut contexts: EguiContexts, state: HudParam) -> Result {
+pub fn hud(
+    mut contexts: EguiContexts,
+    state: HudParam,
+    mut game: super::game::GameParam,
+) -> Result {
     let ctx = contexts.ctx_mut()?.clone();
     let status = &*state.status;
     egui::Window::new("HUD")
@@ -32,6 +37,8 @@ pub fn hud(mut contexts: EguiContexts, state: HudParam) -> Result {
         .show(&ctx, |ui| {
             if *state.mode.get() == GameMode::Replay {
                 ui.colored_label(INFO, "replaying a recording: the live game below waits");
+            } else {
+                super::game::hud_section(ui, &mut game);
             }
             ui.label(format!("shots: {}", status.shots));
             ui.label(format!("simulated time: {:.3} s", status.sim_time));
