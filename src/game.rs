@@ -49,6 +49,7 @@ pub fn plugin(app: &mut App) {
         .add_message::<TurnCommand>()
         .init_resource::<Rules>()
         .init_resource::<DialogOpen>()
+        .add_systems(Startup, start_game_at_launch)
         .add_systems(
             Update,
             (judge_shot, apply_commands, follow_rules)
@@ -202,7 +203,8 @@ impl GameInPlay {
         let shooter = self.name(next.shooter);
         let doing = match turn {
             Turn::NewGame => "new game: choose the game and the players".to_owned(),
-            Turn::ShotInPlay => format!("{} shot: balls moving", self.name(self.shooter())),
+            // The next shot is the one in play until its verdict.
+            Turn::ShotInPlay => format!("{shooter} shot: balls moving"),
             Turn::GameOver => match (rack.over, play.winner()) {
                 (Some((winner, reason)), Some(_)) => format!(
                     "{} wins the rack and the match: {reason}",
@@ -279,13 +281,6 @@ impl GameInPlay {
             lines.push(format!("last foul: {foul}"));
         }
         lines
-    }
-
-    /// Who shot last (or shoots next, before the first shot).
-    fn shooter(&self) -> Seat {
-        self.last
-            .as_ref()
-            .map_or(self.next().shooter, |v| v.shooter)
     }
 }
 
@@ -619,6 +614,24 @@ fn apply_commands(
                 }
             }
         }
+    }
+}
+
+/// The game to start at launch (`--game`), two players, race to 3.
+#[derive(Resource, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct StartGame(pub Game);
+
+fn start_game_at_launch(
+    start: Option<Res<StartGame>>,
+    mut new_games: MessageWriter<NewGameRequested>,
+) {
+    if let Some(start) = start {
+        new_games.write(NewGameRequested {
+            game: start.0,
+            players: ["Player 1".to_owned(), "Player 2".to_owned()],
+            race_to: 3,
+            seed: clock_seed(),
+        });
     }
 }
 

@@ -62,6 +62,9 @@ impl Plugin for GamePlugin {
         if let Some(file) = &self.options.replay {
             app.insert_resource(replay::OpenAtStart(file.clone()));
         }
+        if let Some(game) = self.options.game {
+            app.insert_resource(game::StartGame(game));
+        }
         if self.options.no_record {
             app.insert_resource(recording::RecordingsFolder(None));
         } else if let Some(folder) = &self.options.recordings {

@@ -5,7 +5,7 @@
 use bevy::prelude::*;
 use bevy_egui::{EguiContexts, egui};
 
-use super::layout::{INFO, WARNING, WINDOW_MARGIN};
+use super::layout::{HUD_WIDTH, INFO, WARNING, WINDOW_MARGIN};
 use crate::{
     balls::{Ball, Pocketed},
     mode::GameMode,
@@ -33,6 +33,7 @@ pub fn hud(
     egui::Window::new("HUD")
         .title_bar(false)
         .resizable(false)
+        .max_width(HUD_WIDTH)
         .anchor(egui::Align2::RIGHT_TOP, [-WINDOW_MARGIN, WINDOW_MARGIN])
         .show(&ctx, |ui| {
             if *state.mode.get() == GameMode::Replay {
