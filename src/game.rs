@@ -414,7 +414,9 @@ fn judge_shot(
         }
     };
     if !verdict.legal() {
-        game.last_foul = Some(verdict.reason());
+        let reason = verdict.reason();
+        let reason = reason.strip_prefix("foul: ").unwrap_or(&reason);
+        game.last_foul = Some(format!("{} ({})", reason, game.play.name(verdict.shooter)));
     }
     game.log.shots.push(LoggedShot {
         choices: std::mem::take(&mut game.choices),

@@ -226,7 +226,10 @@ fn play_rack_of_misses(app: &mut App, breaker: Seat) -> Seat {
         assert_eq!(verdict.shooter, shooter);
         assert!(verdict.fouls.contains(&Foul::NoBallHit), "{:?}", verdict);
         let lines = rules(app).hud_lines(turn(app)).join("\n");
-        assert!(lines.contains("last foul: foul: "), "{lines}");
+        assert!(
+            lines.contains("last foul: the cue ball hit no ball"),
+            "{lines}"
+        );
         if fouls_before == 2 {
             assert_eq!(
                 verdict.outcome,
