@@ -13,7 +13,7 @@ use crate::{
     input::InputSystems,
     mode::GameMode,
     settings::{ClampReport, ShotSettings, ViewSettings, apply_shot_edit},
-    sim::{ShotRequested, SimStatus, SimSystems, move_ball_in_hand},
+    sim::{ShotRequested, SimStatus, SimSystems, Solver, place_ball_in_hand},
 };
 use bevy::{
     input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
@@ -117,7 +117,7 @@ fn cue_ball_position(balls: &Query<(&Ball, &BallMotion), Without<Pocketed>>) -> 
 
 /// The mouse, the modifier keys and what the pointer is over.
 #[derive(bevy::ecs::system::SystemParam)]
-struct PointerInput<'w, 's> {
+pub struct PointerInput<'w, 's> {
     buttons: Res<'w, ButtonInput<MouseButton>>,
     keys: Res<'w, ButtonInput<KeyCode>>,
     motion: Res<'w, AccumulatedMouseMotion>,
@@ -127,9 +127,14 @@ struct PointerInput<'w, 's> {
 }
 
 impl PointerInput<'_, '_> {
+    /// Whether the left button went down this frame.
+    pub fn clicked(&self) -> bool {
+        self.buttons.just_pressed(MouseButton::Left)
+    }
+
     /// The table-plane point under the pointer, on the horizontal plane `height` above the
     /// cloth (Bevy world units).
-    fn table_point(&self, height: f32) -> Option<DVec2> {
+    pub fn table_point(&self, height: f32) -> Option<DVec2> {
         let cursor = self.window.cursor_position()?;
         let (camera, camera_transform) = *self.camera;
         let ray = camera.viewport_to_world(camera_transform, cursor).ok()?;
@@ -138,30 +143,55 @@ impl PointerInput<'_, '_> {
     }
 }
 
-/// Left drag aims at the pointer; with Shift, dragging down (or the wheel) sets the power;
-/// with Ctrl, after a scratch, it slides the cue ball along the head string.
+/// Left drag aims at the pointer; with Shift, dragging down (or the wheel) sets the power.
+/// With the cue ball in hand, a drag that starts on the cue ball (or any drag with Ctrl)
+/// moves it: anywhere legal under the rules (a spot on another ball, off the table or, when
+/// it must be, in front of the head string is refused and the ball stays), along the head
+/// string after a free-play scratch.
+#[allow(clippy::too_many_arguments)]
 fn aim_with_mouse(
     input: PointerInput,
     spec: Res<TableSpec>,
     mut balls: Query<(&Ball, &mut BallMotion), Without<Pocketed>>,
-    status: Res<SimStatus>,
+    mut status: ResMut<SimStatus>,
+    solver: Option<Res<Solver>>,
     mut shot: ResMut<ShotSettings>,
     mut report: ResMut<ClampReport>,
+    mut dragging_ball: Local<bool>,
 ) {
+    if !input.buttons.pressed(MouseButton::Left) {
+        *dragging_ball = false;
+    }
     if !status.at_rest {
         return;
     }
-    let ctrl = input
-        .keys
-        .any_pressed([KeyCode::ControlLeft, KeyCode::ControlRight]);
-    if status.ball_in_hand && ctrl {
-        if input.buttons.pressed(MouseButton::Left)
-            && let Some(target) = input.table_point(spec.ball_radius as f32)
-            && let Some((_, mut motion)) = balls.iter_mut().find(|(ball, _)| ball.number == 0)
+    if let Some(rule) = status.ball_in_hand
+        && let Some(solver) = solver
+    {
+        let ctrl = input
+            .keys
+            .any_pressed([KeyCode::ControlLeft, KeyCode::ControlRight]);
+        let target = input.table_point(spec.ball_radius as f32);
+        if input.clicked()
+            && let Some(target) = target
+            && let Some(cue_ball) = balls
+                .iter()
+                .find(|(ball, _)| ball.number == 0)
+                .map(|(_, motion)| motion.position)
+            && target.distance(cue_ball) < 1.5 * spec.ball_radius
         {
-            move_ball_in_hand(&spec, &mut motion, target.y);
+            *dragging_ball = true;
         }
-        return;
+        if (*dragging_ball || ctrl) && input.buttons.pressed(MouseButton::Left) {
+            if let Some(target) = target
+                && let Some((_, mut motion)) = balls.iter_mut().find(|(ball, _)| ball.number == 0)
+            {
+                // A refused spot keeps the ball where it last was legal.
+                let placed = place_ball_in_hand(&solver, &spec, &mut motion, target, rule);
+                status.note = placed.err().map(|error| format!("ball in hand: {error}"));
+            }
+            return;
+        }
     }
     let Some(cue_ball) = balls
         .iter()

@@ -8,6 +8,7 @@ pub mod balls;
 pub mod camera;
 pub mod cue;
 pub mod display;
+pub mod game;
 pub mod geometry;
 pub mod input;
 pub mod lighting;
@@ -63,9 +64,14 @@ impl Plugin for GamePlugin {
             ui::plugin,
             recording::plugin,
             replay::plugin,
+            game::plugin,
+            game::table_plugin,
         ));
         if let Some(file) = &self.options.replay {
             app.insert_resource(replay::OpenAtStart(file.clone()));
+        }
+        if let Some(game) = self.options.game {
+            app.insert_resource(game::StartGame(game));
         }
         if self.options.no_record {
             app.insert_resource(recording::RecordingsFolder(None));

@@ -19,6 +19,8 @@ pub struct LaunchOptions {
     pub no_record: bool,
     /// Open this recording in the replay viewer at start (`billiards replay FILE`).
     pub replay: Option<PathBuf>,
+    /// Start a match of this game (two players, race to 3) instead of free play.
+    pub game: Option<billiards_rules::Game>,
 }
 
 /// Why the command line could not be understood.
@@ -56,11 +58,14 @@ impl LaunchOptions {
     /// The usage text printed by `--help` and after a command-line error.
     pub const USAGE: &'static str = "\
 usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
+                 [--game nine-ball|eight-ball|free-play]
                  [--screenshot PATH [--settle SECONDS]]
 
   replay FILE         open a recording in the replay viewer
   --recordings DIR    save every game there, one file per rack (default: ./recordings)
   --no-record         do not save recordings
+  --game GAME         start a match (two players, race to 3) of nine-ball or eight-ball;
+                      free-play (the default) is the sandbox
 
   --screenshot PATH   wait until the scene has been drawn, save it as PNG to PATH, exit
   --settle SECONDS    how long every render pipeline must have been ready before the
@@ -101,6 +106,20 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                     options.recordings = Some(PathBuf::from(dir));
                 }
                 "--no-record" => options.no_record = true,
+                "--game" => {
+                    let value = args.next().ok_or(ArgsError::MissingValue("--game"))?;
+                    options.game = Some(match value.as_str() {
+                        "nine-ball" | "9-ball" => billiards_rules::Game::NineBall,
+                        "eight-ball" | "8-ball" => billiards_rules::Game::EightBall,
+                        "free-play" => billiards_rules::Game::FreePlay,
+                        _ => {
+                            return Err(ArgsError::InvalidValue {
+                                flag: "--game",
+                                value,
+                            });
+                        }
+                    });
+                }
                 "replay" if options.replay.is_none() => {
                     let file = args.next().ok_or(ArgsError::MissingValue("replay"))?;
                     options.replay = Some(PathBuf::from(file));
@@ -148,6 +167,14 @@ mod tests {
         assert_eq!(options.recordings, Some(PathBuf::from("out")));
         assert!(!options.no_record);
         assert!(parse(&["--no-record"]).unwrap().no_record);
+        assert_eq!(
+            parse(&["--game", "nine-ball"]).unwrap().game,
+            Some(billiards_rules::Game::NineBall)
+        );
+        assert!(matches!(
+            parse(&["--game", "snooker"]),
+            Err(ArgsError::InvalidValue { flag: "--game", .. })
+        ));
         assert_eq!(parse(&["replay"]), Err(ArgsError::MissingValue("replay")));
     }
 

@@ -24,6 +24,8 @@ use billiards_physics::{
     Shot, Simulation, SpinModel, recording::Recorder,
 };
 
+use billiards_rules::{CueBall, PlacementError};
+
 use crate::{
     balls::{Ball, BallMotion, MotionState, Pocketed},
     geometry::TableSpec,
@@ -35,6 +37,7 @@ use crate::{
 /// runs headless under `MinimalPlugins` too (together with [`crate::settings::plugin`]).
 pub fn plugin(app: &mut App) {
     app.add_message::<RackRequested>()
+        .add_message::<LayoutRequested>()
         .add_message::<ShotRequested>()
         .add_message::<StepRequested>()
         .add_message::<BallContact>()
@@ -44,6 +47,7 @@ pub fn plugin(app: &mut App) {
         .add_message::<RequestRedraw>()
         .init_resource::<TableSpec>()
         .init_resource::<SimStatus>()
+        .init_resource::<Referee>()
         .configure_sets(
             Update,
             (SimSystems::Step, SimSystems::Flow, SimSystems::Commands).chain(),
@@ -120,6 +124,28 @@ pub fn rack_slug(rack: Rack) -> &'static str {
 /// Asks for the table to be cleared and racked anew.
 #[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
 pub struct RackRequested(pub Rack);
+
+/// Asks for the table to be cleared and set up with these balls (a rules game's seeded rack,
+/// [`billiards_rules::Game::rack`]); `rack` names the recording. Wins over a
+/// [`RackRequested`] of the same frame.
+#[derive(Message, Debug, Clone, PartialEq)]
+pub struct LayoutRequested {
+    /// The balls, the cue ball first.
+    pub balls: Vec<physics::BallSetup>,
+    /// The standard rack closest to it (names the recording file).
+    pub rack: Rack,
+}
+
+/// What a rules game (`crate::game`) asks of the simulation: it takes over the cue ball after
+/// a scratch (so the free-play respot stays out of its way) and may refuse a shot (a choice
+/// or a call is pending). The default is free play: no referee.
+#[derive(Resource, Debug, Clone, Default, PartialEq, Eq)]
+pub struct Referee {
+    /// A rules game is in play: a scratch is the referee's to handle.
+    pub active: bool,
+    /// Why the next shot may not be taken yet, if it may not.
+    pub refuse_shot: Option<String>,
+}
 
 /// Asks for the cue ball to be struck. Only honoured while every ball rests.
 #[derive(Message, Debug, Clone, Copy, PartialEq)]
@@ -213,9 +239,10 @@ pub struct SimStatus {
     pub solver_seconds_last_frame: f64,
     /// A message for the player about the simulation's state, if any.
     pub note: Option<String>,
-    /// After a scratch, until the next shot: the player may slide the cue ball along the head
-    /// string.
-    pub ball_in_hand: bool,
+    /// Until the next shot, the cue ball is in hand: after a free-play scratch
+    /// ([`CueBall::Respot`]: it slides along the head string), or under the rules behind the
+    /// head string or anywhere.
+    pub ball_in_hand: Option<CueBall>,
 }
 
 /// The solver and the entity of each of its balls. Every input goes through a [`Recorder`],
@@ -497,17 +524,21 @@ fn send_event_messages(world: &mut World, solver: &Solver, events: Range<usize>)
 fn rack_balls(
     mut commands: Commands,
     mut requests: MessageReader<RackRequested>,
+    mut layouts: MessageReader<LayoutRequested>,
     spec: Res<TableSpec>,
     settings: Res<PhysicsSettings>,
     balls: Query<Entity, With<Ball>>,
     mut status: ResMut<SimStatus>,
 ) {
-    let Some(&RackRequested(rack)) = requests.read().last() else {
-        return;
-    };
+    let rack_request = requests.read().last().copied();
+    let layout_request = layouts.read().last().cloned();
     let table = table_for(&spec, &settings);
     let params = params_from(&settings);
-    let layout = rack.layout(&table, &params.ball);
+    let (layout, rack) = match (layout_request, rack_request) {
+        (Some(LayoutRequested { balls, rack }), _) => (balls, rack),
+        (None, Some(RackRequested(rack))) => (rack.layout(&table, &params.ball), rack),
+        (None, None) => return,
+    };
     let rec = match Recorder::new(table, params, layout) {
         Ok(rec) => rec,
         Err(error) => {
@@ -606,12 +637,17 @@ fn strike_cue_ball(
     solver: Option<ResMut<Solver>>,
     mut balls: Query<&mut BallMotion>,
     mut status: ResMut<SimStatus>,
+    referee: Res<Referee>,
     mut redraw: MessageWriter<RequestRedraw>,
 ) {
     let Some(&request) = shots.read().last() else {
         return;
     };
     let Some(mut solver) = solver else { return };
+    if let Some(why) = &referee.refuse_shot {
+        status.note = Some(why.clone());
+        return;
+    }
     if !solver.simulation().is_at_rest() {
         status.note = Some("wait until every ball rests".to_owned());
         return;
@@ -633,7 +669,7 @@ fn strike_cue_ball(
             }
             status.shots += 1;
             status.events_this_shot = 0;
-            status.ball_in_hand = false;
+            status.ball_in_hand = None;
             status.at_rest = solver.simulation().is_at_rest();
             status.note = None;
             redraw.write(RequestRedraw);
@@ -642,41 +678,91 @@ fn strike_cue_ball(
     }
 }
 
-/// After a scratch the cue ball goes back on the head string, where
+/// Free play: after a scratch the cue ball goes back on the head string, where
 /// [`billiards_rules::cue_ball_spot`] says (the rule the command line plays by too). The edit
-/// reaches the solver like any other (change detection).
+/// reaches the solver like any other (change detection). In a rules game the [`Referee`]
+/// handles the scratch instead.
 pub fn respot_after_scratch(
     mut commands: Commands,
     mut finished: MessageReader<ShotFinished>,
     solver: Option<Res<Solver>>,
+    referee: Res<Referee>,
     mut balls: Query<&mut BallMotion>,
     mut status: ResMut<SimStatus>,
 ) {
-    if !finished.read().any(|shot| shot.scratch) {
+    if !finished.read().any(|shot| shot.scratch) || referee.active {
         return;
     }
     let Some(solver) = solver else { return };
     let Some(cue) = solver.cue_ball() else { return };
-    let Some(spot) = billiards_rules::cue_ball_spot(solver.simulation(), cue) else {
-        status.note = Some("no free spot on the head string for the cue ball".to_owned());
-        return;
-    };
-    let entity = solver.entities[cue];
-    if let Ok(mut motion) = balls.get_mut(entity) {
-        *motion = BallMotion {
-            position: to_dvec2(spot),
-            velocity: DVec2::ZERO,
-            state: MotionState::Stationary,
-            spin: bevy::math::DVec3::ZERO,
-        };
-        commands.entity(entity).remove::<Pocketed>();
+    if respot_ball(&mut commands, &solver, cue, &mut balls, &mut status) {
         status.note = Some(
-            "scratch: the cue ball is back on the head string (ball in hand: Ctrl + drag \
-             or the slider moves it along the string)"
+            "scratch: the cue ball is back on the head string (ball in hand: drag it, or \
+             the slider moves it along the string)"
                 .to_owned(),
         );
-        status.ball_in_hand = true;
+        status.ball_in_hand = Some(CueBall::Respot);
     }
+}
+
+/// Puts ball `id` back on the table by an edit of its [`BallMotion`] (so the solver and the
+/// recording get it): the cue ball on the head string ([`billiards_rules::cue_ball_spot`]),
+/// an object ball on the foot string ([`billiards_rules::object_ball_spot`], WPA 1.4).
+/// Returns whether a free spot was found (if not, a note says so).
+pub fn respot_ball(
+    commands: &mut Commands,
+    solver: &Solver,
+    id: usize,
+    balls: &mut Query<&mut BallMotion>,
+    status: &mut SimStatus,
+) -> bool {
+    let number = solver.simulation().numbers()[id];
+    let spot = if number == 0 {
+        billiards_rules::cue_ball_spot(solver.simulation(), id)
+    } else {
+        billiards_rules::object_ball_spot(solver.simulation(), id)
+    };
+    let Some(spot) = spot else {
+        status.note = Some(format!("no free spot for the ball {number}"));
+        return false;
+    };
+    let entity = solver.entities[id];
+    let Ok(mut motion) = balls.get_mut(entity) else {
+        return false;
+    };
+    *motion = BallMotion {
+        position: to_dvec2(spot),
+        velocity: DVec2::ZERO,
+        state: MotionState::Stationary,
+        spin: bevy::math::DVec3::ZERO,
+    };
+    commands.entity(entity).remove::<Pocketed>();
+    true
+}
+
+/// Puts the cue ball in hand at `at` if the rules allow it there
+/// ([`billiards_rules::check_placement`]: on the table, behind the head string when it must
+/// be, on no other ball); a refused spot leaves it where it was. The edit reaches the solver
+/// (and the recording) like any placement. Free play's [`CueBall::Respot`] slides it along
+/// the head string instead ([`move_ball_in_hand`]).
+pub fn place_ball_in_hand(
+    solver: &Solver,
+    spec: &TableSpec,
+    motion: &mut BallMotion,
+    at: DVec2,
+    rule: CueBall,
+) -> Result<(), PlacementError> {
+    if rule == CueBall::Respot {
+        move_ball_in_hand(spec, motion, at.y);
+        return Ok(());
+    }
+    let cue = solver.cue_ball().ok_or(PlacementError::NotInHand)?;
+    billiards_rules::check_placement(solver.simulation(), cue, to_vec2(at), rule)?;
+    if motion.position != at {
+        motion.position = at;
+        motion.velocity = DVec2::ZERO;
+    }
+    Ok(())
 }
 
 /// Moves the cue ball in hand to `y` on the head string, clamped between the side cushions.

@@ -84,16 +84,21 @@ impl Shot {
     }
 }
 
-#[test]
-fn table_balls_and_cue_are_drawn() {
+/// Runs the game with `args` and `--screenshot`, returns the captured frame; `None` (the test
+/// is skipped) without xvfb-run or a Vulkan driver.
+fn screenshot(args: &[&str]) -> Option<Shot> {
     if !on_path("xvfb-run") || !vulkan_driver_installed() {
         eprintln!(
             "render test skipped: needs xvfb-run and a Vulkan driver \
              (apt-get install xvfb mesa-vulkan-drivers libvulkan1)"
         );
-        return;
+        return None;
     }
-    let out: PathBuf = env::temp_dir().join(format!("billiards-render-{}.png", std::process::id()));
+    let out: PathBuf = env::temp_dir().join(format!(
+        "billiards-render-{}-{}.png",
+        std::process::id(),
+        args.len()
+    ));
     let runtime_dir = env::var_os("XDG_RUNTIME_DIR").unwrap_or_else(|| env::temp_dir().into());
     // `timeout` (coreutils) ends the run with SIGTERM, so xvfb-run can stop its X server.
     let output = Command::new("timeout")
@@ -106,6 +111,7 @@ fn table_balls_and_cue_are_drawn() {
             "-screen 0 1280x720x24",
         ])
         .arg(env!("CARGO_BIN_EXE_billiards"))
+        .args(args)
         .arg("--screenshot")
         .arg(&out)
         .env("XDG_RUNTIME_DIR", runtime_dir)
@@ -120,6 +126,31 @@ fn table_balls_and_cue_are_drawn() {
     let shot = Shot::load(&out);
     let _ = std::fs::remove_file(&out);
     assert_eq!((shot.width, shot.height), (1280, 720));
+    Some(shot)
+}
+
+/// A match in progress (`--game nine-ball`) shows its lines in the HUD: the turn's line is
+/// drawn in the HUD's info blue, which free play never shows outside a replay.
+#[test]
+fn a_game_in_progress_shows_its_hud_line() {
+    let Some(shot) = screenshot(&["--game", "nine-ball", "--no-record"]) else {
+        return;
+    };
+    let hud_left = shot.width - 320;
+    let info = (0..120)
+        .flat_map(|y| (hud_left..shot.width).map(move |x| (x, y)))
+        .map(|(x, y)| shot.rgb[y * shot.width + x].map(i32::from))
+        .filter(|&[r, g, b]| (r - 120).abs() < 45 && (g - 190).abs() < 45 && b > 200)
+        .count();
+    eprintln!("info-blue pixels in the HUD: {info}");
+    assert!(info > 40, "no turn line in the HUD ({info} px)");
+}
+
+#[test]
+fn table_balls_and_cue_are_drawn() {
+    let Some(shot) = screenshot(&[]) else {
+        return;
+    };
 
     let total = shot.table_view().count();
     let cloth = shot.count(|[r, g, b]| g > 50 && g > r * 3 / 2 + 10 && g > b + 15);

@@ -193,7 +193,10 @@ fn a_scratch_respots_the_cue_ball_on_the_head_spot() {
 
     // Ball in hand: the player slides it along the head string; the solver and the recording
     // get the placement. Beyond the side cushion it is held at the cushion.
-    assert!(app.world().resource::<SimStatus>().ball_in_hand);
+    assert_eq!(
+        app.world().resource::<SimStatus>().ball_in_hand,
+        Some(billiards_rules::CueBall::Respot)
+    );
     for (wanted_y, expected_y) in [(0.2, 0.2), (5.0, spec.width / 2.0 - spec.ball_radius)] {
         let mut query = app.world_mut().query::<(&Ball, &mut BallMotion)>();
         let (_, mut motion) = query
@@ -218,7 +221,7 @@ fn a_scratch_respots_the_cue_ball_on_the_head_spot() {
     ));
     shoot(&mut app, 0.0, 1.0);
     app.update();
-    assert!(!app.world().resource::<SimStatus>().ball_in_hand);
+    assert!(app.world().resource::<SimStatus>().ball_in_hand.is_none());
 }
 
 #[test]

@@ -1,10 +1,11 @@
-//! The HUD in the top-right corner of the 3D view: shots, simulated time, events, the
-//! solver's cost per frame, the pocketed balls, what the table is doing and the last note.
+//! The HUD in the top-right corner of the 3D view: the match in play (`super::game`), shots,
+//! simulated time, events, the solver's cost per frame, the pocketed balls, what the table
+//! is doing and the last note.
 
 use bevy::{diagnostic::FrameCount, prelude::*};
 use bevy_egui::{EguiContexts, egui};
 
-use super::layout::{INFO, WARNING, WINDOW_MARGIN};
+use super::layout::{HUD_WIDTH, INFO, WARNING, WINDOW_MARGIN};
 use crate::{
     balls::{Ball, Pocketed},
     mode::GameMode,
@@ -24,16 +25,23 @@ pub struct HudParam<'w, 's> {
 }
 
 /// The HUD in the top-right corner: shot count, times, events, solver cost, pocketed balls.
-pub fn hud(mut contexts: EguiContexts, state: HudParam) -> Result {
+pub fn hud(
+    mut contexts: EguiContexts,
+    state: HudParam,
+    mut game: super::game::GameParam,
+) -> Result {
     let ctx = contexts.ctx_mut()?.clone();
     let status = &*state.status;
     egui::Window::new("HUD")
         .title_bar(false)
         .resizable(false)
+        .max_width(HUD_WIDTH)
         .anchor(egui::Align2::RIGHT_TOP, [-WINDOW_MARGIN, WINDOW_MARGIN])
         .show(&ctx, |ui| {
             if *state.mode.get() == GameMode::Replay {
                 ui.colored_label(INFO, "replaying a recording: the live game below waits");
+            } else {
+                super::game::hud_section(ui, &mut game);
             }
             ui.label(format!("shots: {}", status.shots));
             // The frame number shows whether the window redraws at idle (it should not); the

@@ -8,6 +8,9 @@ pub const PANEL_WIDTH: f32 = 340.0;
 /// Gap between a floating window (HUD, timeline) and the edge of the 3D view.
 pub const WINDOW_MARGIN: f32 = 10.0;
 
+/// Width of the HUD at most (longer lines wrap).
+pub const HUD_WIDTH: f32 = 300.0;
+
 /// Width the replay timeline window asks for.
 pub const TIMELINE_WIDTH: f32 = 620.0;
 

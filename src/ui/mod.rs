@@ -6,12 +6,15 @@
 //! - [`settings`]: the panel's shot, physics, simulation and view sections;
 //! - [`recordings`]: the Recordings section (open a recording);
 //! - [`timeline`]: the replay timeline window and its Export form;
-//! - [`hud`]: the HUD in the top-right corner.
+//! - [`hud`]: the HUD in the top-right corner;
+//! - [`game`]: the match's HUD lines, the new-game dialog, the verdict, the call, the end of
+//!   a rack.
 //!
 //! The 3D view is fitted to the part of the window right of the panel, so the panel never
 //! covers the table. While egui has claimed the pointer or the keyboard, the game's input
 //! systems ([`InputSystems`]) do not run, so input meant for a widget never reaches the table.
 
+pub mod game;
 pub mod hud;
 pub mod layout;
 pub mod recordings;
@@ -39,6 +42,7 @@ pub fn plugin(app: &mut App) {
     app.add_plugins(EguiPlugin::default())
         .init_resource::<recordings::RecordingsForm>()
         .init_resource::<timeline::ExportForm>()
+        .init_resource::<game::NewGameForm>()
         .configure_sets(
             Update,
             (
@@ -58,6 +62,7 @@ pub fn plugin(app: &mut App) {
             (
                 left_panel,
                 hud::hud,
+                game::game_windows.run_if(in_state(GameMode::Play)),
                 timeline::timeline_window.run_if(in_state(GameMode::Replay)),
             ),
         );

@@ -68,7 +68,7 @@ pub fn sections(ui: &mut egui::Ui, state: &mut SettingsParam) {
             param_slider(ui, &mut next.tip.side, ShotSettings::TIP_SIDE);
             param_slider(ui, &mut next.tip.height, ShotSettings::TIP_HEIGHT);
         });
-        if state.status.ball_in_hand
+        if state.status.ball_in_hand == Some(billiards_rules::CueBall::Respot)
             && let Some(mut motion) = state
                 .cue_ball
                 .iter_mut()

@@ -1,0 +1,342 @@
+//! Headless games through the game's states: whole racks of 9-ball with scripted shots, the
+//! turns, the cue ball in hand, the winner of each rack and of the match, and the rules log
+//! saved beside the recording (re-judged against it).
+
+use std::{path::Path, time::Duration};
+
+use bevy::{math::DVec2, prelude::*, time::TimeUpdateStrategy};
+use billiards::{
+    balls::{Ball, BallMotion},
+    game::{self, GameInPlay, NewGameRequested, Rules, Turn, TurnCommand},
+    geometry::TableSpec,
+    mode,
+    recording::{self, Autosave, RecordingsFolder},
+    settings,
+    sim::{self, ShotRequested, SimStatus, Solver, place_ball_in_hand},
+};
+use billiards_physics::recording::Recording;
+use billiards_rules::{CueBall, Foul, Game, GameLog, Outcome, PlacementError, Seat, WinReason};
+
+/// A headless game saving into `folder`, with a new match of `game` started.
+fn start(folder: &Path, game: Game, race_to: u32) -> App {
+    let mut app = App::new();
+    app.add_plugins((
+        MinimalPlugins,
+        mode::plugin,
+        settings::plugin,
+        sim::plugin,
+        recording::plugin,
+        game::plugin,
+    ));
+    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
+        16,
+    )));
+    app.insert_resource(RecordingsFolder(Some(folder.to_path_buf())));
+    app.update();
+    app.world_mut().write_message(NewGameRequested {
+        game,
+        players: ["Ann".to_owned(), "Bob".to_owned()],
+        race_to,
+        seed: 7,
+    });
+    app.update();
+    app.update();
+    app
+}
+
+fn turn(app: &App) -> Turn {
+    *app.world().resource::<State<Turn>>().get()
+}
+
+fn rules(app: &App) -> &GameInPlay {
+    app.world().resource::<Rules>().game.as_ref().unwrap()
+}
+
+fn command(app: &mut App, command: TurnCommand) {
+    app.world_mut().write_message(command);
+    app.update();
+    app.update();
+}
+
+/// Shoots and runs frames until every ball rests and the verdict is shown.
+fn shoot(app: &mut App, angle: f64, speed: f64) {
+    app.world_mut().write_message(ShotRequested {
+        angle,
+        speed,
+        tip: Default::default(),
+    });
+    // The strike (commands), the turn follows (flow), the state changes (transition).
+    for _ in 0..3 {
+        app.update();
+    }
+    let note = app.world().resource::<SimStatus>().note.clone();
+    assert_eq!(
+        turn(app),
+        Turn::ShotInPlay,
+        "the shot was not taken: {note:?}"
+    );
+    for _ in 0..3000 {
+        app.update();
+        if app.world().resource::<SimStatus>().at_rest {
+            app.update();
+            return;
+        }
+    }
+    panic!("balls still moving");
+}
+
+/// The balls on the table: (solver id, number, position).
+fn balls(app: &mut App) -> Vec<(usize, u8, DVec2)> {
+    let solver = app.world().resource::<Solver>();
+    let sim = solver.simulation();
+    (0..sim.ball_count())
+        .map(|id| (id, sim.numbers()[id], sim.ball(id)))
+        .filter(|(_, _, state)| state.motion.on_table())
+        .map(|(id, n, state)| (id, n, DVec2::new(state.position.x, state.position.y)))
+        .collect()
+}
+
+/// Puts the cue ball in hand at `at` the way the drag does (an edit the solver records).
+fn place(app: &mut App, at: DVec2) -> Result<(), PlacementError> {
+    let rule = app.world().resource::<SimStatus>().ball_in_hand.unwrap();
+    let result = app
+        .world_mut()
+        .resource_scope(|world, solver: Mut<Solver>| {
+            let spec = world.resource::<TableSpec>().clone();
+            let mut query = world.query::<(&Ball, &mut BallMotion)>();
+            let (_, mut motion) = query
+                .iter_mut(world)
+                .find(|(ball, _)| ball.number == 0)
+                .unwrap();
+            place_ball_in_hand(&solver, &spec, &mut motion, at, rule)
+        });
+    app.update();
+    result
+}
+
+/// A shot that touches no ball: with the cue ball in hand, put it far from every ball first;
+/// then a soft roll away from the nearest ball (WPA 6.2: a foul).
+fn miss(app: &mut App) {
+    if app.world().resource::<SimStatus>().ball_in_hand.is_some() {
+        let others: Vec<DVec2> = balls(app)
+            .into_iter()
+            .filter(|&(_, n, _)| n != 0)
+            .map(|(_, _, p)| p)
+            .collect();
+        let spot = (0..200)
+            .map(|k| {
+                DVec2::new(
+                    -1.0 + 0.1 * f64::from(k % 20),
+                    -0.5 + 0.1 * f64::from(k / 20),
+                )
+            })
+            .filter(|p| p.y.abs() < 0.5)
+            .find(|p| others.iter().all(|o| o.distance(*p) > 0.2))
+            .expect("a clear spot");
+        place(app, spot).unwrap();
+        assert_eq!(
+            balls(app).into_iter().find(|b| b.1 == 0).unwrap().2,
+            spot,
+            "the placement reached the solver"
+        );
+    }
+    let all = balls(app);
+    let cue = all.iter().find(|b| b.1 == 0).unwrap().2;
+    let nearest = all
+        .iter()
+        .filter(|b| b.1 != 0)
+        .min_by(|a, b| a.2.distance(cue).total_cmp(&b.2.distance(cue)))
+        .unwrap()
+        .2;
+    shoot(app, (cue - nearest).to_angle(), 0.05);
+}
+
+/// Plays one rack in which every shot after the break is a miss: the player who fouls first
+/// after the break reaches three fouls first and loses (WPA 2.8). Returns the rack's winner.
+fn play_rack_of_misses(app: &mut App, breaker: Seat) -> Seat {
+    assert_eq!(
+        turn(app),
+        Turn::BallInHand,
+        "the break is taken from the hand"
+    );
+    let next = rules(app).next().clone();
+    assert!(next.break_shot);
+    assert_eq!(next.shooter, breaker);
+    assert_eq!(
+        app.world().resource::<SimStatus>().ball_in_hand,
+        Some(CueBall::InHandBehindHeadString)
+    );
+    // WPA 2.3: the cue ball must stay behind the head string for the break.
+    let spec = app.world().resource::<TableSpec>().clone();
+    assert_eq!(
+        place(app, spec.foot_spot()),
+        Err(PlacementError::InFrontOfHeadString)
+    );
+    let head = spec.head_spot();
+    place(app, head + DVec2::new(-0.05, 0.02)).unwrap();
+    shoot(app, 0.0, 9.0);
+    let mut shots = 1;
+    loop {
+        assert!(matches!(turn(app), Turn::Verdict | Turn::GameOver));
+        let verdict = rules(app).last.clone().unwrap();
+        if let Outcome::GameOver { winner, reason } = verdict.outcome {
+            assert_eq!(turn(app), Turn::GameOver);
+            let lines = rules(app).hud_lines(Turn::GameOver).join("\n");
+            assert!(lines.contains("wins the rack"), "{lines}");
+            if reason == WinReason::ThreeFouls {
+                assert_eq!(winner, verdict.shooter.other());
+            }
+            return winner;
+        }
+        // A shot refused while the verdict is shown.
+        app.world_mut().write_message(ShotRequested {
+            angle: 0.0,
+            speed: 1.0,
+            tip: Default::default(),
+        });
+        app.update();
+        assert_eq!(turn(app), Turn::Verdict);
+        command(app, TurnCommand::Continue);
+        let next = rules(app).next().clone();
+        assert!(next.choices.is_empty(), "no push out is declared");
+        let expected_hand = if verdict.legal() {
+            None
+        } else {
+            // WPA 2.7: ball in hand anywhere after a foul.
+            Some(CueBall::InHandAnywhere)
+        };
+        assert_eq!(
+            app.world().resource::<SimStatus>().ball_in_hand,
+            expected_hand
+        );
+        assert_eq!(
+            turn(app),
+            if expected_hand.is_some() {
+                Turn::BallInHand
+            } else {
+                Turn::Aiming
+            }
+        );
+        let shooter = next.shooter;
+        let fouls_before = rules(app).rack().fouls[shooter.index()];
+        miss(app);
+        shots += 1;
+        assert!(shots < 20, "the rack does not end");
+        let verdict = rules(app).last.clone().unwrap();
+        assert_eq!(verdict.shooter, shooter);
+        assert!(verdict.fouls.contains(&Foul::NoBallHit), "{:?}", verdict);
+        let lines = rules(app).hud_lines(turn(app)).join("\n");
+        assert!(
+            lines.contains("last foul: the cue ball hit no ball"),
+            "{lines}"
+        );
+        if fouls_before == 2 {
+            assert_eq!(
+                verdict.outcome,
+                Outcome::GameOver {
+                    winner: shooter.other(),
+                    reason: WinReason::ThreeFouls
+                }
+            );
+        } else {
+            assert_eq!(verdict.outcome, Outcome::Passes);
+            assert_eq!(verdict.next.unwrap().shooter, shooter.other());
+        }
+    }
+}
+
+#[test]
+fn a_nine_ball_match_is_played_through_the_turns_to_its_winner() {
+    let folder = std::env::temp_dir().join(format!("billiards-game-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&folder);
+    let mut app = start(&folder, Game::NineBall, 2);
+    let lines = rules(&app).hud_lines(turn(&app));
+    assert_eq!(lines[0], "9-ball, race to 2: Ann 0 - 0 Bob");
+    assert!(lines[1].starts_with("Ann to break: ball in hand behind the head string"));
+    let mut breaker = Seat::A;
+    let mut racks = 0;
+    loop {
+        let winner = play_rack_of_misses(&mut app, breaker);
+        racks += 1;
+        let play = rules(&app).play.clone();
+        assert_eq!(play.score[0] + play.score[1], racks);
+        // The rack's rules log lies beside its recording and re-judges it.
+        let recording = app.world().resource::<Autosave>().file.clone().unwrap();
+        let log_path = GameLog::path_beside(&recording);
+        let log: GameLog =
+            serde_json::from_str(&std::fs::read_to_string(&log_path).unwrap()).unwrap();
+        let recorded = Recording::load(&recording).unwrap();
+        let numbers: Vec<u8> = recorded.balls.iter().map(|b| b.number).collect();
+        assert_eq!(log.check(&recorded.events, &numbers), Ok(log.shots.len()));
+        assert_eq!(log.players, ["Ann".to_owned(), "Bob".to_owned()]);
+        assert_eq!(log.breaker, breaker);
+        if let Some(champion) = play.winner() {
+            assert_eq!(champion, winner);
+            assert_eq!(play.score[champion.index()], 2);
+            let lines = rules(&app).hud_lines(Turn::GameOver).join("\n");
+            assert!(lines.contains("wins the rack and the match"), "{lines}");
+            break;
+        }
+        assert!(racks < 3);
+        // Alternate break.
+        command(&mut app, TurnCommand::NextRack);
+        breaker = breaker.other();
+    }
+    // A new game of free play ends the match.
+    app.world_mut().write_message(NewGameRequested {
+        game: Game::FreePlay,
+        players: ["Ann".to_owned(), "Bob".to_owned()],
+        race_to: 1,
+        seed: 0,
+    });
+    app.update();
+    app.update();
+    assert!(app.world().resource::<Rules>().game.is_none());
+    assert_eq!(turn(&app), Turn::Aiming);
+    let _ = std::fs::remove_dir_all(&folder);
+}
+
+#[test]
+fn eight_ball_needs_a_call_on_the_eight_and_the_dialog_pauses_the_turn() {
+    let folder = std::env::temp_dir().join(format!("billiards-game8-{}", std::process::id()));
+    let mut app = start(&folder, Game::EightBall, 1);
+    let lines = rules(&app).hud_lines(turn(&app));
+    assert_eq!(lines[0], "8-ball, race to 1: Ann 0 - 0 Bob");
+    assert!(lines.iter().any(|l| l == "open table"), "{lines:?}");
+    // The new-game dialog stops the turn; closing it gives the turn back.
+    command(&mut app, TurnCommand::OpenDialog);
+    assert_eq!(turn(&app), Turn::NewGame);
+    command(&mut app, TurnCommand::CloseDialog);
+    assert_eq!(turn(&app), Turn::BallInHand);
+    // No call on the break.
+    command(&mut app, TurnCommand::StartCalling);
+    assert_eq!(turn(&app), Turn::BallInHand);
+    shoot(&mut app, 0.0, 9.0);
+    let verdict = rules(&app).last.clone().unwrap();
+    assert!(verdict.break_shot);
+    assert!(matches!(turn(&app), Turn::Verdict | Turn::GameOver));
+    if turn(&app) == Turn::GameOver {
+        return;
+    }
+    // WPA 3.3: after an illegal break or the 8 on the break, the options; take the first.
+    match rules(&app).next().choices.first() {
+        Some(&choice) => command(&mut app, TurnCommand::Choose(choice)),
+        None => command(&mut app, TurnCommand::Continue),
+    }
+    assert!(matches!(turn(&app), Turn::Aiming | Turn::BallInHand));
+    // Calling (WPA 1.6): a click on a pocket calls it (here the command the click sends).
+    command(&mut app, TurnCommand::StartCalling);
+    assert_eq!(turn(&app), Turn::Calling);
+    let ball = rules(&app).call_ball.unwrap();
+    assert!(rules(&app).next().legal_first.contains(&ball));
+    let call = billiards_rules::Call::Ball {
+        ball,
+        pocket: billiards_physics::Pocket::FootLeft,
+    };
+    command(&mut app, TurnCommand::Call(call));
+    assert!(matches!(turn(&app), Turn::Aiming | Turn::BallInHand));
+    assert_eq!(rules(&app).call, call);
+    let lines = rules(&app).hud_lines(turn(&app)).join("\n");
+    assert!(lines.contains("call: the "), "{lines}");
+    let _ = std::fs::remove_dir_all(&folder);
+}
