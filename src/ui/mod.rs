@@ -46,7 +46,9 @@ pub fn plugin(app: &mut App) {
         .configure_sets(
             Update,
             (
-                InputSystems::Pointer.run_if(not(egui_wants_any_pointer_input)),
+                InputSystems::Pointer
+                    .run_if(not(egui_wants_any_pointer_input))
+                    .run_if(not(pointer_on_ui)),
                 InputSystems::Keyboard.run_if(not(egui_wants_any_keyboard_input)),
             ),
         )
@@ -56,6 +58,8 @@ pub fn plugin(app: &mut App) {
                 .after(EguiPreUpdateSet::ProcessInput)
                 .before(EguiPreUpdateSet::BeginPass),
         )
+        .init_resource::<PointerOnUi>()
+        .add_systems(Update, find_pointer_on_ui.before(InputSystems::Pointer))
         .add_systems(Startup, spawn_ui_camera)
         .add_systems(
             EguiPrimaryContextPass,
@@ -66,6 +70,34 @@ pub fn plugin(app: &mut App) {
                 timeline::timeline_window.run_if(in_state(GameMode::Replay)),
             ),
         );
+}
+
+/// Whether the pointer is, this frame, over a panel or window of the UI.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct PointerOnUi(pub bool);
+
+/// egui's own verdict ([`egui_wants_any_pointer_input`]) comes from its last pass, which saw
+/// the pointer where it was a frame ago: a pointer that jumps onto a button and clicks within
+/// one frame (one frame is a second on a software renderer) reached the table too and re-aimed
+/// the cue. Here the pointer's current position is looked up in the areas egui laid out.
+fn find_pointer_on_ui(
+    mut contexts: EguiContexts,
+    window: Single<&Window, With<PrimaryWindow>>,
+    mut on_ui: ResMut<PointerOnUi>,
+) -> Result {
+    let ctx = contexts.ctx_mut()?;
+    // Window coordinates are logical pixels; egui points are those over its zoom factor.
+    let over = window.cursor_position().is_some_and(|cursor| {
+        let at = egui::pos2(cursor.x, cursor.y) / ctx.zoom_factor();
+        ctx.layer_id_at(at)
+            .is_some_and(|layer| layer.order != egui::Order::Background)
+    });
+    on_ui.set_if_neq(PointerOnUi(over));
+    Ok(())
+}
+
+fn pointer_on_ui(on_ui: Res<PointerOnUi>) -> bool {
+    on_ui.0
 }
 
 /// bevy_egui 0.42 puts a `ModifiersChanged` event into every frame's input, changed or not,
