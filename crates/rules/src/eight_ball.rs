@@ -36,23 +36,19 @@ fn ball_on(state: &GameState, shooter: Seat) -> (BallOn, Vec<u8>) {
 /// The next shot of an ordinary turn of `shooter`.
 pub(crate) fn normal_next(state: &GameState, shooter: Seat, cue_ball: CueBall) -> NextShot {
     let (on, legal_first) = ball_on(state, shooter);
-    NextShot {
+    // WPA 1.6: obvious shots need no call; the 8 is always called (3.8).
+    let call = if on == BallOn::Eight {
+        CallRule::EightPocket
+    } else {
+        CallRule::Optional
+    };
+    NextShot::plain(
         shooter,
         cue_ball,
         legal_first,
-        // WPA 1.6: obvious shots need no call; the 8 is always called (3.8).
-        call: if on == BallOn::Eight {
-            CallRule::EightPocket
-        } else {
-            CallRule::Optional
-        },
-        break_shot: false,
-        push_out_allowed: false,
-        choices: Vec::new(),
-        spot: Vec::new(),
-        rerack: false,
-        fouls_in_a_row: state.fouls[shooter.index()],
-    }
+        call,
+        state.fouls[shooter.index()],
+    )
 }
 
 /// Judges an 8-ball shot (see [`GameState::play`]).

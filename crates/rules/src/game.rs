@@ -168,6 +168,30 @@ pub struct NextShot {
     pub fouls_in_a_row: u8,
 }
 
+impl NextShot {
+    /// An ordinary shot: no break, no push out, no choice, nothing to spot, no re-rack.
+    pub(crate) fn plain(
+        shooter: Seat,
+        cue_ball: CueBall,
+        legal_first: Vec<u8>,
+        call: CallRule,
+        fouls_in_a_row: u8,
+    ) -> Self {
+        Self {
+            shooter,
+            cue_ball,
+            legal_first,
+            call,
+            break_shot: false,
+            push_out_allowed: false,
+            choices: Vec::new(),
+            spot: Vec::new(),
+            rerack: false,
+            fouls_in_a_row,
+        }
+    }
+}
+
 /// What happened to the turn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
@@ -314,24 +338,18 @@ impl GameState {
     /// A new rack of `game` broken by `breaker`.
     pub fn new(game: Game, breaker: Seat) -> Self {
         let on_table = game.object_balls();
+        let cue_ball = match game {
+            Game::FreePlay => CueBall::AsItLies,
+            _ => CueBall::InHandBehindHeadString,
+        };
+        let legal_first = match game {
+            // WPA 2.3 with 6.2: the 1 (the lowest) first.
+            Game::NineBall => vec![1],
+            _ => on_table.clone(),
+        };
         let next = NextShot {
-            shooter: breaker,
-            cue_ball: match game {
-                Game::FreePlay => CueBall::AsItLies,
-                _ => CueBall::InHandBehindHeadString,
-            },
-            legal_first: match game {
-                // WPA 2.3 with 6.2: the 1 (the lowest) first.
-                Game::NineBall => vec![1],
-                _ => on_table.clone(),
-            },
-            call: CallRule::NotUsed,
             break_shot: game != Game::FreePlay,
-            push_out_allowed: false,
-            choices: Vec::new(),
-            spot: Vec::new(),
-            rerack: false,
-            fouls_in_a_row: 0,
+            ..NextShot::plain(breaker, cue_ball, legal_first, CallRule::NotUsed, 0)
         };
         Self {
             game,
@@ -469,22 +487,18 @@ impl GameState {
         }
         self.take_off(shot);
         let shooter = self.next.shooter;
-        let next = NextShot {
-            shooter,
-            cue_ball: if shot.scratch() {
-                CueBall::Respot
-            } else {
-                CueBall::AsItLies
-            },
-            legal_first: self.on_table.clone(),
-            call: CallRule::NotUsed,
-            break_shot: false,
-            push_out_allowed: false,
-            choices: Vec::new(),
-            spot: Vec::new(),
-            rerack: false,
-            fouls_in_a_row: 0,
+        let cue_ball = if shot.scratch() {
+            CueBall::Respot
+        } else {
+            CueBall::AsItLies
         };
+        let next = NextShot::plain(
+            shooter,
+            cue_ball,
+            self.on_table.clone(),
+            CallRule::NotUsed,
+            0,
+        );
         Ok(Verdict {
             shooter,
             break_shot: false,

@@ -12,18 +12,13 @@ use crate::shot::ShotSummary;
 
 /// The next shot of an ordinary turn: hit the lowest ball first, no call.
 pub(crate) fn normal_next(state: &GameState, shooter: Seat, cue_ball: CueBall) -> NextShot {
-    NextShot {
+    NextShot::plain(
         shooter,
         cue_ball,
-        legal_first: state.on_table.first().copied().into_iter().collect(),
-        call: CallRule::NotUsed,
-        break_shot: false,
-        push_out_allowed: false,
-        choices: Vec::new(),
-        spot: Vec::new(),
-        rerack: false,
-        fouls_in_a_row: state.fouls[shooter.index()],
-    }
+        state.on_table.first().copied().into_iter().collect(),
+        CallRule::NotUsed,
+        state.fouls[shooter.index()],
+    )
 }
 
 /// Judges a 9-ball shot (see [`GameState::play`]).
