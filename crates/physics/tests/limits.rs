@@ -119,6 +119,7 @@ fn new_and_place_check_speeds_and_spins() {
         e,
         SetupError::NonFinite {
             ball: 0,
+            number: 7,
             what: "spin"
         }
     );

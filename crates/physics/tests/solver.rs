@@ -280,6 +280,7 @@ fn bad_input_is_rejected_with_a_clear_error() {
         nan,
         Err(SetupError::NonFinite {
             ball: 0,
+            number: 0,
             what: "position"
         })
     ));
@@ -311,11 +312,26 @@ fn bad_input_is_rejected_with_a_clear_error() {
         overlap,
         Err(SetupError::Overlap { a: 0, b: 1, .. })
     ));
+    // Messages name balls by the number a player sees (issue 15, item 2).
+    let pair = [
+        BallSetup::at(0, Vec2::ZERO),
+        BallSetup::at(8, Vec2::new(r, 0.0)),
+    ];
+    let text = Simulation::new(t, p, &pair).unwrap_err().to_string();
+    assert!(
+        text.starts_with("the cue ball and ball 8 (index 1) overlap by"),
+        "{text}"
+    );
     let outside = Simulation::new(t, p, &[BallSetup::at(0, Vec2::new(2.0, 0.0))]);
     assert!(matches!(
         outside,
         Err(SetupError::OutsideTable { ball: 0, .. })
     ));
+    let outside = Simulation::new(t, p, &[BallSetup::at(5, Vec2::new(2.0, 0.0))]).unwrap_err();
+    assert_eq!(
+        outside.to_string(),
+        "ball 5 (index 0) at (2, 0) is outside the table"
+    );
     let neg = Params {
         model: Model::Paper(PaperModel {
             mu_slide: -0.1,

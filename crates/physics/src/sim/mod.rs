@@ -69,7 +69,7 @@ impl Simulation {
         let r = params.ball.radius;
         table.validate(r)?;
         let bodies = Bodies::new(table, r);
-        setup::check_layout(balls, r, bodies.bounds)?;
+        setup::check_layout(balls, r, &table)?;
         let segments: Vec<Segment> = balls
             .iter()
             .map(|b| motion::segment_from(&params, 0.0, b.position, b.velocity, b.spin))
@@ -234,11 +234,12 @@ impl Simulation {
             velocity,
             spin,
         };
-        setup::check_ball(id, &ball, r, self.bodies.bounds)?;
+        setup::check_ball(id, &ball, r, &self.bodies.table)?;
         limits::check_clock(self.time)?;
         for (j, seg) in self.segments.iter().enumerate() {
             if j != id && seg.state.motion.on_table() {
-                setup::check_clear((id, position), (j, seg.position_at(self.time)), r)?;
+                let other = (j, self.numbers[j], seg.position_at(self.time));
+                setup::check_clear((id, ball.number, position), other, r)?;
             }
         }
         self.segments[id] = motion::segment_from(&self.params, self.time, position, velocity, spin);
@@ -278,7 +279,10 @@ impl Simulation {
     fn ball_checked(&self, id: BallId) -> Result<BallState, SetupError> {
         let seg = self.segments.get(id).ok_or(SetupError::NoSuchBall(id))?;
         if !seg.state.motion.on_table() {
-            return Err(SetupError::Pocketed(id));
+            return Err(SetupError::Pocketed {
+                ball: id,
+                number: self.numbers[id],
+            });
         }
         Ok(self.ball(id))
     }

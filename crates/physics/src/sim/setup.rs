@@ -7,7 +7,7 @@ use crate::limits::{self, LimitError};
 use crate::math::{Vec2, Vec3};
 use crate::params::ParamError;
 use crate::resolve;
-use crate::table::TableError;
+use crate::table::{Table, TableError};
 use serde::{Deserialize, Serialize};
 
 #[cfg(doc)]
@@ -62,30 +62,36 @@ pub enum SetupError {
     #[error(transparent)]
     Table(#[from] TableError),
     /// A ball's position, velocity or spin is NaN or infinite.
-    #[error("ball {ball} has a non-finite {what}")]
+    #[error("{} has a non-finite {what}", ball_name(*.ball, *.number))]
     NonFinite {
         /// Ball index.
         ball: BallId,
+        /// Its number.
+        number: u8,
         /// "position", "velocity" or "spin".
         what: &'static str,
     },
     /// A ball's centre is outside the area its centre may occupy.
-    #[error("ball {ball} at ({x}, {y}) is outside the table")]
+    #[error("{} at ({x}, {y}) is outside the table", ball_name(*.ball, *.number))]
     OutsideTable {
         /// Ball index.
         ball: BallId,
+        /// Its number.
+        number: u8,
         /// Its x.
         x: f64,
         /// Its y.
         y: f64,
     },
     /// Two balls overlap.
-    #[error("balls {a} and {b} overlap by {overlap} m")]
+    #[error("{} and {} overlap by {overlap} m", ball_name(*.a, .numbers.0), ball_name(*.b, .numbers.1))]
     Overlap {
-        /// First ball.
+        /// First ball (index).
         a: BallId,
-        /// Second ball.
+        /// Second ball (index).
         b: BallId,
+        /// Their numbers, in the same order.
+        numbers: (u8, u8),
         /// Depth of the overlap, metres.
         overlap: f64,
     },
@@ -93,8 +99,13 @@ pub enum SetupError {
     #[error("there is no ball {0}")]
     NoSuchBall(BallId),
     /// The ball has been pocketed.
-    #[error("ball {0} is pocketed")]
-    Pocketed(BallId),
+    #[error("{} is pocketed", ball_name(*.ball, *.number))]
+    Pocketed {
+        /// Ball index.
+        ball: BallId,
+        /// Its number.
+        number: u8,
+    },
     /// The cue tip offset is beyond the miscue limit.
     #[error(transparent)]
     Miscue(#[from] resolve::cue::Miscue),
@@ -122,15 +133,26 @@ pub enum SimError {
     Limit(#[from] LimitError),
 }
 
+/// How an error names a ball: by the number painted on it, with its index when they differ.
+fn ball_name(index: BallId, number: u8) -> String {
+    match number {
+        0 if index == 0 => "the cue ball".to_string(),
+        0 => format!("the cue ball (index {index})"),
+        n if usize::from(n) == index => format!("ball {n}"),
+        n => format!("ball {n} (index {index})"),
+    }
+}
+
 /// Checks one ball (index `id`) as given to [`Simulation::new`] or [`Simulation::place`]: its
 /// position, velocity and spin are finite, its speed and spin within the input contract
-/// ([`crate::limits`]), and its centre within `bounds` (the half extents of the area a centre
-/// may occupy, [`crate::Table::centre_bounds`]) up to [`PLACEMENT_TOLERANCE`].
+/// ([`crate::limits`]), and its centre where the solver itself may leave a ball
+/// ([`crate::check::outside_by`]: inside the cushion lines, or in a pocket mouth between the
+/// jaws) up to [`PLACEMENT_TOLERANCE`]. Every state the solver produces passes.
 pub(super) fn check_ball(
     id: BallId,
     ball: &BallSetup,
     radius: f64,
-    bounds: Vec2,
+    table: &Table,
 ) -> Result<(), SetupError> {
     let BallSetup {
         number,
@@ -144,15 +166,18 @@ pub(super) fn check_ball(
         ("spin", spin.is_finite()),
     ] {
         if !ok {
-            return Err(SetupError::NonFinite { ball: id, what });
+            return Err(SetupError::NonFinite {
+                ball: id,
+                number,
+                what,
+            });
         }
     }
     limits::check_motion(velocity, spin, radius).map_err(|e| e.for_ball(id, number))?;
-    if position.x.abs() > bounds.x + PLACEMENT_TOLERANCE
-        || position.y.abs() > bounds.y + PLACEMENT_TOLERANCE
-    {
+    if crate::check::outside_by(table, radius, position) > PLACEMENT_TOLERANCE {
         return Err(SetupError::OutsideTable {
             ball: id,
+            number,
             x: position.x,
             y: position.y,
         });
@@ -160,18 +185,24 @@ pub(super) fn check_ball(
     Ok(())
 }
 
-/// Checks that balls `a` at `pa` and `b` at `pb`, of radius `r`, overlap by no more than
-/// [`PLACEMENT_TOLERANCE`].
+/// Checks that balls `a` (numbered `na`) at `pa` and `b` (numbered `nb`) at `pb`, of radius
+/// `r`, overlap by no more than [`PLACEMENT_TOLERANCE`].
 pub(super) fn check_clear(
-    (a, pa): (BallId, Vec2),
-    (b, pb): (BallId, Vec2),
+    (a, na, pa): (BallId, u8, Vec2),
+    (b, nb, pb): (BallId, u8, Vec2),
     r: f64,
 ) -> Result<(), SetupError> {
     let overlap = 2.0 * r - (pb - pa).length();
     if overlap > PLACEMENT_TOLERANCE {
+        let (a, b) = if a <= b {
+            ((a, na), (b, nb))
+        } else {
+            ((b, nb), (a, na))
+        };
         return Err(SetupError::Overlap {
-            a: a.min(b),
-            b: a.max(b),
+            a: a.0,
+            b: b.0,
+            numbers: (a.1, b.1),
             overlap,
         });
     }
@@ -179,9 +210,9 @@ pub(super) fn check_clear(
 }
 
 /// Checks every ball of a layout with [`check_ball`], then every pair with [`check_clear`].
-pub(super) fn check_layout(balls: &[BallSetup], r: f64, bounds: Vec2) -> Result<(), SetupError> {
+pub(super) fn check_layout(balls: &[BallSetup], r: f64, table: &Table) -> Result<(), SetupError> {
     for (id, b) in balls.iter().enumerate() {
-        check_ball(id, b, r, bounds)?;
+        check_ball(id, b, r, table)?;
     }
     // Sort by x so only neighbours within 2R in x are compared (large layouts stay fast).
     let mut order: Vec<usize> = (0..balls.len()).collect();
@@ -191,7 +222,8 @@ pub(super) fn check_layout(balls: &[BallSetup], r: f64, bounds: Vec2) -> Result<
             if balls[j].position.x - balls[i].position.x >= 2.0 * r {
                 break;
             }
-            check_clear((i, balls[i].position), (j, balls[j].position), r)?;
+            let (bi, bj) = (&balls[i], &balls[j]);
+            check_clear((i, bi.number, bi.position), (j, bj.number, bj.position), r)?;
         }
     }
     Ok(())
