@@ -299,21 +299,10 @@ fn ball_on_text(rack: &GameState, next: &NextShot) -> String {
     }
 }
 
-/// The player's words for the options offered.
-pub fn choice_label(choice: Choice) -> &'static str {
-    match choice {
-        Choice::ShootFromHere => "shoot from here",
-        Choice::PassBack => "pass it back",
-        Choice::RerackAndBreak => "re-rack and break",
-        Choice::RerackOpponentBreaks => "re-rack, the opponent breaks again",
-        Choice::SpotEightAndShoot => "spot the 8 and shoot",
-    }
-}
-
 fn choices_text(choices: &[Choice]) -> String {
     choices
         .iter()
-        .map(|&c| choice_label(c))
+        .map(|&c| c.label())
         .collect::<Vec<_>>()
         .join(" or ")
 }

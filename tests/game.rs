@@ -11,6 +11,7 @@ use billiards::{
     geometry::TableSpec,
     mode,
     recording::{self, Autosave, RecordingsFolder},
+    replay::OpenRecording,
     settings,
     sim::{self, ShotRequested, SimStatus, Solver, place_ball_in_hand},
 };
@@ -269,6 +270,16 @@ fn a_nine_ball_match_is_played_through_the_turns_to_its_winner() {
         let numbers: Vec<u8> = recorded.balls.iter().map(|b| b.number).collect();
         assert_eq!(log.check(&recorded.events, &numbers), Ok(log.shots.len()));
         assert_eq!(log.players, ["Ann".to_owned(), "Bob".to_owned()]);
+        // The replay reads the log: each shot's verdict on the timeline, re-judged by Verify.
+        let open = OpenRecording::new(&recording, recorded.clone()).unwrap();
+        assert_eq!(open.check_verdicts(), Some(Ok(log.shots.len())));
+        let break_line = open.game_line(open.shots.span(1).unwrap().0).unwrap();
+        let breaker_name = ["Ann", "Bob"][breaker.index()];
+        assert!(
+            break_line.starts_with(&format!("shot 1, {breaker_name}: break; ")),
+            "{break_line}"
+        );
+        assert!(break_line.contains(&log.shots[0].verdict.reason()), "{break_line}");
         assert_eq!(log.breaker, breaker);
         if let Some(champion) = play.winner() {
             assert_eq!(champion, winner);

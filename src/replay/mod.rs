@@ -141,6 +141,9 @@ pub struct Replay {
     pub error: Option<String>,
     /// The last verification of the open recording.
     pub verdict: Option<Result<Verdict, String>>,
+    /// The rules' verdicts re-judged with that verification (a rules game only): how many
+    /// matched the log, or the first difference.
+    pub rules_verdict: Option<Result<usize, String>>,
     /// A verification running on its own thread (a long recording takes a while to
     /// re-simulate; the window stays responsive).
     pub verifying: Option<VerifyJob>,
@@ -161,6 +164,7 @@ impl Default for Replay {
             speed: 1.0,
             error: None,
             verdict: None,
+            rules_verdict: None,
             verifying: None,
             export: None,
             export_result: None,
@@ -344,6 +348,7 @@ fn open(world: &mut World, path: &Path) {
     replay.playing = true;
     replay.error = None;
     replay.verdict = None;
+    replay.rules_verdict = None;
     // Entering the mode (once, if it is not already on) shelves the live balls.
     let mut next = world.resource_mut::<NextState<GameMode>>();
     // The state's own `set_if_neq`, not change detection's of the same name.
@@ -359,6 +364,7 @@ fn close(world: &mut World) {
     replay.playing = false;
     replay.time = 0.0;
     replay.verdict = None;
+    replay.rules_verdict = None;
     let entities = std::mem::take(&mut replay.entities);
     balls::despawn_all(world, &entities);
     let mut next = world.resource_mut::<NextState<GameMode>>();
@@ -400,6 +406,7 @@ fn start_verify(replay: &mut Replay) {
     match VerifyJob::start(open.recording.clone()) {
         Ok(job) => {
             replay.verdict = None;
+            replay.rules_verdict = None;
             replay.verifying = Some(job);
         }
         Err(error) => replay.verdict = Some(Err(error)),
@@ -419,6 +426,8 @@ fn collect_finished_jobs(replay: &mut Replay) {
             .is_some_and(|open| job.checks(&open.recording));
         let verdict = job.finish();
         if still_open {
+            // The rules' verdicts are re-judged from the recorded events (a few ms).
+            replay.rules_verdict = replay.open.as_ref().and_then(|o| o.check_verdicts());
             replay.verdict = Some(verdict);
         }
     }

@@ -7,7 +7,7 @@ use std::{
 };
 
 use billiards_physics::{Event, History, recording::Recording};
-use billiards_rules::Shots;
+use billiards_rules::{GameLog, Shots};
 
 use super::jobs::{ExportFormat, ExportScope};
 
@@ -22,6 +22,9 @@ pub struct OpenRecording {
     pub history: History,
     /// The shots: strike times and where the replay ends.
     pub shots: Shots,
+    /// The rules' log beside the file (`NAME.game.json`): `None` for free play, an error text
+    /// when it is there but cannot be read (the recording still replays).
+    pub game: Option<Result<GameLog, String>>,
 }
 
 impl OpenRecording {
@@ -32,6 +35,7 @@ impl OpenRecording {
             .map_err(|error| format!("{}: {error}", path.display()))?;
         Ok(Self {
             path: path.to_path_buf(),
+            game: read_log(path),
             shots: Shots::of(&recording),
             recording: Arc::new(recording),
             history,
@@ -67,6 +71,33 @@ impl OpenRecording {
         let events = self.events();
         let after = events.partition_point(|event| event.time <= t);
         after.checked_sub(1).map(|i| (i, &events[i]))
+    }
+
+    /// The rules' line for the shot under `t` ("shot 3, Bob: foul: ..."), if the recording is
+    /// a rules game (or its log cannot be read).
+    pub fn game_line(&self, t: f64) -> Option<String> {
+        match self.game.as_ref()? {
+            Err(error) => Some(format!("game log: {error}")),
+            Ok(log) => {
+                let k = self.shot_at(t);
+                let text = log.shot_text(k)?;
+                Some(format!("shot {k}, {text}"))
+            }
+        }
+    }
+
+    /// Re-judges the recorded shots with the rules and compares the logged verdicts
+    /// ([`GameLog::check`]): the number of verdicts confirmed, `None` for free play.
+    pub fn check_verdicts(&self) -> Option<Result<usize, String>> {
+        let log = match self.game.as_ref()? {
+            Ok(log) => log,
+            Err(error) => return Some(Err(error.clone())),
+        };
+        let numbers: Vec<u8> = self.recording.balls.iter().map(|b| b.number).collect();
+        Some(
+            log.check(&self.recording.events, &numbers)
+                .map_err(|e| e.to_string()),
+        )
     }
 
     /// The time of the first event after `t`.
@@ -119,4 +150,18 @@ impl OpenRecording {
             ExportFormat::PngSequence => dir.join(format!("{name}_frames")),
         }
     }
+}
+
+/// The rules' log beside the recording at `path`, if there is one.
+fn read_log(path: &Path) -> Option<Result<GameLog, String>> {
+    let log_path = GameLog::path_beside(path);
+    if !log_path.exists() {
+        return None;
+    }
+    Some(
+        std::fs::read_to_string(&log_path)
+            .map_err(|e| e.to_string())
+            .and_then(|text| GameLog::from_json(&text))
+            .map_err(|e| format!("{}: {e}", log_path.display())),
+    )
 }

@@ -7,7 +7,7 @@ use bevy_egui::{EguiContexts, egui};
 use billiards_rules::{Call, CallRule, Game};
 
 use super::layout::{INFO, WARNING};
-use crate::game::{NewGameRequested, Rules, Turn, TurnCommand, choice_label, clock_seed};
+use crate::game::{NewGameRequested, Rules, Turn, TurnCommand, clock_seed};
 
 /// What the new-game dialog holds between frames.
 #[derive(Resource, Debug, Clone, PartialEq, Eq)]
@@ -129,7 +129,7 @@ pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result 
                     ui.label(format!("{} chooses:", game.name(next.shooter)));
                     ui.horizontal(|ui| {
                         for &choice in &next.choices {
-                            if ui.button(choice_label(choice)).clicked() {
+                            if ui.button(choice.label()).clicked() {
                                 state.commands.write(TurnCommand::Choose(choice));
                             }
                         }

@@ -163,6 +163,9 @@ fn timeline(
         )),
         None => ui.label(RichText::new("before the first event").weak()),
     };
+    if let Some(line) = open.game_line(t) {
+        ui.label(RichText::new(line).strong());
+    }
     ui.horizontal(|ui| {
         if ui
             .add_enabled(replay.verifying.is_none(), egui::Button::new("Verify"))
@@ -184,6 +187,11 @@ fn timeline(
                 WARNING
             };
             ui.colored_label(colour, open.verdict_text(verdict));
+            match &replay.rules_verdict {
+                Some(Ok(n)) => ui.colored_label(SUCCESS, format!("{n} verdicts re-judged alike")),
+                Some(Err(e)) => ui.colored_label(WARNING, format!("verdicts: {e}")),
+                None => ui.label(""),
+            };
         }
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
             if ui.button("Close replay").on_hover_text("Esc").clicked() {

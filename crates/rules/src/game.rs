@@ -143,6 +143,34 @@ pub enum Choice {
     SpotEightAndShoot,
 }
 
+impl Choice {
+    /// The player's words for the option ("re-rack and break").
+    pub fn label(self) -> &'static str {
+        match self {
+            Choice::ShootFromHere => "shoot from here",
+            Choice::PassBack => "pass it back",
+            Choice::RerackAndBreak => "re-rack and break",
+            Choice::RerackOpponentBreaks => "re-rack, the opponent breaks again",
+            Choice::SpotEightAndShoot => "spot the 8 and shoot",
+        }
+    }
+}
+
+impl Call {
+    /// The call in words ("the 5 in the left side pocket"), `None` when nothing was called.
+    pub fn text(self) -> Option<String> {
+        match self {
+            Call::None => None,
+            Call::PushOut => Some("push out".to_owned()),
+            Call::Safety => Some("safety".to_owned()),
+            Call::Ball { ball, pocket } => Some(format!(
+                "the {ball} in the {}",
+                crate::foul::pocket_name(pocket)
+            )),
+        }
+    }
+}
+
 /// What the next shot must respect.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct NextShot {

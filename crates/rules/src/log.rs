@@ -3,7 +3,7 @@
 //! `NAME.json`), so `billiards-physics` stays free of rules and every existing recording
 //! still loads; [`GameLog::check`] re-judges the recording's shots and compares the verdicts.
 
-use crate::game::{Call, Choice, Game, GameState, RuleError, Seat, Verdict};
+use crate::game::{Call, Choice, CueBall, Game, GameState, Outcome, RuleError, Seat, Verdict};
 use crate::shot::summarise;
 use billiards_physics::{Event, EventKind};
 use serde::{Deserialize, Serialize};
@@ -128,6 +128,61 @@ impl GameLog {
     }
 }
 
+impl GameLog {
+    /// Shot `k` (from 1) in words for the replay timeline: who shot, the choices and the call
+    /// before it, the verdict and what follows ("Bob: called the 5 in the left side pocket;
+    /// foul: the cue ball was pocketed; Alice to shoot, ball in hand"). `None` past the end.
+    pub fn shot_text(&self, k: usize) -> Option<String> {
+        let shot = self.shots.get(k.checked_sub(1)?)?;
+        let v = &shot.verdict;
+        let name = |seat: Seat| self.players[seat.index()].as_str();
+        let mut parts = Vec::new();
+        for c in &shot.choices {
+            parts.push(format!("chose to {}", c.label()));
+        }
+        if v.break_shot {
+            parts.push("break".to_owned());
+        }
+        if let Some(call) = shot.call.text() {
+            parts.push(format!("called {call}"));
+        }
+        parts.push(v.reason());
+        if let Some(group) = v.assigned {
+            parts.push(format!("takes the {}", group.name()));
+        }
+        let hand = match v.next.as_ref().map(|n| n.cue_ball) {
+            Some(CueBall::InHandAnywhere) => ", ball in hand",
+            Some(CueBall::InHandBehindHeadString) => ", ball in hand behind the head string",
+            _ => "",
+        };
+        parts.push(match v.outcome {
+            Outcome::Continues => format!("{} continues{hand}", name(v.shooter)),
+            Outcome::Passes => match v.next.as_ref() {
+                Some(next) if !next.choices.is_empty() => {
+                    let options: Vec<&str> = next.choices.iter().map(|c| c.label()).collect();
+                    format!("{} chooses: {}", name(next.shooter), options.join(" or "))
+                }
+                _ => format!("{} to shoot{hand}", name(v.shooter.other())),
+            },
+            Outcome::GameOver { winner, reason } => format!("{} wins: {reason}", name(winner)),
+        });
+        Some(format!("{}: {}", name(v.shooter), parts.join("; ")))
+    }
+
+    /// Reads a log from its JSON text, refusing other format versions.
+    pub fn from_json(text: &str) -> Result<Self, String> {
+        let log: GameLog =
+            serde_json::from_str(text).map_err(|e| format!("not a game log: {e}"))?;
+        if log.version != LOG_VERSION {
+            return Err(format!(
+                "game log version {} (this build reads {LOG_VERSION})",
+                log.version
+            ));
+        }
+        Ok(log)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -186,6 +241,70 @@ mod tests {
             short.check(&events, &numbers),
             Err(LogError::ShotCount { .. })
         ));
+    }
+
+    #[test]
+    fn each_logged_shot_reads_as_a_sentence() {
+        let (log, _, _) = played();
+        let first = log.shot_text(1).unwrap();
+        assert!(first.starts_with("A: break; "), "{first}");
+        let v = &log.shots[0].verdict;
+        assert!(first.contains(&v.reason()), "{first}");
+        let follows = match v.outcome {
+            Outcome::Continues => "A continues",
+            Outcome::Passes => "B to shoot",
+            Outcome::GameOver { .. } => "wins",
+        };
+        assert!(first.contains(follows), "{first}");
+        assert_eq!(log.shot_text(0), None);
+        assert_eq!(log.shot_text(log.shots.len() + 1), None);
+        // A called foul with ball in hand, written by hand.
+        let mut called = log.clone();
+        called.shots[0].call = Call::Ball {
+            ball: 5,
+            pocket: billiards_physics::Pocket::SideLeft,
+        };
+        called.shots[0].verdict = Verdict {
+            shooter: Seat::B,
+            break_shot: false,
+            push_out: false,
+            fouls: vec![crate::Foul::Scratch],
+            outcome: Outcome::Passes,
+            assigned: None,
+            next: Some(crate::NextShot::plain(
+                Seat::A,
+                CueBall::InHandAnywhere,
+                vec![1],
+                crate::CallRule::Optional,
+                0,
+            )),
+        };
+        let text = called.shot_text(1).unwrap();
+        let scratch = crate::Foul::Scratch.to_string();
+        assert_eq!(
+            text,
+            format!(
+                "B: called the 5 in the left side pocket; foul: {scratch}; A to shoot, ball in hand"
+            )
+        );
+    }
+
+    #[test]
+    fn a_log_of_another_version_is_refused() {
+        let (log, _, _) = played();
+        let json = serde_json::to_string(&log).unwrap();
+        assert_eq!(GameLog::from_json(&json), Ok(log.clone()));
+        let other = json.replacen("\"version\":1", "\"version\":2", 1);
+        assert!(
+            GameLog::from_json(&other)
+                .unwrap_err()
+                .contains("version 2")
+        );
+        assert!(
+            GameLog::from_json("{")
+                .unwrap_err()
+                .starts_with("not a game log")
+        );
     }
 
     #[test]
