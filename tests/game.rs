@@ -279,7 +279,10 @@ fn a_nine_ball_match_is_played_through_the_turns_to_its_winner() {
             break_line.starts_with(&format!("shot 1, {breaker_name}: break; ")),
             "{break_line}"
         );
-        assert!(break_line.contains(&log.shots[0].verdict.reason()), "{break_line}");
+        assert!(
+            break_line.contains(&log.shots[0].verdict.reason()),
+            "{break_line}"
+        );
         assert_eq!(log.breaker, breaker);
         if let Some(champion) = play.winner() {
             assert_eq!(champion, winner);
