@@ -20,6 +20,7 @@ pub mod replay;
 pub mod screenshot;
 pub mod settings;
 pub mod sim;
+pub mod sound;
 pub mod table;
 pub mod table_mesh;
 pub mod ui;
@@ -67,6 +68,8 @@ impl Plugin for GamePlugin {
             game::plugin,
             game::table_plugin,
         ));
+        #[cfg(feature = "sound")]
+        app.add_plugins(sound::plugin);
         if let Some(file) = &self.options.replay {
             app.insert_resource(replay::OpenAtStart(file.clone()));
         }

@@ -40,6 +40,7 @@ pub fn plugin(app: &mut App) {
         .add_message::<LayoutRequested>()
         .add_message::<ShotRequested>()
         .add_message::<StepRequested>()
+        .add_message::<CueStruck>()
         .add_message::<BallContact>()
         .add_message::<CushionHit>()
         .add_message::<BallPocketed>()
@@ -173,6 +174,17 @@ impl ShotRequested {
 #[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
 pub struct StepRequested;
 
+/// The cue struck a ball.
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub struct CueStruck {
+    /// The ball.
+    pub ball: Entity,
+    /// The speed the cue gave it, m/s.
+    pub speed: f64,
+    /// Simulation time, seconds.
+    pub time: f64,
+}
+
 /// Two balls collided.
 #[derive(Message, Debug, Clone, Copy, PartialEq)]
 pub struct BallContact {
@@ -180,6 +192,8 @@ pub struct BallContact {
     pub a: Entity,
     /// The other ball.
     pub b: Entity,
+    /// Their relative speed just after the contact, m/s (how hard it sounds).
+    pub speed: f64,
     /// Simulation time of the contact, seconds.
     pub time: f64,
 }
@@ -200,6 +214,8 @@ pub struct CushionHit {
     pub ball: Entity,
     /// What it hit.
     pub part: CushionPart,
+    /// The ball's speed just after the hit, m/s.
+    pub speed: f64,
     /// Simulation time of the hit, seconds.
     pub time: f64,
 }
@@ -487,6 +503,7 @@ fn send_event_messages(world: &mut World, solver: &Solver, events: Range<usize>)
                 world.write_message(BallContact {
                     a: entity(a),
                     b: entity(b),
+                    speed: (event.after[0].velocity - event.after[1].velocity).length(),
                     time,
                 });
             }
@@ -494,6 +511,7 @@ fn send_event_messages(world: &mut World, solver: &Solver, events: Range<usize>)
                 world.write_message(CushionHit {
                     ball: entity(ball),
                     part: CushionPart::Cushion(cushion),
+                    speed: event.after[0].velocity.length(),
                     time,
                 });
             }
@@ -501,6 +519,14 @@ fn send_event_messages(world: &mut World, solver: &Solver, events: Range<usize>)
                 world.write_message(CushionHit {
                     ball: entity(ball),
                     part: CushionPart::Jaw(pocket),
+                    speed: event.after[0].velocity.length(),
+                    time,
+                });
+            }
+            EventKind::Strike { ball, shot } => {
+                world.write_message(CueStruck {
+                    ball: entity(ball),
+                    speed: shot.speed,
                     time,
                 });
             }
@@ -512,10 +538,7 @@ fn send_event_messages(world: &mut World, solver: &Solver, events: Range<usize>)
                     time,
                 });
             }
-            EventKind::Strike { .. }
-            | EventKind::Placed { .. }
-            | EventKind::ParamsChanged
-            | EventKind::Transition { .. } => {}
+            EventKind::Placed { .. } | EventKind::ParamsChanged | EventKind::Transition { .. } => {}
         }
     }
 }
