@@ -58,3 +58,41 @@ fn sampled_states_equal_the_solvers_between_events() {
         assert_eq!(sim.history().states_at(t), live, "t = {t}");
     }
 }
+
+/// The lean mode of a search (no history) processes the very same events: every event that
+/// `step_event` returns without a history equals, bit for bit, the one the history records
+/// with it on, through a change of parameters; the clone of a lean simulation carries no
+/// history, and turning it back on starts one at the current state.
+#[test]
+fn without_a_history_the_events_are_the_same_and_none_is_stored() {
+    let mut compared = 0;
+    for seed in 0..100 {
+        let s = soak::scenario(seed);
+        let mut full = Simulation::new(s.table, s.params, &s.balls).unwrap();
+        let Some(ball) = (0..full.ball_count()).find(|&i| full.ball(i).motion.on_table()) else {
+            continue;
+        };
+        let mut lean = full.clone();
+        lean.set_record_history(false);
+        assert!(!lean.records_history() && lean.clone().history().ball_count() == 0);
+        full.strike(ball, s.shots[0]).unwrap();
+        lean.strike(ball, s.shots[0]).unwrap();
+        let p = soak::scale_friction(*full.params(), 0.5);
+        for k in 0..2000 {
+            if k == 300 {
+                full.set_params(p).unwrap();
+                lean.set_params(p).unwrap();
+            }
+            let e = lean.step_event();
+            assert_eq!(e.is_some(), full.step_event().is_some(), "seed {seed}");
+            let Some(e) = e else { break };
+            assert_eq!(Some(&e), full.history().events().last(), "seed {seed}");
+            compared += 1;
+        }
+        assert_eq!(lean.event_count(), full.history().events().len());
+        assert!(lean.history().events().is_empty());
+        lean.set_record_history(true);
+        assert_eq!(lean.history().ball_count(), lean.ball_count());
+    }
+    assert!(compared > 1000, "{compared}");
+}

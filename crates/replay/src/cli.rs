@@ -34,6 +34,8 @@ pub enum Command {
     },
     /// Export a recording (or one shot of it) as an animated GIF or a PNG sequence.
     Export(ExportArgs),
+    /// Whole racks between two computer players on all cores: win rates and figures.
+    Tournament(crate::tournament::TournamentArgs),
     /// Open the game on a recording (needs the game binary: `billiards replay FILE`).
     Replay {
         /// The recording.
@@ -250,6 +252,7 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Simulate(a) => simulate(a),
         Command::Verify { file } => verify(&file),
         Command::Export(a) => export_cmd(a),
+        Command::Tournament(a) => return crate::tournament::run(a),
         Command::Replay { file } => Err(format!(
             "{}: replay opens the game: run `billiards replay {}`",
             file.display(),

@@ -1,7 +1,9 @@
-//! Headless tools for billiards recordings: the command line (`simulate`, `verify`, `export`),
+//! Headless tools for billiards recordings: the command line (`simulate`, `verify`, `export`,
+//! `tournament`),
 //! a software top-view renderer and GIF/PNG export. No GPU, no Bevy: they run anywhere.
 
 pub mod cli;
 pub mod export;
 pub mod game;
 pub mod render;
+pub mod tournament;

@@ -75,45 +75,59 @@ impl ShotSummary {
 /// `events` are the shot's events, from its strike to rest (events before the strike, such as
 /// the placement of the cue ball, are ignored; a second strike ends the shot).
 pub fn summarise(events: &[Event], numbers: &[u8]) -> ShotSummary {
-    let number = |id: BallId| numbers.get(id).copied().unwrap_or(u8::MAX);
     let mut s = ShotSummary::default();
     let mut struck = false;
-    let push = |list: &mut Vec<u8>, b: u8| {
-        if !list.contains(&b) {
-            list.push(b);
-        }
-    };
     for e in events {
         match e.kind {
             EventKind::Strike { .. } if struck => break,
             EventKind::Strike { .. } => struck = true,
             _ if !struck => {}
+            kind => s.record(&kind, numbers),
+        }
+    }
+    s
+}
+
+impl ShotSummary {
+    /// Adds one event that followed the shot's strike, as [`summarise`] does: a search that
+    /// reads events one at a time ([`billiards_physics::Simulation::step_event`], no history)
+    /// builds the same summary and may stop once the verdict it needs is known.
+    pub fn record(&mut self, kind: &EventKind, numbers: &[u8]) {
+        let number = |id: BallId| numbers.get(id).copied().unwrap_or(u8::MAX);
+        let push = |list: &mut Vec<u8>, b: u8| {
+            if !list.contains(&b) {
+                list.push(b);
+            }
+        };
+        match *kind {
             EventKind::BallBall { a, b } => {
                 let (na, nb) = (number(a), number(b));
-                if s.first_contact.is_none() {
+                if self.first_contact.is_none() {
                     if na == CUE {
-                        s.first_contact = Some(nb);
+                        self.first_contact = Some(nb);
                     } else if nb == CUE {
-                        s.first_contact = Some(na);
+                        self.first_contact = Some(na);
                     }
                 }
             }
             EventKind::Cushion { ball, .. } | EventKind::Jaw { ball, .. } => {
                 let n = number(ball);
-                push(&mut s.rails, n);
-                if s.first_contact.is_some() {
-                    push(&mut s.rails_after_contact, n);
+                push(&mut self.rails, n);
+                if self.first_contact.is_some() {
+                    push(&mut self.rails_after_contact, n);
                 }
-                s.cue_rail |= n == CUE;
-                if let EventKind::Jaw { pocket, .. } = e.kind {
-                    s.jaws.push((n, pocket));
+                self.cue_rail |= n == CUE;
+                if let EventKind::Jaw { pocket, .. } = *kind {
+                    self.jaws.push((n, pocket));
                 }
             }
-            EventKind::Pocketed { ball, pocket } => s.pocketed.push((number(ball), pocket)),
-            EventKind::Placed { .. } | EventKind::ParamsChanged | EventKind::Transition { .. } => {}
+            EventKind::Pocketed { ball, pocket } => self.pocketed.push((number(ball), pocket)),
+            EventKind::Strike { .. }
+            | EventKind::Placed { .. }
+            | EventKind::ParamsChanged
+            | EventKind::Transition { .. } => {}
         }
     }
-    s
 }
 
 #[cfg(test)]

@@ -26,7 +26,9 @@ pub use setup::{BallSetup, PLACEMENT_TOLERANCE, SetupError, SimError};
 /// What one [`Simulation::advance`] did.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Advance {
-    /// Index range of the events it processed, into [`History::events`].
+    /// Index range of the events it processed, counted from the simulation's start
+    /// ([`Simulation::event_count`]): indices into [`History::events`] while the history has
+    /// been recorded since the start.
     pub events: std::ops::Range<usize>,
 }
 
@@ -46,6 +48,13 @@ pub struct Simulation {
     predictions: Predictions,
     time: f64,
     history: History,
+    /// Whether events go into [`Simulation::history`] (off: the lean mode of a search).
+    record_history: bool,
+    /// The last event processed.
+    last_event: Option<Event>,
+    /// Events processed since the simulation was built (grid crossings excluded), counted
+    /// whether or not the history records them.
+    event_count: usize,
     /// The rotation of collision normals (paper 5), if randomization is on.
     perturbation: NormalPerturbation,
     /// The contacts with cushions and jaws resolved at the current instant.
@@ -79,6 +88,9 @@ impl Simulation {
             params,
             numbers: balls.iter().map(|b| b.number).collect(),
             history: History::new(&segments, params),
+            record_history: true,
+            last_event: None,
+            event_count: 0,
             predictions: Predictions::new(n, bodies.bounds, r, choice),
             bodies,
             segments,
@@ -130,9 +142,35 @@ impl Simulation {
         &self.segments[id]
     }
 
-    /// The event history.
+    /// The event history (empty of events while [`Simulation::set_record_history`] is off).
     pub fn history(&self) -> &History {
         &self.history
+    }
+
+    /// Turns the event history on or off. Off, the history is dropped (so cloning the
+    /// simulation copies no history) and no event is stored: the lean mode of a search that
+    /// reads each event from [`Simulation::step_event`] and needs no replay. On again, a new
+    /// history starts from the current state. The events themselves are the same either way.
+    pub fn set_record_history(&mut self, on: bool) {
+        if on == self.record_history {
+            return;
+        }
+        self.record_history = on;
+        self.history = if on {
+            History::new(&self.segments, self.params)
+        } else {
+            History::new(&[], self.params)
+        };
+    }
+
+    /// Whether the event history is recorded ([`Simulation::set_record_history`]).
+    pub fn records_history(&self) -> bool {
+        self.record_history
+    }
+
+    /// Events processed since the simulation was built (recorded in the history or not).
+    pub fn event_count(&self) -> usize {
+        self.event_count
     }
 
     /// No ball is moving.
@@ -167,13 +205,13 @@ impl Simulation {
 
     /// Advances exactly to the next event and processes it (and only it); `None` at rest.
     pub fn step_event(&mut self) -> Option<Event> {
-        let before = self.history.events().len();
-        // Grid crossings are internal: keep going until a physical event is recorded.
-        while self.history.events().len() == before {
+        let before = self.event_count;
+        // Grid crossings are internal: keep going until a physical event is processed.
+        while self.event_count == before {
             let p = self.predictions.next()?;
             self.process(p);
         }
-        self.history.events().last().copied()
+        self.last_event
     }
 
     /// Runs until every ball rests; the clock ends at the last event.
@@ -184,7 +222,7 @@ impl Simulation {
     /// The event loop: processes the next event while it is due by `t`, at most
     /// `params.max_events` of them.
     fn process_until(&mut self, t: f64) -> Result<Advance, SimError> {
-        let first = self.history.events().len();
+        let first = self.event_count;
         let mut count = 0;
         while let Some(p) = self.predictions.next().filter(|p| p.time <= t) {
             if count == self.params.max_events {
@@ -197,7 +235,7 @@ impl Simulation {
             count += 1;
         }
         Ok(Advance {
-            events: first..self.history.events().len(),
+            events: first..self.event_count,
         })
     }
 
@@ -271,7 +309,11 @@ impl Simulation {
             kind: EventKind::ParamsChanged,
             after: Default::default(),
         };
-        self.history.push_all(event, &self.segments, params);
+        self.event_count += 1;
+        self.last_event = Some(event);
+        if self.record_history {
+            self.history.push_all(event, &self.segments, params);
+        }
         self.predict_all();
         Ok(())
     }
@@ -407,7 +449,11 @@ impl Simulation {
             kind,
             after,
         };
-        self.history.push(event);
+        self.event_count += 1;
+        self.last_event = Some(event);
+        if self.record_history {
+            self.history.push(event);
+        }
     }
 
     /// Predicts every ball from now.

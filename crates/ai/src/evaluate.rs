@@ -1,0 +1,292 @@
+//! Evaluation under execution noise: each candidate simulated N times with Gaussian noise on
+//! its aim, speed and tip ([`crate::noise`]), each run judged by the rules
+//! ([`GameState::play`] on the shot's [`ShotSummary`]) and scored from the shooter's side:
+//!
+//! | what the verdict says                  | value                                         |
+//! |----------------------------------------|-----------------------------------------------|
+//! | the shooter wins the game              | 1                                             |
+//! | the shooter loses the game             | -1                                            |
+//! | a foul (opponent has ball in hand)     | -[`FOUL_COST`]                                |
+//! | legal, the shooter continues           | 0.4 + 0.6 p, p = own best next shot (1 ply)   |
+//! | legal, the turn passes                 | -0.6 q, q = the opponent's best shot          |
+//! | a legal push out                       | -0.6 max(q, 1 - q): the opponent picks        |
+//!
+//! `p` and `q` come from [`crate::position::best_success`] on the layout at rest. The mean
+//! over the samples is the probability of a legal pot times the value of the position left,
+//! minus the probability and cost of a foul or a loss.
+//!
+//! Lean mode ([`Mode::Lean`]): the solver keeps no history, each event is read as it comes
+//! ([`Simulation::step_event`]) into the summary, and the run stops as soon as the verdict is
+//! settled (see [`settled`]), where a position would not be looked at anyway.
+
+use crate::candidates::{Candidate, Layout};
+use crate::noise::{Noise, stream};
+use crate::position::best_success;
+use billiards_physics::{BallId, EventKind, Simulation, Vec2, Vec3};
+use billiards_rules::{Call, Game, GameState, Outcome, Seat, ShotSummary, Verdict, summarise};
+use rayon::prelude::*;
+
+/// What a foul costs: the opponent's ball in hand is worth about this much to them.
+pub const FOUL_COST: f64 = 0.5;
+
+/// Most events one sample may take before it is cut short (a shot rarely takes 200).
+const MAX_EVENTS: usize = 5_000;
+
+/// How a sample runs the solver.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    /// No history, events read one at a time, stopped once the verdict is settled.
+    Lean,
+    /// The history on, run to rest, summarised from the history (for comparison).
+    Full,
+}
+
+/// Everything a search shares: the rules' state, the resting table and the noise it plans
+/// under.
+#[derive(Clone, Debug)]
+pub struct Search<'a> {
+    /// The rack's state (the next shot as it asks).
+    pub state: &'a GameState,
+    /// The table at rest, in lean mode (no history).
+    pub base: Simulation,
+    /// The cue ball's index in the solver.
+    pub cue: BallId,
+    /// The noise the candidates are sampled under.
+    pub noise: Noise,
+    /// The decision's seed.
+    pub seed: u64,
+    /// How samples run the solver.
+    pub mode: Mode,
+}
+
+/// The running totals of one candidate's samples.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Samples.
+    pub n: usize,
+    /// Sum of the values.
+    pub value: f64,
+    /// Samples with a legal pot (or a win).
+    pub pots: usize,
+    /// Samples with a foul.
+    pub fouls: usize,
+    /// Samples that lost the game.
+    pub losses: usize,
+    /// Solver events processed.
+    pub events: usize,
+}
+
+impl Stats {
+    /// Mean value (minus infinity without samples).
+    pub fn mean(&self) -> f64 {
+        if self.n == 0 {
+            f64::NEG_INFINITY
+        } else {
+            self.value / self.n as f64
+        }
+    }
+
+    /// Fraction of samples with a legal pot or a win.
+    pub fn pot_rate(&self) -> f64 {
+        self.pots as f64 / self.n.max(1) as f64
+    }
+
+    /// Both sets of samples together.
+    pub fn merged(self, o: Stats) -> Stats {
+        Stats {
+            n: self.n + o.n,
+            value: self.value + o.value,
+            pots: self.pots + o.pots,
+            fouls: self.fouls + o.fouls,
+            losses: self.losses + o.losses,
+            events: self.events + o.events,
+        }
+    }
+}
+
+/// Whether nothing later in the shot can change what the sample is scored on: a foul in
+/// 9-ball (a scratch, or a wrong first ball unless the shot is a push out), whose cost does
+/// not depend on where the balls stop; in 8-ball, the 8 down when it was not on, or down
+/// with the cue ball (the game is lost either way, WPA 3.8).
+pub fn settled(state: &GameState, call: Call, summary: &ShotSummary) -> bool {
+    let legal = &state.next.legal_first;
+    match state.game {
+        Game::NineBall => {
+            summary.scratch()
+                || (call != Call::PushOut
+                    && summary.first_contact.is_some_and(|b| !legal.contains(&b)))
+        }
+        Game::EightBall => {
+            !state.next.break_shot
+                && summary.pocket_of(8).is_some()
+                && (!legal.contains(&8) || summary.scratch())
+        }
+        Game::FreePlay => false,
+    }
+}
+
+impl Search<'_> {
+    /// The simulation of `cand` before its strike: the cue ball in its place.
+    fn start(&self, cand: &Candidate) -> Option<Simulation> {
+        let mut sim = self.base.clone();
+        if let Some(p) = cand.place {
+            sim.place(self.cue, p, Vec2::ZERO, Vec3::ZERO).ok()?;
+        }
+        Some(sim)
+    }
+
+    /// Runs one noisy sample of candidate `index` (draw `k`): its summary, the solver after
+    /// it and the events it took.
+    fn run(
+        &self,
+        cand: &Candidate,
+        index: u64,
+        k: u64,
+    ) -> Option<(ShotSummary, Simulation, usize)> {
+        let mut sim = self.start(cand)?;
+        let mut rng = stream(self.seed, index, k);
+        let shot = self.noise.apply(cand.shot, sim.params(), &mut rng);
+        let first = sim.event_count();
+        if self.mode == Mode::Full {
+            sim.set_record_history(true);
+        }
+        sim.strike(self.cue, shot).ok()?;
+        let mut summary = ShotSummary::default();
+        match self.mode {
+            Mode::Lean => {
+                while let Some(e) = sim.step_event() {
+                    summary.record(&e.kind, sim.numbers());
+                    if sim.event_count() - first > MAX_EVENTS
+                        || settled(self.state, cand.call, &summary)
+                    {
+                        break;
+                    }
+                }
+            }
+            Mode::Full => {
+                let _ = sim.run_to_rest();
+                summary = summarise(sim.history().events(), sim.numbers());
+            }
+        }
+        let events = sim.event_count() - first;
+        Some((summary, sim, events))
+    }
+
+    /// One noisy sample of candidate `index` (draw `k`), scored.
+    pub fn sample(&self, cand: &Candidate, index: u64, k: u64) -> Stats {
+        let me = self.state.next.shooter;
+        let foul = Stats {
+            n: 1,
+            value: -FOUL_COST,
+            fouls: 1,
+            ..Stats::default()
+        };
+        let Some((summary, sim, events)) = self.run(cand, index, k) else {
+            return foul;
+        };
+        let mut after = self.state.clone();
+        let Ok(verdict) = after.play(&summary, cand.call) else {
+            return Stats { events, ..foul };
+        };
+        let potted = summary.pocketed_object_balls().next().is_some();
+        let (value, pot) = self.score(&verdict, &sim, me, potted);
+        Stats {
+            n: 1,
+            value,
+            pots: usize::from(pot),
+            fouls: usize::from(!verdict.legal()),
+            losses: usize::from(value == -1.0),
+            events,
+        }
+    }
+
+    /// The value of `verdict` for `me` with the balls as `sim` left them, and whether it was
+    /// a legal pot (or a win).
+    fn score(&self, verdict: &Verdict, sim: &Simulation, me: Seat, potted: bool) -> (f64, bool) {
+        if let Outcome::GameOver { winner, .. } = verdict.outcome {
+            return if winner == me {
+                (1.0, true)
+            } else {
+                (-1.0, false)
+            };
+        }
+        if !verdict.legal() {
+            return (-FOUL_COST, false);
+        }
+        let (Some(next), Some(layout)) = (&verdict.next, Layout::of(sim, None)) else {
+            return (0.0, false);
+        };
+        let p = best_success(&layout, &next.legal_first, self.noise);
+        if verdict.push_out {
+            return (-0.6 * p.max(1.0 - p), false);
+        }
+        if next.shooter == me && verdict.outcome == Outcome::Continues {
+            (0.4 + 0.6 * p, potted)
+        } else {
+            (-0.6 * p, false)
+        }
+    }
+
+    /// Samples `from..to` of every candidate of `cands`, on all cores. Candidate `i` draws
+    /// from the streams `(seed, salt + i, k)`, so the result does not depend on the threads.
+    pub fn evaluate(&self, cands: &[Candidate], salt: u64, from: u64, to: u64) -> Vec<Stats> {
+        cands
+            .par_iter()
+            .enumerate()
+            .map(|(i, c)| {
+                (from..to).fold(Stats::default(), |s, k| {
+                    s.merged(self.sample(c, salt + i as u64, k))
+                })
+            })
+            .collect()
+    }
+
+    /// `cand` with its aim corrected for throw and spin, noiselessly: a secant search on the
+    /// aim angle until the ball hit first leaves in the direction the geometry wants (within
+    /// 1e-5 rad), at most five runs to the first contact. Unchanged when the first contact is
+    /// not that ball.
+    pub fn correct_aim(&self, cand: Candidate) -> Candidate {
+        let Some((ball, want)) = cand.object else {
+            return cand;
+        };
+        let Some(start) = self.start(&cand) else {
+            return cand;
+        };
+        let id = start.numbers().iter().position(|&n| n == ball);
+        let error = |angle: f64| -> Option<f64> {
+            let mut sim = start.clone();
+            sim.strike(self.cue, billiards_physics::Shot { angle, ..cand.shot })
+                .ok()?;
+            for _ in 0..200 {
+                let e = sim.step_event()?;
+                if let EventKind::BallBall { a, b } = e.kind
+                    && (a == self.cue || b == self.cue)
+                {
+                    let (other, slot) = if a == self.cue { (b, 1) } else { (a, 0) };
+                    if Some(other) != id {
+                        return None;
+                    }
+                    let v = e.after[slot].velocity;
+                    return Some(want.perp_dot(v).atan2(want.dot(v)));
+                }
+            }
+            None
+        };
+        let (mut a0, mut a1) = (cand.shot.angle, cand.shot.angle + 1e-4);
+        let (Some(mut e0), Some(mut e1)) = (error(a0), error(a1)) else {
+            return cand;
+        };
+        for _ in 0..3 {
+            if e1.abs() < 1e-5 || e1 == e0 {
+                break;
+            }
+            let a2 = a1 - e1 * (a1 - a0) / (e1 - e0);
+            let Some(e2) = error(a2) else { break };
+            (a0, e0, a1, e1) = (a1, e1, a2, e2);
+        }
+        let best = if e1.abs() <= e0.abs() { a1 } else { a0 };
+        let mut out = cand;
+        out.shot.angle = best;
+        out
+    }
+}

@@ -1,0 +1,109 @@
+//! The baseline player: FooBillard++'s method (`aiplayer.c`), geometry without simulation.
+//! Among the straight and cut shots of the legal balls whose paths are clear, the smallest
+//! cut angle (then the shortest shot) is played, centre ball, at the speed the distances call
+//! for; with nothing open, a full hit on the first legal ball it can see. Ball in hand: the
+//! cue ball straight behind the easiest ball and pocket. No noisy search, no position play,
+//! no safeties.
+
+use crate::candidates::{Layout, ShotKind, call_for, direct_aims};
+use crate::placement::places;
+use crate::{AiError, Decision, Plan};
+use billiards_physics::{Shot, Simulation, Vec2};
+use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState};
+
+/// The greedy player's decision for the shot `state` asks for.
+pub fn decide(state: &GameState, sim: &Simulation) -> Result<Decision, AiError> {
+    let next = crate::ready(state, sim)?;
+    if let Some(&first) = next.choices.first() {
+        // No judgement: shoot when it may, otherwise the first option offered.
+        let choice = [Choice::ShootFromHere, Choice::SpotEightAndShoot]
+            .into_iter()
+            .find(|c| next.choices.contains(c))
+            .unwrap_or(first);
+        return Ok(Decision::Choose {
+            choice,
+            estimate: 0.5,
+        });
+    }
+    let cue = sim
+        .numbers()
+        .iter()
+        .position(|&n| n == CUE)
+        .ok_or(AiError::NoCueBall)?;
+    let in_hand = matches!(
+        next.cue_ball,
+        CueBall::InHandAnywhere | CueBall::InHandBehindHeadString
+    );
+    let place = if in_hand {
+        let best = places(
+            sim,
+            cue,
+            next.cue_ball,
+            &next.legal_first,
+            crate::Noise::REFERENCE,
+            1,
+        );
+        Some(*best.first().ok_or(AiError::NoPlace)?)
+    } else {
+        None
+    };
+    let layout = Layout::of(sim, place).ok_or(AiError::CueBallOff)?;
+    let eight = state.game == Game::EightBall;
+    let aims = if next.break_shot {
+        Vec::new()
+    } else {
+        direct_aims(&layout, &next.legal_first)
+    };
+    // The smallest cut: the largest cosine between the cue ball's and the object's paths.
+    let cut_cos = |a: &crate::candidates::Aim| Vec2::from_angle(a.angle).dot(a.object_dir);
+    let best = aims.iter().enumerate().max_by(|(i, a), (j, b)| {
+        cut_cos(a)
+            .total_cmp(&cut_cos(b))
+            .then(b.speed.total_cmp(&a.speed))
+            .then(j.cmp(i))
+    });
+    let (shot, kind, call) = match best {
+        Some((_, a)) => (
+            Shot::new(a.angle, (1.3 * a.speed).min(8.0)),
+            a.kind,
+            call_for(a.kind, eight),
+        ),
+        None => {
+            // Nothing open (or the break): straight at the nearest legal ball, firmly.
+            let target = next
+                .legal_first
+                .iter()
+                .filter_map(|&n| layout.ball(n).map(|p| (n, p)))
+                .min_by(|a, b| {
+                    (a.1 - layout.cue)
+                        .length()
+                        .total_cmp(&(b.1 - layout.cue).length())
+                });
+            let (n, p) = target.ok_or(AiError::NoBall)?;
+            let speed = if next.break_shot { 10.0 } else { 2.5 };
+            let kind = if next.break_shot {
+                ShotKind::Break
+            } else {
+                ShotKind::Safety { ball: n }
+            };
+            let call = if eight && next.legal_first == [8] {
+                Call::Safety
+            } else {
+                Call::None
+            };
+            (Shot::new((p - layout.cue).angle(), speed), kind, call)
+        }
+    };
+    Ok(Decision::Shoot(Plan {
+        shot,
+        place,
+        call,
+        kind,
+        success: 0.0,
+        foul: 0.0,
+        value: 0.0,
+        samples: 0,
+        simulations: 0,
+        events: 0,
+    }))
+}

@@ -1,0 +1,167 @@
+//! Skill levels: how much execution noise the player's shots carry and how much search it
+//! spends choosing them.
+
+use crate::noise::Noise;
+use billiards_physics::TipOffset;
+use std::fmt;
+use std::str::FromStr;
+
+/// A skill level of the computer player.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Level {
+    /// Three times the reference noise; pots only, few samples.
+    Easy,
+    /// Twice the reference noise; pots, banks and combinations, a short refinement.
+    Medium,
+    /// The reference noise (FastFiz magnitude 1); the whole search.
+    Hard,
+    /// No execution noise (for analysis); the whole search, planned under half the reference
+    /// noise so that it still prefers shots with room for error.
+    Perfect,
+}
+
+/// How much search a level spends.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Budget {
+    /// Noisy samples of every candidate in the first round.
+    pub samples: usize,
+    /// How many of the best candidates get a second round.
+    pub refine: usize,
+    /// Further samples of each of those.
+    pub refine_samples: usize,
+    /// Geometric aims kept (best analytic success probability first) before the variants.
+    pub aims: usize,
+    /// Cue speeds, as multiples of the speed an aim needs to reach its pocket.
+    pub speeds: &'static [f64],
+    /// Tip offsets tried on straight and cut shots (stun, follow, draw, english).
+    pub tips: &'static [TipOffset],
+    /// One-rail banks of the object ball, kicks of the cue ball and combinations.
+    pub banks_kicks_combos: bool,
+    /// Ball in hand: places of the cue ball searched in full.
+    pub placements: usize,
+    /// Aims corrected for throw by a noiseless secant search before sampling.
+    pub correct_aim: bool,
+    /// Safety candidates per legal ball.
+    pub safeties: usize,
+}
+
+const STUN: TipOffset = TipOffset {
+    side: 0.0,
+    height: 0.0,
+};
+const FOLLOW: TipOffset = TipOffset {
+    side: 0.0,
+    height: 0.3,
+};
+const DRAW: TipOffset = TipOffset {
+    side: 0.0,
+    height: -0.3,
+};
+const LEFT: TipOffset = TipOffset {
+    side: -0.25,
+    height: 0.0,
+};
+const RIGHT: TipOffset = TipOffset {
+    side: 0.25,
+    height: 0.0,
+};
+
+impl Level {
+    /// Every level, weakest first.
+    pub const ALL: [Level; 4] = [Level::Easy, Level::Medium, Level::Hard, Level::Perfect];
+
+    /// The noise on the shots this level plays.
+    pub fn execution_noise(self) -> Noise {
+        Noise {
+            magnitude: match self {
+                Level::Easy => 3.0,
+                Level::Medium => 2.0,
+                Level::Hard => 1.0,
+                Level::Perfect => 0.0,
+            },
+        }
+    }
+
+    /// The noise its search assumes (its own, except for [`Level::Perfect`]).
+    pub fn planning_noise(self) -> Noise {
+        match self {
+            Level::Perfect => Noise { magnitude: 0.5 },
+            _ => self.execution_noise(),
+        }
+    }
+
+    /// The search budget.
+    pub fn budget(self) -> Budget {
+        match self {
+            Level::Easy => Budget {
+                samples: 8,
+                refine: 0,
+                refine_samples: 0,
+                aims: 4,
+                speeds: &[1.3],
+                tips: &[STUN],
+                banks_kicks_combos: false,
+                placements: 3,
+                correct_aim: false,
+                safeties: 3,
+            },
+            Level::Medium => Budget {
+                samples: 12,
+                refine: 3,
+                refine_samples: 36,
+                aims: 6,
+                speeds: &[1.0, 1.8],
+                tips: &[STUN, FOLLOW, DRAW],
+                banks_kicks_combos: true,
+                placements: 4,
+                correct_aim: true,
+                safeties: 5,
+            },
+            Level::Hard | Level::Perfect => Budget {
+                samples: 16,
+                refine: 6,
+                refine_samples: 64,
+                aims: 10,
+                speeds: &[1.0, 1.6, 2.6],
+                tips: &[STUN, FOLLOW, DRAW, LEFT, RIGHT],
+                banks_kicks_combos: true,
+                placements: 6,
+                correct_aim: true,
+                safeties: 9,
+            },
+        }
+    }
+
+    /// The level's name, as the command line spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Level::Easy => "easy",
+            Level::Medium => "medium",
+            Level::Hard => "hard",
+            Level::Perfect => "perfect",
+        }
+    }
+}
+
+impl fmt::Display for Level {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A name that is not a level.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("unknown level {0:?}: expected easy, medium, hard or perfect")]
+pub struct UnknownLevel(pub String);
+
+impl FromStr for Level {
+    type Err = UnknownLevel;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Level::ALL
+            .into_iter()
+            .find(|l| l.name() == s)
+            .ok_or_else(|| UnknownLevel(s.to_string()))
+    }
+}

@@ -1,0 +1,190 @@
+//! The computer opponent, pure Rust (no Bevy): the game and `billiards-cli tournament` call
+//! [`decide`] with the rules' state and the table at rest and get back what the rules ask
+//! for next: a choice ([`Decision::Choose`]) or a shot with its call and, with the cue ball
+//! in hand, its place ([`Decision::Shoot`]).
+//!
+//! How it decides (modules in order):
+//! - [`candidates`]: ghost-ball shots of every legal ball into every pocket, one-rail banks,
+//!   one-rail kicks, combinations with a legal first ball; each in several speeds and tips;
+//! - [`position`]: an analytic success probability of an aim (ranks the aims, and values the
+//!   position a shot leaves, one ply);
+//! - [`evaluate`]: every candidate simulated N times under execution noise ([`noise`]) and
+//!   judged by the rules, the best few refined with more samples; safeties (and push outs)
+//!   when nothing scores;
+//! - [`placement`]: ball in hand, by the same search from the best few places;
+//! - [`level`]: skill levels (noise and budget); [`greedy`]: a baseline without simulation.
+//!
+//! The same seed gives the same decision on any number of threads: every random draw comes
+//! from a stream named by the seed, the candidate's index and the sample's ([`noise::stream`]).
+//!
+//! Running a [`Plan`] (as the game and the tournament do): spot any balls
+//! [`billiards_rules::NextShot::spot`] names, then call [`decide`]; put the cue ball at
+//! [`Plan::place`] if any (`Simulation::place`), strike the cue ball with
+//! [`Plan::executed`] (the shot with the player's execution noise), run to rest, summarise
+//! the events (`billiards_rules::summarise`) and pass them with [`Plan::call`] to
+//! `GameState::play`. A [`Decision::Choose`] goes to `GameState::choose`.
+
+pub mod candidates;
+pub mod evaluate;
+pub mod greedy;
+pub mod level;
+pub mod noise;
+pub mod placement;
+pub mod play;
+pub mod position;
+mod search;
+
+pub use candidates::{Candidate, Layout, ShotKind};
+pub use evaluate::{Mode, Stats};
+pub use level::{Budget, Level, UnknownLevel};
+pub use noise::Noise;
+pub use search::{decide, decide_with};
+
+use billiards_physics::{Params, Shot, Simulation, Vec2};
+use billiards_rules::{Call, Choice, GameState, NextShot};
+use std::fmt;
+use std::str::FromStr;
+
+/// What the player does next.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Decision {
+    /// Take one of the choices the rules offer ([`GameState::choose`]).
+    Choose {
+        /// The choice.
+        choice: Choice,
+        /// Estimated success probability of the best shot the choice leads to.
+        estimate: f64,
+    },
+    /// Play this shot.
+    Shoot(Plan),
+}
+
+/// A shot decided on.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Plan {
+    /// The strike meant (angle, speed, tip), before execution noise.
+    pub shot: Shot,
+    /// Ball in hand: where to put the cue ball first.
+    pub place: Option<Vec2>,
+    /// The call that goes with the shot (8-ball ball and pocket, safety; 9-ball push out).
+    pub call: Call,
+    /// What the shot tries.
+    pub kind: ShotKind,
+    /// Estimated probability of a legal pot (or of winning): the hint's number.
+    pub success: f64,
+    /// Estimated probability of a foul.
+    pub foul: f64,
+    /// The search's mean value of the shot, -1 (loses) to 1 (wins).
+    pub value: f64,
+    /// Noisy samples behind the estimates of this shot.
+    pub samples: usize,
+    /// Noisy simulations the whole decision ran.
+    pub simulations: usize,
+    /// Solver events those simulations processed.
+    pub events: usize,
+}
+
+impl Plan {
+    /// The shot as a player of execution noise `noise` strikes it, from the stream of
+    /// `seed` (a function of the seed only).
+    pub fn executed(&self, noise: Noise, params: &Params, seed: u64) -> Shot {
+        noise.apply(self.shot, params, &mut noise::stream(seed, u64::MAX, 0))
+    }
+}
+
+/// Why no decision can be made.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum AiError {
+    /// The game is over.
+    #[error("the game is over")]
+    GameOver,
+    /// Balls are still moving.
+    #[error("the balls are not at rest")]
+    NotAtRest,
+    /// The table has no cue ball (number 0).
+    #[error("there is no cue ball")]
+    NoCueBall,
+    /// The cue ball is off the table and not in hand.
+    #[error("the cue ball is off the table but not in hand")]
+    CueBallOff,
+    /// Ball in hand, and no legal place for the cue ball.
+    #[error("there is no legal place for the cue ball")]
+    NoPlace,
+    /// No ball the rules allow is on the table.
+    #[error("no legal ball is on the table")]
+    NoBall,
+}
+
+/// The next shot, once the common preconditions hold: the game is on and the balls rest.
+pub(crate) fn ready<'a>(state: &'a GameState, sim: &Simulation) -> Result<&'a NextShot, AiError> {
+    if state.over.is_some() {
+        return Err(AiError::GameOver);
+    }
+    if !sim.is_at_rest() {
+        return Err(AiError::NotAtRest);
+    }
+    Ok(&state.next)
+}
+
+/// A player: the computer at a level, or the greedy baseline.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Player {
+    /// The search at a level.
+    Computer(Level),
+    /// [`greedy`]: the ghost-ball player without simulation.
+    Greedy,
+}
+
+impl Player {
+    /// Its decision (the seed only matters to the search).
+    pub fn decide(
+        self,
+        state: &GameState,
+        sim: &Simulation,
+        seed: u64,
+    ) -> Result<Decision, AiError> {
+        match self {
+            Player::Computer(level) => decide(state, sim, level, seed),
+            Player::Greedy => greedy::decide(state, sim),
+        }
+    }
+
+    /// The noise on its shots: the greedy player's hand is the reference one, as hard's, so
+    /// the two differ in their choices only.
+    pub fn execution_noise(self) -> Noise {
+        match self {
+            Player::Computer(level) => level.execution_noise(),
+            Player::Greedy => Noise::REFERENCE,
+        }
+    }
+}
+
+impl fmt::Display for Player {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Player::Computer(level) => level.fmt(f),
+            Player::Greedy => f.write_str("greedy"),
+        }
+    }
+}
+
+/// A name that is not a player.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("unknown player {0:?}: expected easy, medium, hard, perfect or greedy")]
+pub struct UnknownPlayer(pub String);
+
+impl FromStr for Player {
+    type Err = UnknownPlayer;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        match s {
+            "greedy" => Ok(Player::Greedy),
+            _ => s
+                .parse()
+                .map(Player::Computer)
+                .map_err(|_| UnknownPlayer(s.to_string())),
+        }
+    }
+}

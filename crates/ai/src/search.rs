@@ -1,0 +1,342 @@
+//! The decision: which candidates to build for the shot the rules ask for, the rounds of
+//! noisy evaluation, and the choices (push out, 8-ball break options).
+
+use crate::candidates::{
+    Candidate, Layout, ShotKind, combo_aims, direct_aims, expand, rail_aims, safeties,
+};
+use crate::evaluate::{Mode, Search, Stats};
+use crate::level::{Budget, Level};
+use crate::placement::places;
+use crate::position::{aim_probability, best_success};
+use crate::{AiError, Decision, Plan, ready};
+use billiards_physics::{Shot, Simulation, TipOffset, Vec2};
+use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState, check_placement};
+use rayon::prelude::*;
+
+/// Below this chance of a legal pot, safeties (and a push out, when allowed) are searched too.
+const SAFETY_BELOW: f64 = 0.45;
+
+/// The computer's decision at `level` for what `state` asks next, on the resting table
+/// `sim` (balls to spot already spotted; a cue ball in hand anywhere or off the table).
+/// The same `seed` gives the same decision, on any number of threads.
+pub fn decide(
+    state: &GameState,
+    sim: &Simulation,
+    level: Level,
+    seed: u64,
+) -> Result<Decision, AiError> {
+    decide_with(state, sim, level, seed, Mode::Lean)
+}
+
+/// [`decide`] with the solver run in `mode` (the lean mode is [`decide`]'s; the full one is
+/// there to measure what it saves).
+pub fn decide_with(
+    state: &GameState,
+    sim: &Simulation,
+    level: Level,
+    seed: u64,
+    mode: Mode,
+) -> Result<Decision, AiError> {
+    let next = ready(state, sim)?;
+    if !next.choices.is_empty() {
+        let (choice, estimate) = choose(state, sim, level);
+        return Ok(Decision::Choose { choice, estimate });
+    }
+    let cue = sim
+        .numbers()
+        .iter()
+        .position(|&n| n == CUE)
+        .ok_or(AiError::NoCueBall)?;
+    let in_hand = matches!(
+        next.cue_ball,
+        CueBall::InHandAnywhere | CueBall::InHandBehindHeadString
+    );
+    if !in_hand && !sim.ball(cue).motion.on_table() {
+        return Err(AiError::CueBallOff);
+    }
+    let mut base = sim.clone();
+    base.set_record_history(false);
+    let search = Search {
+        state,
+        base,
+        cue,
+        noise: level.planning_noise(),
+        seed,
+        mode,
+    };
+    let budget = level.budget();
+    let place_list: Vec<Option<Vec2>> = if in_hand {
+        let found = if next.break_shot {
+            break_places(sim, cue, next.cue_ball)
+        } else {
+            let (rule, legal) = (next.cue_ball, &next.legal_first);
+            places(sim, cue, rule, legal, search.noise, budget.placements)
+        };
+        if found.is_empty() {
+            return Err(AiError::NoPlace);
+        }
+        found.into_iter().map(Some).collect()
+    } else {
+        vec![None]
+    };
+    let mut pool = Pool::default();
+    let first: Vec<Candidate> = if next.break_shot {
+        breaks(&search, &place_list, &budget)
+    } else {
+        place_list
+            .iter()
+            .flat_map(|&p| offence(&search, p, &budget))
+            .collect()
+    };
+    pool.add(&search, first, budget.samples);
+    let scoring = pool
+        .best()
+        .is_some_and(|i| pool.stats[i].pot_rate() >= SAFETY_BELOW);
+    if !next.break_shot && !scoring {
+        let mut more = Vec::new();
+        for &p in &place_list {
+            let Some(layout) = Layout::of(sim, p) else {
+                continue;
+            };
+            let mut s = safeties(&layout, &next.legal_first, budget.safeties, p);
+            if state.game == Game::EightBall && next.legal_first == [8] {
+                // On the 8, only a called safety is safe from a lucky loss (WPA 3.8).
+                s.iter_mut().for_each(|c| c.call = Call::Safety);
+            }
+            more.extend(s);
+            if next.push_out_allowed {
+                more.extend(push_outs(p));
+            }
+        }
+        pool.add(&search, more, budget.samples);
+    }
+    pool.refine(&search, &budget);
+    let best = pool.best().ok_or(AiError::NoBall)?;
+    let (c, s) = (pool.cands[best], pool.stats[best]);
+    Ok(Decision::Shoot(Plan {
+        shot: c.shot,
+        place: c.place,
+        call: c.call,
+        kind: c.kind,
+        success: s.pot_rate(),
+        foul: s.fouls as f64 / s.n.max(1) as f64,
+        value: s.mean(),
+        samples: s.n,
+        simulations: pool.simulations,
+        events: pool.events,
+    }))
+}
+
+/// Every candidate evaluated so far, with its samples.
+#[derive(Default)]
+struct Pool {
+    cands: Vec<Candidate>,
+    stats: Vec<Stats>,
+    simulations: usize,
+    events: usize,
+}
+
+impl Pool {
+    /// Evaluates `cands` with `samples` each and keeps them. A candidate's random streams are
+    /// named by its index in the pool, so the order of the rounds fixes them.
+    fn add(&mut self, search: &Search, cands: Vec<Candidate>, samples: usize) {
+        let salt = self.cands.len() as u64;
+        let stats = search.evaluate(&cands, salt, 0, samples as u64);
+        self.count(&stats);
+        self.cands.extend(cands);
+        self.stats.extend(stats);
+    }
+
+    /// Gives the best `budget.refine` candidates `budget.refine_samples` more samples each.
+    fn refine(&mut self, search: &Search, budget: &Budget) {
+        let mut order: Vec<usize> = (0..self.cands.len()).collect();
+        order.sort_by(|&a, &b| {
+            self.stats[b]
+                .mean()
+                .total_cmp(&self.stats[a].mean())
+                .then(a.cmp(&b))
+        });
+        order.truncate(budget.refine);
+        let more: Vec<Stats> = order
+            .par_iter()
+            .map(|&i| {
+                let (from, to) = (
+                    self.stats[i].n as u64,
+                    (self.stats[i].n + budget.refine_samples) as u64,
+                );
+                search.evaluate(&self.cands[i..=i], i as u64, from, to)[0]
+            })
+            .collect();
+        self.count(&more);
+        for (&i, s) in order.iter().zip(more) {
+            self.stats[i] = self.stats[i].merged(s);
+        }
+    }
+
+    fn count(&mut self, stats: &[Stats]) {
+        self.simulations += stats.iter().map(|s| s.n).sum::<usize>();
+        self.events += stats.iter().map(|s| s.events).sum::<usize>();
+    }
+
+    /// The candidate of the best mean value; among the refined ones when there are any
+    /// (ties: the first).
+    fn best(&self) -> Option<usize> {
+        let most = self.stats.iter().map(|s| s.n).max()?;
+        (0..self.cands.len())
+            .filter(|&i| self.stats[i].n == most)
+            .reduce(|a, b| {
+                if self.stats[b].mean() > self.stats[a].mean() {
+                    b
+                } else {
+                    a
+                }
+            })
+    }
+}
+
+/// Pots, banks, kicks and combinations from the cue ball at `place` (or where it is): the
+/// `budget.aims` best aims by analytic success, each in the budget's speeds and tips, aims
+/// corrected for throw when the budget says so.
+fn offence(search: &Search, place: Option<Vec2>, budget: &Budget) -> Vec<Candidate> {
+    let state = search.state;
+    let Some(layout) = Layout::of(&search.base, place) else {
+        return Vec::new();
+    };
+    let legal = &state.next.legal_first;
+    let eight = state.game == Game::EightBall;
+    let mut aims = direct_aims(&layout, legal);
+    if budget.banks_kicks_combos {
+        aims.extend(rail_aims(&layout, legal));
+        // 8-ball: the ball called must be the shooter's (WPA 3.6); 9-ball: any ball.
+        let second: Vec<u8> = if eight {
+            legal.clone()
+        } else {
+            layout.balls.iter().map(|b| b.0).collect()
+        };
+        aims.extend(combo_aims(&layout, legal, &second));
+    }
+    let mut ranked: Vec<(f64, usize)> = aims
+        .iter()
+        .enumerate()
+        .map(|(i, a)| (aim_probability(a, search.noise), i))
+        .collect();
+    ranked.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    let kept: Vec<_> = ranked
+        .iter()
+        .take(budget.aims)
+        .map(|&(_, i)| aims[i])
+        .collect();
+    let cands = expand(&kept, budget.speeds, budget.tips, eight, place);
+    if budget.correct_aim {
+        cands
+            .into_par_iter()
+            .map(|c| search.correct_aim(c))
+            .collect()
+    } else {
+        cands
+    }
+}
+
+/// Break candidates: from each place (or where the cue ball is), full on the ball nearest
+/// the foot spot (the 1 in 9-ball, WPA 2.3), at three speeds, stun and a little draw.
+fn breaks(search: &Search, place_list: &[Option<Vec2>], budget: &Budget) -> Vec<Candidate> {
+    let sim = &search.base;
+    let spot = sim.table().foot_spot();
+    let legal = &search.state.next.legal_first;
+    let mut out = Vec::new();
+    for &p in place_list {
+        let Some(layout) = Layout::of(sim, p) else {
+            continue;
+        };
+        let apex = layout
+            .balls
+            .iter()
+            .filter(|b| legal.contains(&b.0))
+            .min_by(|a, b| (a.1 - spot).length().total_cmp(&(b.1 - spot).length()));
+        let Some(&(_, at)) = apex else { continue };
+        let angle = (at - layout.cue).angle();
+        let speeds: &[f64] = if budget.speeds.len() > 1 {
+            &[8.0, 10.0, 12.0]
+        } else {
+            &[10.0]
+        };
+        for &speed in speeds {
+            for height in [0.0, -0.2] {
+                out.push(Candidate {
+                    kind: ShotKind::Break,
+                    shot: Shot {
+                        angle,
+                        speed,
+                        tip: TipOffset { side: 0.0, height },
+                    },
+                    call: Call::None,
+                    place: p,
+                    object: None,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// Where the breaker may put the cue ball: the head spot and two points either side of it
+/// on the head string (a quarter and a half of the way to the side cushions), those legal.
+fn break_places(sim: &Simulation, cue: usize, rule: CueBall) -> Vec<Vec2> {
+    let spot = sim.table().head_spot();
+    let half = sim.table().centre_bounds(sim.params().ball.radius).y;
+    [0.0, 0.25, -0.25, 0.5]
+        .into_iter()
+        .map(|f| spot + Vec2::new(0.0, f * half))
+        .filter(|&p| check_placement(sim, cue, p, rule).is_ok())
+        .collect()
+}
+
+/// Push-out candidates (WPA 2.4): soft rolls in sixteen directions; no contact is needed.
+fn push_outs(place: Option<Vec2>) -> Vec<Candidate> {
+    (0..16)
+        .flat_map(|k| {
+            let angle = k as f64 * std::f64::consts::TAU / 16.0;
+            [0.8, 1.5].map(|speed| Candidate {
+                kind: ShotKind::PushOut,
+                shot: Shot::new(angle, speed),
+                call: Call::PushOut,
+                place,
+                object: None,
+            })
+        })
+        .collect()
+}
+
+/// A choice the rules offer: the analytic best chance from the table as it lies decides
+/// whether to shoot it (after a push out or an illegal 8-ball break; spot the 8 after it
+/// dropped on the break) or to hand it back / re-rack.
+fn choose(state: &GameState, sim: &Simulation, level: Level) -> (Choice, f64) {
+    let next = &state.next;
+    let p = match Layout::of(sim, None) {
+        Some(layout) => best_success(&layout, &next.legal_first, level.planning_noise()),
+        // The cue ball went down (a scratch on the break): ball in hand behind the line.
+        None => 0.6,
+    };
+    let offered = |c: Choice| next.choices.contains(&c);
+    let choice = if offered(Choice::PassBack) {
+        // After a push out the other side shoots what is left: take it only if it is good.
+        if p >= 0.5 {
+            Choice::ShootFromHere
+        } else {
+            Choice::PassBack
+        }
+    } else if offered(Choice::SpotEightAndShoot) {
+        if p >= 0.3 || !offered(Choice::RerackAndBreak) {
+            Choice::SpotEightAndShoot
+        } else {
+            Choice::RerackAndBreak
+        }
+    } else if offered(Choice::ShootFromHere) && p >= 0.5 {
+        Choice::ShootFromHere
+    } else if offered(Choice::RerackAndBreak) {
+        Choice::RerackAndBreak
+    } else {
+        next.choices[0]
+    };
+    (choice, p)
+}

@@ -1,0 +1,271 @@
+//! `tournament`: whole racks between two players, headless, on all cores; win rates, balls
+//! pocketed per inning, break-and-run rate, fouls and decision time. `--shard K/M` plays the
+//! K-th of M slices of the games (game `g` belongs to slice `g % M + 1`); `--merge` combines
+//! the JSON of the slices (`--out`) into one report.
+
+use billiards_ai::Player;
+use billiards_ai::noise::stream;
+use billiards_ai::play::{RackRecord, play_rack};
+use billiards_rules::Game;
+use indicatif::{ProgressBar, ProgressStyle};
+use rand::Rng;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// `tournament` options.
+#[derive(clap::Args, Debug)]
+pub struct TournamentArgs {
+    /// The game: nine-ball or eight-ball.
+    #[arg(long, value_enum, default_value = "nine-ball")]
+    pub game: crate::cli::GameArg,
+    /// The two players, `A,B`: easy, medium, hard, perfect or greedy. A breaks the even games.
+    #[arg(long, default_value = "hard,easy")]
+    pub players: String,
+    /// Games in the whole tournament (every shard counts the same).
+    #[arg(long, default_value_t = 200)]
+    pub games: u64,
+    /// Seed of the whole tournament: game `g`'s rack and draws come from it and `g`.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Play only slice K of M (`K/M`, 1 <= K <= M).
+    #[arg(long, value_parser = parse_shard, conflicts_with = "merge")]
+    pub shard: Option<(u64, u64)>,
+    /// Combine these results files (written by `--out`) instead of playing.
+    #[arg(long, num_args = 1..)]
+    pub merge: Vec<PathBuf>,
+    /// Write the results as JSON here.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+}
+
+/// A tournament's results (or one shard's).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Results {
+    /// The game.
+    pub game: Game,
+    /// The players, A first.
+    pub players: [Player; 2],
+    /// Games in the whole tournament.
+    pub games: u64,
+    /// Its seed.
+    pub seed: u64,
+    /// The racks played here, by game index.
+    pub racks: Vec<RackRecord>,
+}
+
+fn parse_shard(s: &str) -> Result<(u64, u64), String> {
+    let bad = || format!("{s:?}: expected K/M with 1 <= K <= M");
+    let (k, m) = s.split_once('/').ok_or_else(bad)?;
+    let (k, m): (u64, u64) = (
+        k.trim().parse().map_err(|_| bad())?,
+        m.trim().parse().map_err(|_| bad())?,
+    );
+    if k == 0 || m == 0 || k > m {
+        return Err(bad());
+    }
+    Ok((k, m))
+}
+
+/// A user's mistake (exit status 2) or a failure while playing (1).
+enum Failure {
+    Input(String),
+    Run(String),
+}
+
+/// Runs `tournament`; returns the process exit code.
+pub fn run(a: TournamentArgs) -> ExitCode {
+    match tournament(a) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Input(e)) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+        Err(Failure::Run(e)) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn players(s: &str) -> Result<[Player; 2], String> {
+    let (a, b) = s
+        .split_once(',')
+        .ok_or_else(|| format!("--players {s:?}: expected A,B (e.g. hard,easy)"))?;
+    let p = |x: &str| x.trim().parse::<Player>().map_err(|e| e.to_string());
+    Ok([p(a)?, p(b)?])
+}
+
+fn tournament(a: TournamentArgs) -> Result<(), Failure> {
+    let results = if a.merge.is_empty() {
+        let game: Game = a.game.into();
+        if game == Game::FreePlay {
+            return Err(Failure::Input(
+                "free play has no winner: --game nine-ball or eight-ball".into(),
+            ));
+        }
+        let players = players(&a.players).map_err(Failure::Input)?;
+        let (k, m) = a.shard.unwrap_or((1, 1));
+        play(game, players, a.games, a.seed, k, m).map_err(Failure::Run)?
+    } else {
+        merge(&a.merge).map_err(Failure::Input)?
+    };
+    if let Some(path) = &a.out {
+        let json =
+            serde_json::to_string_pretty(&results).map_err(|e| Failure::Run(e.to_string()))?;
+        let tmp = path.with_extension("json.tmp");
+        std::fs::write(&tmp, json)
+            .and_then(|()| std::fs::rename(&tmp, path))
+            .map_err(|e| Failure::Run(format!("{}: {e}", path.display())))?;
+    }
+    print!("{}", report(&results));
+    Ok(())
+}
+
+/// Plays the games of slice `k` of `m` on all cores, with a progress bar.
+fn play(
+    game: Game,
+    players: [Player; 2],
+    games: u64,
+    seed: u64,
+    k: u64,
+    m: u64,
+) -> Result<Results, String> {
+    let mine: Vec<u64> = (0..games).filter(|g| g % m == k - 1).collect();
+    let bar = ProgressBar::new(mine.len() as u64);
+    bar.set_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} games {elapsed} (eta {eta})")
+            .expect("template"),
+    );
+    let racks: Vec<RackRecord> = mine
+        .par_iter()
+        .map(|&g| {
+            let r = play_rack(
+                game,
+                players,
+                g,
+                stream(seed, 3, g).random(),
+                (g % 2) as usize,
+            );
+            bar.inc(1);
+            r.map_err(|e| format!("game {g}: {e}"))
+        })
+        .collect::<Result<_, _>>()?;
+    bar.finish_and_clear();
+    Ok(Results {
+        game,
+        players,
+        games,
+        seed,
+        racks,
+    })
+}
+
+/// The slices in `files`, as one set of results (the same tournament, each game once).
+fn merge(files: &[PathBuf]) -> Result<Results, String> {
+    let mut all: Option<Results> = None;
+    for f in files {
+        let text = std::fs::read_to_string(f).map_err(|e| format!("{}: {e}", f.display()))?;
+        let r: Results = serde_json::from_str(&text)
+            .map_err(|e| format!("{}: not tournament results: {e}", f.display()))?;
+        match &mut all {
+            None => all = Some(r),
+            Some(a) => {
+                if (a.game, a.players, a.games, a.seed) != (r.game, r.players, r.games, r.seed) {
+                    return Err(format!(
+                        "{}: another tournament (game, players, games or seed differ)",
+                        f.display()
+                    ));
+                }
+                for rack in r.racks {
+                    if a.racks.iter().any(|x| x.index == rack.index) {
+                        return Err(format!(
+                            "{}: game {} is in two files",
+                            f.display(),
+                            rack.index
+                        ));
+                    }
+                    a.racks.push(rack);
+                }
+            }
+        }
+    }
+    let mut all = all.ok_or("--merge: no files")?;
+    all.racks.sort_by_key(|r| r.index);
+    Ok(all)
+}
+
+/// The report: per player, wins (with a 95 % interval), balls per inning, break-and-run
+/// rate, fouls, decision times.
+pub fn report(r: &Results) -> String {
+    let n = r.racks.len();
+    let mut out = format!(
+        "{:?}, {} vs {}: {n} of {} games (seed {})\n",
+        r.game, r.players[0], r.players[1], r.games, r.seed
+    );
+    out += &format!(
+        "{:<8} {:>5} {:>7} {:>13} {:>12} {:>14} {:>11} {:>15}\n",
+        "player",
+        "wins",
+        "win %",
+        "95 % interval",
+        "balls/inning",
+        "break and run",
+        "fouls/shot",
+        "decision mean/max"
+    );
+    for p in 0..2 {
+        let wins = r.racks.iter().filter(|x| x.winner == Some(p)).count();
+        let t = |f: &dyn Fn(&RackRecord) -> f64| r.racks.iter().map(f).sum::<f64>();
+        let innings = t(&|x| x.players[p].innings as f64);
+        let balls = t(&|x| x.players[p].pocketed as f64);
+        let shots = t(&|x| x.players[p].shots as f64);
+        let fouls = t(&|x| x.players[p].fouls as f64);
+        let decisions = t(&|x| x.players[p].decisions as f64);
+        let secs = t(&|x| x.players[p].decision_secs);
+        let max = r
+            .racks
+            .iter()
+            .map(|x| x.players[p].max_decision_secs)
+            .fold(0.0, f64::max);
+        let broke = r.racks.iter().filter(|x| x.breaker == p).count();
+        let runs = r
+            .racks
+            .iter()
+            .filter(|x| x.breaker == p && x.break_and_run)
+            .count();
+        let (lo, hi) = wilson(wins, n);
+        out += &format!(
+            "{:<8} {:>5} {:>6.1}% {:>5.1}-{:>5.1}% {:>12.2} {:>7}/{:<3} {:>3.0}% {:>11.3} {:>7.3}/{:.3} s\n",
+            r.players[p].to_string(),
+            wins,
+            100.0 * wins as f64 / n.max(1) as f64,
+            100.0 * lo,
+            100.0 * hi,
+            balls / innings.max(1.0),
+            runs,
+            broke,
+            100.0 * runs as f64 / broke.max(1) as f64,
+            fouls / shots.max(1.0),
+            secs / decisions.max(1.0),
+            max,
+        );
+    }
+    let draws = r.racks.iter().filter(|x| x.winner.is_none()).count();
+    if draws > 0 {
+        out += &format!("{draws} games without a winner\n");
+    }
+    out
+}
+
+/// Wilson's 95 % score interval of `k` successes in `n`.
+fn wilson(k: usize, n: usize) -> (f64, f64) {
+    if n == 0 {
+        return (0.0, 1.0);
+    }
+    let (n, p, z) = (n as f64, k as f64 / n as f64, 1.96);
+    let centre = (p + z * z / (2.0 * n)) / (1.0 + z * z / n);
+    let half = z * (p * (1.0 - p) / n + z * z / (4.0 * n * n)).sqrt() / (1.0 + z * z / n);
+    (centre - half, centre + half)
+}
