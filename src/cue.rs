@@ -10,7 +10,7 @@ use crate::{
     balls::{Ball, BallMotion, Pocketed, world_velocity},
     camera::{CameraSystems, TableCamera},
     geometry::{TableSpec, table_dir_to_world, to_table_plane},
-    input::InputSystems,
+    input::{InputSystems, aim_unlocked},
     mode::GameMode,
     settings::{ClampReport, ShotSettings, ViewSettings, apply_shot_edit},
     sim::{ShotRequested, SimStatus, SimSystems, Solver, place_ball_in_hand},
@@ -30,7 +30,9 @@ pub fn plugin(app: &mut App) {
         .add_systems(
             Update,
             (
-                aim_with_mouse.in_set(InputSystems::Pointer),
+                aim_with_mouse
+                    .in_set(InputSystems::Pointer)
+                    .run_if(aim_unlocked),
                 cue_keys.in_set(InputSystems::Keyboard),
             )
                 .chain()

@@ -13,3 +13,14 @@ pub enum InputSystems {
     /// Systems that read the keyboard.
     Keyboard,
 }
+
+/// While set, a click or drag on the table does not aim the cue: it means something else (a
+/// pocket being called) or the shot is not the player's (the computer's turn). Set by the game
+/// flow ([`crate::game`]), read by the cue's pointer input.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct AimLocked(pub bool);
+
+/// Run condition: the pointer may aim the cue.
+pub fn aim_unlocked(lock: Option<Res<AimLocked>>) -> bool {
+    !lock.is_some_and(|l| l.0)
+}

@@ -29,8 +29,7 @@ use bevy::{
 };
 use bevy_egui::{
     EguiContexts, EguiGlobalSettings, EguiInput, EguiPlugin, EguiPreUpdateSet,
-    EguiPrimaryContextPass, PrimaryEguiContext, egui,
-    input::{egui_wants_any_keyboard_input, egui_wants_any_pointer_input},
+    EguiPrimaryContextPass, PrimaryEguiContext, egui, input::egui_wants_any_keyboard_input,
 };
 
 pub use layout::PANEL_WIDTH;
@@ -46,9 +45,7 @@ pub fn plugin(app: &mut App) {
         .configure_sets(
             Update,
             (
-                InputSystems::Pointer
-                    .run_if(not(egui_wants_any_pointer_input))
-                    .run_if(not(pointer_on_ui)),
+                InputSystems::Pointer.run_if(not(pointer_on_ui)),
                 InputSystems::Keyboard.run_if(not(egui_wants_any_keyboard_input)),
             ),
         )
@@ -76,10 +73,13 @@ pub fn plugin(app: &mut App) {
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
 pub struct PointerOnUi(pub bool);
 
-/// egui's own verdict ([`egui_wants_any_pointer_input`]) comes from its last pass, which saw
+/// egui's own verdict (`egui_wants_any_pointer_input`) comes from its last pass, which saw
 /// the pointer where it was a frame ago: a pointer that jumps onto a button and clicks within
 /// one frame (one frame is a second on a software renderer) reached the table too and re-aimed
-/// the cue. Here the pointer's current position is looked up in the areas egui laid out.
+/// the cue, and one that jumps from a window onto the table and clicks lost the click (a
+/// pocket call needed two clicks). Here the pointer's current position is looked up in the
+/// areas egui laid out; a drag egui is still handling (a slider pulled off the panel) counts
+/// as on the UI too.
 fn find_pointer_on_ui(
     mut contexts: EguiContexts,
     window: Single<&Window, With<PrimaryWindow>>,
@@ -91,7 +91,7 @@ fn find_pointer_on_ui(
         let at = egui::pos2(cursor.x, cursor.y) / ctx.zoom_factor();
         ctx.layer_id_at(at)
             .is_some_and(|layer| layer.order != egui::Order::Background)
-    });
+    }) || ctx.egui_is_using_pointer();
     on_ui.set_if_neq(PointerOnUi(over));
     Ok(())
 }
