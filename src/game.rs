@@ -21,6 +21,7 @@
 use std::time::{SystemTime, UNIX_EPOCH};
 
 use bevy::{math::DVec2, prelude::*};
+use billiards_ai::Level;
 use billiards_physics::{Pocket, Rack};
 use billiards_rules::{
     Call, CallRule, Choice, CueBall, Game, GameLog, GameState, Group, LoggedShot, Match, NextShot,
@@ -31,7 +32,7 @@ use crate::{
     balls::BallMotion,
     cue::PointerInput,
     geometry::{TableSpec, to_world},
-    input::InputSystems,
+    input::{AimLocked, InputSystems},
     mode::GameMode,
     recording::{RecordingsFolder, game_file},
     settings::PhysicsSettings,
@@ -49,7 +50,9 @@ pub fn plugin(app: &mut App) {
         .add_message::<TurnCommand>()
         .init_resource::<Rules>()
         .init_resource::<DialogOpen>()
+        .init_resource::<AimLocked>()
         .add_systems(Startup, start_game_at_launch)
+        .add_systems(Update, lock_aim.before(InputSystems::Pointer))
         .add_systems(
             Update,
             (judge_shot, apply_commands, follow_rules)
@@ -110,6 +113,8 @@ pub struct NewGameRequested {
     pub race_to: u32,
     /// The seed of the first rack's gaps (each later rack takes the next seed).
     pub seed: u64,
+    /// Each seat's computer level; `None`: a human.
+    pub computer: [Option<Level>; 2],
 }
 
 /// What the player does between shots.
@@ -163,6 +168,8 @@ pub struct GameInPlay {
     pub last_foul: Option<String>,
     /// Choices taken since the last shot (logged with the next one).
     choices: Vec<Choice>,
+    /// Each seat's computer level; `None`: a human.
+    pub seats: [Option<Level>; 2],
 }
 
 impl GameInPlay {
@@ -179,6 +186,16 @@ impl GameInPlay {
     /// The name of `seat`.
     pub fn name(&self, seat: Seat) -> &str {
         self.play.name(seat)
+    }
+
+    /// The computer's level at `seat`, `None` for a human.
+    pub fn computer(&self, seat: Seat) -> Option<Level> {
+        self.seats[seat.index()]
+    }
+
+    /// Which turn this is: the rack's seed, the shots and the choices so far.
+    pub fn turn_key(&self) -> (u64, usize, usize) {
+        (self.seed, self.log.shots.len(), self.choices.len())
     }
 
     /// The lines of the HUD for this game in phase `turn`: the match, whose turn and what
@@ -536,6 +553,7 @@ fn apply_commands(
             verdict_shown: false,
             last_foul: None,
             choices: Vec::new(),
+            seats: request.computer,
         });
     }
     for &command in turn_commands.read() {
@@ -622,6 +640,7 @@ fn start_game_at_launch(
             players: ["Player 1".to_owned(), "Player 2".to_owned()],
             race_to: 3,
             seed: clock_seed(),
+            computer: [None, None],
         });
     }
 }
@@ -707,6 +726,17 @@ pub fn pocket_near(spec: &TableSpec, point: DVec2) -> Option<Pocket> {
         .filter(|&(p, d)| d < spec.pocket(p).radius + 3.0 * spec.ball_radius)
         .min_by(|a, b| a.1.total_cmp(&b.1))
         .map(|(p, _)| p)
+}
+
+/// While a pocket is being called, a click on the table calls it and does not also aim; on
+/// the computer's turn the pointer does not aim either.
+fn lock_aim(turn: Option<Res<State<Turn>>>, rules: Res<Rules>, mut lock: ResMut<AimLocked>) {
+    let calling = turn.is_some_and(|t| *t.get() == Turn::Calling);
+    let computer = rules
+        .game
+        .as_ref()
+        .is_some_and(|g| g.computer(g.next().shooter).is_some());
+    lock.set_if_neq(AimLocked(calling || computer));
 }
 
 /// Enter continues after a verdict with no options.

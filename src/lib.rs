@@ -6,6 +6,7 @@
 pub mod aim;
 pub mod balls;
 pub mod camera;
+pub mod computer;
 pub mod cue;
 pub mod display;
 pub mod game;
@@ -67,6 +68,7 @@ impl Plugin for GamePlugin {
             replay::plugin,
             game::plugin,
             game::table_plugin,
+            computer::plugin,
         ));
         #[cfg(feature = "sound")]
         app.add_plugins(sound::plugin);

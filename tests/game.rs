@@ -9,6 +9,7 @@ use billiards::{
     balls::{Ball, BallMotion},
     game::{self, GameInPlay, NewGameRequested, Rules, Turn, TurnCommand},
     geometry::TableSpec,
+    input::AimLocked,
     mode,
     recording::{self, Autosave, RecordingsFolder},
     replay::OpenRecording,
@@ -39,6 +40,7 @@ fn start(folder: &Path, game: Game, race_to: u32) -> App {
         players: ["Ann".to_owned(), "Bob".to_owned()],
         race_to,
         seed: 7,
+        computer: [None, None],
     });
     app.update();
     app.update();
@@ -302,6 +304,7 @@ fn a_nine_ball_match_is_played_through_the_turns_to_its_winner() {
         players: ["Ann".to_owned(), "Bob".to_owned()],
         race_to: 1,
         seed: 0,
+        computer: [None, None],
     });
     app.update();
     app.update();
@@ -341,6 +344,8 @@ fn eight_ball_needs_a_call_on_the_eight_and_the_dialog_pauses_the_turn() {
     // Calling (WPA 1.6): a click on a pocket calls it (here the command the click sends).
     command(&mut app, TurnCommand::StartCalling);
     assert_eq!(turn(&app), Turn::Calling);
+    // The click that calls a pocket does not also aim the cue at it.
+    assert_eq!(*app.world().resource::<AimLocked>(), AimLocked(true));
     let ball = rules(&app).call_ball.unwrap();
     assert!(rules(&app).next().legal_first.contains(&ball));
     let call = billiards_rules::Call::Ball {
@@ -349,6 +354,7 @@ fn eight_ball_needs_a_call_on_the_eight_and_the_dialog_pauses_the_turn() {
     };
     command(&mut app, TurnCommand::Call(call));
     assert!(matches!(turn(&app), Turn::Aiming | Turn::BallInHand));
+    assert_eq!(*app.world().resource::<AimLocked>(), AimLocked(false));
     assert_eq!(rules(&app).call, call);
     let lines = rules(&app).hud_lines(turn(&app)).join("\n");
     assert!(lines.contains("call: the "), "{lines}");

@@ -4,10 +4,14 @@
 
 use bevy::prelude::*;
 use bevy_egui::{EguiContexts, egui};
+use billiards_ai::Level;
 use billiards_rules::{Call, CallRule, Game};
 
 use super::layout::{INFO, WARNING};
-use crate::game::{NewGameRequested, Rules, Turn, TurnCommand, clock_seed};
+use crate::{
+    computer::{Computer, HintRequested},
+    game::{NewGameRequested, Rules, Turn, TurnCommand, clock_seed},
+};
 
 /// What the new-game dialog holds between frames.
 #[derive(Resource, Debug, Clone, PartialEq, Eq)]
@@ -18,6 +22,8 @@ pub struct NewGameForm {
     pub players: [String; 2],
     /// Racks to win.
     pub race_to: u32,
+    /// Each seat: a human (`None`) or the computer at a level.
+    pub computer: [Option<Level>; 2],
 }
 
 impl Default for NewGameForm {
@@ -26,6 +32,7 @@ impl Default for NewGameForm {
             game: Game::NineBall,
             players: ["Player 1".to_owned(), "Player 2".to_owned()],
             race_to: 3,
+            computer: [None, Some(Level::Medium)],
         }
     }
 }
@@ -38,6 +45,8 @@ pub struct GameParam<'w> {
     form: ResMut<'w, NewGameForm>,
     commands: MessageWriter<'w, TurnCommand>,
     new_games: MessageWriter<'w, NewGameRequested>,
+    computer: Res<'w, Computer>,
+    hints: MessageWriter<'w, HintRequested>,
 }
 
 /// The match's lines and the buttons of the phase, inside the HUD window.
@@ -59,9 +68,25 @@ pub fn hud_section(ui: &mut egui::Ui, state: &mut GameParam) {
                     ui.label(line);
                 }
             }
-            if matches!(turn, Turn::Aiming | Turn::BallInHand) {
-                let next = game.next();
+            let next = game.next();
+            let human = game.computer(next.shooter).is_none();
+            if let Some(doing) = &state.computer.doing {
+                ui.colored_label(INFO, doing);
+            }
+            if let Some((key, hint)) = &state.computer.hint
+                && *key == game.turn_key()
+            {
+                ui.colored_label(INFO, hint);
+            }
+            if human && matches!(turn, Turn::Aiming | Turn::BallInHand) {
                 ui.horizontal(|ui| {
+                    if ui
+                        .button("Hint")
+                        .on_hover_text("the computer's choice for you, shown as your aim")
+                        .clicked()
+                    {
+                        state.hints.write(HintRequested);
+                    }
                     if next.call != CallRule::NotUsed && ui.button("Call a pocket").clicked() {
                         state.commands.write(TurnCommand::StartCalling);
                     }
@@ -120,7 +145,17 @@ pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result 
                     }
                 }
                 let next = game.next();
-                if next.choices.is_empty() {
+                if game.computer(next.shooter).is_some() {
+                    ui.label(format!(
+                        "{} (computer) {} next",
+                        game.name(next.shooter),
+                        if next.choices.is_empty() {
+                            "shoots"
+                        } else {
+                            "chooses"
+                        }
+                    ));
+                } else if next.choices.is_empty() {
                     ui.label(format!("{} shoots next", game.name(next.shooter)));
                     if ui.button("Continue (Enter)").clicked() {
                         state.commands.write(TurnCommand::Continue);
@@ -209,10 +244,19 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
         ui.selectable_value(&mut form.game, Game::FreePlay, "free play");
     });
     if form.game != Game::FreePlay {
-        for (k, name) in form.players.iter_mut().enumerate() {
+        for (k, (name, seat)) in form
+            .players
+            .iter_mut()
+            .zip(form.computer.iter_mut())
+            .enumerate()
+        {
             ui.horizontal(|ui| {
-                ui.label(format!("Player {} (human):", k + 1));
-                ui.text_edit_singleline(name);
+                ui.label(format!("Player {}:", k + 1));
+                ui.add(egui::TextEdit::singleline(name).desired_width(140.0));
+                ui.selectable_value(seat, None, "human");
+                for level in Level::ALL {
+                    ui.selectable_value(seat, Some(level), format!("computer {level}"));
+                }
             });
         }
         ui.horizontal(|ui| {
@@ -228,6 +272,7 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
                 players: form.players.clone(),
                 race_to: form.race_to,
                 seed: clock_seed(),
+                computer: form.computer,
             };
             state.new_games.write(request);
         }

@@ -1,0 +1,402 @@
+//! The computer at the table (issue 16): a seat of a match played by [`billiards_ai`], and the
+//! hint a human can ask for. The decision runs on a background thread (the frame never
+//! waits); then the computer shows its aim (the cue, the aiming aid and the ghost ball, as a
+//! human's aim shows) for a moment and shoots through the same messages a human shot takes,
+//! so the recording holds its placements and strikes like any others.
+
+use std::{
+    thread::JoinHandle,
+    time::{Duration, Instant},
+};
+
+use bevy::{math::DVec2, prelude::*, window::RequestRedraw};
+use billiards_ai::{AiError, Decision, Level, Plan, ShotKind};
+use billiards_physics::{Cushion, Vec2};
+use billiards_rules::{Call, CueBall, GameState, pocket_name};
+
+use crate::{
+    balls::{Ball, BallMotion, Pocketed},
+    game::{Rules, Turn, TurnCommand},
+    geometry::TableSpec,
+    mode::GameMode,
+    settings::ShotSettings,
+    sim::{ShotRequested, SimStatus, SimSystems, Solver, place_ball_in_hand},
+};
+
+/// How long the computer shows its aim (or its choice) before it acts; tests set zero.
+#[derive(Resource, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ComputerPace(pub Duration);
+
+impl Default for ComputerPace {
+    fn default() -> Self {
+        Self(Duration::from_millis(1500))
+    }
+}
+
+/// The level the hint plays at.
+pub const HINT_LEVEL: Level = Level::Hard;
+
+/// Asks for a hint: the computer's choice for the human to play.
+#[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct HintRequested;
+
+/// The computer's side of the live game.
+#[derive(Resource, Debug, Default)]
+pub struct Computer {
+    /// The computer's own turn: a decision being made, or one being shown.
+    turn: Option<Task>,
+    /// A hint being searched.
+    hint_task: Option<Task>,
+    /// The last hint, for the HUD (with the turn it was for).
+    pub hint: Option<(TurnKey, String)>,
+    /// What the computer is doing, for the HUD.
+    pub doing: Option<String>,
+    /// The turn whose shot was just sent, and when: not decided again while the strike takes
+    /// effect (a refused shot is decided again after a few seconds).
+    fired: Option<(TurnKey, Instant)>,
+}
+
+/// Which turn of which rack a decision is for: a decision for another turn is dropped.
+pub type TurnKey = (u64, usize, usize);
+
+#[derive(Debug)]
+enum Task {
+    /// The verdict of the last shot is on screen; the computer continues after a moment.
+    Reading { key: TurnKey, since: Instant },
+    Thinking {
+        key: TurnKey,
+        seed: u64,
+        level: Level,
+        handle: JoinHandle<Result<Decision, AiError>>,
+    },
+    Showing {
+        key: TurnKey,
+        seed: u64,
+        level: Level,
+        decision: Decision,
+        since: Instant,
+    },
+}
+
+impl Task {
+    fn key(&self) -> TurnKey {
+        match self {
+            Task::Reading { key, .. } | Task::Thinking { key, .. } | Task::Showing { key, .. } => {
+                *key
+            }
+        }
+    }
+}
+
+/// Registers the computer's turn and the hint.
+pub fn plugin(app: &mut App) {
+    app.init_resource::<Computer>()
+        .init_resource::<ComputerPace>()
+        .add_message::<HintRequested>()
+        .add_systems(
+            Update,
+            (play_computer_turn, give_hint)
+                .after(SimSystems::Flow)
+                .before(SimSystems::Commands)
+                .run_if(in_state(GameMode::Play)),
+        );
+}
+
+/// The seed of a decision: the rack's seed and the turn, so a replayed match decides alike.
+fn decision_seed(key: TurnKey) -> u64 {
+    let (seed, shots, choices) = key;
+    seed ^ (shots as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ ((choices as u64) << 56)
+}
+
+fn think(state: GameState, sim: &Solver, level: Level, key: TurnKey) -> Task {
+    let sim = sim.simulation().clone();
+    let seed = decision_seed(key);
+    let handle = std::thread::spawn(move || billiards_ai::decide(&state, &sim, level, seed));
+    Task::Thinking {
+        key,
+        seed,
+        level,
+        handle,
+    }
+}
+
+/// The computer's turn: decide in the background, show the aim, then shoot (or choose, or
+/// continue after a verdict).
+#[allow(clippy::too_many_arguments)]
+fn play_computer_turn(
+    rules: Res<Rules>,
+    turn: Option<Res<State<Turn>>>,
+    status: Res<SimStatus>,
+    solver: Option<Res<Solver>>,
+    spec: Res<TableSpec>,
+    pace: Res<ComputerPace>,
+    mut computer: ResMut<Computer>,
+    mut shot_settings: ResMut<ShotSettings>,
+    mut cue_ball: Query<(&Ball, &mut BallMotion), Without<Pocketed>>,
+    mut turn_commands: MessageWriter<TurnCommand>,
+    mut shots: MessageWriter<ShotRequested>,
+    mut redraw: MessageWriter<RequestRedraw>,
+) {
+    let (Some(game), Some(turn), Some(solver)) = (&rules.game, turn, solver) else {
+        computer.turn = None;
+        computer.doing = None;
+        return;
+    };
+    let next = game.next();
+    let key = game.turn_key();
+    let seat = next.shooter;
+    let level = game.computer(seat);
+    let ours = level.is_some()
+        && status.at_rest
+        && game.rack().over.is_none()
+        && matches!(*turn.get(), Turn::Aiming | Turn::BallInHand | Turn::Verdict);
+    if !ours || computer.turn.as_ref().is_some_and(|t| t.key() != key) {
+        computer.turn = None;
+        computer.doing = None;
+    }
+    let just_fired = computer
+        .fired
+        .is_some_and(|(k, at)| k == key && at.elapsed() < Duration::from_secs(3));
+    let Some(level) = level.filter(|_| ours && !just_fired) else {
+        return;
+    };
+    // The window draws on demand only: keep frames coming while the computer plays.
+    redraw.write(RequestRedraw);
+    if *turn.get() == Turn::Verdict && next.choices.is_empty() {
+        // A verdict to read before the computer shoots: it continues after a moment.
+        let since = match &computer.turn {
+            Some(Task::Reading { since, .. }) => *since,
+            _ => {
+                let since = Instant::now();
+                computer.turn = Some(Task::Reading { key, since });
+                since
+            }
+        };
+        if since.elapsed() >= pace.0 {
+            turn_commands.write(TurnCommand::Continue);
+            computer.turn = None;
+        }
+        return;
+    }
+    let name = game.name(seat).to_owned();
+    match computer.turn.take() {
+        None => {
+            computer.doing = Some(format!("{name} ({level}) is thinking"));
+            computer.turn = Some(think(game.rack().clone(), &solver, level, key));
+        }
+        Some(Task::Thinking {
+            key,
+            seed,
+            level,
+            handle,
+        }) if handle.is_finished() => {
+            let decision = handle
+                .join()
+                .unwrap_or(Err(AiError::NoBall))
+                .map_err(|e| e.to_string());
+            match decision {
+                Ok(decision) => {
+                    if let Decision::Shoot(plan) = &decision {
+                        show_plan(
+                            plan,
+                            &solver,
+                            &spec,
+                            next.cue_ball,
+                            &mut shot_settings,
+                            &mut cue_ball,
+                        );
+                        if plan.call != game.call {
+                            turn_commands.write(TurnCommand::Call(plan.call));
+                        }
+                    }
+                    computer.doing = Some(format!("{name} ({level}): {}", describe(&decision)));
+                    computer.turn = Some(Task::Showing {
+                        key,
+                        seed,
+                        level,
+                        decision,
+                        since: Instant::now(),
+                    });
+                }
+                Err(error) => {
+                    // Nothing the rules allow: the game waits for a human (a new game).
+                    computer.doing = Some(format!("{name} ({level}) cannot play: {error}"));
+                    warn!("computer player: {error}");
+                }
+            }
+        }
+        Some(Task::Showing {
+            key,
+            seed,
+            level,
+            decision,
+            since,
+        }) if since.elapsed() >= pace.0 => match decision {
+            Decision::Choose { choice, .. } => {
+                turn_commands.write(TurnCommand::Choose(choice));
+            }
+            Decision::Shoot(plan) => {
+                let shot =
+                    plan.executed(level.execution_noise(), solver.simulation().params(), seed);
+                shots.write(ShotRequested {
+                    angle: shot.angle,
+                    speed: shot.speed,
+                    tip: shot.tip,
+                });
+                computer.fired = Some((key, Instant::now()));
+            }
+        },
+        task => computer.turn = task,
+    }
+}
+
+/// Puts the plan on the table as a human's aim shows: the cue ball in hand where it goes, and
+/// the cue's angle, power and tip (the aiming aid and the cue follow them).
+fn show_plan(
+    plan: &Plan,
+    solver: &Solver,
+    spec: &TableSpec,
+    rule: CueBall,
+    shot_settings: &mut ShotSettings,
+    cue_ball: &mut Query<(&Ball, &mut BallMotion), Without<Pocketed>>,
+) {
+    if let Some(at) = plan.place
+        && let Some((_, mut motion)) = cue_ball.iter_mut().find(|(b, _)| b.number == 0)
+        && let Err(error) = place_ball_in_hand(solver, spec, &mut motion, to_dvec(at), rule)
+    {
+        warn!("computer's cue ball placement refused: {error}");
+    }
+    shot_settings.angle = plan.shot.angle.rem_euclid(std::f64::consts::TAU);
+    shot_settings.power = plan.shot.speed;
+    shot_settings.tip = plan.shot.tip;
+}
+
+fn to_dvec(v: Vec2) -> DVec2 {
+    DVec2::new(v.x, v.y)
+}
+
+/// A hint for the human to play: the computer's choice at [`HINT_LEVEL`], shown as an aim.
+#[allow(clippy::too_many_arguments)]
+fn give_hint(
+    mut requests: MessageReader<HintRequested>,
+    rules: Res<Rules>,
+    status: Res<SimStatus>,
+    solver: Option<Res<Solver>>,
+    spec: Res<TableSpec>,
+    mut computer: ResMut<Computer>,
+    mut shot_settings: ResMut<ShotSettings>,
+    mut cue_ball: Query<(&Ball, &mut BallMotion), Without<Pocketed>>,
+    mut redraw: MessageWriter<RequestRedraw>,
+) {
+    let asked = requests.read().count() > 0;
+    let (Some(game), Some(solver)) = (&rules.game, solver) else {
+        computer.hint_task = None;
+        return;
+    };
+    let key = game.turn_key();
+    if asked && status.at_rest && computer.hint_task.is_none() {
+        computer.hint = Some((key, "hint: thinking...".to_owned()));
+        computer.hint_task = Some(think(game.rack().clone(), &solver, HINT_LEVEL, key));
+    }
+    let finished = matches!(
+        &computer.hint_task,
+        Some(Task::Thinking { handle, .. }) if handle.is_finished()
+    );
+    if computer.hint_task.is_some() {
+        redraw.write(RequestRedraw);
+    }
+    if !finished {
+        return;
+    }
+    let Some(Task::Thinking {
+        key: asked_for,
+        handle,
+        ..
+    }) = computer.hint_task.take()
+    else {
+        return;
+    };
+    if asked_for != key {
+        computer.hint = None;
+        return;
+    }
+    let text = match handle.join().unwrap_or(Err(AiError::NoBall)) {
+        Ok(decision) => {
+            if let Decision::Shoot(plan) = &decision {
+                show_plan(
+                    plan,
+                    &solver,
+                    &spec,
+                    game.next().cue_ball,
+                    &mut shot_settings,
+                    &mut cue_ball,
+                );
+            }
+            format!("hint: {}", describe(&decision))
+        }
+        Err(error) => format!("hint: none ({error})"),
+    };
+    computer.hint = Some((key, text));
+}
+
+/// The decision in words, with its success probability.
+pub fn describe(decision: &Decision) -> String {
+    match decision {
+        Decision::Choose { choice, estimate } => {
+            format!("{} ({:.0} %)", choice.label(), 100.0 * estimate)
+        }
+        Decision::Shoot(plan) => {
+            let what = kind_text(plan.kind);
+            let call = match plan.call {
+                Call::Ball { .. } | Call::None => String::new(),
+                other => other.text().map_or(String::new(), |c| format!(", {c}")),
+            };
+            format!(
+                "{what}{call}, {:.0} % to succeed, {:.0} % foul",
+                100.0 * plan.success,
+                100.0 * plan.foul
+            )
+        }
+    }
+}
+
+fn kind_text(kind: ShotKind) -> String {
+    let cushion = |c: Cushion| match c {
+        Cushion::Head => "head",
+        Cushion::Foot => "foot",
+        Cushion::Left => "left",
+        Cushion::Right => "right",
+    };
+    match kind {
+        ShotKind::Break => "the break".to_owned(),
+        ShotKind::Pot { ball, pocket } => format!("the {ball} in the {}", pocket_name(pocket)),
+        ShotKind::Bank {
+            ball,
+            pocket,
+            cushion: c,
+        } => format!(
+            "the {ball} off the {} cushion in the {}",
+            cushion(c),
+            pocket_name(pocket)
+        ),
+        ShotKind::Kick {
+            ball,
+            pocket,
+            cushion: c,
+        } => format!(
+            "a kick off the {} cushion, the {ball} in the {}",
+            cushion(c),
+            pocket_name(pocket)
+        ),
+        ShotKind::Combo {
+            first,
+            ball,
+            pocket,
+        } => format!(
+            "the {first} into the {ball}, in the {}",
+            pocket_name(pocket)
+        ),
+        ShotKind::Safety { ball } => format!("a safety on the {ball}"),
+        ShotKind::PushOut => "a push out".to_owned(),
+    }
+}

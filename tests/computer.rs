@@ -1,0 +1,137 @@
+//! The computer at the table, headless (issue 16): two computer seats play a rack of 9-ball
+//! to its end through the game's states; the recording of that rack verifies bit for bit and
+//! its rules log re-judges alike, as a human's game does.
+
+use std::{
+    path::Path,
+    time::{Duration, Instant},
+};
+
+use bevy::{prelude::*, time::TimeUpdateStrategy};
+use billiards::{
+    computer::{self, Computer, ComputerPace, HintRequested},
+    game::{self, NewGameRequested, Rules, Turn},
+    input::AimLocked,
+    mode,
+    recording::{self, Autosave, RecordingsFolder},
+    settings::{self, ShotSettings},
+    sim,
+};
+use billiards_ai::Level;
+use billiards_physics::recording::{Recording, Verdict};
+use billiards_rules::{Game, GameLog};
+
+fn start(folder: &Path, game: Game) -> App {
+    let mut app = App::new();
+    app.add_plugins((
+        MinimalPlugins,
+        mode::plugin,
+        settings::plugin,
+        sim::plugin,
+        recording::plugin,
+        game::plugin,
+        computer::plugin,
+    ));
+    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
+        16,
+    )));
+    app.insert_resource(RecordingsFolder(Some(folder.to_path_buf())));
+    app.insert_resource(ComputerPace(Duration::ZERO));
+    app.update();
+    app.world_mut().write_message(NewGameRequested {
+        game,
+        players: ["Ann".to_owned(), "Bob".to_owned()],
+        race_to: 1,
+        seed: 11,
+        computer: [Some(Level::Easy), Some(Level::Easy)],
+    });
+    app.update();
+    app.update();
+    app
+}
+
+fn turn(app: &App) -> Turn {
+    *app.world().resource::<State<Turn>>().get()
+}
+
+#[test]
+fn two_computers_play_a_rack_of_nine_ball_to_its_end() {
+    let folder = std::env::temp_dir().join(format!("billiards-computer-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&folder);
+    let mut app = start(&folder, Game::NineBall);
+    let began = Instant::now();
+    while turn(&app) != Turn::GameOver {
+        assert!(
+            began.elapsed() < Duration::from_secs(600),
+            "the rack did not end: {:?} after {} shots",
+            turn(&app),
+            app.world()
+                .resource::<Rules>()
+                .game
+                .as_ref()
+                .unwrap()
+                .log
+                .shots
+                .len()
+        );
+        app.update();
+        // Both seats are the computer's: the pointer never aims for it.
+        if matches!(turn(&app), Turn::Aiming | Turn::BallInHand) {
+            assert_eq!(*app.world().resource::<AimLocked>(), AimLocked(true));
+        }
+    }
+    let rules = app.world().resource::<Rules>();
+    let game = rules.game.as_ref().unwrap();
+    let (winner, reason) = game.rack().over.unwrap();
+    let shots = game.log.shots.len();
+    println!("{} won in {shots} shots: {reason}", game.name(winner));
+    assert!(shots >= 1);
+    // The computer's shots went through the recording like a human's.
+    let file = app.world().resource::<Autosave>().file.clone().unwrap();
+    let recorded = Recording::load(&file).unwrap();
+    assert!(matches!(recorded.verify(), Ok(Verdict::Reproduced { .. })));
+    let log: GameLog =
+        serde_json::from_str(&std::fs::read_to_string(GameLog::path_beside(&file)).unwrap())
+            .unwrap();
+    let numbers: Vec<u8> = recorded.balls.iter().map(|b| b.number).collect();
+    assert_eq!(log.check(&recorded.events, &numbers), Ok(shots));
+    let _ = std::fs::remove_dir_all(&folder);
+}
+
+#[test]
+fn a_hint_aims_the_humans_cue_at_the_computers_choice_and_the_pointer_is_locked_on_its_turn() {
+    let folder = std::env::temp_dir().join(format!("billiards-hint-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&folder);
+    let mut app = start(&folder, Game::NineBall);
+    // Seat A a human: the hint is for them; seat B stays the computer.
+    app.world_mut()
+        .resource_mut::<Rules>()
+        .game
+        .as_mut()
+        .unwrap()
+        .seats[0] = None;
+    app.update();
+    assert_eq!(turn(&app), Turn::BallInHand);
+    assert_eq!(*app.world().resource::<AimLocked>(), AimLocked(false));
+    let before = *app.world().resource::<ShotSettings>();
+    app.world_mut().write_message(HintRequested);
+    let began = Instant::now();
+    loop {
+        app.update();
+        let hint = app.world().resource::<Computer>().hint.clone();
+        if let Some((_, text)) = hint
+            && text != "hint: thinking..."
+        {
+            assert!(text.starts_with("hint: the break"), "{text}");
+            break;
+        }
+        assert!(began.elapsed() < Duration::from_secs(120), "no hint");
+    }
+    // The hint is shown as the aim: the break speed and direction, not the settings before.
+    let after = *app.world().resource::<ShotSettings>();
+    assert_ne!(after, before);
+    assert!(after.power > 3.0, "a break at {} m/s", after.power);
+    // Nothing was shot for the human.
+    assert_eq!(turn(&app), Turn::BallInHand);
+    let _ = std::fs::remove_dir_all(&folder);
+}
