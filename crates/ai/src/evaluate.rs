@@ -1,15 +1,19 @@
 //! Evaluation under execution noise: each candidate simulated N times with Gaussian noise on
 //! its aim, speed and tip ([`crate::noise`]), each run judged by the rules
-//! ([`GameState::play`] on the shot's [`ShotSummary`]) and scored from the shooter's side:
+//! ([`GameState::play`] on the shot's [`ShotSummary`]) and scored from the shooter's side.
+//! A player at the table whose best next shot succeeds with probability `p` is worth
+//! [`at_table`]`(p) = W p - MISS (1 - p)` to them (one ply: the next shot, then a miss hands
+//! the opponent a chance), `W` = 1 when that shot is for the game ball and
+//! [`RUN_WEIGHT`] otherwise:
 //!
-//! | what the verdict says                  | value                                         |
-//! |----------------------------------------|-----------------------------------------------|
-//! | the shooter wins the game              | 1                                             |
-//! | the shooter loses the game             | -1                                            |
-//! | a foul (opponent has ball in hand)     | -[`FOUL_COST`]                                |
-//! | legal, the shooter continues           | 0.4 + 0.6 p, p = own best next shot (1 ply)   |
-//! | legal, the turn passes                 | -0.6 q, q = the opponent's best shot          |
-//! | a legal push out                       | -0.6 max(q, 1 - q): the opponent picks        |
+//! | what the verdict says                    | value                                        |
+//! |------------------------------------------|----------------------------------------------|
+//! | the shooter wins the game                | 1                                            |
+//! | the shooter loses the game               | -1                                           |
+//! | a foul (opponent has ball in hand)       | -at_table([`IN_HAND`]) for the opponent      |
+//! | legal, the shooter continues             | at_table(p), p = own best next shot          |
+//! | legal, the turn passes                   | -at_table(q), q = the opponent's best shot   |
+//! | a legal push out                         | -at_table(max(q, 1 - q)): the opponent picks |
 //!
 //! `p` and `q` come from [`crate::position::best_success`] on the layout at rest. The mean
 //! over the samples is the probability of a legal pot times the value of the position left,
@@ -26,8 +30,31 @@ use billiards_physics::{BallId, EventKind, Simulation, Vec2, Vec3};
 use billiards_rules::{Call, Game, GameState, Outcome, Seat, ShotSummary, Verdict, summarise};
 use rayon::prelude::*;
 
-/// What a foul costs: the opponent's ball in hand is worth about this much to them.
-pub const FOUL_COST: f64 = 0.5;
+/// The value of a shot that runs on when it is not for the game ball: a share of the rest
+/// of the run.
+pub const RUN_WEIGHT: f64 = 0.85;
+/// What a miss costs the player at the table: the opponent's chance it hands over.
+pub const MISS: f64 = 0.3;
+/// The success probability of a shot with the cue ball in hand.
+pub const IN_HAND: f64 = 0.8;
+/// The cost of a foul when nothing else is known (an illegal call, a refused placement).
+pub const FOUL_COST: f64 = 0.6;
+
+/// The value to a player at the table whose best shot succeeds with probability `p`, `game`
+/// when that shot is for the game ball.
+pub fn at_table(p: f64, game: bool) -> f64 {
+    let w = if game { 1.0 } else { RUN_WEIGHT };
+    w * p - MISS * (1.0 - p)
+}
+
+/// Whether the next shot of `next` is for the game ball (the 9, or the 8 with the group down).
+fn for_game_ball(state: &GameState, legal: &[u8]) -> bool {
+    match state.game {
+        Game::NineBall => legal == [9],
+        Game::EightBall => legal == [8],
+        Game::FreePlay => false,
+    }
+}
 
 /// Most events one sample may take before it is cut short (a shot rarely takes 200).
 const MAX_EVENTS: usize = 5_000;
@@ -210,20 +237,24 @@ impl Search<'_> {
                 (-1.0, false)
             };
         }
-        if !verdict.legal() {
-            return (-FOUL_COST, false);
-        }
-        let (Some(next), Some(layout)) = (&verdict.next, Layout::of(sim, None)) else {
+        let Some(next) = &verdict.next else {
             return (0.0, false);
+        };
+        let game_ball = for_game_ball(self.state, &next.legal_first);
+        if !verdict.legal() {
+            return (-at_table(IN_HAND, game_ball), false);
+        }
+        let Some(layout) = Layout::of(sim, None) else {
+            return (-at_table(IN_HAND, game_ball), false);
         };
         let p = best_success(&layout, &next.legal_first, self.noise);
         if verdict.push_out {
-            return (-0.6 * p.max(1.0 - p), false);
+            return (-at_table(p.max(1.0 - p), game_ball), false);
         }
         if next.shooter == me && verdict.outcome == Outcome::Continues {
-            (0.4 + 0.6 * p, potted)
+            (at_table(p, game_ball), potted)
         } else {
-            (-0.6 * p, false)
+            (-at_table(p, game_ball), false)
         }
     }
 

@@ -14,7 +14,7 @@ use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState, check_placeme
 use rayon::prelude::*;
 
 /// Below this chance of a legal pot, safeties (and a push out, when allowed) are searched too.
-const SAFETY_BELOW: f64 = 0.45;
+const SAFETY_BELOW: f64 = 0.6;
 
 /// The computer's decision at `level` for what `state` asks next, on the resting table
 /// `sim` (balls to spot already spotted; a cue ball in hand anywhere or off the table).
@@ -87,6 +87,18 @@ pub fn decide_with(
             .iter()
             .flat_map(|&p| offence(&search, p, &budget))
             .collect()
+    };
+    let budget = if next.break_shot {
+        // A break runs ten times the events of a shot and has few candidates worth telling
+        // apart: a third of the samples, three refined.
+        Budget {
+            samples: budget.samples.div_ceil(3),
+            refine: budget.refine.min(3),
+            refine_samples: budget.refine_samples / 3,
+            ..budget
+        }
+    } else {
+        budget
     };
     pool.add(&search, first, budget.samples);
     let scoring = pool
