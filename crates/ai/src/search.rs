@@ -90,11 +90,10 @@ pub fn decide_with(
     };
     let budget = if next.break_shot {
         // A break runs ten times the events of a shot and has few candidates worth telling
-        // apart: a third of the samples, three refined.
+        // apart: 8 samples each, the best three 32 more.
         Budget {
-            samples: budget.samples.div_ceil(3),
-            refine: budget.refine.min(3),
-            refine_samples: budget.refine_samples / 3,
+            samples: 8,
+            rounds: &[(3, 32)],
             ..budget
         }
     } else {
@@ -122,7 +121,9 @@ pub fn decide_with(
         }
         pool.add(&search, more, budget.samples);
     }
-    pool.refine(&search, &budget);
+    for &(k, m) in budget.rounds {
+        pool.refine(&search, k, m);
+    }
     let best = pool.best().ok_or(AiError::NoBall)?;
     let (c, s) = (pool.cands[best], pool.stats[best]);
     Ok(Decision::Shoot(Plan {
@@ -146,6 +147,8 @@ struct Pool {
     stats: Vec<Stats>,
     simulations: usize,
     events: usize,
+    /// The candidates of the last refinement round (empty: none yet).
+    finalists: Vec<usize>,
 }
 
 impl Pool {
@@ -159,30 +162,24 @@ impl Pool {
         self.stats.extend(stats);
     }
 
-    /// Gives the best `budget.refine` candidates `budget.refine_samples` more samples each.
-    fn refine(&mut self, search: &Search, budget: &Budget) {
+    /// Gives the best `k` candidates `m` more samples each; they become the finalists.
+    fn refine(&mut self, search: &Search, k: usize, m: usize) {
         let mut order: Vec<usize> = (0..self.cands.len()).collect();
-        order.sort_by(|&a, &b| {
-            self.stats[b]
-                .mean()
-                .total_cmp(&self.stats[a].mean())
-                .then(a.cmp(&b))
-        });
-        order.truncate(budget.refine);
+        let mean = |i: usize| self.stats[i].mean();
+        order.sort_by(|&a, &b| mean(b).total_cmp(&mean(a)).then(a.cmp(&b)));
+        order.truncate(k);
         let more: Vec<Stats> = order
             .par_iter()
             .map(|&i| {
-                let (from, to) = (
-                    self.stats[i].n as u64,
-                    (self.stats[i].n + budget.refine_samples) as u64,
-                );
-                search.evaluate(&self.cands[i..=i], i as u64, from, to)[0]
+                let n = self.stats[i].n as u64;
+                search.evaluate(&self.cands[i..=i], i as u64, n, n + m as u64)[0]
             })
             .collect();
         self.count(&more);
         for (&i, s) in order.iter().zip(more) {
             self.stats[i] = self.stats[i].merged(s);
         }
+        self.finalists = order;
     }
 
     fn count(&mut self, stats: &[Stats]) {
@@ -190,19 +187,19 @@ impl Pool {
         self.events += stats.iter().map(|s| s.events).sum::<usize>();
     }
 
-    /// The candidate of the best mean value; among the refined ones when there are any
-    /// (ties: the first).
+    /// The candidate of the best mean value among the finalists of the last round (all
+    /// candidates when there was none; ties: the first).
     fn best(&self) -> Option<usize> {
-        let most = self.stats.iter().map(|s| s.n).max()?;
-        (0..self.cands.len())
-            .filter(|&i| self.stats[i].n == most)
-            .reduce(|a, b| {
-                if self.stats[b].mean() > self.stats[a].mean() {
-                    b
-                } else {
-                    a
-                }
-            })
+        let all: Vec<usize> = (0..self.cands.len()).collect();
+        let pool = if self.finalists.is_empty() {
+            &all
+        } else {
+            &self.finalists
+        };
+        pool.iter().copied().reduce(|a, b| {
+            let (ma, mb) = (self.stats[a].mean(), self.stats[b].mean());
+            if mb > ma || (mb == ma && b < a) { b } else { a }
+        })
     }
 }
 
