@@ -26,6 +26,7 @@
 use crate::candidates::{Candidate, Layout};
 use crate::noise::{Noise, stream};
 use crate::position::best_success;
+use crate::quiet::final_layout;
 use billiards_physics::{BallId, EventKind, Simulation, Vec2, Vec3};
 use billiards_rules::{Call, Game, GameState, Outcome, Seat, ShotSummary, Verdict, summarise};
 use rayon::prelude::*;
@@ -162,14 +163,14 @@ impl Search<'_> {
         Some(sim)
     }
 
-    /// Runs one noisy sample of candidate `index` (draw `k`): its summary, the solver after
-    /// it and the events it took.
+    /// Runs one noisy sample of candidate `index` (draw `k`): its summary, the layout it
+    /// leaves (`None` when it stopped early on a settled verdict) and the events it took.
     fn run(
         &self,
         cand: &Candidate,
         index: u64,
         k: u64,
-    ) -> Option<(ShotSummary, Simulation, usize)> {
+    ) -> Option<(ShotSummary, Option<Layout>, usize)> {
         let mut sim = self.start(cand)?;
         let mut rng = stream(self.seed, index, k);
         let shot = self.noise.apply(cand.shot, sim.params(), &mut rng);
@@ -179,6 +180,7 @@ impl Search<'_> {
         }
         sim.strike(self.cue, shot).ok()?;
         let mut summary = ShotSummary::default();
+        let mut layout = None;
         match self.mode {
             Mode::Lean => {
                 while let Some(e) = sim.step_event() {
@@ -188,15 +190,26 @@ impl Search<'_> {
                     {
                         break;
                     }
+                    // Once only stops are left, the final layout is known (crate::quiet).
+                    if matches!(e.kind, EventKind::Transition { .. }) {
+                        layout = final_layout(&sim);
+                        if layout.is_some() {
+                            break;
+                        }
+                    }
+                }
+                if layout.is_none() && sim.is_at_rest() {
+                    layout = Layout::of(&sim, None);
                 }
             }
             Mode::Full => {
                 let _ = sim.run_to_rest();
                 summary = summarise(sim.history().events(), sim.numbers());
+                layout = Layout::of(&sim, None);
             }
         }
         let events = sim.event_count() - first;
-        Some((summary, sim, events))
+        Some((summary, layout, events))
     }
 
     /// One noisy sample of candidate `index` (draw `k`), scored.
@@ -208,7 +221,7 @@ impl Search<'_> {
             fouls: 1,
             ..Stats::default()
         };
-        let Some((summary, sim, events)) = self.run(cand, index, k) else {
+        let Some((summary, layout, events)) = self.run(cand, index, k) else {
             return foul;
         };
         let mut after = self.state.clone();
@@ -216,7 +229,7 @@ impl Search<'_> {
             return Stats { events, ..foul };
         };
         let potted = summary.pocketed_object_balls().next().is_some();
-        let (value, pot) = self.score(&verdict, &sim, me, potted);
+        let (value, pot) = self.score(&verdict, layout.as_ref(), me, potted);
         Stats {
             n: 1,
             value,
@@ -227,9 +240,15 @@ impl Search<'_> {
         }
     }
 
-    /// The value of `verdict` for `me` with the balls as `sim` left them, and whether it was
-    /// a legal pot (or a win).
-    fn score(&self, verdict: &Verdict, sim: &Simulation, me: Seat, potted: bool) -> (f64, bool) {
+    /// The value of `verdict` for `me` with the balls left in `layout` (the cue ball off the
+    /// table: `None`), and whether it was a legal pot (or a win).
+    fn score(
+        &self,
+        verdict: &Verdict,
+        layout: Option<&Layout>,
+        me: Seat,
+        potted: bool,
+    ) -> (f64, bool) {
         if let Outcome::GameOver { winner, .. } = verdict.outcome {
             return if winner == me {
                 (1.0, true)
@@ -244,10 +263,10 @@ impl Search<'_> {
         if !verdict.legal() {
             return (-at_table(IN_HAND, game_ball), false);
         }
-        let Some(layout) = Layout::of(sim, None) else {
+        let Some(layout) = layout else {
             return (-at_table(IN_HAND, game_ball), false);
         };
-        let p = best_success(&layout, &next.legal_first, self.noise);
+        let p = best_success(layout, &next.legal_first, self.noise);
         if verdict.push_out {
             return (-at_table(p.max(1.0 - p), game_ball), false);
         }
