@@ -230,9 +230,15 @@ fn offence(search: &Search, place: Option<Vec2>, budget: &Budget) -> Vec<Candida
         .map(|(i, a)| (aim_probability(a, search.noise), i))
         .collect();
     ranked.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    // In hand, each of the places gets half the aims: the places were chosen for their aims.
+    let aims_kept = if place.is_some() {
+        budget.aims.div_ceil(2)
+    } else {
+        budget.aims
+    };
     let kept: Vec<_> = ranked
         .iter()
-        .take(budget.aims)
+        .take(aims_kept)
         .map(|&(_, i)| aims[i])
         .collect();
     let cands = expand(&kept, budget.speeds, budget.tips, eight, place);
