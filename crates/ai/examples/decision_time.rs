@@ -1,5 +1,5 @@
-//! Decision time of a level on random layouts of 9 and of 15 balls (as lies and in hand),
-//! mean and max, on all cores.
+//! Decision time of a level on random layouts of 9 and of 15 balls (as lies and in hand)
+//! and on the break of seeded 9-ball and 8-ball racks, mean and max, on all cores.
 //!
 //! ```sh
 //! cargo run --release -p billiards-ai --example decision_time -- hard 20
@@ -53,11 +53,38 @@ fn state(n: u8, cue_ball: CueBall) -> GameState {
     s
 }
 
+/// The break of `game`'s rack from `seed`: its decision time and noisy simulations.
+fn break_decision(game: Game, level: Level, seed: u64) -> (f64, usize) {
+    let (table, params) = table_and_params();
+    let balls = game.rack(&table, &params.ball, seed);
+    let sim = Simulation::new(table, params, &balls).unwrap();
+    let state = GameState::new(game, Seat::A);
+    let start = Instant::now();
+    let d = decide(&state, &sim, level, seed).unwrap();
+    let sims = match d {
+        Decision::Shoot(p) => p.simulations,
+        Decision::Choose { .. } => 0,
+    };
+    (start.elapsed().as_secs_f64(), sims)
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let level: Level = args.first().map_or(Ok(Level::Hard), |s| s.parse()).unwrap();
     let count: u64 = args.get(1).map_or(20, |s| s.parse().unwrap());
     println!("{level}, {} threads", rayon::current_num_threads());
+    for game in [Game::NineBall, Game::EightBall] {
+        let runs: Vec<(f64, usize)> = (0..count.min(5))
+            .map(|seed| break_decision(game, level, seed))
+            .collect();
+        let n = runs.len() as f64;
+        println!(
+            "{game:?} break: {:.3} s mean, {:.3} s max, {:.0} noisy simulations a decision",
+            runs.iter().map(|r| r.0).sum::<f64>() / n,
+            runs.iter().map(|r| r.0).fold(0.0, f64::max),
+            runs.iter().map(|r| r.1 as f64).sum::<f64>() / n
+        );
+    }
     for n in [9u8, 15] {
         for cue_ball in [CueBall::AsItLies, CueBall::InHandAnywhere] {
             let (mut total, mut max, mut sims) = (0.0f64, 0.0f64, 0usize);

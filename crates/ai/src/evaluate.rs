@@ -57,8 +57,12 @@ fn for_game_ball(state: &GameState, legal: &[u8]) -> bool {
     }
 }
 
-/// Most events one sample may take before it is cut short (a shot rarely takes 200).
-const MAX_EVENTS: usize = 5_000;
+/// Most events one sample may take before it is cut short and scored on the layout of the
+/// moment: a shot takes 10 to 50, but one into a cluster of frozen balls can run into
+/// thousands of resting-contact hops whose end changes nothing the score reads.
+const MAX_EVENTS: usize = 300;
+/// The same for a break (a rack scattering takes a few hundred).
+const MAX_BREAK_EVENTS: usize = 20_000;
 
 /// How a sample runs the solver.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -181,13 +185,20 @@ impl Search<'_> {
         sim.strike(self.cue, shot).ok()?;
         let mut summary = ShotSummary::default();
         let mut layout = None;
+        let cap = if self.state.next.break_shot {
+            MAX_BREAK_EVENTS
+        } else {
+            MAX_EVENTS
+        };
         match self.mode {
             Mode::Lean => {
                 while let Some(e) = sim.step_event() {
                     summary.record(&e.kind, sim.numbers());
-                    if sim.event_count() - first > MAX_EVENTS
-                        || settled(self.state, cand.call, &summary)
-                    {
+                    if settled(self.state, cand.call, &summary) {
+                        break;
+                    }
+                    if sim.event_count() - first > cap {
+                        layout = Layout::of(&sim, None);
                         break;
                     }
                     // Once only stops are left, the final layout is known (crate::quiet).
