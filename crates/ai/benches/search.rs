@@ -1,1 +1,142 @@
-fn main() {}
+//! Search throughput: noisy shot simulations per second on a 9-ball mid-game layout, on all
+//! cores, in the lean mode (no history, stopped once the verdict is settled) and the full
+//! one (history on, run to rest); and the time of whole decisions at the hard level.
+//!
+//! ```sh
+//! cargo bench -p billiards-ai --bench search
+//! ```
+
+use billiards_ai::candidates::{Candidate, combo_aims, direct_aims, expand, rail_aims, safeties};
+use billiards_ai::evaluate::{Mode, Search};
+use billiards_ai::play::table_and_params;
+use billiards_ai::{Layout, Level, decide};
+use billiards_physics::{BallSetup, Params, Simulation, Table, Vec2};
+use billiards_rules::{CueBall, Game, GameState, Seat};
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use std::hint::black_box;
+use std::time::Instant;
+
+/// A 9-ball table after the break: six balls left, the 2 lowest, the cue ball mid-table; on
+/// the game's table (spin model, jaws) or, with `paper`, on the solver's default one (the
+/// paper's model, pocket mouths without jaws: the set-up of the issue's 90,000 shots a second).
+fn mid_game(paper: bool) -> (GameState, Simulation) {
+    let balls = [
+        (0, Vec2::new(-0.35, 0.05)),
+        (2, Vec2::new(0.25, 0.30)),
+        (3, Vec2::new(0.62, -0.21)),
+        (5, Vec2::new(-0.71, -0.38)),
+        (6, Vec2::new(0.05, -0.44)),
+        (8, Vec2::new(0.88, 0.12)),
+        (9, Vec2::new(0.45, 0.02)),
+    ];
+    let (table, params) = if paper {
+        (Table::wpa_8ft(), Params::default())
+    } else {
+        table_and_params()
+    };
+    let setups: Vec<BallSetup> = balls.iter().map(|&(n, p)| BallSetup::at(n, p)).collect();
+    let sim = Simulation::new(table, params, &setups).unwrap();
+    let mut state = GameState::new(Game::NineBall, Seat::A);
+    state.on_table = vec![2, 3, 5, 6, 8, 9];
+    state.next.break_shot = false;
+    state.next.cue_ball = CueBall::AsItLies;
+    state.next.legal_first = vec![2];
+    (state, sim)
+}
+
+/// The hard level's candidates on that table: every pot, bank, kick, combination and
+/// safety in its speeds and tips.
+fn candidates(sim: &Simulation) -> Vec<Candidate> {
+    let layout = Layout::of(sim, None).unwrap();
+    let budget = Level::Hard.budget();
+    let mut aims = direct_aims(&layout, &[2]);
+    aims.extend(rail_aims(&layout, &[2]));
+    aims.extend(combo_aims(&layout, &[2], &[3, 5, 6, 8, 9]));
+    let mut c = expand(&aims, budget.speeds, budget.tips, false, None);
+    c.extend(safeties(&layout, &[2], budget.safeties, None));
+    c
+}
+
+fn search<'a>(state: &'a GameState, sim: &Simulation, mode: Mode) -> Search<'a> {
+    let mut base = sim.clone();
+    base.set_record_history(false);
+    Search {
+        state,
+        base,
+        cue: 0,
+        noise: Level::Hard.planning_noise(),
+        seed: 1,
+        mode,
+    }
+}
+
+/// One timed pass of each mode, printed: simulations a second, events a simulation, and
+/// what the lean mode saves.
+fn compare_modes(state: &GameState, sim: &Simulation, cands: &[Candidate]) {
+    let samples = 32;
+    let mut rates = Vec::new();
+    for mode in [Mode::Full, Mode::Lean] {
+        let s = search(state, sim, mode);
+        let start = Instant::now();
+        let stats = s.evaluate(cands, 0, 0, samples);
+        let secs = start.elapsed().as_secs_f64();
+        let n: usize = stats.iter().map(|s| s.n).sum();
+        let events: usize = stats.iter().map(|s| s.events).sum();
+        println!(
+            "{mode:?}: {n} noisy simulations in {secs:.3} s on {} threads: {:.0} a second, {:.1} events each",
+            rayon::current_num_threads(),
+            n as f64 / secs,
+            events as f64 / n as f64
+        );
+        rates.push((n as f64 / secs, events as f64 / n as f64));
+    }
+    println!(
+        "lean / full: {:.2}x the simulations a second, {:.2}x the events",
+        rates[1].0 / rates[0].0,
+        rates[1].1 / rates[0].1
+    );
+}
+
+fn throughput(c: &mut Criterion) {
+    let mut g = c.benchmark_group("noisy_simulations");
+    g.sample_size(10);
+    for (table, paper) in [("game_table", false), ("paper_table", true)] {
+        let (state, sim) = mid_game(paper);
+        let cands = candidates(&sim);
+        println!("{table}: {} candidates", cands.len());
+        compare_modes(&state, &sim, &cands);
+        let samples = 8;
+        g.throughput(Throughput::Elements((cands.len() * samples) as u64));
+        for (name, mode) in [("lean", Mode::Lean), ("full", Mode::Full)] {
+            let s = search(&state, &sim, mode);
+            g.bench_function(format!("{table}_{name}_all_cores"), |b| {
+                b.iter(|| black_box(s.evaluate(&cands, 0, 0, samples as u64)))
+            });
+        }
+    }
+    g.finish();
+}
+
+fn decision(c: &mut Criterion) {
+    let (state, sim) = mid_game(false);
+    let mut g = c.benchmark_group("decision");
+    g.sample_size(10);
+    g.bench_function("hard_9_ball_mid_game", |b| {
+        b.iter(|| black_box(decide(&state, &sim, Level::Hard, 1).unwrap()))
+    });
+    let mut in_hand = state.clone();
+    in_hand.next.cue_ball = CueBall::InHandAnywhere;
+    g.bench_function("hard_9_ball_in_hand", |b| {
+        b.iter(|| black_box(decide(&in_hand, &sim, Level::Hard, 1).unwrap()))
+    });
+    g.finish();
+}
+
+mod group {
+    //! The criterion group (its generated function has no doc comment of its own).
+    #![allow(missing_docs)]
+    use super::*;
+    criterion_group!(benches, throughput, decision);
+}
+use group::benches;
+criterion_main!(benches);

@@ -167,7 +167,7 @@ fn tolerance(table: &Table, radius: f64, pocket: Pocket, out: Vec2, dir: Vec2) -
     };
     let c = dir.dot(out);
     (c >= min_cos)
-        .then(|| half * c - 0.6 * radius)
+        .then_some(half * c - 0.6 * radius)
         .filter(|&t| t > 0.0)
 }
 

@@ -1,15 +1,19 @@
 //! Evaluation under execution noise: each candidate simulated N times with Gaussian noise on
 //! its aim, speed and tip ([`crate::noise`]), each run judged by the rules
-//! ([`GameState::play`] on the shot's [`ShotSummary`]) and scored from the shooter's side:
+//! ([`GameState::play`] on the shot's [`ShotSummary`]) and scored from the shooter's side.
+//! A player at the table whose best next shot succeeds with probability `p` is worth
+//! [`at_table`]`(p) = W p - MISS (1 - p)` to them (one ply: the next shot, then a miss hands
+//! the opponent a chance), `W` = 1 when that shot is for the game ball and
+//! [`RUN_WEIGHT`] otherwise:
 //!
-//! | what the verdict says                  | value                                         |
-//! |----------------------------------------|-----------------------------------------------|
-//! | the shooter wins the game              | 1                                             |
-//! | the shooter loses the game             | -1                                            |
-//! | a foul (opponent has ball in hand)     | -[`FOUL_COST`]                                |
-//! | legal, the shooter continues           | 0.4 + 0.6 p, p = own best next shot (1 ply)   |
-//! | legal, the turn passes                 | -0.6 q, q = the opponent's best shot          |
-//! | a legal push out                       | -0.6 max(q, 1 - q): the opponent picks        |
+//! | what the verdict says                    | value                                        |
+//! |------------------------------------------|----------------------------------------------|
+//! | the shooter wins the game                | 1                                            |
+//! | the shooter loses the game               | -1                                           |
+//! | a foul (opponent has ball in hand)       | -at_table([`IN_HAND`]) for the opponent      |
+//! | legal, the shooter continues             | at_table(p), p = own best next shot          |
+//! | legal, the turn passes                   | -at_table(q), q = the opponent's best shot   |
+//! | a legal push out                         | -at_table(max(q, 1 - q)): the opponent picks |
 //!
 //! `p` and `q` come from [`crate::position::best_success`] on the layout at rest. The mean
 //! over the samples is the probability of a legal pot times the value of the position left,
@@ -22,15 +26,43 @@
 use crate::candidates::{Candidate, Layout};
 use crate::noise::{Noise, stream};
 use crate::position::best_success;
+use crate::quiet::final_layout;
 use billiards_physics::{BallId, EventKind, Simulation, Vec2, Vec3};
 use billiards_rules::{Call, Game, GameState, Outcome, Seat, ShotSummary, Verdict, summarise};
 use rayon::prelude::*;
 
-/// What a foul costs: the opponent's ball in hand is worth about this much to them.
-pub const FOUL_COST: f64 = 0.5;
+/// The value of a shot that runs on when it is not for the game ball: a share of the rest
+/// of the run.
+pub const RUN_WEIGHT: f64 = 0.85;
+/// What a miss costs the player at the table: the opponent's chance it hands over.
+pub const MISS: f64 = 0.3;
+/// The success probability of a shot with the cue ball in hand.
+pub const IN_HAND: f64 = 0.8;
+/// The cost of a foul when nothing else is known (an illegal call, a refused placement).
+pub const FOUL_COST: f64 = 0.6;
 
-/// Most events one sample may take before it is cut short (a shot rarely takes 200).
-const MAX_EVENTS: usize = 5_000;
+/// The value to a player at the table whose best shot succeeds with probability `p`, `game`
+/// when that shot is for the game ball.
+pub fn at_table(p: f64, game: bool) -> f64 {
+    let w = if game { 1.0 } else { RUN_WEIGHT };
+    w * p - MISS * (1.0 - p)
+}
+
+/// Whether the next shot of `next` is for the game ball (the 9, or the 8 with the group down).
+fn for_game_ball(state: &GameState, legal: &[u8]) -> bool {
+    match state.game {
+        Game::NineBall => legal == [9],
+        Game::EightBall => legal == [8],
+        Game::FreePlay => false,
+    }
+}
+
+/// Most events one sample may take before it is cut short and scored on the layout of the
+/// moment: a shot takes 10 to 50, but one into a cluster of frozen balls can run into
+/// thousands of resting-contact hops whose end changes nothing the score reads.
+const MAX_EVENTS: usize = 300;
+/// The same for a break (a rack scattering takes a few hundred).
+const MAX_BREAK_EVENTS: usize = 20_000;
 
 /// How a sample runs the solver.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -135,14 +167,14 @@ impl Search<'_> {
         Some(sim)
     }
 
-    /// Runs one noisy sample of candidate `index` (draw `k`): its summary, the solver after
-    /// it and the events it took.
+    /// Runs one noisy sample of candidate `index` (draw `k`): its summary, the layout it
+    /// leaves (`None` when it stopped early on a settled verdict) and the events it took.
     fn run(
         &self,
         cand: &Candidate,
         index: u64,
         k: u64,
-    ) -> Option<(ShotSummary, Simulation, usize)> {
+    ) -> Option<(ShotSummary, Option<Layout>, usize)> {
         let mut sim = self.start(cand)?;
         let mut rng = stream(self.seed, index, k);
         let shot = self.noise.apply(cand.shot, sim.params(), &mut rng);
@@ -152,24 +184,43 @@ impl Search<'_> {
         }
         sim.strike(self.cue, shot).ok()?;
         let mut summary = ShotSummary::default();
+        let mut layout = None;
+        let cap = if self.state.next.break_shot {
+            MAX_BREAK_EVENTS
+        } else {
+            MAX_EVENTS
+        };
         match self.mode {
             Mode::Lean => {
                 while let Some(e) = sim.step_event() {
                     summary.record(&e.kind, sim.numbers());
-                    if sim.event_count() - first > MAX_EVENTS
-                        || settled(self.state, cand.call, &summary)
-                    {
+                    if settled(self.state, cand.call, &summary) {
                         break;
                     }
+                    if sim.event_count() - first > cap {
+                        layout = Layout::of(&sim, None);
+                        break;
+                    }
+                    // Once only stops are left, the final layout is known (crate::quiet).
+                    if matches!(e.kind, EventKind::Transition { .. }) {
+                        layout = final_layout(&sim);
+                        if layout.is_some() {
+                            break;
+                        }
+                    }
+                }
+                if layout.is_none() && sim.is_at_rest() {
+                    layout = Layout::of(&sim, None);
                 }
             }
             Mode::Full => {
                 let _ = sim.run_to_rest();
                 summary = summarise(sim.history().events(), sim.numbers());
+                layout = Layout::of(&sim, None);
             }
         }
         let events = sim.event_count() - first;
-        Some((summary, sim, events))
+        Some((summary, layout, events))
     }
 
     /// One noisy sample of candidate `index` (draw `k`), scored.
@@ -181,7 +232,7 @@ impl Search<'_> {
             fouls: 1,
             ..Stats::default()
         };
-        let Some((summary, sim, events)) = self.run(cand, index, k) else {
+        let Some((summary, layout, events)) = self.run(cand, index, k) else {
             return foul;
         };
         let mut after = self.state.clone();
@@ -189,7 +240,7 @@ impl Search<'_> {
             return Stats { events, ..foul };
         };
         let potted = summary.pocketed_object_balls().next().is_some();
-        let (value, pot) = self.score(&verdict, &sim, me, potted);
+        let (value, pot) = self.score(&verdict, layout.as_ref(), me, potted);
         Stats {
             n: 1,
             value,
@@ -200,9 +251,15 @@ impl Search<'_> {
         }
     }
 
-    /// The value of `verdict` for `me` with the balls as `sim` left them, and whether it was
-    /// a legal pot (or a win).
-    fn score(&self, verdict: &Verdict, sim: &Simulation, me: Seat, potted: bool) -> (f64, bool) {
+    /// The value of `verdict` for `me` with the balls left in `layout` (the cue ball off the
+    /// table: `None`), and whether it was a legal pot (or a win).
+    fn score(
+        &self,
+        verdict: &Verdict,
+        layout: Option<&Layout>,
+        me: Seat,
+        potted: bool,
+    ) -> (f64, bool) {
         if let Outcome::GameOver { winner, .. } = verdict.outcome {
             return if winner == me {
                 (1.0, true)
@@ -210,20 +267,24 @@ impl Search<'_> {
                 (-1.0, false)
             };
         }
-        if !verdict.legal() {
-            return (-FOUL_COST, false);
-        }
-        let (Some(next), Some(layout)) = (&verdict.next, Layout::of(sim, None)) else {
+        let Some(next) = &verdict.next else {
             return (0.0, false);
         };
-        let p = best_success(&layout, &next.legal_first, self.noise);
+        let game_ball = for_game_ball(self.state, &next.legal_first);
+        if !verdict.legal() {
+            return (-at_table(IN_HAND, game_ball), false);
+        }
+        let Some(layout) = layout else {
+            return (-at_table(IN_HAND, game_ball), false);
+        };
+        let p = best_success(layout, &next.legal_first, self.noise);
         if verdict.push_out {
-            return (-0.6 * p.max(1.0 - p), false);
+            return (-at_table(p.max(1.0 - p), game_ball), false);
         }
         if next.shooter == me && verdict.outcome == Outcome::Continues {
-            (0.4 + 0.6 * p, potted)
+            (at_table(p, game_ball), potted)
         } else {
-            (-0.6 * p, false)
+            (-at_table(p, game_ball), false)
         }
     }
 

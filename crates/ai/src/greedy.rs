@@ -2,14 +2,14 @@
 //! Among the straight and cut shots of the legal balls whose paths are clear, the smallest
 //! cut angle (then the shortest shot) is played, centre ball, at the speed the distances call
 //! for; with nothing open, a full hit on the first legal ball it can see. Ball in hand: the
-//! cue ball straight behind the easiest ball and pocket. No noisy search, no position play,
-//! no safeties.
+//! cue ball straight behind the easiest ball and pocket; the break from the head spot. No
+//! noisy search, no position play, no safeties.
 
 use crate::candidates::{Layout, ShotKind, call_for, direct_aims};
 use crate::placement::places;
 use crate::{AiError, Decision, Plan};
 use billiards_physics::{Shot, Simulation, Vec2};
-use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState};
+use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState, check_placement};
 
 /// The greedy player's decision for the shot `state` asks for.
 pub fn decide(state: &GameState, sim: &Simulation) -> Result<Decision, AiError> {
@@ -34,7 +34,12 @@ pub fn decide(state: &GameState, sim: &Simulation) -> Result<Decision, AiError> 
         next.cue_ball,
         CueBall::InHandAnywhere | CueBall::InHandBehindHeadString
     );
-    let place = if in_hand {
+    let head = sim.table().head_spot();
+    let at_head = check_placement(sim, cue, head, next.cue_ball).is_ok();
+    let place = if in_hand && next.break_shot && at_head {
+        // The break from the head spot, as a player racks up to break.
+        Some(head)
+    } else if in_hand {
         let best = places(
             sim,
             cue,

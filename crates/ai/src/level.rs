@@ -26,10 +26,9 @@ pub enum Level {
 pub struct Budget {
     /// Noisy samples of every candidate in the first round.
     pub samples: usize,
-    /// How many of the best candidates get a second round.
-    pub refine: usize,
-    /// Further samples of each of those.
-    pub refine_samples: usize,
+    /// Rounds of refinement, in order: the best `k` candidates so far get `m` more samples
+    /// each (successive halving: many candidates cheaply, the few that matter well).
+    pub rounds: &'static [(usize, usize)],
     /// Geometric aims kept (best analytic success probability first) before the variants.
     pub aims: usize,
     /// Cue speeds, as multiples of the speed an aim needs to reach its pocket.
@@ -57,6 +56,10 @@ const FOLLOW: TipOffset = TipOffset {
 const DRAW: TipOffset = TipOffset {
     side: 0.0,
     height: -0.3,
+};
+const DEEP_DRAW: TipOffset = TipOffset {
+    side: 0.0,
+    height: -0.45,
 };
 const LEFT: TipOffset = TipOffset {
     side: -0.25,
@@ -96,8 +99,7 @@ impl Level {
         match self {
             Level::Easy => Budget {
                 samples: 8,
-                refine: 0,
-                refine_samples: 0,
+                rounds: &[],
                 aims: 4,
                 speeds: &[1.3],
                 tips: &[STUN],
@@ -108,8 +110,7 @@ impl Level {
             },
             Level::Medium => Budget {
                 samples: 12,
-                refine: 3,
-                refine_samples: 36,
+                rounds: &[(3, 36)],
                 aims: 6,
                 speeds: &[1.0, 1.8],
                 tips: &[STUN, FOLLOW, DRAW],
@@ -119,12 +120,11 @@ impl Level {
                 safeties: 5,
             },
             Level::Hard | Level::Perfect => Budget {
-                samples: 16,
-                refine: 6,
-                refine_samples: 64,
-                aims: 10,
-                speeds: &[1.0, 1.6, 2.6],
-                tips: &[STUN, FOLLOW, DRAW, LEFT, RIGHT],
+                samples: 8,
+                rounds: &[(32, 24), (8, 96)],
+                aims: 14,
+                speeds: &[0.8, 1.0, 1.5, 2.4],
+                tips: &[STUN, FOLLOW, DRAW, DEEP_DRAW, LEFT, RIGHT],
                 banks_kicks_combos: true,
                 placements: 6,
                 correct_aim: true,

@@ -32,6 +32,7 @@ pub mod noise;
 pub mod placement;
 pub mod play;
 pub mod position;
+pub mod quiet;
 mod search;
 
 pub use candidates::{Candidate, Layout, ShotKind};

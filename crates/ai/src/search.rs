@@ -14,7 +14,7 @@ use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState, check_placeme
 use rayon::prelude::*;
 
 /// Below this chance of a legal pot, safeties (and a push out, when allowed) are searched too.
-const SAFETY_BELOW: f64 = 0.45;
+const SAFETY_BELOW: f64 = 0.6;
 
 /// The computer's decision at `level` for what `state` asks next, on the resting table
 /// `sim` (balls to spot already spotted; a cue ball in hand anywhere or off the table).
@@ -88,6 +88,17 @@ pub fn decide_with(
             .flat_map(|&p| offence(&search, p, &budget))
             .collect()
     };
+    let budget = if next.break_shot {
+        // A break runs ten times the events of a shot and has few candidates worth telling
+        // apart: 8 samples each, the best three 32 more.
+        Budget {
+            samples: 8,
+            rounds: &[(3, 32)],
+            ..budget
+        }
+    } else {
+        budget
+    };
     pool.add(&search, first, budget.samples);
     let scoring = pool
         .best()
@@ -110,7 +121,9 @@ pub fn decide_with(
         }
         pool.add(&search, more, budget.samples);
     }
-    pool.refine(&search, &budget);
+    for &(k, m) in budget.rounds {
+        pool.refine(&search, k, m);
+    }
     let best = pool.best().ok_or(AiError::NoBall)?;
     let (c, s) = (pool.cands[best], pool.stats[best]);
     Ok(Decision::Shoot(Plan {
@@ -134,6 +147,8 @@ struct Pool {
     stats: Vec<Stats>,
     simulations: usize,
     events: usize,
+    /// The candidates of the last refinement round (empty: none yet).
+    finalists: Vec<usize>,
 }
 
 impl Pool {
@@ -147,30 +162,24 @@ impl Pool {
         self.stats.extend(stats);
     }
 
-    /// Gives the best `budget.refine` candidates `budget.refine_samples` more samples each.
-    fn refine(&mut self, search: &Search, budget: &Budget) {
+    /// Gives the best `k` candidates `m` more samples each; they become the finalists.
+    fn refine(&mut self, search: &Search, k: usize, m: usize) {
         let mut order: Vec<usize> = (0..self.cands.len()).collect();
-        order.sort_by(|&a, &b| {
-            self.stats[b]
-                .mean()
-                .total_cmp(&self.stats[a].mean())
-                .then(a.cmp(&b))
-        });
-        order.truncate(budget.refine);
+        let mean = |i: usize| self.stats[i].mean();
+        order.sort_by(|&a, &b| mean(b).total_cmp(&mean(a)).then(a.cmp(&b)));
+        order.truncate(k);
         let more: Vec<Stats> = order
             .par_iter()
             .map(|&i| {
-                let (from, to) = (
-                    self.stats[i].n as u64,
-                    (self.stats[i].n + budget.refine_samples) as u64,
-                );
-                search.evaluate(&self.cands[i..=i], i as u64, from, to)[0]
+                let n = self.stats[i].n as u64;
+                search.evaluate(&self.cands[i..=i], i as u64, n, n + m as u64)[0]
             })
             .collect();
         self.count(&more);
         for (&i, s) in order.iter().zip(more) {
             self.stats[i] = self.stats[i].merged(s);
         }
+        self.finalists = order;
     }
 
     fn count(&mut self, stats: &[Stats]) {
@@ -178,19 +187,19 @@ impl Pool {
         self.events += stats.iter().map(|s| s.events).sum::<usize>();
     }
 
-    /// The candidate of the best mean value; among the refined ones when there are any
-    /// (ties: the first).
+    /// The candidate of the best mean value among the finalists of the last round (all
+    /// candidates when there was none; ties: the first).
     fn best(&self) -> Option<usize> {
-        let most = self.stats.iter().map(|s| s.n).max()?;
-        (0..self.cands.len())
-            .filter(|&i| self.stats[i].n == most)
-            .reduce(|a, b| {
-                if self.stats[b].mean() > self.stats[a].mean() {
-                    b
-                } else {
-                    a
-                }
-            })
+        let all: Vec<usize> = (0..self.cands.len()).collect();
+        let pool = if self.finalists.is_empty() {
+            &all
+        } else {
+            &self.finalists
+        };
+        pool.iter().copied().reduce(|a, b| {
+            let (ma, mb) = (self.stats[a].mean(), self.stats[b].mean());
+            if mb > ma || (mb == ma && b < a) { b } else { a }
+        })
     }
 }
 
@@ -221,9 +230,15 @@ fn offence(search: &Search, place: Option<Vec2>, budget: &Budget) -> Vec<Candida
         .map(|(i, a)| (aim_probability(a, search.noise), i))
         .collect();
     ranked.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    // In hand, each of the places gets half the aims: the places were chosen for their aims.
+    let aims_kept = if place.is_some() {
+        budget.aims.div_ceil(2)
+    } else {
+        budget.aims
+    };
     let kept: Vec<_> = ranked
         .iter()
-        .take(budget.aims)
+        .take(aims_kept)
         .map(|&(_, i)| aims[i])
         .collect();
     let cands = expand(&kept, budget.speeds, budget.tips, eight, place);

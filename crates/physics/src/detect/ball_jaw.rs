@@ -3,6 +3,7 @@
 
 use super::Kinematics;
 use super::ball_ball::contact_quartic;
+use super::cull::misses;
 use crate::ball::Segment;
 use crate::math::Vec2;
 
@@ -28,5 +29,12 @@ pub fn ball_jaw(
         Kinematics::Exact => seg.acceleration,
         Kinematics::Linear => Vec2::ZERO,
     };
-    contact_quartic(dp, seg.velocity_at(t), a, contact, horizon)
+    let v = seg.velocity_at(t);
+    // The closest-approach cull of ball pairs, against a still body: it rejects only paths
+    // with no contact root, so it changes no result (a ball passing a jaw mostly skips the
+    // quartic).
+    if misses(dp, v, a, contact, horizon) {
+        return None;
+    }
+    contact_quartic(dp, v, a, contact, horizon)
 }

@@ -1,0 +1,71 @@
+//! What the lean mode saves: the hard level's candidates on the bench's 9-ball mid-game
+//! layout, sampled in one mode (`lean` or `full`), on one thread; prints simulations, events
+//! and time. Under callgrind the instruction counts of the two modes compare without the
+//! noise of a shared machine:
+//!
+//! ```sh
+//! cargo build --release -p billiards-ai --example lean_saving
+//! for m in full lean; do RAYON_NUM_THREADS=1 valgrind --tool=callgrind \
+//!     --callgrind-out-file=/tmp/cg.$m target/release/examples/lean_saving $m 4; done
+//! ```
+
+use billiards_ai::candidates::{combo_aims, direct_aims, expand, rail_aims, safeties};
+use billiards_ai::evaluate::{Mode, Search};
+use billiards_ai::play::table_and_params;
+use billiards_ai::{Layout, Level};
+use billiards_physics::{BallSetup, Simulation, Vec2};
+use billiards_rules::{CueBall, Game, GameState, Seat};
+use std::time::Instant;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mode = match args.first().map(String::as_str) {
+        Some("full") => Mode::Full,
+        _ => Mode::Lean,
+    };
+    let samples: u64 = args.get(1).map_or(16, |s| s.parse().expect("samples"));
+    let balls = [
+        (0, Vec2::new(-0.35, 0.05)),
+        (2, Vec2::new(0.25, 0.30)),
+        (3, Vec2::new(0.62, -0.21)),
+        (5, Vec2::new(-0.71, -0.38)),
+        (6, Vec2::new(0.05, -0.44)),
+        (8, Vec2::new(0.88, 0.12)),
+        (9, Vec2::new(0.45, 0.02)),
+    ];
+    let (table, params) = table_and_params();
+    let setups: Vec<BallSetup> = balls.iter().map(|&(n, p)| BallSetup::at(n, p)).collect();
+    let mut base = Simulation::new(table, params, &setups).expect("layout");
+    base.set_record_history(false);
+    let mut state = GameState::new(Game::NineBall, Seat::A);
+    state.on_table = vec![2, 3, 5, 6, 8, 9];
+    state.next.break_shot = false;
+    state.next.cue_ball = CueBall::AsItLies;
+    state.next.legal_first = vec![2];
+    let layout = Layout::of(&base, None).expect("cue ball");
+    let budget = Level::Hard.budget();
+    let mut aims = direct_aims(&layout, &[2]);
+    aims.extend(rail_aims(&layout, &[2]));
+    aims.extend(combo_aims(&layout, &[2], &[3, 5, 6, 8, 9]));
+    let mut cands = expand(&aims, budget.speeds, budget.tips, false, None);
+    cands.extend(safeties(&layout, &[2], budget.safeties, None));
+    let search = Search {
+        state: &state,
+        base,
+        cue: 0,
+        noise: Level::Hard.planning_noise(),
+        seed: 1,
+        mode,
+    };
+    let start = Instant::now();
+    let stats = search.evaluate(&cands, 0, 0, samples);
+    let secs = start.elapsed().as_secs_f64();
+    let n: usize = stats.iter().map(|s| s.n).sum();
+    let events: usize = stats.iter().map(|s| s.events).sum();
+    println!(
+        "{mode:?}: {n} simulations, {events} events ({:.2} a simulation), {:.3} s, {:.0} a second",
+        events as f64 / n as f64,
+        secs,
+        n as f64 / secs
+    );
+}
