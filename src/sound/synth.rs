@@ -1,6 +1,6 @@
 //! The table's sounds, synthesised at start (no audio files, nothing to license): sums of
 //! exponentially damped partials with a short noise attack, the usual model of struck solids.
-//! Pure and deterministic; [`super`] plays them when the `sound` feature is on.
+//! Pure and deterministic; `player.rs` plays them when the `sound` feature is on.
 
 use std::f32::consts::TAU;
 
@@ -195,7 +195,7 @@ fn render(seconds: f32, knocks: &[Knock]) -> Vec<f32> {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sound::synth::*;
 
     /// Energy of `samples` between `from` and `to` seconds.
     fn energy(samples: &[f32], from: f32, to: f32) -> f32 {
