@@ -178,6 +178,10 @@ fn play_computer_turn(
         }
         return;
     }
+    // The verdict was continued: what the computer read is done with.
+    if matches!(computer.turn, Some(Task::Reading { .. })) {
+        computer.turn = None;
+    }
     let name = game.name(seat).to_owned();
     match computer.turn.take() {
         None => {

@@ -36,7 +36,8 @@ fn start(folder: &Path, game: Game) -> App {
         16,
     )));
     app.insert_resource(RecordingsFolder(Some(folder.to_path_buf())));
-    app.insert_resource(ComputerPace(Duration::ZERO));
+    // A short pace, not zero: what is shown must survive the frames it is shown for.
+    app.insert_resource(ComputerPace(Duration::from_millis(20)));
     app.update();
     app.world_mut().write_message(NewGameRequested {
         game,
