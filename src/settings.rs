@@ -450,6 +450,14 @@ pub struct ViewSettings {
     pub show_vectors: bool,
     /// Draw the aiming aid: the path to the first contact, the ghost ball, the paths after.
     pub show_aim: bool,
+    /// How far the aid follows each ball after the first contact: until it rests, drops or
+    /// has made this many more contacts (balls, cushions, jaws).
+    pub aid_contacts: u32,
+}
+
+impl ViewSettings {
+    /// The range offered for [`ViewSettings::aid_contacts`].
+    pub const AID_CONTACTS: std::ops::RangeInclusive<u32> = 1..=10;
 }
 
 impl Default for ViewSettings {
@@ -458,6 +466,7 @@ impl Default for ViewSettings {
         Self {
             show_vectors: true,
             show_aim: true,
+            aid_contacts: 2,
         }
     }
 }

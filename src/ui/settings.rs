@@ -205,6 +205,11 @@ pub fn sections(ui: &mut egui::Ui, state: &mut SettingsParam) {
             &mut state.view.show_aim,
             "aiming aid (path, ghost ball, paths after contact)",
         );
+        ui.add_enabled(
+            state.view.show_aim,
+            egui::Slider::new(&mut state.view.aid_contacts, ViewSettings::AID_CONTACTS)
+                .text("contacts followed"),
+        );
         ui.horizontal(|ui| {
             let mut mode = state.orbit.mode;
             ui.selectable_value(&mut mode, CameraMode::Free, "orbit");
