@@ -13,7 +13,7 @@ use crate::{
     input::InputSystems,
     mode::GameMode,
     settings::{ClampReport, ShotSettings, ViewSettings, apply_shot_edit},
-    sim::{ShotRequested, SimStatus, SimSystems, Solver, place_ball_in_hand},
+    sim::{ShotRequested, ShotUndone, SimStatus, SimSystems, Solver, place_ball_in_hand},
 };
 use bevy::{
     input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
@@ -40,7 +40,13 @@ pub fn plugin(app: &mut App) {
         )
         .add_systems(
             Update,
-            (place_cue.run_if(in_state(GameMode::Play)), draw_vectors).after(SimSystems::Commands),
+            (
+                retry_undone_shot,
+                place_cue.run_if(in_state(GameMode::Play)),
+                draw_vectors,
+            )
+                .chain()
+                .after(SimSystems::Commands),
         )
         // No cue over a recording; back in play, `place_cue` shows it again when it may.
         .add_systems(OnEnter(GameMode::Replay), hide_cue);
@@ -108,6 +114,18 @@ fn spawn_cue(
 }
 
 /// The cue ball's table position, if it is on the table.
+/// After an undo the cue is lined up as for the shot taken back, so it can be retried or
+/// adjusted.
+fn retry_undone_shot(mut undone: MessageReader<ShotUndone>, mut shot: ResMut<ShotSettings>) {
+    if let Some(ShotUndone { shot: last }) = undone.read().last() {
+        shot.set_if_neq(ShotSettings {
+            angle: last.angle,
+            power: last.speed,
+            tip: last.tip,
+        });
+    }
+}
+
 fn cue_ball_position(balls: &Query<(&Ball, &BallMotion), Without<Pocketed>>) -> Option<DVec2> {
     balls
         .iter()
