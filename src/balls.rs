@@ -20,7 +20,9 @@ pub fn plugin(app: &mut App) {
         .add_systems(
             Update,
             (
-                attach_visuals,
+                // After the rack's commands: the new balls get their meshes in the frame the
+                // old ones are despawned, so no frame shows an empty table.
+                attach_visuals.after(crate::sim::SimSystems::Commands),
                 start_pocket_drops,
                 animate_pocket_drops,
                 restore_respotted,

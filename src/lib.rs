@@ -6,10 +6,12 @@
 pub mod aim;
 pub mod balls;
 pub mod camera;
+pub mod config;
 pub mod cue;
 pub mod display;
 pub mod game;
 pub mod geometry;
+pub mod graphics;
 pub mod input;
 pub mod lighting;
 pub mod mode;
@@ -66,7 +68,8 @@ impl Plugin for GamePlugin {
             replay::plugin,
             game::plugin,
             game::table_plugin,
-        ));
+        ))
+        .add_plugins((config::plugin, graphics::plugin));
         if let Some(file) = &self.options.replay {
             app.insert_resource(replay::OpenAtStart(file.clone()));
         }
@@ -78,6 +81,11 @@ impl Plugin for GamePlugin {
         } else if let Some(folder) = &self.options.recordings {
             app.insert_resource(recording::RecordingsFolder(Some(folder.clone())));
         }
+        app.insert_resource(if self.options.no_config {
+            config::ConfigFile::default()
+        } else {
+            config::ConfigFile::platform_default()
+        });
         if self.options.top_view {
             app.insert_resource(camera::OrbitCamera::top_view());
         }

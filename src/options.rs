@@ -17,6 +17,8 @@ pub struct LaunchOptions {
     pub recordings: Option<PathBuf>,
     /// Do not save recordings.
     pub no_record: bool,
+    /// Neither read nor write the settings file (start from the defaults).
+    pub no_config: bool,
     /// Open this recording in the replay viewer at start (`billiards replay FILE`).
     pub replay: Option<PathBuf>,
     /// Start a match of this game (two players, race to 3) instead of free play.
@@ -58,12 +60,14 @@ impl LaunchOptions {
     /// The usage text printed by `--help` and after a command-line error.
     pub const USAGE: &'static str = "\
 usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
-                 [--game nine-ball|eight-ball|free-play]
+                 [--game nine-ball|eight-ball|free-play] [--no-config]
                  [--screenshot PATH [--settle SECONDS]]
 
   replay FILE         open a recording in the replay viewer
   --recordings DIR    save every game there, one file per rack (default: ./recordings)
   --no-record         do not save recordings
+  --no-config         start from the default settings and keep none (the settings file
+                      is otherwise in the config directory: $XDG_CONFIG_HOME/billiards)
   --game GAME         start a match (two players, race to 3) of nine-ball or eight-ball;
                       free-play (the default) is the sandbox
 
@@ -106,6 +110,7 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                     options.recordings = Some(PathBuf::from(dir));
                 }
                 "--no-record" => options.no_record = true,
+                "--no-config" => options.no_config = true,
                 "--game" => {
                     let value = args.next().ok_or(ArgsError::MissingValue("--game"))?;
                     options.game = Some(match value.as_str() {

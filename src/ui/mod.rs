@@ -43,6 +43,7 @@ pub fn plugin(app: &mut App) {
         .init_resource::<recordings::RecordingsForm>()
         .init_resource::<timeline::ExportForm>()
         .init_resource::<game::NewGameForm>()
+        .init_resource::<settings::RackConfirm>()
         .configure_sets(
             Update,
             (
@@ -165,17 +166,26 @@ fn left_panel(
                 .resizable(false)
                 .exact_size(PANEL_WIDTH)
                 .show(area, |ui| {
-                    egui::ScrollArea::vertical().show(ui, |ui| {
-                        settings::sections(ui, &mut state);
-                        recordings::section(ui, &mut recordings);
-                        settings::notes_and_controls(ui, &mut state);
-                    });
+                    // A scroll bar that is always there and takes its own width: one that
+                    // appeared on hover narrowed the panel and re-wrapped its rows.
+                    ui.style_mut().spacing.scroll = egui::style::ScrollStyle::solid();
+                    egui::ScrollArea::vertical()
+                        .scroll_bar_visibility(
+                            egui::scroll_area::ScrollBarVisibility::AlwaysVisible,
+                        )
+                        .auto_shrink(false)
+                        .show(ui, |ui| {
+                            settings::sections(ui, &mut state);
+                            recordings::section(ui, &mut recordings);
+                            settings::file_and_controls(ui, &mut state);
+                        });
                 })
                 .response
                 .rect
                 .width()
         })
         .inner;
+    settings::rack_confirm_window(&ctx, &mut state);
     fit_viewport(&window, &mut camera, panel_width);
     Ok(())
 }
