@@ -12,6 +12,7 @@ pub mod display;
 pub mod game;
 pub mod geometry;
 pub mod graphics;
+pub mod idle;
 pub mod input;
 pub mod lighting;
 pub mod mode;
@@ -48,7 +49,10 @@ impl Plugin for GamePlugin {
         app.add_plugins(DefaultPlugins.set(WindowPlugin {
             primary_window: Some(Window {
                 title: "Billiards".into(),
-                resolution: WindowResolution::new(1280, 720),
+                resolution: match self.options.size {
+                    Some((width, height)) => WindowResolution::new(width, height),
+                    None => WindowResolution::new(1280, 720),
+                },
                 ..default()
             }),
             ..default()
@@ -86,6 +90,15 @@ impl Plugin for GamePlugin {
         } else {
             config::ConfigFile::platform_default()
         });
+        if let Some(path) = &self.options.check_layout {
+            app.insert_resource(ui::layout_check::LayoutReport(path.clone()));
+        }
+        if self.options.open_sections {
+            app.insert_resource(ui::OpenSections(true));
+        }
+        if let Some(seconds) = self.options.count_idle_frames {
+            app.add_plugins(idle::IdleCountPlugin { seconds });
+        }
         if self.options.top_view {
             app.insert_resource(camera::OrbitCamera::top_view());
         }

@@ -60,7 +60,7 @@ pub fn hud(
                 state.time.delta_secs_f64() * 1e3
             ));
             ui.label(match state.rate.fps {
-                Some(fps) => format!("{fps:.0} fps"),
+                Some(fps) => format!("{fps:.1} fps"),
                 None => "fps: idle (draws only on change)".to_owned(),
             });
             ui.label(format!("simulated time: {:.3} s", status.sim_time));

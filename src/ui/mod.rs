@@ -17,6 +17,7 @@
 pub mod game;
 pub mod hud;
 pub mod layout;
+pub mod layout_check;
 pub mod recordings;
 pub mod settings;
 pub mod timeline;
@@ -44,6 +45,8 @@ pub fn plugin(app: &mut App) {
         .init_resource::<timeline::ExportForm>()
         .init_resource::<game::NewGameForm>()
         .init_resource::<settings::RackConfirm>()
+        .init_resource::<OpenSections>()
+        .add_plugins(layout_check::plugin)
         .configure_sets(
             Update,
             (
@@ -72,6 +75,10 @@ pub fn plugin(app: &mut App) {
             ),
         );
 }
+
+/// Open every section of the panel at start (`--open-sections`: screenshots, layout check).
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct OpenSections(pub bool);
 
 /// Whether the pointer is, this frame, over a panel or window of the UI.
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]

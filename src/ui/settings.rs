@@ -44,6 +44,7 @@ pub struct SettingsParam<'w, 's> {
     referee: Res<'w, Referee>,
     config: Res<'w, ConfigFile>,
     confirm: ResMut<'w, RackConfirm>,
+    open_all: Res<'w, super::OpenSections>,
     racks: MessageWriter<'w, RackRequested>,
     steps: MessageWriter<'w, StepRequested>,
     shots: MessageWriter<'w, ShotRequested>,
@@ -55,11 +56,12 @@ pub struct SettingsParam<'w, 's> {
 /// The panel's sections, play options first, the physics after them.
 pub fn sections(ui: &mut egui::Ui, state: &mut SettingsParam) {
     ui.heading("Billiards");
+    let all = state.open_all.0;
     section(ui, "Shot", true, |ui| shot_section(ui, state));
     section(ui, "Play", true, |ui| play_section(ui, state));
     section(ui, "View", true, |ui| view_section(ui, state));
-    section(ui, "Graphics", false, |ui| graphics_section(ui, state));
-    section(ui, "Physics", false, |ui| physics_section(ui, state));
+    section(ui, "Graphics", all, |ui| graphics_section(ui, state));
+    section(ui, "Physics", all, |ui| physics_section(ui, state));
 }
 
 fn shot_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
@@ -333,7 +335,8 @@ fn physics_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
 /// The settings file (where it is, why it could not be read), the reset, and the list of
 /// controls, at the end of the panel.
 pub fn file_and_controls(ui: &mut egui::Ui, state: &mut SettingsParam) {
-    section(ui, "Settings file", false, |ui| {
+    let all = state.open_all.0;
+    section(ui, "Settings file", all, |ui| {
         match &state.config.path {
             Some(path) => ui.label(RichText::new(format!("kept in {}", path.display())).weak()),
             None => ui.label(RichText::new("not kept (--no-config)").weak()),
@@ -350,7 +353,7 @@ pub fn file_and_controls(ui: &mut egui::Ui, state: &mut SettingsParam) {
             state.report.notes.clear();
         }
     });
-    section(ui, "Controls", false, |ui| {
+    section(ui, "Controls", all, |ui| {
         ui.label(
             "Left drag on the table: aim\n\
              Shift + left drag down, Shift + wheel: power\n\
