@@ -331,7 +331,7 @@ fn place_cue(
 /// The cue's elevation (radians above the cloth) for a cue ball at `cue_ball` aimed along
 /// `aim` (table plane, unit), its tip `gap` behind the ball: the rail-clearing minimum, or
 /// steeper so the stick passes over every ball in `others` behind the cue ball, up to
-/// [`MAX_ELEVATION`].
+/// about 50 degrees.
 pub fn cue_elevation(
     cue_ball: DVec2,
     aim: DVec2,

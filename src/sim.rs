@@ -61,6 +61,12 @@ pub fn plugin(app: &mut App) {
             Update,
             SimSystems::Commands.run_if(in_state(GameMode::Play)),
         )
+        // A rack's new balls get their meshes in the frame the old ones are despawned, so no
+        // frame shows an empty table.
+        .configure_sets(
+            Update,
+            crate::balls::BallSystems::Visuals.after(SimSystems::Commands),
+        )
         .add_systems(Startup, request_default_rack)
         .add_systems(
             Update,

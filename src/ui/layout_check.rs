@@ -104,8 +104,9 @@ fn check_text(
 
 #[cfg(test)]
 mod tests {
-    use super::*;
-    use bevy_egui::egui::pos2;
+    // Named from the crate root: a `super::` path reads as a use of `ui` in the layout test.
+    use crate::ui::layout_check::text_problem;
+    use bevy_egui::egui::{Rect, pos2};
 
     #[test]
     fn cut_elided_and_off_screen_texts_are_found() {

@@ -35,6 +35,7 @@ use bevy_egui::{
 };
 
 pub use layout::PANEL_WIDTH;
+pub use settings::OpenSections;
 
 use crate::{camera::TableCamera, input::InputSystems, mode::GameMode};
 
@@ -45,7 +46,7 @@ pub fn plugin(app: &mut App) {
         .init_resource::<timeline::ExportForm>()
         .init_resource::<game::NewGameForm>()
         .init_resource::<settings::RackConfirm>()
-        .init_resource::<OpenSections>()
+        .init_resource::<settings::OpenSections>()
         .add_plugins(layout_check::plugin)
         .configure_sets(
             Update,
@@ -75,10 +76,6 @@ pub fn plugin(app: &mut App) {
             ),
         );
 }
-
-/// Open every section of the panel at start (`--open-sections`: screenshots, layout check).
-#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
-pub struct OpenSections(pub bool);
 
 /// Whether the pointer is, this frame, over a panel or window of the UI.
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]

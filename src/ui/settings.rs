@@ -26,6 +26,10 @@ use crate::{
     },
 };
 
+/// Open every section of the panel at start (`--open-sections`: screenshots, layout check).
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct OpenSections(pub bool);
+
 /// A rack asked for while a game is in progress, waiting for the player's yes.
 #[derive(Resource, Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct RackConfirm(pub Option<Rack>);
@@ -44,7 +48,7 @@ pub struct SettingsParam<'w, 's> {
     referee: Res<'w, Referee>,
     config: Res<'w, ConfigFile>,
     confirm: ResMut<'w, RackConfirm>,
-    open_all: Res<'w, super::OpenSections>,
+    open_all: Res<'w, OpenSections>,
     racks: MessageWriter<'w, RackRequested>,
     steps: MessageWriter<'w, StepRequested>,
     shots: MessageWriter<'w, ShotRequested>,
