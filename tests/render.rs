@@ -167,7 +167,7 @@ fn recorded_break() -> PathBuf {
 /// Every text of the UI fits (item 5 of issue 15), read from egui's own layout by
 /// `--check-layout`: none elided, none cut at the side of its panel or window, none off the
 /// screen; at 1280x720 and 1920x1080, in free play with every panel section open, in a match
-/// and in a replay (the timeline window).
+/// in a replay (the timeline window) and after a recording failed to open (the error).
 #[test]
 fn every_text_fits_at_both_sizes() {
     if !can_render() {
@@ -175,10 +175,16 @@ fn every_text_fits_at_both_sizes() {
     }
     let recording = recorded_break();
     let recording = recording.to_string_lossy().into_owned();
-    let states: [&[&str]; 3] = [
+    // A file that cannot be opened: its error, with a long path, shows in the panel.
+    let missing = env::temp_dir()
+        .join("a-folder-with-a-long-name-for-recordings")
+        .join("2026-12-01_12-00-00.000_15-ball-that-does-not-exist.json");
+    let missing = missing.to_string_lossy().into_owned();
+    let states: [&[&str]; 4] = [
         &["--open-sections"],
         &["--game", "nine-ball"],
         &["replay", &recording],
+        &["replay", &missing],
     ];
     let mut failures = Vec::new();
     for size in [(1280, 720), (1920, 1080)] {
