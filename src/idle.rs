@@ -1,14 +1,15 @@
 //! `--count-idle-frames SECONDS`: how many frames the window draws while nothing happens
-//! (the render test's measure of the reactive window). Once every render pipeline has been
-//! ready for a moment, a thread wakes the event loop twice, `SECONDS` apart; the frames
-//! between the two wake-ups are the idle frames. Prints `idle frames: N in S s`, then exits.
+//! (the render test's measure of the reactive window). Once every render pipeline is ready
+//! and the window has drawn nothing for a few seconds (the start-up frames are over), a thread
+//! wakes the event loop twice, `SECONDS` apart; the frames between the two wake-ups are the
+//! idle frames. Prints `idle frames: N in S s`, then exits.
 
 use std::{
     sync::{
         Arc,
-        atomic::{AtomicU8, Ordering},
+        atomic::{AtomicU8, AtomicU32, Ordering},
     },
-    time::Duration,
+    time::{Duration, Instant},
 };
 
 use bevy::{
@@ -26,14 +27,15 @@ pub struct IdleCountPlugin {
     pub seconds: Duration,
 }
 
-/// After the pipelines are ready, how long the last start-up frames get to finish.
-const SETTLE: Duration = Duration::from_secs(3);
+/// How long the window must have drawn nothing before the interval starts.
+const QUIET: Duration = Duration::from_secs(3);
 
 impl Plugin for IdleCountPlugin {
     fn build(&self, app: &mut App) {
         app.insert_resource(IdleCount {
             seconds: self.seconds,
             phase: Arc::default(),
+            frame: Arc::default(),
             started: false,
             first_frame: None,
         })
@@ -46,6 +48,8 @@ struct IdleCount {
     seconds: Duration,
     /// 0: waiting to start, 1: the interval runs, 2: it is over (set by the thread).
     phase: Arc<AtomicU8>,
+    /// The last frame drawn, for the thread to see when drawing has stopped.
+    frame: Arc<AtomicU32>,
     started: bool,
     first_frame: Option<u32>,
 }
@@ -57,6 +61,7 @@ fn count_idle_frames(
     proxy: Option<Res<EventLoopProxyWrapper>>,
     mut exit: MessageWriter<AppExit>,
 ) {
+    count.frame.store(frames.0, Ordering::SeqCst);
     let (total, waiting) = progress.counts();
     if !count.started {
         if total == 0 || waiting > 0 {
@@ -70,13 +75,23 @@ fn count_idle_frames(
         count.started = true;
         let proxy = (**proxy).clone();
         let phase = count.phase.clone();
+        let frame = count.frame.clone();
         let seconds = count.seconds;
         std::thread::spawn(move || {
-            for (next, wait) in [(1, SETTLE), (2, seconds)] {
-                std::thread::sleep(wait);
-                phase.store(next, Ordering::SeqCst);
-                let _ = proxy.send_event(WinitUserEvent::WakeUp);
+            // Wait until no frame has been drawn for QUIET (the start-up redraws are over).
+            let (mut last, mut since) = (frame.load(Ordering::SeqCst), Instant::now());
+            while since.elapsed() < QUIET {
+                std::thread::sleep(Duration::from_millis(100));
+                let now = frame.load(Ordering::SeqCst);
+                if now != last {
+                    (last, since) = (now, Instant::now());
+                }
             }
+            phase.store(1, Ordering::SeqCst);
+            let _ = proxy.send_event(WinitUserEvent::WakeUp);
+            std::thread::sleep(seconds);
+            phase.store(2, Ordering::SeqCst);
+            let _ = proxy.send_event(WinitUserEvent::WakeUp);
         });
         return;
     }
