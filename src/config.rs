@@ -155,7 +155,7 @@ fn load_config(
             );
             warn!("{error}");
             file.error = Some(error);
-            // Leave `written` empty: the defaults are not written over the file until the
+            // As if the defaults were on disk: the broken file is replaced only once the
             // player changes something.
             file.written = Some(Config::default().to_json());
         }
