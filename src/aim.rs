@@ -1,5 +1,5 @@
 //! The aiming aid: the cue ball's path to its first contact, the ghost ball there, and where
-//! both balls go next.
+//! every ball set moving goes next, each up to its next N contacts or rest.
 //!
 //! Nothing here is geometry guessed on the side: the shot is run by the solver itself, on a
 //! fresh copy of the table as it rests, so the ghost ball sits exactly where the real cue ball
@@ -52,29 +52,53 @@ pub struct AimPrediction {
     pub path: Vec<DVec2>,
     /// What the cue ball touches first, and the cue ball's centre there (the ghost ball).
     pub contact: Option<(FirstContact, DVec2)>,
-    /// The cue ball's path after the first contact, up to its next collision or a horizon.
-    pub cue_after: Vec<DVec2>,
-    /// The object ball's path after the contact, over the same time.
-    pub object_after: Vec<DVec2>,
+    /// After the first contact, the path of every ball that moves (the cue ball first), each
+    /// until it rests, drops or has made its next [`ViewSettings::aid_contacts`] contacts.
+    pub after: Vec<BallPath>,
     /// Why there is no prediction (a miscue, say), if so.
     pub note: Option<String>,
 }
 
-/// How long after the first contact the paths are drawn, at most (seconds of simulated time).
-const AFTER_HORIZON: f64 = 1.5;
-/// Points per drawn path.
+/// One ball's predicted path after the first contact.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct BallPath {
+    /// The ball's number (0: the cue ball).
+    pub number: u8,
+    /// Its centre, sampled along each piece of its motion (every event it takes is a point).
+    pub points: Vec<DVec2>,
+}
+
+impl AimPrediction {
+    /// The path after the first contact of ball `number`, if it moves.
+    pub fn after_of(&self, number: u8) -> Option<&[DVec2]> {
+        self.after
+            .iter()
+            .find(|p| p.number == number)
+            .map(|p| p.points.as_slice())
+    }
+}
+
+/// Points per piece of a path between two of its ball's events (the pieces are parabolas
+/// and the curve of a spinning ball: a few points each draw them smoothly).
+const SAMPLES_PER_PIECE: usize = 12;
+/// Points of the path to the first contact.
 const SAMPLES: usize = 32;
 /// Events the prediction may take before it gives up (a long rattle, a crowded table).
-const EVENT_BUDGET: usize = 2_000;
+const EVENT_BUDGET: usize = 4_000;
+/// Simulated time the paths after the contact may span at most (a ball rolls for seconds).
+const AFTER_HORIZON: f64 = 60.0;
 
 /// Runs `shot` for the cue ball (`cue`, an index into `balls`) on a fresh simulation of the
-/// resting balls and reports its first contact and the paths around it.
+/// resting balls and reports its first contact, the path to it, and every moving ball's path
+/// after it, each up to its next `contacts` contacts (ball, cushion or jaw) or to where it
+/// rests or drops.
 pub fn predict(
     table: billiards_physics::Table,
     params: billiards_physics::Params,
     balls: &[(u8, BallState)],
     cue: usize,
     shot: Shot,
+    contacts: u32,
 ) -> AimPrediction {
     // Only balls on the table take part; remember which solver ball each one is.
     let on_table: Vec<usize> = (0..balls.len())
@@ -109,65 +133,136 @@ pub fn predict(
         let hit = match event.kind {
             EventKind::BallBall { a, b } if a == cue_id || b == cue_id => {
                 let other = if a == cue_id { b } else { a };
-                Some((
-                    FirstContact::Ball {
-                        number: sim.numbers()[other],
-                    },
-                    Some(other),
-                ))
+                Some(FirstContact::Ball {
+                    number: sim.numbers()[other],
+                })
             }
             EventKind::Cushion { ball, .. } | EventKind::Jaw { ball, .. } if ball == cue_id => {
-                Some((FirstContact::Cushion, None))
+                Some(FirstContact::Cushion)
             }
-            EventKind::Pocketed { ball, .. } if ball == cue_id => {
-                Some((FirstContact::Pocket, None))
-            }
+            EventKind::Pocketed { ball, .. } if ball == cue_id => Some(FirstContact::Pocket),
             _ => None,
         };
-        if let Some((kind, other)) = hit {
-            contact = Some((kind, event.time, other));
+        if let Some(kind) = hit {
+            contact = Some((kind, event));
             break;
         }
         if !sim.ball(cue_id).motion.on_table() || sim.ball(cue_id).motion.is_at_rest() {
             break;
         }
     }
-    let end_of_path = contact.map_or(sim.time(), |(_, time, _)| time);
+    let end_of_path = contact.map_or(sim.time(), |(_, event)| event.time);
     let mut prediction = AimPrediction {
-        path: sample(&sim, cue_id, start, end_of_path),
+        path: sample(&sim, cue_id, start, end_of_path, SAMPLES),
         ..default()
     };
     let ghost = to_dvec2(sim.history().state_at(cue_id, end_of_path).position);
-    let Some((kind, time, other)) = contact else {
+    let Some((kind, event)) = contact else {
         prediction.contact = Some((FirstContact::Nothing, ghost));
         return prediction;
     };
     prediction.contact = Some((kind, ghost));
-    let Some(other) = other else {
-        return prediction;
+    if kind != FirstContact::Pocket {
+        prediction.after = follow(&mut sim, event, contacts);
+    }
+    prediction
+}
+
+/// A ball's path being traced after the first contact.
+struct Trace {
+    /// From when (it was moving at the first contact, or was set moving later).
+    from: f64,
+    /// Times of its events since, the ends of the pieces of its path.
+    breaks: Vec<f64>,
+    /// Contacts made since the first.
+    contacts: u32,
+    /// When its path ends (its last counted contact, rest, a pocket), once it has.
+    until: Option<f64>,
+}
+
+/// Steps the simulation on from the first contact (`first`, just resolved) and returns the
+/// path of every ball that moves, each until it rests, drops or has made `contacts` more
+/// contacts. Stops once every traced path has ended and no untraced ball moves.
+fn follow(sim: &mut Simulation, first: billiards_physics::Event, contacts: u32) -> Vec<BallPath> {
+    let n = sim.ball_count();
+    let t0 = first.time;
+    let moving = |sim: &Simulation, id: usize| {
+        let ball = sim.ball(id);
+        ball.motion.on_table() && !ball.motion.is_at_rest()
     };
-    // Follow both balls until either collides again (or the horizon), then sample exactly.
-    let horizon = time + AFTER_HORIZON;
-    let mut until = horizon;
+    let mut traces: Vec<Option<Trace>> = (0..n)
+        .map(|id| {
+            (moving(sim, id) || first.kind.balls().any(|b| b == id)).then(|| Trace {
+                from: t0,
+                breaks: Vec::new(),
+                contacts: 0,
+                until: None,
+            })
+        })
+        .collect();
+    let ended = |trace: &Option<Trace>| trace.as_ref().is_none_or(|t| t.until.is_some());
     for _ in 0..EVENT_BUDGET {
+        if traces.iter().all(ended) {
+            break;
+        }
         match sim.next_event_time() {
-            Some(t) if t <= horizon => {}
+            Some(t) if t <= t0 + AFTER_HORIZON => {}
             _ => break,
         }
         let Some(event) = sim.step_event() else { break };
-        let involved = event.kind.balls().any(|b| b == cue_id || b == other);
-        if involved && event.kind.is_collision() {
-            until = event.time;
-            break;
+        for id in event.kind.balls() {
+            let trace = traces[id].get_or_insert_with(|| Trace {
+                // A resting ball set moving by a ball being traced: its path starts here.
+                from: event.time,
+                breaks: Vec::new(),
+                contacts: 0,
+                until: None,
+            });
+            if trace.until.is_some() {
+                continue;
+            }
+            trace.breaks.push(event.time);
+            if event.kind.is_collision() {
+                trace.contacts += 1;
+            }
+            let state = sim.ball(id);
+            if trace.contacts >= contacts || !state.motion.on_table() || state.motion.is_at_rest() {
+                trace.until = Some(event.time);
+            }
         }
     }
-    if sim.time() < until {
-        // Nothing more to resolve before `until`: the segments already run there.
-        let _ = sim.advance_to(until);
-    }
-    prediction.cue_after = sample(&sim, cue_id, time, until);
-    prediction.object_after = sample(&sim, other, time, until);
-    prediction
+    // Paths still open at the budget or horizon end where the simulation stopped.
+    let now = sim.time();
+    let mut paths: Vec<BallPath> = traces
+        .into_iter()
+        .enumerate()
+        .filter_map(|(id, trace)| {
+            let trace = trace?;
+            let until = trace.until.unwrap_or(now);
+            let mut points = Vec::new();
+            let mut from = trace.from;
+            for to in trace.breaks.iter().copied().chain([until]) {
+                if to > from || points.is_empty() {
+                    let piece = sample(sim, id, from, to, SAMPLES_PER_PIECE);
+                    // Each piece starts where the last one ended.
+                    let skip = usize::from(!points.is_empty());
+                    points.extend(piece.into_iter().skip(skip));
+                }
+                from = to;
+                if to >= until {
+                    break;
+                }
+            }
+            let moved = points.windows(2).any(|w| w[0] != w[1]);
+            moved.then(|| BallPath {
+                number: sim.numbers()[id],
+                points,
+            })
+        })
+        .collect();
+    // The cue ball first, then by number.
+    paths.sort_by_key(|p| p.number);
+    paths
 }
 
 impl AimPrediction {
@@ -179,10 +274,11 @@ impl AimPrediction {
     }
 }
 
-/// Ball `id`'s centre at evenly spaced times over `[from, to]`, from the exact history.
-fn sample(sim: &Simulation, id: usize, from: f64, to: f64) -> Vec<DVec2> {
-    (0..=SAMPLES)
-        .map(|k| from + (to - from) * k as f64 / SAMPLES as f64)
+/// Ball `id`'s centre at `samples + 1` evenly spaced times over `[from, to]`, from the exact
+/// history.
+fn sample(sim: &Simulation, id: usize, from: f64, to: f64, samples: usize) -> Vec<DVec2> {
+    (0..=samples)
+        .map(|k| from + (to - from) * k as f64 / samples as f64)
         .map(|t| to_dvec2(sim.history().state_at(id, t.min(sim.time())).position))
         .collect()
 }
@@ -212,7 +308,14 @@ fn update_prediction(
         return;
     };
     let balls: Vec<(u8, BallState)> = sim.numbers().iter().copied().zip(sim.balls()).collect();
-    *prediction = predict(*sim.table(), *sim.params(), &balls, cue, shot.shot());
+    *prediction = predict(
+        *sim.table(),
+        *sim.params(),
+        &balls,
+        cue,
+        shot.shot(),
+        view.aid_contacts,
+    );
 }
 
 /// Draws the path, the ghost ball and the paths after the contact, just above the cloth.
@@ -256,14 +359,14 @@ fn draw_prediction(
             )
             .resolution(16);
     }
-    gizmos.linestrip(
-        line(&prediction.cue_after),
-        Color::srgba(0.8, 0.9, 1.0, 0.6),
-    );
-    gizmos.linestrip(
-        line(&prediction.object_after),
-        Color::srgba(1.0, 0.85, 0.2, 0.8),
-    );
+    for path in &prediction.after {
+        let colour = if path.number == 0 {
+            Color::srgba(0.8, 0.9, 1.0, 0.7)
+        } else {
+            Color::srgba(1.0, 0.85, 0.2, 0.8)
+        };
+        gizmos.linestrip(line(&path.points), colour);
+    }
 }
 
 #[cfg(test)]
@@ -281,7 +384,7 @@ mod tests {
     fn ghost_ball_touches_the_object_ball_on_a_straight_shot() {
         let balls = [resting(0, -0.5, 0.0), resting(1, 0.3, 0.0)];
         let params = Params::default();
-        let p = predict(Table::wpa_8ft(), params, &balls, 0, Shot::new(0.0, 2.0));
+        let p = predict(Table::wpa_8ft(), params, &balls, 0, Shot::new(0.0, 2.0), 1);
         let (kind, ghost) = p.contact.unwrap();
         assert_eq!(kind, FirstContact::Ball { number: 1 });
         // Centre to centre 2R at contact, on the line of the shot.
@@ -289,7 +392,7 @@ mod tests {
         assert!((ghost.x - (0.3 - two_r)).abs() < 1e-9, "{ghost:?}");
         assert!(ghost.y.abs() < 1e-12);
         // Head on with equal masses: the object ball goes straight on.
-        let last = *p.object_after.last().unwrap();
+        let last = *p.after_of(1).unwrap().last().unwrap();
         assert!(last.x > 0.3 && last.y.abs() < 1e-9);
     }
 
@@ -297,10 +400,11 @@ mod tests {
     fn a_cut_sends_the_object_ball_along_the_line_of_centres() {
         let balls = [resting(0, -0.5, 0.0), resting(1, 0.3, 0.03)];
         let params = Params::default();
-        let p = predict(Table::wpa_8ft(), params, &balls, 0, Shot::new(0.0, 2.0));
+        let p = predict(Table::wpa_8ft(), params, &balls, 0, Shot::new(0.0, 2.0), 1);
         let (_, ghost) = p.contact.unwrap();
         let centres = (DVec2::new(0.3, 0.03) - ghost).normalize();
-        let moved = (p.object_after[SAMPLES / 2] - DVec2::new(0.3, 0.03)).normalize();
+        let moved =
+            (p.after_of(1).unwrap()[SAMPLES_PER_PIECE / 2] - DVec2::new(0.3, 0.03)).normalize();
         // The paper's model has no ball friction: no throw, so exactly the line of centres.
         assert!(centres.angle_to(moved).abs() < 1e-9);
     }
@@ -319,7 +423,7 @@ mod tests {
             },
             ..Shot::new(0.0, 2.0)
         };
-        let p = predict(Table::wpa_8ft(), params, &balls, 0, shot);
+        let p = predict(Table::wpa_8ft(), params, &balls, 0, shot, 1);
         assert!(p.note.unwrap().contains("miscue"));
         assert!(p.path.is_empty());
     }
@@ -333,10 +437,60 @@ mod tests {
             &balls,
             0,
             Shot::new(0.0, 3.0),
+            1,
         );
         let (kind, ghost) = p.contact.unwrap();
         assert_eq!(kind, FirstContact::Cushion);
         let radius = Params::default().ball.radius;
         assert!((ghost.x - (Table::wpa_8ft().length / 2.0 - radius)).abs() < 1e-9);
+    }
+
+    /// A full-draw stop shot: the object ball goes on and the cue ball comes back by more
+    /// than a metre; the aid shows all of that, not a centimetre of it.
+    #[test]
+    fn a_draw_shot_shows_the_cue_ball_coming_back() {
+        let balls = [resting(0, -0.6, 0.0), resting(1, 0.0, 0.0)];
+        let params = Params {
+            model: billiards_physics::Model::Spin(Default::default()),
+            ..Params::default()
+        };
+        let shot = Shot {
+            tip: billiards_physics::TipOffset {
+                side: 0.0,
+                height: -0.45,
+            },
+            ..Shot::new(0.0, 6.0)
+        };
+        let p = predict(Table::wpa_8ft(), params, &balls, 0, shot, 2);
+        assert_eq!(p.contact.unwrap().0, FirstContact::Ball { number: 1 });
+        let cue = p.after_of(0).expect("the cue ball moves after the contact");
+        let ghost = p.contact.unwrap().1;
+        let back = cue.iter().map(|q| ghost.x - q.x).fold(0.0, f64::max);
+        assert!(back > 1.0, "the cue ball comes back {back} m");
+        // The same shot run by the solver to rest: the cue ball's path reaches where it
+        // really goes (its next two contacts or rest), so the drawn end is a real position.
+        assert!(p.after_of(1).unwrap().len() > SAMPLES_PER_PIECE);
+    }
+
+    /// Each ball's path ends at its N-th contact after the first: more contacts, longer paths.
+    #[test]
+    fn paths_end_after_the_chosen_number_of_contacts() {
+        let balls = [resting(0, -0.5, 0.05), resting(1, 0.3, 0.0)];
+        let params = Params::default();
+        let length = |p: &AimPrediction, n| {
+            p.after_of(n)
+                .unwrap()
+                .windows(2)
+                .map(|w| w[0].distance(w[1]))
+                .sum::<f64>()
+        };
+        let shot = Shot::new(0.0, 4.0);
+        let one = predict(Table::wpa_8ft(), params, &balls, 0, shot, 1);
+        let three = predict(Table::wpa_8ft(), params, &balls, 0, shot, 3);
+        // The object ball takes three cushions; the cue ball drops in a corner pocket (its
+        // path ends there however many contacts are asked for).
+        let (a, b) = (length(&one, 1), length(&three, 1));
+        assert!(b > a + 1.0, "{a} m after one contact, {b} m after three");
+        assert_eq!(length(&one, 0), length(&three, 0));
     }
 }

@@ -20,7 +20,7 @@ pub fn plugin(app: &mut App) {
         .add_systems(
             Update,
             (
-                attach_visuals,
+                attach_visuals.in_set(BallSystems::Visuals),
                 start_pocket_drops,
                 animate_pocket_drops,
                 restore_respotted,
@@ -30,6 +30,13 @@ pub fn plugin(app: &mut App) {
             PostUpdate,
             draw_ball_motion.before(TransformSystems::Propagate),
         );
+}
+
+/// The balls' systems that other plugins order themselves against.
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum BallSystems {
+    /// New balls get their mesh and material.
+    Visuals,
 }
 
 /// A pool ball. Spawned by the simulation together with [`BallMotion`].

@@ -13,7 +13,7 @@ use crate::{
     input::{InputSystems, aim_unlocked},
     mode::GameMode,
     settings::{ClampReport, ShotSettings, ViewSettings, apply_shot_edit},
-    sim::{ShotRequested, SimStatus, SimSystems, Solver, place_ball_in_hand},
+    sim::{ShotRequested, ShotUndone, SimStatus, SimSystems, Solver, place_ball_in_hand},
 };
 use bevy::{
     input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
@@ -42,7 +42,13 @@ pub fn plugin(app: &mut App) {
         )
         .add_systems(
             Update,
-            (place_cue.run_if(in_state(GameMode::Play)), draw_vectors).after(SimSystems::Commands),
+            (
+                retry_undone_shot,
+                place_cue.run_if(in_state(GameMode::Play)),
+                draw_vectors,
+            )
+                .chain()
+                .after(SimSystems::Commands),
         )
         // No cue over a recording; back in play, `place_cue` shows it again when it may.
         .add_systems(OnEnter(GameMode::Replay), hide_cue);
@@ -62,6 +68,8 @@ const REST_GAP: f32 = 0.012;
 const FULL_PULL_BACK: f32 = 0.30;
 /// The cue is raised at the butt just enough to clear the rails.
 const ELEVATION: f32 = 0.09;
+/// The steepest a player jacks the cue up over a ball in the way (about 50 degrees).
+const MAX_ELEVATION: f32 = 0.87;
 
 /// The maple shaft colour, which the render test looks for.
 pub const SHAFT_COLOUR: Color = Color::srgb(0.93, 0.80, 0.58);
@@ -110,6 +118,18 @@ fn spawn_cue(
 }
 
 /// The cue ball's table position, if it is on the table.
+/// After an undo the cue is lined up as for the shot taken back, so it can be retried or
+/// adjusted.
+fn retry_undone_shot(mut undone: MessageReader<ShotUndone>, mut shot: ResMut<ShotSettings>) {
+    if let Some(ShotUndone { shot: last }) = undone.read().last() {
+        shot.set_if_neq(ShotSettings {
+            angle: last.angle,
+            power: last.speed,
+            tip: last.tip,
+        });
+    }
+}
+
 fn cue_ball_position(balls: &Query<(&Ball, &BallMotion), Without<Pocketed>>) -> Option<DVec2> {
     balls
         .iter()
@@ -285,10 +305,22 @@ fn place_cue(
     let Some(cue_ball) = cue_ball else { return };
 
     let aim = table_dir_to_world(shot.direction());
-    // From the tip toward the butt: backward along the aim, raised by the elevation.
-    let back = (-aim * ELEVATION.cos() + Vec3::Y * ELEVATION.sin()).normalize();
     let power = (shot.power / ShotSettings::POWER.max) as f32;
     let gap = REST_GAP + FULL_PULL_BACK * power.clamp(0.0, 1.0);
+    // Raised over any ball behind the cue ball, as a player jacks up the butt.
+    let others = balls
+        .iter()
+        .filter(|(b, _)| b.number != 0)
+        .map(|(_, m)| m.position);
+    let elevation = cue_elevation(
+        cue_ball,
+        shot.direction(),
+        others,
+        spec.ball_radius as f32,
+        gap,
+    );
+    // From the tip toward the butt: backward along the aim, raised by the elevation.
+    let back = (-aim * elevation.cos() + Vec3::Y * elevation.sin()).normalize();
     let centre = spec.ball_world_position(cue_ball);
     let target = Transform::from_translation(centre + back * (spec.ball_radius as f32 + gap))
         .with_rotation(Quat::from_rotation_arc(Vec3::Y, back));
@@ -296,6 +328,40 @@ fn place_cue(
         *transform = target;
         redraw.write(RequestRedraw);
     }
+}
+
+/// The cue's elevation (radians above the cloth) for a cue ball at `cue_ball` aimed along
+/// `aim` (table plane, unit), its tip `gap` behind the ball: the rail-clearing minimum, or
+/// steeper so the stick passes over every ball in `others` behind the cue ball, up to
+/// about 50 degrees.
+pub fn cue_elevation(
+    cue_ball: DVec2,
+    aim: DVec2,
+    others: impl Iterator<Item = DVec2>,
+    radius: f32,
+    gap: f32,
+) -> f32 {
+    let back = -aim;
+    let tip = radius + gap;
+    let mut elevation = ELEVATION;
+    for other in others {
+        let v = other - cue_ball;
+        let along = v.dot(back) as f32;
+        let across = v.perp_dot(back).abs() as f32;
+        // Where the stick is about as thick as it gets over a ball (a few mm of margin).
+        let thickness = BUTT_RADIUS + 0.004;
+        let reach = radius + thickness;
+        if across >= reach || along <= 0.0 || along - radius > tip + CUE_LENGTH {
+            continue;
+        }
+        // The stick's axis must pass this high over the ball's centre (both at the same
+        // height: the tip strikes the cue ball about its centre) ...
+        let over = (reach * reach - across * across).sqrt();
+        // ... from the ball's near side on, measured from the tip.
+        let run = (along - over - tip).max(1e-3);
+        elevation = elevation.max(over.atan2(run));
+    }
+    elevation.min(MAX_ELEVATION)
 }
 
 /// The paper's vectors: red for the cue (direction and strength of the shot), blue for each
@@ -337,5 +403,46 @@ fn draw_vectors(
 fn hide_cue(mut cue: Query<&mut Visibility, With<CueStick>>) {
     for mut visibility in &mut cue {
         visibility.set_if_neq(Visibility::Hidden);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const R: f32 = 0.028_575;
+
+    #[test]
+    fn a_clear_line_keeps_the_cue_low() {
+        let e = cue_elevation(
+            DVec2::ZERO,
+            DVec2::X,
+            [DVec2::new(0.5, 0.0)].into_iter(),
+            R,
+            0.02,
+        );
+        assert_eq!(e, ELEVATION);
+        let beside = [DVec2::new(-0.3, 0.2)];
+        assert_eq!(
+            cue_elevation(DVec2::ZERO, DVec2::X, beside.into_iter(), R, 0.02),
+            ELEVATION
+        );
+    }
+
+    #[test]
+    fn a_ball_behind_the_cue_ball_raises_the_butt_over_it() {
+        let behind = DVec2::new(-0.3, 0.0);
+        let gap = 0.05;
+        let e = cue_elevation(DVec2::ZERO, DVec2::X, [behind].into_iter(), R, gap);
+        assert!(e > ELEVATION);
+        // Over the ball's near side the stick's axis is a ball radius plus the butt above
+        // its centre.
+        let near = 0.3 - R - BUTT_RADIUS;
+        let height = (near - R - gap) * e.tan();
+        assert!(height >= R + BUTT_RADIUS - 1e-4, "{height}");
+        // A ball right behind needs a steeper cue, up to the limit.
+        let close = [DVec2::new(-2.1 * f64::from(R), 0.0)];
+        let steep = cue_elevation(DVec2::ZERO, DVec2::X, close.into_iter(), R, gap);
+        assert!(steep > e && steep <= MAX_ELEVATION);
     }
 }

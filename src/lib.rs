@@ -7,10 +7,13 @@ pub mod aim;
 pub mod balls;
 pub mod camera;
 pub mod computer;
+pub mod config;
 pub mod cue;
 pub mod display;
 pub mod game;
 pub mod geometry;
+pub mod graphics;
+pub mod idle;
 pub mod input;
 pub mod lighting;
 pub mod mode;
@@ -48,7 +51,10 @@ impl Plugin for GamePlugin {
         app.add_plugins(DefaultPlugins.set(WindowPlugin {
             primary_window: Some(Window {
                 title: "Billiards".into(),
-                resolution: WindowResolution::new(1280, 720),
+                resolution: match self.options.size {
+                    Some((width, height)) => WindowResolution::new(width, height),
+                    None => WindowResolution::new(1280, 720),
+                },
                 ..default()
             }),
             ..default()
@@ -69,7 +75,8 @@ impl Plugin for GamePlugin {
             game::plugin,
             game::table_plugin,
             computer::plugin,
-        ));
+        ))
+        .add_plugins((config::plugin, graphics::plugin));
         #[cfg(feature = "sound")]
         app.add_plugins(sound::plugin);
         if let Some(file) = &self.options.replay {
@@ -82,6 +89,20 @@ impl Plugin for GamePlugin {
             app.insert_resource(recording::RecordingsFolder(None));
         } else if let Some(folder) = &self.options.recordings {
             app.insert_resource(recording::RecordingsFolder(Some(folder.clone())));
+        }
+        app.insert_resource(if self.options.no_config {
+            config::ConfigFile::default()
+        } else {
+            config::ConfigFile::platform_default()
+        });
+        if let Some(path) = &self.options.check_layout {
+            app.insert_resource(ui::layout_check::LayoutReport(path.clone()));
+        }
+        if self.options.open_sections {
+            app.insert_resource(ui::OpenSections(true));
+        }
+        if let Some(seconds) = self.options.count_idle_frames {
+            app.add_plugins(idle::IdleCountPlugin { seconds });
         }
         if self.options.top_view {
             app.insert_resource(camera::OrbitCamera::top_view());

@@ -17,6 +17,16 @@ pub struct LaunchOptions {
     pub recordings: Option<PathBuf>,
     /// Do not save recordings.
     pub no_record: bool,
+    /// Neither read nor write the settings file (start from the defaults).
+    pub no_config: bool,
+    /// The window's size in logical pixels (default 1280x720).
+    pub size: Option<(u32, u32)>,
+    /// Write a check of the UI's text (cut, elided, off screen) to this file every frame.
+    pub check_layout: Option<PathBuf>,
+    /// Open every section of the panel (for screenshots and the layout check).
+    pub open_sections: bool,
+    /// Count the frames drawn in this long at idle, print them and exit.
+    pub count_idle_frames: Option<Duration>,
     /// Open this recording in the replay viewer at start (`billiards replay FILE`).
     pub replay: Option<PathBuf>,
     /// Start a match of this game (two players, race to 3) instead of free play.
@@ -58,12 +68,15 @@ impl LaunchOptions {
     /// The usage text printed by `--help` and after a command-line error.
     pub const USAGE: &'static str = "\
 usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
-                 [--game nine-ball|eight-ball|free-play]
-                 [--screenshot PATH [--settle SECONDS]]
+                 [--game nine-ball|eight-ball|free-play] [--no-config]
+                 [--size WxH] [--screenshot PATH [--settle SECONDS]]
+                 [--check-layout PATH] [--open-sections] [--count-idle-frames SECONDS]
 
   replay FILE         open a recording in the replay viewer
   --recordings DIR    save every game there, one file per rack (default: ./recordings)
   --no-record         do not save recordings
+  --no-config         start from the default settings and keep none (the settings file
+                      is otherwise in the config directory: $XDG_CONFIG_HOME/billiards)
   --game GAME         start a match (two players, race to 3) of nine-ball or eight-ball;
                       free-play (the default) is the sandbox
 
@@ -71,6 +84,13 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
   --settle SECONDS    how long every render pipeline must have been ready before the
                       capture (default 2)
   --top-view          start with the camera straight above the table (T toggles it)
+  --size WxH          window size in logical pixels (default 1280x720)
+  --check-layout PATH write every text of the UI that is cut, elided or off screen to
+                      PATH after each frame (the render test reads it)
+  --open-sections     open every section of the panel
+  --count-idle-frames SECONDS
+                      once drawn, count the frames the idle window draws in SECONDS,
+                      print \"idle frames: N in S s\" and exit
   -h, --help          print this text";
 
     /// Wall time the scene must have been fully drawn before a screenshot, unless overridden.
@@ -101,11 +121,47 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                         })?;
                 }
                 "--top-view" => options.top_view = true,
+                "--open-sections" => options.open_sections = true,
+                "--size" => {
+                    let value = args.next().ok_or(ArgsError::MissingValue("--size"))?;
+                    let parsed = value
+                        .split_once('x')
+                        .and_then(|(w, h)| Some((w.parse().ok()?, h.parse().ok()?)))
+                        .filter(|&(w, h): &(u32, u32)| {
+                            (200..=8192).contains(&w) && (200..=8192).contains(&h)
+                        });
+                    options.size = Some(parsed.ok_or(ArgsError::InvalidValue {
+                        flag: "--size",
+                        value,
+                    })?);
+                }
+                "--check-layout" => {
+                    let path = args
+                        .next()
+                        .ok_or(ArgsError::MissingValue("--check-layout"))?;
+                    options.check_layout = Some(PathBuf::from(path));
+                }
+                "--count-idle-frames" => {
+                    let value = args
+                        .next()
+                        .ok_or(ArgsError::MissingValue("--count-idle-frames"))?;
+                    options.count_idle_frames = Some(
+                        value
+                            .parse::<f64>()
+                            .ok()
+                            .and_then(|s| Duration::try_from_secs_f64(s).ok())
+                            .ok_or(ArgsError::InvalidValue {
+                                flag: "--count-idle-frames",
+                                value,
+                            })?,
+                    );
+                }
                 "--recordings" => {
                     let dir = args.next().ok_or(ArgsError::MissingValue("--recordings"))?;
                     options.recordings = Some(PathBuf::from(dir));
                 }
                 "--no-record" => options.no_record = true,
+                "--no-config" => options.no_config = true,
                 "--game" => {
                     let value = args.next().ok_or(ArgsError::MissingValue("--game"))?;
                     options.game = Some(match value.as_str() {
@@ -131,6 +187,9 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
         // The usage marks them exclusive: saving nowhere and saving to DIR.
         if options.no_record && options.recordings.is_some() {
             return Err(ArgsError::Conflict("--no-record", "--recordings"));
+        }
+        if options.screenshot.is_some() && options.count_idle_frames.is_some() {
+            return Err(ArgsError::Conflict("--screenshot", "--count-idle-frames"));
         }
         Ok(options)
     }
@@ -176,6 +235,20 @@ mod tests {
             Err(ArgsError::InvalidValue { flag: "--game", .. })
         ));
         assert_eq!(parse(&["replay"]), Err(ArgsError::MissingValue("replay")));
+        assert_eq!(
+            parse(&["--size", "1920x1080"]).unwrap().size,
+            Some((1920, 1080))
+        );
+        assert!(matches!(
+            parse(&["--size", "big"]),
+            Err(ArgsError::InvalidValue { flag: "--size", .. })
+        ));
+        assert_eq!(
+            parse(&["--count-idle-frames", "10"])
+                .unwrap()
+                .count_idle_frames,
+            Some(Duration::from_secs(10))
+        );
     }
 
     #[test]

@@ -11,7 +11,9 @@ use std::{
 
 use bevy::prelude::*;
 
-use crate::sim::{RackRequested, ShotFinished, SimStatus, SimSystems, Solver, rack_slug};
+use crate::sim::{
+    RackRequested, ShotFinished, ShotUndone, SimStatus, SimSystems, Solver, rack_slug,
+};
 
 /// Registers the autosave.
 pub fn plugin(app: &mut App) {
@@ -25,7 +27,9 @@ pub fn plugin(app: &mut App) {
                 save_before_rack,
             )
                 .in_set(SimSystems::Flow),
-        );
+        )
+        // An undo is placements in the recording: saved as soon as it is made.
+        .add_systems(Update, save_undo.after(SimSystems::Commands));
 }
 
 /// Where recordings are written and listed. `None` turns the autosave off.
@@ -64,6 +68,22 @@ fn save_finished_shot(
     mut autosave: ResMut<Autosave>,
 ) {
     if finished.read().count() == 0 {
+        return;
+    }
+    if let (Some(folder), Some(solver)) = (&folder.0, solver) {
+        save_game(folder, &solver, status.shots, &mut autosave);
+    }
+}
+
+/// After an undo, writes the game with its placements.
+fn save_undo(
+    mut undone: MessageReader<ShotUndone>,
+    folder: Res<RecordingsFolder>,
+    solver: Option<Res<Solver>>,
+    status: Res<SimStatus>,
+    mut autosave: ResMut<Autosave>,
+) {
+    if undone.read().count() == 0 {
         return;
     }
     if let (Some(folder), Some(solver)) = (&folder.0, solver) {

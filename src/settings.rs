@@ -8,12 +8,14 @@ use std::{f64::consts::TAU, fmt};
 
 use bevy::prelude::*;
 use billiards_physics::{Prediction, SpinModel, TipOffset};
+use serde::{Deserialize, Serialize};
 
 /// Registers the settings resources.
 pub fn plugin(app: &mut App) {
     app.init_resource::<ShotSettings>()
         .init_resource::<PhysicsSettings>()
         .init_resource::<ViewSettings>()
+        .init_resource::<GraphicsSettings>()
         .init_resource::<ClampReport>();
 }
 
@@ -191,7 +193,8 @@ impl ShotSettings {
 }
 
 /// The cushion model of the spin model.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum CushionChoice {
     /// Han (2005): impulse at the nose height with friction; english changes the rebound.
     #[default]
@@ -214,7 +217,8 @@ impl CushionChoice {
 }
 
 /// Which physics model the solver runs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum PhysicsModel {
     /// The paper's model: no spin, sliding friction above the slide/roll threshold speed and
     /// rolling friction below it.
@@ -250,7 +254,8 @@ pub fn prediction_label(prediction: Prediction) -> &'static str {
 pub const PREDICTIONS: [Prediction; 2] = [Prediction::Exact, Prediction::PaperLinear];
 
 /// Random perturbation of collision normals (the paper's section 5).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct Randomization {
     /// Whether collisions are perturbed at all.
     pub enabled: bool,
@@ -270,8 +275,10 @@ impl Default for Randomization {
     }
 }
 
-/// The physical parameters of the simulation and its clock.
-#[derive(Resource, Debug, Clone, Copy, PartialEq)]
+/// The physical parameters of the simulation and its clock. Kept between runs (the settings
+/// file); a field missing from the file takes its default.
+#[derive(Resource, Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct PhysicsSettings {
     /// Sliding friction between ball and cloth.
     pub mu_slide: f64,
@@ -307,7 +314,8 @@ pub struct PhysicsSettings {
     pub prediction: Prediction,
     /// Simulated seconds per real second.
     pub time_scale: f64,
-    /// Whether the simulation clock is stopped.
+    /// Whether the simulation clock is stopped (not kept between runs).
+    #[serde(skip)]
     pub paused: bool,
 }
 
@@ -444,12 +452,21 @@ impl PhysicsSettings {
 }
 
 /// What is drawn on top of the scene.
-#[derive(Resource, Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Resource, Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct ViewSettings {
     /// Draw the paper's vectors: the red cue vector and blue ball velocities.
     pub show_vectors: bool,
     /// Draw the aiming aid: the path to the first contact, the ghost ball, the paths after.
     pub show_aim: bool,
+    /// How far the aid follows each ball after the first contact: until it rests, drops or
+    /// has made this many more contacts (balls, cushions, jaws).
+    pub aid_contacts: u32,
+}
+
+impl ViewSettings {
+    /// The range offered for [`ViewSettings::aid_contacts`].
+    pub const AID_CONTACTS: std::ops::RangeInclusive<u32> = 1..=10;
 }
 
 impl Default for ViewSettings {
@@ -458,6 +475,59 @@ impl Default for ViewSettings {
         Self {
             show_vectors: true,
             show_aim: true,
+            aid_contacts: 2,
+        }
+    }
+}
+
+/// Graphics quality, so a slow machine stays playable.
+#[derive(Resource, Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct GraphicsSettings {
+    /// The lamps cast shadows.
+    pub shadows: bool,
+    /// Side of each lamp's shadow map, in texels.
+    pub shadow_resolution: u32,
+    /// Multisample anti-aliasing: samples per pixel (1 is off).
+    pub msaa_samples: u32,
+}
+
+impl GraphicsSettings {
+    /// The shadow-map sizes offered.
+    pub const SHADOW_RESOLUTIONS: [u32; 3] = [512, 1024, 2048];
+    /// The MSAA sample counts offered (1: off).
+    pub const MSAA_SAMPLES: [u32; 3] = [1, 2, 4];
+
+    /// The lowest settings: no shadows, no anti-aliasing.
+    pub const LOW: Self = Self {
+        shadows: false,
+        shadow_resolution: 512,
+        msaa_samples: 1,
+    };
+
+    /// A copy with every value one the game offers (a hand-edited file may hold others).
+    pub fn sanitized(self) -> Self {
+        let nearest = |value: u32, choices: &[u32]| {
+            *choices
+                .iter()
+                .min_by_key(|&&c| c.abs_diff(value))
+                .expect("choices are not empty")
+        };
+        Self {
+            shadows: self.shadows,
+            shadow_resolution: nearest(self.shadow_resolution, &Self::SHADOW_RESOLUTIONS),
+            msaa_samples: nearest(self.msaa_samples, &Self::MSAA_SAMPLES),
+        }
+    }
+}
+
+impl Default for GraphicsSettings {
+    fn default() -> Self {
+        Self {
+            shadows: true,
+            // Bevy's default for spot lights.
+            shadow_resolution: 1024,
+            msaa_samples: 4,
         }
     }
 }

@@ -41,6 +41,8 @@ pub fn plugin(app: &mut App) {
         .add_message::<ShotRequested>()
         .add_message::<StepRequested>()
         .add_message::<CueStruck>()
+        .add_message::<UndoRequested>()
+        .add_message::<ShotUndone>()
         .add_message::<BallContact>()
         .add_message::<CushionHit>()
         .add_message::<BallPocketed>()
@@ -60,6 +62,12 @@ pub fn plugin(app: &mut App) {
             Update,
             SimSystems::Commands.run_if(in_state(GameMode::Play)),
         )
+        // A rack's new balls get their meshes in the frame the old ones are despawned, so no
+        // frame shows an empty table.
+        .configure_sets(
+            Update,
+            crate::balls::BallSystems::Visuals.after(SimSystems::Commands),
+        )
         .add_systems(Startup, request_default_rack)
         .add_systems(
             Update,
@@ -71,6 +79,7 @@ pub fn plugin(app: &mut App) {
                     rack_balls,
                     apply_physics_settings,
                     place_edited_balls,
+                    undo_last_shot,
                     strike_cue_ball,
                 )
                     .chain()
@@ -168,6 +177,28 @@ impl ShotRequested {
             tip: shot.tip,
         }
     }
+}
+
+/// Asks for the last shot to be taken back (practice: free play only). Every ball goes back to
+/// where it rested before the strike through placements the recorder logs, so a recording
+/// with undos replays and verifies bit for bit like any other. Also while balls still move.
+#[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct UndoRequested;
+
+/// A shot was taken back; carries it, so the panel can line it up again (retry).
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub struct ShotUndone {
+    /// The shot taken back.
+    pub shot: ShotRequested,
+}
+
+/// The table just before a strike: what an undo goes back to.
+#[derive(Debug, Clone, PartialEq)]
+struct BeforeShot {
+    balls: Vec<BallState>,
+    shot: ShotRequested,
+    shots: u32,
+    ball_in_hand: Option<CueBall>,
 }
 
 /// Asks the paused simulation to advance exactly to its next event.
@@ -269,6 +300,8 @@ pub struct Solver {
     entities: Vec<Entity>,
     rack: Rack,
     started: SystemTime,
+    /// The table before each shot since the rack, newest last (undo goes back one at a time).
+    undo: Vec<BeforeShot>,
 }
 
 impl Solver {
@@ -295,6 +328,11 @@ impl Solver {
     /// The entity of solver ball `id`.
     pub fn entity(&self, id: usize) -> Option<Entity> {
         self.entities.get(id).copied()
+    }
+
+    /// Shots that [`UndoRequested`] can take back, one at a time.
+    pub fn undoable_shots(&self) -> usize {
+        self.undo.len()
     }
 
     /// The solver index of the cue ball, if it is in the layout.
@@ -594,6 +632,7 @@ fn rack_balls(
         entities,
         rack,
         started: SystemTime::now(),
+        undo: Vec::new(),
     });
     *status = SimStatus {
         at_rest: true,
@@ -684,8 +723,15 @@ fn strike_cue_ball(
         speed: request.speed,
         tip: request.tip,
     };
+    let before = BeforeShot {
+        balls: solver.simulation().balls().collect(),
+        shot: request,
+        shots: status.shots,
+        ball_in_hand: status.ball_in_hand,
+    };
     match solver.rec.strike(cue_ball, shot) {
         Ok(()) => {
+            solver.undo.push(before);
             // Show the struck ball's new velocity now rather than after the next step.
             if let Ok(mut motion) = balls.get_mut(solver.entities[cue_ball]) {
                 *motion = ball_motion(&solver.simulation().ball(cue_ball));
@@ -699,6 +745,129 @@ fn strike_cue_ball(
         }
         Err(error) => status.note = Some(format!("no shot: {error}")),
     }
+}
+
+/// Takes the last shot back ([`UndoRequested`]): each ball goes back where it was before the
+/// strike, by placements the recorder logs; the panel gets the shot back ([`ShotUndone`]).
+#[allow(clippy::too_many_arguments)]
+fn undo_last_shot(
+    mut commands: Commands,
+    mut requests: MessageReader<UndoRequested>,
+    solver: Option<ResMut<Solver>>,
+    referee: Res<Referee>,
+    spec: Res<TableSpec>,
+    mut balls: Query<&mut BallMotion>,
+    mut status: ResMut<SimStatus>,
+    mut undone: MessageWriter<ShotUndone>,
+    mut redraw: MessageWriter<RequestRedraw>,
+) {
+    if requests.read().count() == 0 {
+        return;
+    }
+    let Some(mut solver) = solver else { return };
+    if referee.active {
+        status.note = Some("undo is for practice (free play): a match's shots stand".to_owned());
+        return;
+    }
+    let Some(before) = solver.undo.pop() else {
+        status.note = Some("no shot to undo since the rack".to_owned());
+        return;
+    };
+    if let Err(error) = restore(&mut solver.rec, &spec, &before.balls) {
+        status.note = Some(format!("undo incomplete: {error}"));
+    } else {
+        status.note = None;
+    }
+    for (id, &entity) in solver.entities.iter().enumerate() {
+        let state = solver.simulation().ball(id);
+        if let Ok(mut motion) = balls.get_mut(entity) {
+            motion.set_if_neq(ball_motion(&state));
+        }
+        if state.motion.on_table() {
+            commands.entity(entity).remove::<Pocketed>();
+        }
+    }
+    status.at_rest = solver.simulation().is_at_rest();
+    status.shots = before.shots;
+    status.ball_in_hand = before.ball_in_hand;
+    status.events_this_shot = 0;
+    undone.write(ShotUndone { shot: before.shot });
+    redraw.write(RequestRedraw);
+}
+
+/// Puts every ball back in `target` (its state before a shot) by recorded placements. A ball
+/// whose old spot is taken by another not yet moved back waits; when every waiting ball is
+/// blocked (two balls swapped places), one of the blockers is first set down on a free spot.
+fn restore(rec: &mut Recorder, spec: &TableSpec, target: &[BallState]) -> Result<(), String> {
+    let differs = |rec: &Recorder, id: usize| {
+        let now = rec.sim().ball(id);
+        let want = &target[id];
+        want.motion.on_table()
+            && (!now.motion.on_table()
+                || now.position != want.position
+                || now.velocity != want.velocity
+                || now.angular_velocity != want.angular_velocity)
+    };
+    let mut pending: Vec<usize> = (0..target.len()).filter(|&id| differs(rec, id)).collect();
+    // Each round places at least one ball for good, or parks one blocker: bounded.
+    for _ in 0..4 * target.len() + 4 {
+        if pending.is_empty() {
+            return Ok(());
+        }
+        let placed = pending.iter().position(|&id| {
+            let want = target[id];
+            rec.place(id, want.position, want.velocity, want.angular_velocity)
+                .is_ok()
+        });
+        if let Some(k) = placed {
+            pending.remove(k);
+            continue;
+        }
+        // Every waiting ball is blocked by another waiting one: park the first blocker.
+        let id = pending[0];
+        let r = rec.sim().params().ball.radius;
+        let blocker = pending
+            .iter()
+            .copied()
+            .find(|&j| {
+                j != id
+                    && rec.sim().ball(j).motion.on_table()
+                    && (rec.sim().ball(j).position - target[id].position).length() < 2.0 * r
+            })
+            .ok_or_else(|| format!("ball {id} cannot go back"))?;
+        let spot = free_spot(rec.sim(), spec, target).ok_or("no free spot on the table")?;
+        rec.place(blocker, spot, physics::Vec2::ZERO, physics::Vec3::ZERO)
+            .map_err(|error| error.to_string())?;
+    }
+    Err("the balls could not all be put back".to_owned())
+}
+
+/// A spot on the cloth clear of every ball on the table and of every spot in `target`.
+fn free_spot(sim: &Simulation, spec: &TableSpec, target: &[BallState]) -> Option<physics::Vec2> {
+    let r = spec.ball_radius;
+    let clear = 2.0 * r + 0.005;
+    let (hx, hy) = (spec.length / 2.0 - 2.0 * r, spec.width / 2.0 - 2.0 * r);
+    let taken: Vec<physics::Vec2> = sim
+        .balls()
+        .filter(|b| b.motion.on_table())
+        .map(|b| b.position)
+        .chain(
+            target
+                .iter()
+                .filter(|b| b.motion.on_table())
+                .map(|b| b.position),
+        )
+        .collect();
+    let steps = 24;
+    (0..=steps)
+        .flat_map(|i| (0..=steps / 2).map(move |j| (i, j)))
+        .map(|(i, j)| {
+            physics::Vec2::new(
+                -hx + 2.0 * hx * f64::from(i) / f64::from(steps),
+                -hy + 2.0 * hy * f64::from(j) / f64::from(steps / 2),
+            )
+        })
+        .find(|&p| taken.iter().all(|&q| (p - q).length() >= clear))
 }
 
 /// Free play: after a scratch the cue ball goes back on the head string, where

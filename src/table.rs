@@ -77,13 +77,13 @@ fn spawn_table(
     part(table_mesh::cloth(&spec), &cloth, "Cloth");
     part(table_mesh::cushions(&spec), &cushion_cloth, "Cushions");
     part(table_mesh::rails(&spec, -APRON_DEPTH), &wood, "Rails");
-    let liners = part(
+    part(
         table_mesh::pocket_liners(&spec, POCKET_DEPTH),
         &liner,
         "Pocket liners",
     );
-    // The liners are inside the table; letting them cast would only darken the pockets' rims.
-    commands.entity(liners).insert(NotShadowCaster);
+    // The liners cast shadows: a pocket is a closed bag, and the lamps' light that went
+    // through the holes lit pocket-shaped patches on the floor.
 
     // Diamond sights: small flat rhombi inlaid in the rail tops.
     let diamond = meshes.add(Rhombus::new(0.028, 0.014));

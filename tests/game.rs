@@ -360,3 +360,18 @@ fn eight_ball_needs_a_call_on_the_eight_and_the_dialog_pauses_the_turn() {
     assert!(lines.contains("call: the "), "{lines}");
     let _ = std::fs::remove_dir_all(&folder);
 }
+
+/// Undo is for practice: in a match the shot stands and the player is told why.
+#[test]
+fn a_match_refuses_undo() {
+    let folder = std::env::temp_dir().join(format!("billiards-game-undo-{}", std::process::id()));
+    let mut app = start(&folder, Game::NineBall, 1);
+    shoot(&mut app, 0.0, 9.0);
+    let after = balls(&mut app);
+    app.world_mut().write_message(sim::UndoRequested);
+    app.update();
+    assert_eq!(balls(&mut app), after);
+    let note = app.world().resource::<SimStatus>().note.clone().unwrap();
+    assert!(note.contains("practice"), "{note}");
+    let _ = std::fs::remove_dir_all(&folder);
+}

@@ -84,49 +84,164 @@ impl Shot {
     }
 }
 
-/// Runs the game with `args` and `--screenshot`, returns the captured frame; `None` (the test
-/// is skipped) without xvfb-run or a Vulkan driver.
-fn screenshot(args: &[&str]) -> Option<Shot> {
+/// Whether the render tests can run here; says why not if they cannot.
+fn can_render() -> bool {
     if !on_path("xvfb-run") || !vulkan_driver_installed() {
         eprintln!(
             "render test skipped: needs xvfb-run and a Vulkan driver \
              (apt-get install xvfb mesa-vulkan-drivers libvulkan1)"
         );
-        return None;
+        return false;
     }
-    let out: PathBuf = env::temp_dir().join(format!(
-        "billiards-render-{}-{}.png",
-        std::process::id(),
-        args.len()
-    ));
+    true
+}
+
+/// Runs the game under Xvfb with a screen of `size` and `args`; the settings file is read
+/// from an empty config folder, so the developer's own settings do not change the picture.
+fn run_game(size: (u32, u32), args: &[&str]) -> std::process::Output {
     let runtime_dir = env::var_os("XDG_RUNTIME_DIR").unwrap_or_else(|| env::temp_dir().into());
+    let config = env::temp_dir().join(format!("billiards-render-config-{}", std::process::id()));
     // `timeout` (coreutils) ends the run with SIGTERM, so xvfb-run can stop its X server.
     let output = Command::new("timeout")
-        .args([
-            "--kill-after=10",
-            "300",
-            "xvfb-run",
-            "-a",
-            "-s",
-            "-screen 0 1280x720x24",
-        ])
+        .args(["--kill-after=10", "300", "xvfb-run", "-a", "-s"])
+        .arg(format!("-screen 0 {}x{}x24", size.0, size.1))
         .arg(env!("CARGO_BIN_EXE_billiards"))
+        .arg("--size")
+        .arg(format!("{}x{}", size.0, size.1))
         .args(args)
-        .arg("--screenshot")
-        .arg(&out)
         .env("XDG_RUNTIME_DIR", runtime_dir)
+        .env("XDG_CONFIG_HOME", &config)
         .output()
         .expect("timeout and xvfb-run start");
     assert!(
         output.status.success(),
-        "billiards --screenshot failed ({}):\n{}",
+        "billiards {args:?} failed ({}):\n{}",
         output.status,
         String::from_utf8_lossy(&output.stderr)
     );
+    output
+}
+
+/// A unique temporary file for this test run.
+fn temp_file(name: &str) -> PathBuf {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static NEXT: AtomicUsize = AtomicUsize::new(0);
+    env::temp_dir().join(format!(
+        "billiards-render-{}-{}-{name}",
+        std::process::id(),
+        NEXT.fetch_add(1, Ordering::Relaxed)
+    ))
+}
+
+/// Runs the game with `args` and `--screenshot` at 1280x720, returns the captured frame;
+/// `None` (the test is skipped) without xvfb-run or a Vulkan driver.
+fn screenshot(args: &[&str]) -> Option<Shot> {
+    if !can_render() {
+        return None;
+    }
+    let out = temp_file("shot.png");
+    let mut all = args.to_vec();
+    let out_arg = out.to_string_lossy().into_owned();
+    all.extend(["--screenshot", &out_arg]);
+    run_game((1280, 720), &all);
     let shot = Shot::load(&out);
     let _ = std::fs::remove_file(&out);
     assert_eq!((shot.width, shot.height), (1280, 720));
     Some(shot)
+}
+
+/// A recorded break, for the replay's timeline.
+fn recorded_break() -> PathBuf {
+    use billiards_physics::{Params, Rack, Shot, Table, recording::Recorder};
+    let table = Table::wpa_8ft();
+    let params = Params::default();
+    let layout = Rack::FifteenBall.layout(&table, &params.ball);
+    let mut rec = Recorder::new(table, params, layout).unwrap();
+    rec.strike(0, Shot::new(0.01, 8.0)).unwrap();
+    rec.run_to_rest().unwrap();
+    let path = temp_file("break.json");
+    rec.recording().save(&path).unwrap();
+    path
+}
+
+/// Every text of the UI fits (item 5 of issue 15), read from egui's own layout by
+/// `--check-layout`: none elided, none cut at the side of its panel or window, none off the
+/// screen; at 1280x720 and 1920x1080, in free play with every panel section open, in a match
+/// in a replay (the timeline window) and after a recording failed to open (the error).
+#[test]
+fn every_text_fits_at_both_sizes() {
+    if !can_render() {
+        return;
+    }
+    let recording = recorded_break();
+    let recording = recording.to_string_lossy().into_owned();
+    // A file that cannot be opened: its error, with a long path, shows in the panel.
+    let missing = env::temp_dir()
+        .join("a-folder-with-a-long-name-for-recordings")
+        .join("2026-12-01_12-00-00.000_15-ball-that-does-not-exist.json");
+    let missing = missing.to_string_lossy().into_owned();
+    let states: [&[&str]; 4] = [
+        &["--open-sections"],
+        &["--game", "nine-ball"],
+        &["replay", &recording],
+        &["replay", &missing],
+    ];
+    let mut failures = Vec::new();
+    for size in [(1280, 720), (1920, 1080)] {
+        for state in states {
+            let report = temp_file("layout.txt");
+            let shot = temp_file("layout.png");
+            let mut args = state.to_vec();
+            let (report_arg, shot_arg) = (
+                report.to_string_lossy().into_owned(),
+                shot.to_string_lossy().into_owned(),
+            );
+            args.extend(["--no-record", "--check-layout", &report_arg]);
+            args.extend(["--screenshot", &shot_arg]);
+            run_game(size, &args);
+            let text = std::fs::read_to_string(&report).expect("the layout report is written");
+            let _ = std::fs::remove_file(&report);
+            let _ = std::fs::remove_file(&shot);
+            eprintln!("{size:?} {state:?}: {text}");
+            let checked: usize = text
+                .lines()
+                .next()
+                .and_then(|l| l.strip_prefix("texts checked: "))
+                .and_then(|n| n.parse().ok())
+                .expect("the report starts with a count");
+            assert!(checked > 40, "too few texts seen: {text}");
+            failures.extend(
+                text.lines()
+                    .skip(1)
+                    .map(|l| format!("{size:?} {state:?}: {l}")),
+            );
+        }
+    }
+    let _ = std::fs::remove_file(&recording);
+    assert!(
+        failures.is_empty(),
+        "texts that do not fit:\n{}",
+        failures.join("\n")
+    );
+}
+
+/// The idle window draws (almost) nothing (item 7 of issue 15): once everything is drawn,
+/// 10 s without input or motion cost at most a couple of frames.
+#[test]
+fn an_idle_window_draws_almost_no_frames() {
+    if !can_render() {
+        return;
+    }
+    let output = run_game((1280, 720), &["--no-record", "--count-idle-frames", "10"]);
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let idle: u32 = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("idle frames: "))
+        .and_then(|rest| rest.split_whitespace().next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("no idle frame count in {stdout:?}"));
+    eprintln!("idle frames in 10 s: {idle}");
+    assert!(idle <= 2, "the idle window drew {idle} frames in 10 s");
 }
 
 /// A match in progress (`--game nine-ball`) shows its lines in the HUD: the turn's line is

@@ -625,3 +625,28 @@ fn a_shot_struck_while_paused_is_saved_before_a_rack_replaces_the_game() {
     );
     std::fs::remove_dir_all(folder).ok();
 }
+
+/// A verification that fails says where with every digit needed: a recorded strike at
+/// 6.0 m/s replayed at 6.000001 m/s does not read "6.00 m/s" on both sides.
+#[test]
+fn a_difference_is_printed_with_the_digits_that_differ() {
+    use billiards::replay::OpenRecording;
+    use billiards_physics::{Params, Table, recording::Action};
+    let table = Table::wpa_8ft();
+    let params = Params::default();
+    let layout = Rack::FifteenBall.layout(&table, &params.ball);
+    let mut rec = Recorder::new(table, params, layout).unwrap();
+    rec.strike(0, Shot::new(0.0, 6.0)).unwrap();
+    rec.run_to_rest().unwrap();
+    let mut recording = rec.recording();
+    if let Action::Strike { shot, .. } = &mut recording.inputs[0].action {
+        shot.speed = 6.000001;
+    }
+    let verdict = recording.verify();
+    let open = OpenRecording::new(Path::new("tampered.json"), recording).unwrap();
+    let text = open.verdict_text(&verdict);
+    assert!(
+        text.contains(" 6 m/s") && text.contains(" 6.000001 m/s"),
+        "{text}"
+    );
+}

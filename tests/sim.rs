@@ -277,3 +277,61 @@ fn a_ball_edited_through_its_component_is_placed_in_the_solver() {
     let position = solver.simulation().ball(0).position;
     assert_eq!(DVec2::new(position.x, position.y), target);
 }
+
+/// Undo (practice): every ball goes back exactly where it rested before the shot, whether the
+/// shot is over or still running; the undo is placements in the recording, so the game with
+/// its undos replays and verifies bit for bit, also after a save and a load.
+#[test]
+fn an_undo_puts_every_ball_back_and_the_recording_verifies_bit_for_bit() {
+    use billiards::sim::UndoRequested;
+    use billiards_physics::recording::{Recording, Verdict};
+
+    let mut app = game(Rack::FifteenBall);
+    let frame = |_| Duration::from_millis(16);
+    let before_break = ecs_balls(&mut app);
+    shoot(&mut app, 0.0, 9.0);
+    run_to_rest(&mut app, frame, 20_000);
+    let after_break = ecs_balls(&mut app);
+    assert_ne!(before_break, after_break, "the break moved the balls");
+
+    app.world_mut().write_message(UndoRequested);
+    app.update();
+    assert_eq!(ecs_balls(&mut app), before_break, "undo of a finished shot");
+    assert!(app.world().resource::<SimStatus>().at_rest);
+
+    // The break again, taken back while the balls still run.
+    shoot(&mut app, 0.02, 9.0);
+    for _ in 0..20 {
+        app.update();
+    }
+    assert!(!app.world().resource::<SimStatus>().at_rest);
+    app.world_mut().write_message(UndoRequested);
+    app.update();
+    assert_eq!(ecs_balls(&mut app), before_break, "undo of a running shot");
+    assert!(app.world().resource::<SimStatus>().at_rest);
+
+    // A last shot that stands, then nothing left to undo after two undos.
+    shoot(&mut app, 0.01, 7.0);
+    run_to_rest(&mut app, frame, 20_000);
+    let solver = app.world().resource::<Solver>();
+    assert_eq!(solver.undoable_shots(), 1);
+    let recording = solver.recorder().recording();
+    let strikes = recording
+        .inputs
+        .iter()
+        .filter(|i| {
+            matches!(
+                i.action,
+                billiards_physics::recording::Action::Strike { .. }
+            )
+        })
+        .count();
+    assert_eq!(strikes, 3, "every strike stays in the recording");
+    assert!(matches!(recording.verify(), Ok(Verdict::Reproduced { .. })));
+    let path = std::env::temp_dir().join(format!("billiards-undo-{}.json", std::process::id()));
+    recording.save(&path).unwrap();
+    let loaded = Recording::load(&path).unwrap();
+    let _ = std::fs::remove_file(&path);
+    assert_eq!(loaded, recording);
+    assert!(matches!(loaded.verify(), Ok(Verdict::Reproduced { .. })));
+}

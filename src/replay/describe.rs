@@ -51,13 +51,10 @@ impl OpenRecording {
     }
 
     /// The outcome of [`Recording::verify`](billiards_physics::recording::Recording::verify)
-    /// for the player.
+    /// for the player. Where the histories differ, the two events are printed with every digit
+    /// needed to tell them apart (a strike at 6.0 and one at 6.000001 m/s do not both read
+    /// "6.00 m/s").
     pub fn verdict_text(&self, verdict: &Result<Verdict, String>) -> String {
-        let event = |e: &Option<Box<Event>>| {
-            e.as_ref().map_or("nothing".to_owned(), |e| {
-                format!("{} at {:.6} s", self.describe(e), e.time)
-            })
-        };
         match verdict {
             Ok(Verdict::Reproduced { events }) => {
                 format!("reproduced bit for bit ({events} events)")
@@ -66,12 +63,54 @@ impl OpenRecording {
                 index,
                 recorded,
                 replayed,
-            }) => format!(
-                "differs at event {index}: recorded {}, re-simulated {}",
-                event(recorded),
-                event(replayed)
-            ),
+            }) => {
+                let (recorded, replayed) =
+                    self.tell_apart(recorded.as_deref(), replayed.as_deref());
+                format!("differs at event {index}: recorded {recorded}, re-simulated {replayed}")
+            }
             Err(error) => format!("cannot re-simulate: {error}"),
+        }
+    }
+
+    /// The two events of a difference, in words and with their exact numbers (shortest text
+    /// that reads back to the same bits); when even those agree, the first differing state.
+    fn tell_apart(&self, a: Option<&Event>, b: Option<&Event>) -> (String, String) {
+        let exact = |e: Option<&Event>| {
+            e.map_or("nothing".to_owned(), |e| {
+                let what = match e.kind {
+                    EventKind::Strike { ball, shot } => format!(
+                        "strike: {} at {} rad, {} m/s, tip {}/{} R",
+                        self.ball_name(ball),
+                        shot.angle,
+                        shot.speed,
+                        shot.tip.side,
+                        shot.tip.height
+                    ),
+                    _ => self.describe(e),
+                };
+                format!("{what} at {} s", e.time)
+            })
+        };
+        let (mut ta, mut tb) = (exact(a), exact(b));
+        if ta == tb
+            && let (Some(a), Some(b)) = (a, b)
+            && let Some((id, sa, sb)) = a
+                .states_after()
+                .zip(b.states_after())
+                .map(|((id, sa), (_, sb))| (id, sa, sb))
+                .find(|(_, sa, sb)| format!("{sa:?}") != format!("{sb:?}"))
+        {
+            let name = self.ball_name(id);
+            ta.push_str(&format!(" leaving {name} at {:?}", sa));
+            tb.push_str(&format!(" leaving {name} at {:?}", sb));
+        }
+        (ta, tb)
+    }
+
+    fn ball_name(&self, id: usize) -> String {
+        match self.number(id) {
+            0 => "cue ball".to_owned(),
+            n => format!("ball {n}"),
         }
     }
 }

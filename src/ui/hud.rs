@@ -1,15 +1,18 @@
 //! The HUD in the top-right corner of the 3D view: the match in play (`super::game`), shots,
 //! simulated time, events, the solver's cost per frame, the pocketed balls, what the table
-//! is doing and the last note.
+//! is doing, the frame rate, and the notes (the last one of the simulation, a miscue, a
+//! clamped value): transient text goes here, at the bottom of the HUD, where it pushes nothing.
 
 use bevy::{diagnostic::FrameCount, prelude::*};
 use bevy_egui::{EguiContexts, egui};
 
 use super::layout::{HUD_WIDTH, INFO, WARNING, WINDOW_MARGIN};
 use crate::{
+    aim::AimPrediction,
     balls::{Ball, Pocketed},
+    graphics::FrameRate,
     mode::GameMode,
-    settings::PhysicsSettings,
+    settings::{ClampReport, PhysicsSettings},
     sim::SimStatus,
 };
 
@@ -22,19 +25,24 @@ pub struct HudParam<'w, 's> {
     mode: Res<'w, State<GameMode>>,
     frames: Res<'w, FrameCount>,
     time: Res<'w, Time<Real>>,
+    rate: Res<'w, FrameRate>,
+    aim: Res<'w, AimPrediction>,
+    report: ResMut<'w, ClampReport>,
 }
 
 /// The HUD in the top-right corner: shot count, times, events, solver cost, pocketed balls.
 pub fn hud(
     mut contexts: EguiContexts,
-    state: HudParam,
+    mut state: HudParam,
     mut game: super::game::GameParam,
 ) -> Result {
     let ctx = contexts.ctx_mut()?.clone();
-    let status = &*state.status;
+    let status = state.status.clone();
     egui::Window::new("HUD")
         .title_bar(false)
         .resizable(false)
+        // One width, whatever the text: long notes wrap inside it instead of running off.
+        .min_width(HUD_WIDTH)
         .max_width(HUD_WIDTH)
         .anchor(egui::Align2::RIGHT_TOP, [-WINDOW_MARGIN, WINDOW_MARGIN])
         .show(&ctx, |ui| {
@@ -51,6 +59,10 @@ pub fn hud(
                 state.frames.0,
                 state.time.delta_secs_f64() * 1e3
             ));
+            ui.label(match state.rate.fps {
+                Some(fps) => format!("{fps:.1} fps"),
+                None => "fps: idle (draws only on change)".to_owned(),
+            });
             ui.label(format!("simulated time: {:.3} s", status.sim_time));
             ui.label(format!("events this shot: {}", status.events_this_shot));
             ui.label(format!(
@@ -85,6 +97,17 @@ pub fn hud(
             ui.label(state_text);
             if let Some(note) = &status.note {
                 ui.colored_label(WARNING, note);
+            }
+            if let Some(note) = &state.aim.note {
+                ui.colored_label(WARNING, format!("aim: {note}"));
+            }
+            if !state.report.notes.is_empty() {
+                for note in &state.report.notes {
+                    ui.colored_label(WARNING, note.to_string());
+                }
+                if ui.small_button("dismiss").clicked() {
+                    state.report.notes.clear();
+                }
             }
         });
     Ok(())

@@ -20,6 +20,9 @@ pub const RECORDINGS_LIST_HEIGHT: f32 = 140.0;
 /// Width of the path fields (recording to open).
 pub const PATH_FIELD_WIDTH: f32 = 200.0;
 
+/// Width of the panel's paired buttons, so a label change (Pause, Resume) moves nothing.
+pub const BUTTON_WIDTH: f32 = 140.0;
+
 /// Side of the cue-ball tip picker.
 pub const TIP_PICKER_SIZE: f32 = 96.0;
 

@@ -17,6 +17,7 @@
 pub mod game;
 pub mod hud;
 pub mod layout;
+pub mod layout_check;
 pub mod recordings;
 pub mod settings;
 pub mod timeline;
@@ -33,6 +34,7 @@ use bevy_egui::{
 };
 
 pub use layout::PANEL_WIDTH;
+pub use settings::OpenSections;
 
 use crate::{camera::TableCamera, input::InputSystems, mode::GameMode};
 
@@ -42,6 +44,9 @@ pub fn plugin(app: &mut App) {
         .init_resource::<recordings::RecordingsForm>()
         .init_resource::<timeline::ExportForm>()
         .init_resource::<game::NewGameForm>()
+        .init_resource::<settings::RackConfirm>()
+        .init_resource::<settings::OpenSections>()
+        .add_plugins(layout_check::plugin)
         .configure_sets(
             Update,
             (
@@ -165,17 +170,26 @@ fn left_panel(
                 .resizable(false)
                 .exact_size(PANEL_WIDTH)
                 .show(area, |ui| {
-                    egui::ScrollArea::vertical().show(ui, |ui| {
-                        settings::sections(ui, &mut state);
-                        recordings::section(ui, &mut recordings);
-                        settings::notes_and_controls(ui, &mut state);
-                    });
+                    // A scroll bar that is always there and takes its own width: one that
+                    // appeared on hover narrowed the panel and re-wrapped its rows.
+                    ui.style_mut().spacing.scroll = egui::style::ScrollStyle::solid();
+                    egui::ScrollArea::vertical()
+                        .scroll_bar_visibility(
+                            egui::scroll_area::ScrollBarVisibility::AlwaysVisible,
+                        )
+                        .auto_shrink(false)
+                        .show(ui, |ui| {
+                            settings::sections(ui, &mut state);
+                            recordings::section(ui, &mut recordings);
+                            settings::file_and_controls(ui, &mut state);
+                        });
                 })
                 .response
                 .rect
                 .width()
         })
         .inner;
+    settings::rack_confirm_window(&ctx, &mut state);
     fit_viewport(&window, &mut camera, panel_width);
     Ok(())
 }

@@ -109,12 +109,11 @@ fn recordings(ui: &mut egui::Ui, param: &mut RecordingsParam) {
         ui.colored_label(WARNING, error);
     }
     if let Some(open) = &replay.open {
-        ui.horizontal(|ui| {
-            ui.label(format!("replaying {}", open.file_name()));
-            if ui.button("Close replay").clicked() {
-                commands.write(ReplayCommand::Close);
-            }
-        });
+        // The name on a line of its own: beside it the button ran past the panel's edge.
+        ui.label(format!("replaying {}", open.file_name()));
+        if ui.button("Close replay").clicked() {
+            commands.write(ReplayCommand::Close);
+        }
     }
     export_status(ui, replay);
 }

@@ -1,24 +1,38 @@
-//! The settings panel's sections: the shot (angle, power, tip picker, ball in hand), friction
-//! and restitution, the simulation clock and racks, the view; then clamp notes and controls.
+//! The settings panel's sections, play first: the shot (angle, power, tip picker, ball in
+//! hand, shoot and undo), play (clock, racks), the view, graphics; then the physics in its own
+//! section, the settings file and the controls.
+//!
+//! Rows keep their place: nothing in the panel appears or disappears with the game's state
+//! (a row that does not apply is shown disabled), and notes (clamps, a miscue) go to the HUD,
+//! so a click never lands on a widget that moved under the pointer.
 
 use bevy::prelude::*;
 use bevy_egui::egui::{self, Color32, RichText};
+use billiards_physics::Rack;
 
-use super::layout::{TIP_PICKER_SIZE, WARNING};
+use super::layout::{BUTTON_WIDTH, TIP_PICKER_SIZE, WARNING};
 use crate::{
-    aim::AimPrediction,
     balls::{Ball, BallMotion, Pocketed},
     camera::{CameraMode, OrbitCamera},
+    config::{ConfigFile, reset_to_defaults},
     geometry::TableSpec,
     settings::{
-        ClampReport, CushionChoice, PREDICTIONS, ParamRange, PhysicsModel, PhysicsSettings,
-        ShotSettings, ViewSettings, apply_shot_edit, prediction_label,
+        ClampReport, CushionChoice, GraphicsSettings, PREDICTIONS, ParamRange, PhysicsModel,
+        PhysicsSettings, ShotSettings, ViewSettings, apply_shot_edit, prediction_label,
     },
     sim::{
-        RACKS, RackRequested, ShotRequested, SimStatus, StepRequested, move_ball_in_hand,
-        rack_label,
+        RACKS, RackRequested, Referee, ShotRequested, SimStatus, Solver, StepRequested,
+        UndoRequested, move_ball_in_hand, rack_label,
     },
 };
+
+/// Open every section of the panel at start (`--open-sections`: screenshots, layout check).
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct OpenSections(pub bool);
+
+/// A rack asked for while a game is in progress, waiting for the player's yes.
+#[derive(Resource, Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct RackConfirm(pub Option<Rack>);
 
 /// Everything the settings panel edits or shows, bundled so the system stays readable.
 #[derive(bevy::ecs::system::SystemParam)]
@@ -26,228 +40,359 @@ pub struct SettingsParam<'w, 's> {
     shot: ResMut<'w, ShotSettings>,
     physics: ResMut<'w, PhysicsSettings>,
     view: ResMut<'w, ViewSettings>,
+    graphics: ResMut<'w, GraphicsSettings>,
     report: ResMut<'w, ClampReport>,
     orbit: ResMut<'w, OrbitCamera>,
     status: Res<'w, SimStatus>,
+    solver: Option<Res<'w, Solver>>,
+    referee: Res<'w, Referee>,
+    config: Res<'w, ConfigFile>,
+    confirm: ResMut<'w, RackConfirm>,
+    open_all: Res<'w, OpenSections>,
     racks: MessageWriter<'w, RackRequested>,
     steps: MessageWriter<'w, StepRequested>,
     shots: MessageWriter<'w, ShotRequested>,
-    aim: Res<'w, AimPrediction>,
+    undo: MessageWriter<'w, UndoRequested>,
     spec: Res<'w, TableSpec>,
     cue_ball: Query<'w, 's, (&'static Ball, &'static mut BallMotion), Without<Pocketed>>,
 }
 
-/// The panel's sections: shot, friction and restitution, simulation, view.
+/// The panel's sections, play options first, the physics after them.
 pub fn sections(ui: &mut egui::Ui, state: &mut SettingsParam) {
     ui.heading("Billiards");
+    let all = state.open_all.0;
+    section(ui, "Shot", true, |ui| shot_section(ui, state));
+    section(ui, "Play", true, |ui| play_section(ui, state));
+    section(ui, "View", true, |ui| view_section(ui, state));
+    section(ui, "Graphics", all, |ui| graphics_section(ui, state));
+    section(ui, "Physics", all, |ui| physics_section(ui, state));
+}
 
-    section(ui, "Shot", |ui| {
-        let mut next = *state.shot;
-        let mut degrees = next.angle.to_degrees();
+fn shot_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
+    let mut next = *state.shot;
+    let mut degrees = next.angle.to_degrees();
+    ui.add(
+        egui::Slider::new(&mut degrees, 0.0..=360.0)
+            .text("angle")
+            .suffix(" deg")
+            .max_decimals(2)
+            .clamping(egui::SliderClamping::Never),
+    );
+    next.angle = degrees.to_radians();
+    param_slider(ui, &mut next.power, ShotSettings::POWER);
+    // The tip offset only matters to the spin model.
+    ui.add_enabled_ui(state.physics.model == PhysicsModel::Spin, |ui| {
+        ui.horizontal(|ui| {
+            tip_picker(ui, &mut next.tip);
+            ui.vertical(|ui| {
+                ui.label("Cue tip: click or drag on the ball.");
+                ui.label(RichText::new("above: follow\nbelow: draw\nsides: english").weak());
+                if ui.small_button("centre").clicked() {
+                    next.tip = Default::default();
+                }
+            });
+        });
+        param_slider(ui, &mut next.tip.side, ShotSettings::TIP_SIDE);
+        param_slider(ui, &mut next.tip.height, ShotSettings::TIP_HEIGHT);
+    });
+    // Always there, disabled unless the cue ball is in hand after a free-play scratch, so the
+    // rows below never move.
+    let in_hand = state.status.ball_in_hand == Some(billiards_rules::CueBall::Respot);
+    let limit = state.spec.width / 2.0 - state.spec.ball_radius;
+    let cue = state
+        .cue_ball
+        .iter_mut()
+        .find(|(b, _)| b.number == 0)
+        .map(|(_, m)| m);
+    let mut y = cue.as_ref().map_or(0.0, |m| m.position.y);
+    ui.add_enabled_ui(in_hand && cue.is_some(), |ui| {
+        ui.label("ball in hand, along the head string:");
         ui.add(
-            egui::Slider::new(&mut degrees, 0.0..=360.0)
-                .text("angle")
-                .suffix(" deg")
-                .max_decimals(2)
-                .clamping(egui::SliderClamping::Never),
+            egui::Slider::new(&mut y, -limit..=limit)
+                .suffix(" m")
+                .max_decimals(3),
         );
-        next.angle = degrees.to_radians();
-        param_slider(ui, &mut next.power, ShotSettings::POWER);
-        // The tip offset only matters to the spin model.
-        ui.add_enabled_ui(state.physics.model == PhysicsModel::Spin, |ui| {
-            ui.horizontal(|ui| {
-                tip_picker(ui, &mut next.tip);
-                ui.vertical(|ui| {
-                    ui.label("Cue tip: click or drag\non the ball.");
-                    ui.label(RichText::new("above: follow\nbelow: draw\nsides: english").weak());
-                    if ui.small_button("centre").clicked() {
-                        next.tip = Default::default();
-                    }
-                });
-            });
-            param_slider(ui, &mut next.tip.side, ShotSettings::TIP_SIDE);
-            param_slider(ui, &mut next.tip.height, ShotSettings::TIP_HEIGHT);
-        });
-        if state.status.ball_in_hand == Some(billiards_rules::CueBall::Respot)
-            && let Some(mut motion) = state
-                .cue_ball
-                .iter_mut()
-                .find(|(b, _)| b.number == 0)
-                .map(|(_, m)| m)
-        {
-            let limit = state.spec.width / 2.0 - state.spec.ball_radius;
-            let mut y = motion.position.y;
-            ui.add(
-                egui::Slider::new(&mut y, -limit..=limit)
-                    .text("ball in hand: along the head string")
-                    .suffix(" m")
-                    .max_decimals(3),
-            );
-            if y != motion.position.y {
-                move_ball_in_hand(&state.spec, &mut motion, y);
-            }
-        }
-        if let Some(note) = &state.aim.note {
-            ui.colored_label(WARNING, note);
-        }
-        apply_shot_edit(next, &mut state.shot, &mut state.report);
-        ui.horizontal(|ui| {
-            let shoot = ui.add_enabled(state.status.at_rest, egui::Button::new("Shoot (Space)"));
-            if shoot.clicked() {
-                state.shots.write(ShotRequested::from_settings(&state.shot));
-            }
-            ui.label(RichText::new("when every ball rests").weak());
-        });
     });
-
-    section(ui, "Friction and restitution", |ui| {
-        let mut next = *state.physics;
-        param_slider(ui, &mut next.mu_slide, PhysicsSettings::MU_SLIDE);
-        param_slider(ui, &mut next.mu_roll, PhysicsSettings::MU_ROLL);
-        // Only the paper's model switches friction at a threshold speed.
-        ui.add_enabled_ui(next.model == PhysicsModel::Paper, |ui| {
-            param_slider(
-                ui,
-                &mut next.slide_roll_speed,
-                PhysicsSettings::SLIDE_ROLL_SPEED,
-            );
-        });
-        param_slider(ui, &mut next.e_ball, PhysicsSettings::E_BALL);
-        param_slider(ui, &mut next.e_cushion, PhysicsSettings::E_CUSHION);
-        if next.model == PhysicsModel::Spin {
-            param_slider(ui, &mut next.mu_spin, PhysicsSettings::MU_SPIN);
-            param_slider(ui, &mut next.mu_ball, PhysicsSettings::MU_BALL);
-            egui::ComboBox::from_label("cushion")
-                .selected_text(next.cushion.label())
-                .show_ui(ui, |ui| {
-                    for choice in CushionChoice::ALL {
-                        ui.selectable_value(&mut next.cushion, choice, choice.label());
-                    }
-                });
-            ui.add_enabled_ui(next.cushion == CushionChoice::Han2005, |ui| {
-                param_slider(ui, &mut next.mu_cushion, PhysicsSettings::MU_CUSHION);
-                param_slider(
-                    ui,
-                    &mut next.cushion_height,
-                    PhysicsSettings::CUSHION_HEIGHT,
-                );
-            });
-            param_slider(ui, &mut next.cue_mass, PhysicsSettings::CUE_MASS);
+    if let Some(mut motion) = cue
+        && in_hand
+        && y != motion.position.y
+    {
+        move_ball_in_hand(&state.spec, &mut motion, y);
+    }
+    apply_shot_edit(next, &mut state.shot, &mut state.report);
+    ui.horizontal(|ui| {
+        let shoot = ui
+            .add_enabled(
+                state.status.at_rest,
+                egui::Button::new("Shoot (Space)").min_size(egui::vec2(BUTTON_WIDTH, 0.0)),
+            )
+            .on_hover_text("when every ball rests");
+        if shoot.clicked() {
+            state.shots.write(ShotRequested::from_settings(&state.shot));
         }
-        ui.checkbox(&mut next.jaws, "rounded pocket jaws (from the next rack)");
-        ui.separator();
-        ui.checkbox(
-            &mut next.randomization.enabled,
-            "randomize collision normals",
-        );
-        ui.add_enabled_ui(next.randomization.enabled, |ui| {
-            param_slider(
-                ui,
-                &mut next.randomization.spread_degrees,
-                PhysicsSettings::SPREAD,
+        let undoable = state.solver.as_ref().map_or(0, |s| s.undoable_shots());
+        let undo = ui
+            .add_enabled(
+                undoable > 0 && !state.referee.active,
+                egui::Button::new("Undo shot").min_size(egui::vec2(BUTTON_WIDTH, 0.0)),
+            )
+            .on_hover_text(
+                "practice: every ball back where it was before the last shot, the cue lined \
+                 up to retry it (kept in the recording; not in a match)",
             );
-            ui.horizontal(|ui| {
-                ui.label("seed");
-                ui.add(egui::DragValue::new(&mut next.randomization.seed));
-            });
-        });
-        ui.separator();
-        egui::ComboBox::from_label("model")
-            .selected_text(next.model.label())
-            .show_ui(ui, |ui| {
-                for model in PhysicsModel::ALL {
-                    ui.selectable_value(&mut next.model, model, model.label());
-                }
-            });
-        egui::ComboBox::from_label("contact times")
-            .selected_text(prediction_label(next.prediction))
-            .show_ui(ui, |ui| {
-                for prediction in PREDICTIONS {
-                    ui.selectable_value(
-                        &mut next.prediction,
-                        prediction,
-                        prediction_label(prediction),
-                    );
-                }
-            });
-        apply_physics_edit(next, state);
-    });
-
-    section(ui, "Simulation", |ui| {
-        let mut next = *state.physics;
-        param_slider(ui, &mut next.time_scale, PhysicsSettings::TIME_SCALE);
-        ui.horizontal(|ui| {
-            let label = if next.paused { "Resume" } else { "Pause" };
-            if ui.button(label).clicked() {
-                next.paused = !next.paused;
-            }
-            let step = ui.add_enabled(next.paused, egui::Button::new("Step to next event"));
-            if step.clicked() {
-                state.steps.write(StepRequested);
-            }
-        });
-        apply_physics_edit(next, state);
-        ui.horizontal_wrapped(|ui| {
-            for rack in RACKS {
-                if ui.button(rack_label(rack)).clicked() {
-                    state.racks.write(RackRequested(rack));
-                }
-            }
-        });
-    });
-
-    section(ui, "View", |ui| {
-        ui.checkbox(
-            &mut state.view.show_vectors,
-            "show vectors (cue red, velocity blue)",
-        );
-        ui.checkbox(
-            &mut state.view.show_aim,
-            "aiming aid (path, ghost ball, paths after contact)",
-        );
-        ui.horizontal(|ui| {
-            let mut mode = state.orbit.mode;
-            ui.selectable_value(&mut mode, CameraMode::Free, "orbit");
-            ui.selectable_value(&mut mode, CameraMode::Top, "top (T)");
-            ui.selectable_value(&mut mode, CameraMode::FollowCue, "follow cue (F)");
-            if mode != state.orbit.mode {
-                *state.orbit = match mode {
-                    CameraMode::Top => OrbitCamera::top_view(),
-                    CameraMode::Free => OrbitCamera::default(),
-                    CameraMode::FollowCue => OrbitCamera {
-                        mode,
-                        ..*state.orbit
-                    },
-                };
-            }
-        });
+        if undo.clicked() {
+            state.undo.write(UndoRequested);
+        }
     });
 }
 
-/// The clamp notes (what was clamped and to what) and the list of controls, at the end of the
-/// panel.
-pub fn notes_and_controls(ui: &mut egui::Ui, state: &mut SettingsParam) {
-    if !state.report.notes.is_empty() {
-        ui.separator();
-        for note in &state.report.notes {
-            ui.colored_label(WARNING, note.to_string());
+fn play_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
+    let mut next = *state.physics;
+    param_slider(ui, &mut next.time_scale, PhysicsSettings::TIME_SCALE);
+    ui.horizontal(|ui| {
+        // One width for both labels: the button next to it stays where it is.
+        let label = if next.paused { "Resume" } else { "Pause" };
+        let size = egui::vec2(BUTTON_WIDTH, 0.0);
+        if ui.add(egui::Button::new(label).min_size(size)).clicked() {
+            next.paused = !next.paused;
         }
-        if ui.small_button("dismiss").clicked() {
+        let step = ui.add_enabled(
+            next.paused,
+            egui::Button::new("Step to next event").min_size(size),
+        );
+        if step.clicked() {
+            state.steps.write(StepRequested);
+        }
+    });
+    apply_physics_edit(next, state);
+    ui.add_space(6.0);
+    ui.label("New rack (asks first when a game is in progress):");
+    let in_progress = state
+        .solver
+        .as_ref()
+        .is_some_and(|s| !s.simulation().history().events().is_empty());
+    egui::Grid::new("racks")
+        .num_columns(2)
+        .spacing([8.0, 4.0])
+        .show(ui, |ui| {
+            for (k, rack) in RACKS.into_iter().enumerate() {
+                let button =
+                    egui::Button::new(rack_label(rack)).min_size(egui::vec2(BUTTON_WIDTH, 0.0));
+                if ui.add(button).clicked() {
+                    if in_progress {
+                        state.confirm.0 = Some(rack);
+                    } else {
+                        state.racks.write(RackRequested(rack));
+                    }
+                }
+                if k % 2 == 1 {
+                    ui.end_row();
+                }
+            }
+        });
+}
+
+fn view_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
+    ui.checkbox(
+        &mut state.view.show_vectors,
+        "show vectors (cue red, velocity blue)",
+    );
+    ui.checkbox(
+        &mut state.view.show_aim,
+        "aiming aid (path, ghost ball, paths after contact)",
+    );
+    ui.add_enabled_ui(state.view.show_aim, |ui| {
+        ui.label("follow each ball after the first contact for:");
+        ui.add(
+            egui::Slider::new(&mut state.view.aid_contacts, ViewSettings::AID_CONTACTS)
+                .suffix(" contacts"),
+        );
+    });
+    ui.horizontal_wrapped(|ui| {
+        let mut mode = state.orbit.mode;
+        ui.selectable_value(&mut mode, CameraMode::Free, "orbit");
+        ui.selectable_value(&mut mode, CameraMode::Top, "top (T)");
+        ui.selectable_value(&mut mode, CameraMode::FollowCue, "follow cue (F)");
+        if mode != state.orbit.mode {
+            *state.orbit = match mode {
+                CameraMode::Top => OrbitCamera::top_view(),
+                CameraMode::Free => OrbitCamera::default(),
+                CameraMode::FollowCue => OrbitCamera {
+                    mode,
+                    ..*state.orbit
+                },
+            };
+        }
+    });
+}
+
+fn graphics_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
+    let mut next = *state.graphics;
+    ui.checkbox(&mut next.shadows, "shadows");
+    ui.add_enabled_ui(next.shadows, |ui| {
+        ui.horizontal(|ui| {
+            ui.label("shadow map:");
+            for size in GraphicsSettings::SHADOW_RESOLUTIONS {
+                ui.selectable_value(&mut next.shadow_resolution, size, size.to_string());
+            }
+        });
+    });
+    ui.horizontal(|ui| {
+        ui.label("anti-aliasing:");
+        for samples in GraphicsSettings::MSAA_SAMPLES {
+            let label = if samples == 1 {
+                "off".to_owned()
+            } else {
+                format!("{samples}x")
+            };
+            ui.selectable_value(&mut next.msaa_samples, samples, label);
+        }
+    });
+    ui.horizontal(|ui| {
+        if ui.button("Fastest").clicked() {
+            next = GraphicsSettings::LOW;
+        }
+        if ui.button("Best").clicked() {
+            next = GraphicsSettings::default();
+        }
+    });
+    ui.label(RichText::new("the frame rate is in the HUD").weak());
+    if next != *state.graphics {
+        *state.graphics = next;
+    }
+}
+
+fn physics_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
+    let mut next = *state.physics;
+    egui::ComboBox::from_label("model")
+        .selected_text(next.model.label())
+        .show_ui(ui, |ui| {
+            for model in PhysicsModel::ALL {
+                ui.selectable_value(&mut next.model, model, model.label());
+            }
+        });
+    param_slider(ui, &mut next.mu_slide, PhysicsSettings::MU_SLIDE);
+    param_slider(ui, &mut next.mu_roll, PhysicsSettings::MU_ROLL);
+    // Only the paper's model switches friction at a threshold speed.
+    ui.add_enabled_ui(next.model == PhysicsModel::Paper, |ui| {
+        param_slider(
+            ui,
+            &mut next.slide_roll_speed,
+            PhysicsSettings::SLIDE_ROLL_SPEED,
+        );
+    });
+    param_slider(ui, &mut next.e_ball, PhysicsSettings::E_BALL);
+    param_slider(ui, &mut next.e_cushion, PhysicsSettings::E_CUSHION);
+    // The spin model's constants: shown disabled under the paper's model, so rows stay.
+    ui.add_enabled_ui(next.model == PhysicsModel::Spin, |ui| {
+        param_slider(ui, &mut next.mu_spin, PhysicsSettings::MU_SPIN);
+        param_slider(ui, &mut next.mu_ball, PhysicsSettings::MU_BALL);
+        egui::ComboBox::from_label("cushion")
+            .selected_text(next.cushion.label())
+            .show_ui(ui, |ui| {
+                for choice in CushionChoice::ALL {
+                    ui.selectable_value(&mut next.cushion, choice, choice.label());
+                }
+            });
+        ui.add_enabled_ui(next.cushion == CushionChoice::Han2005, |ui| {
+            param_slider(ui, &mut next.mu_cushion, PhysicsSettings::MU_CUSHION);
+            param_slider(
+                ui,
+                &mut next.cushion_height,
+                PhysicsSettings::CUSHION_HEIGHT,
+            );
+        });
+        param_slider(ui, &mut next.cue_mass, PhysicsSettings::CUE_MASS);
+    });
+    ui.checkbox(&mut next.jaws, "rounded pocket jaws (from the next rack)");
+    ui.separator();
+    ui.checkbox(
+        &mut next.randomization.enabled,
+        "randomize collision normals",
+    );
+    ui.add_enabled_ui(next.randomization.enabled, |ui| {
+        param_slider(
+            ui,
+            &mut next.randomization.spread_degrees,
+            PhysicsSettings::SPREAD,
+        );
+        ui.horizontal(|ui| {
+            ui.label("seed");
+            ui.add(egui::DragValue::new(&mut next.randomization.seed));
+        });
+    });
+    ui.separator();
+    egui::ComboBox::from_label("contact times")
+        .selected_text(prediction_label(next.prediction))
+        .show_ui(ui, |ui| {
+            for prediction in PREDICTIONS {
+                ui.selectable_value(
+                    &mut next.prediction,
+                    prediction,
+                    prediction_label(prediction),
+                );
+            }
+        });
+    apply_physics_edit(next, state);
+}
+
+/// The settings file (where it is, why it could not be read), the reset, and the list of
+/// controls, at the end of the panel.
+pub fn file_and_controls(ui: &mut egui::Ui, state: &mut SettingsParam) {
+    let all = state.open_all.0;
+    section(ui, "Settings file", all, |ui| {
+        match &state.config.path {
+            Some(path) => ui.label(RichText::new(format!("kept in {}", path.display())).weak()),
+            None => ui.label(RichText::new("not kept (--no-config)").weak()),
+        };
+        if let Some(error) = &state.config.error {
+            ui.colored_label(WARNING, error);
+        }
+        if ui
+            .button("Reset to defaults")
+            .on_hover_text("physics, view and graphics settings (not the shot)")
+            .clicked()
+        {
+            reset_to_defaults(&mut state.physics, &mut state.view, &mut state.graphics);
             state.report.notes.clear();
         }
-    }
+    });
+    section(ui, "Controls", all, |ui| {
+        ui.label(
+            "Left drag on the table: aim\n\
+             Shift + left drag down, Shift + wheel: power\n\
+             Arrows: aim (Shift: fine) and power\n\
+             Space: shoot\n\
+             Right or middle drag: orbit; wheel: zoom\n\
+             T: top view; F: follow the cue ball; Home: reset view",
+        );
+    });
+}
 
-    egui::CollapsingHeader::new("Controls")
-        .default_open(false)
-        .show(ui, |ui| {
-            ui.label(
-                "Left drag on the table: aim\n\
-                 Shift + left drag down, Shift + wheel: power\n\
-                 Arrows: aim (Shift: fine) and power\n\
-                 Space: shoot\n\
-                 Right or middle drag: orbit; wheel: zoom\n\
-                 T: top view; F: follow the cue ball; Home: reset view",
-            );
+/// The question before a rack replaces a game in progress, in a window of its own (it pushes
+/// nothing in the panel).
+pub fn rack_confirm_window(ctx: &egui::Context, state: &mut SettingsParam) {
+    let Some(rack) = state.confirm.0 else {
+        return;
+    };
+    egui::Window::new("New rack?")
+        .collapsible(false)
+        .resizable(false)
+        .anchor(egui::Align2::CENTER_CENTER, [0.0, 0.0])
+        .show(ctx, |ui| {
+            ui.label(format!(
+                "Rack the {} and end the game in progress? It is saved in the recordings.",
+                rack_label(rack)
+            ));
+            ui.horizontal(|ui| {
+                if ui.button("Rack").clicked() {
+                    state.racks.write(RackRequested(rack));
+                    state.confirm.0 = None;
+                }
+                if ui.button("Cancel").clicked() {
+                    state.confirm.0 = None;
+                }
+            });
         });
 }
 
@@ -305,9 +450,9 @@ fn tip_picker(ui: &mut egui::Ui, tip: &mut billiards_physics::TipOffset) {
     );
 }
 
-fn section(ui: &mut egui::Ui, title: &str, add_contents: impl FnOnce(&mut egui::Ui)) {
+fn section(ui: &mut egui::Ui, title: &str, open: bool, add_contents: impl FnOnce(&mut egui::Ui)) {
     egui::CollapsingHeader::new(title)
-        .default_open(true)
+        .default_open(open)
         .show(ui, add_contents);
 }
 

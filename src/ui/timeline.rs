@@ -48,6 +48,12 @@ impl Default for ExportForm {
 
 /// The running export's progress bar, or how the last one ended.
 pub fn export_status(ui: &mut egui::Ui, replay: &Replay) {
+    export_status_or(ui, replay, None);
+}
+
+/// [`export_status`], or `idle` when there is nothing to say: a line that is always there
+/// keeps the window's size (an anchored window that grew ran off the bottom of the screen).
+fn export_status_or(ui: &mut egui::Ui, replay: &Replay, idle: Option<&str>) {
     if let Some(job) = &replay.export {
         let (done, total) = job.progress();
         ui.add(
@@ -59,6 +65,8 @@ pub fn export_status(ui: &mut egui::Ui, replay: &Replay) {
             Ok(written) => ui.label(format!("exported {written}")),
             Err(error) => ui.colored_label(WARNING, error),
         };
+    } else if let Some(idle) = idle {
+        ui.label(RichText::new(idle).weak());
     }
 }
 
@@ -176,22 +184,6 @@ fn timeline(
         }
         if replay.verifying.is_some() {
             ui.spinner();
-            ui.label("re-simulating…");
-        } else if let Some(verdict) = &replay.verdict {
-            let colour = if matches!(
-                verdict,
-                Ok(billiards_physics::recording::Verdict::Reproduced { .. })
-            ) {
-                SUCCESS
-            } else {
-                WARNING
-            };
-            ui.colored_label(colour, open.verdict_text(verdict));
-            match &replay.rules_verdict {
-                Some(Ok(n)) => ui.colored_label(SUCCESS, format!("{n} verdicts re-judged alike")),
-                Some(Err(e)) => ui.colored_label(WARNING, format!("verdicts: {e}")),
-                None => ui.label(""),
-            };
         }
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
             if ui.button("Close replay").on_hover_text("Esc").clicked() {
@@ -199,6 +191,31 @@ fn timeline(
             }
         });
     });
+    // The verdict on a line of its own, wrapped: beside the buttons it ran under "Close
+    // replay". The line is always there, so the window does not change size under the pointer.
+    if replay.verifying.is_some() {
+        ui.label("re-simulating…");
+    } else if let Some(verdict) = &replay.verdict {
+        let colour = if matches!(
+            verdict,
+            Ok(billiards_physics::recording::Verdict::Reproduced { .. })
+        ) {
+            SUCCESS
+        } else {
+            WARNING
+        };
+        ui.colored_label(colour, open.verdict_text(verdict));
+    } else {
+        ui.label(RichText::new("not verified yet").weak());
+    }
+    // A rules game: the verdicts re-judged with the verification, on a line always there.
+    if open.game.is_some() {
+        match &replay.rules_verdict {
+            Some(Ok(n)) => ui.colored_label(SUCCESS, format!("{n} verdicts re-judged alike")),
+            Some(Err(e)) => ui.colored_label(WARNING, format!("verdicts: {e}")),
+            None => ui.label(RichText::new("verdicts not re-judged yet").weak()),
+        };
+    }
     egui::CollapsingHeader::new("Export")
         .default_open(false)
         .show(ui, |ui| export_form(ui, replay, open, form, commands));
@@ -265,5 +282,5 @@ fn export_form(
             path: (!path.is_empty()).then(|| PathBuf::from(path)),
         }));
     }
-    export_status(ui, replay);
+    export_status_or(ui, replay, Some("no export running"));
 }

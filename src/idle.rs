@@ -1,0 +1,108 @@
+//! `--count-idle-frames SECONDS`: how many frames the window draws while nothing happens
+//! (the render test's measure of the reactive window). Once every render pipeline is ready
+//! and the window has drawn nothing for a few seconds (the start-up frames are over), a thread
+//! wakes the event loop twice, `SECONDS` apart; the frames between the two wake-ups are the
+//! idle frames. Prints `idle frames: N in S s`, then exits.
+
+use std::{
+    sync::{
+        Arc,
+        atomic::{AtomicU8, AtomicU32, Ordering},
+    },
+    time::{Duration, Instant},
+};
+
+use bevy::{
+    diagnostic::FrameCount,
+    prelude::*,
+    winit::{EventLoopProxyWrapper, WinitUserEvent},
+};
+
+use crate::pipelines::PipelineProgress;
+
+/// Counts the frames drawn in `seconds` of idle, prints them and exits.
+#[derive(Debug, Clone)]
+pub struct IdleCountPlugin {
+    /// Length of the idle interval.
+    pub seconds: Duration,
+}
+
+/// How long the window must have drawn nothing before the interval starts.
+const QUIET: Duration = Duration::from_secs(3);
+
+impl Plugin for IdleCountPlugin {
+    fn build(&self, app: &mut App) {
+        app.insert_resource(IdleCount {
+            seconds: self.seconds,
+            phase: Arc::default(),
+            frame: Arc::default(),
+            started: false,
+            first_frame: None,
+        })
+        .add_systems(Last, count_idle_frames);
+    }
+}
+
+#[derive(Resource, Debug)]
+struct IdleCount {
+    seconds: Duration,
+    /// 0: waiting to start, 1: the interval runs, 2: it is over (set by the thread).
+    phase: Arc<AtomicU8>,
+    /// The last frame drawn, for the thread to see when drawing has stopped.
+    frame: Arc<AtomicU32>,
+    started: bool,
+    first_frame: Option<u32>,
+}
+
+fn count_idle_frames(
+    mut count: ResMut<IdleCount>,
+    progress: Res<PipelineProgress>,
+    frames: Res<FrameCount>,
+    proxy: Option<Res<EventLoopProxyWrapper>>,
+    mut exit: MessageWriter<AppExit>,
+) {
+    count.frame.store(frames.0, Ordering::SeqCst);
+    let (total, waiting) = progress.counts();
+    if !count.started {
+        if total == 0 || waiting > 0 {
+            return;
+        }
+        let Some(proxy) = proxy else {
+            error!("no event loop to wake: cannot count idle frames");
+            exit.write(AppExit::error());
+            return;
+        };
+        count.started = true;
+        let proxy = (**proxy).clone();
+        let phase = count.phase.clone();
+        let frame = count.frame.clone();
+        let seconds = count.seconds;
+        std::thread::spawn(move || {
+            // Wait until no frame has been drawn for QUIET (the start-up redraws are over).
+            let (mut last, mut since) = (frame.load(Ordering::SeqCst), Instant::now());
+            while since.elapsed() < QUIET {
+                std::thread::sleep(Duration::from_millis(100));
+                let now = frame.load(Ordering::SeqCst);
+                if now != last {
+                    (last, since) = (now, Instant::now());
+                }
+            }
+            phase.store(1, Ordering::SeqCst);
+            let _ = proxy.send_event(WinitUserEvent::WakeUp);
+            std::thread::sleep(seconds);
+            phase.store(2, Ordering::SeqCst);
+            let _ = proxy.send_event(WinitUserEvent::WakeUp);
+        });
+        return;
+    }
+    match (count.phase.load(Ordering::SeqCst), count.first_frame) {
+        (1, None) => count.first_frame = Some(frames.0),
+        (2, Some(first)) => {
+            // Neither wake-up frame counts.
+            let idle = frames.0.saturating_sub(first).saturating_sub(1);
+            println!("idle frames: {idle} in {} s", count.seconds.as_secs_f64());
+            exit.write(AppExit::Success);
+        }
+        _ => {}
+    }
+}
