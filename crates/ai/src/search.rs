@@ -17,8 +17,9 @@ use rayon::prelude::*;
 const SAFETY_BELOW: f64 = 0.6;
 
 /// The computer's decision at `level` for what `state` asks next, on the resting table
-/// `sim` (balls to spot already spotted; a cue ball in hand anywhere or off the table).
-/// The same `seed` gives the same decision, on any number of threads.
+/// `sim`: the balls `state.next.spot` names already spotted, a respotted cue ball (free
+/// play) already back; a cue ball in hand may be anywhere or off the table. The same `seed`
+/// gives the same decision, on any number of threads.
 pub fn decide(
     state: &GameState,
     sim: &Simulation,
