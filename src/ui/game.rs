@@ -7,7 +7,7 @@ use bevy_egui::{EguiContexts, egui};
 use billiards_ai::Level;
 use billiards_rules::{Call, CallRule, Game};
 
-use super::layout::{INFO, WARNING};
+use super::layout::{INFO, PANEL_WIDTH, WARNING};
 use crate::{
     computer::{Computer, HintRequested},
     game::{NewGameRequested, Rules, Turn, TurnCommand, clock_seed},
@@ -119,7 +119,8 @@ pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result 
         egui::Window::new(title.to_owned())
             .collapsible(false)
             .resizable(false)
-            .anchor(egui::Align2::CENTER_BOTTOM, [0.0, -40.0])
+            // Centred on the 3D view, right of the panel (which is drawn over windows).
+            .anchor(egui::Align2::CENTER_BOTTOM, [PANEL_WIDTH / 2.0, -40.0])
     };
     match turn {
         Turn::NewGame => {
