@@ -6,6 +6,7 @@
 //! position, which is what a legal shot is scored on, is already known).
 
 use crate::candidates::Layout;
+use billiards_physics::detect::segments_apart;
 use billiards_physics::{Motion, Simulation, Vec2};
 use billiards_rules::CUE;
 
@@ -50,7 +51,7 @@ pub fn final_layout(sim: &Simulation) -> Option<Layout> {
     for (i, a) in paths.iter().enumerate() {
         for c in &paths[i + 1..] {
             let moving = a.1 != a.2 || c.1 != c.2;
-            if moving && apart((a.1, a.2), (c.1, c.2)) <= contact {
+            if moving && segments_apart((a.1, a.2), (c.1, c.2)) <= contact {
                 return None;
             }
         }
@@ -66,29 +67,6 @@ pub fn final_layout(sim: &Simulation) -> Option<Layout> {
             .map(|p| (p.0, p.2))
             .collect(),
     })
-}
-
-/// Smallest distance between segments `pq` and `rs` (zero when they cross).
-fn apart((p, q): (Vec2, Vec2), (r, s): (Vec2, Vec2)) -> f64 {
-    let side = |a: Vec2, b: Vec2, c: Vec2| (b - a).perp_dot(c - a);
-    let (d1, d2, d3, d4) = (side(p, q, r), side(p, q, s), side(r, s, p), side(r, s, q));
-    if d1 * d2 < 0.0 && d3 * d4 < 0.0 {
-        return 0.0;
-    }
-    let to = |x: Vec2, a: Vec2, b: Vec2| {
-        let ab = b - a;
-        let len2 = ab.length_squared();
-        let u = if len2 > 0.0 {
-            ((x - a).dot(ab) / len2).clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
-        (x - (a + ab * u)).length()
-    };
-    to(p, r, s)
-        .min(to(q, r, s))
-        .min(to(r, p, q))
-        .min(to(s, p, q))
 }
 
 #[cfg(test)]

@@ -79,7 +79,7 @@ fn reachable_contact(
     // Against a resting ball (where the cull above knows nothing of the deceleration).
     if !(ma && mb)
         && let (Some(pa), Some(pb)) = (sweep(a, t, ra), sweep(b, t, rb))
-        && apart(pa, pb) > (contact + 2.0 * (ra + rb) * 1e-12) * (1.0 + 1e-9) + 1e-9
+        && segments_apart(pa, pb) > (contact + 2.0 * (ra + rb) * 1e-12) * (1.0 + 1e-9) + 1e-9
     {
         return None;
     }
@@ -104,8 +104,9 @@ fn sweep(s: &Segment, t: f64, reach: f64) -> Option<(Vec2, Vec2)> {
 /// Smallest distance between two segments (zero if they cross). Two balls on straight paths
 /// can touch only if their swept segments come within the contact distance, whenever each
 /// passes there: for a ball driven at a resting one (most pairs of a break) this is the exact
-/// test of its path, where the reach bound is only a disc.
-fn apart((p, q): (Vec2, Vec2), (r, s): (Vec2, Vec2)) -> f64 {
+/// test of its path, where the reach bound is only a disc. The computer player's quiet-table
+/// test uses it too.
+pub fn segments_apart((p, q): (Vec2, Vec2), (r, s): (Vec2, Vec2)) -> f64 {
     let side = |a: Vec2, b: Vec2, c: Vec2| (b - a).perp_dot(c - a);
     let (d1, d2) = (side(p, q, r), side(p, q, s));
     let (d3, d4) = (side(r, s, p), side(r, s, q));

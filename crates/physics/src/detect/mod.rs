@@ -6,7 +6,7 @@ mod ball_cushion;
 mod ball_jaw;
 pub(crate) mod cull;
 
-pub use ball_ball::{ball_ball, ball_ball_kept};
+pub use ball_ball::{ball_ball, ball_ball_kept, segments_apart};
 pub use ball_cushion::{ball_cushion, ball_line, cushion_contact, line_contact};
 pub use ball_jaw::ball_jaw;
 pub use cull::{MISS_ABSOLUTE_MARGIN, MISS_RELATIVE_MARGIN, MISS_ROUNDING, misses};
