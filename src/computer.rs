@@ -194,11 +194,7 @@ fn play_computer_turn(
             level,
             handle,
         }) if handle.is_finished() => {
-            let decision = handle
-                .join()
-                .unwrap_or(Err(AiError::NoBall))
-                .map_err(|e| e.to_string());
-            match decision {
+            match outcome(handle) {
                 Ok(decision) => {
                     if let Decision::Shoot(plan) = &decision {
                         show_plan(
@@ -252,6 +248,14 @@ fn play_computer_turn(
         },
         task => computer.turn = task,
     }
+}
+
+/// A finished decision thread's answer; a panic is said as such, not as a rules error.
+fn outcome(handle: JoinHandle<Result<Decision, AiError>>) -> Result<Decision, String> {
+    handle
+        .join()
+        .map_err(|_| "the decision thread panicked".to_owned())?
+        .map_err(|e| e.to_string())
 }
 
 /// Puts the plan on the table as a human's aim shows: the cue ball in hand where it goes, and
@@ -324,7 +328,7 @@ fn give_hint(
         computer.hint = None;
         return;
     }
-    let text = match handle.join().unwrap_or(Err(AiError::NoBall)) {
+    let text = match outcome(handle) {
         Ok(decision) => {
             if let Decision::Shoot(plan) = &decision {
                 show_plan(
