@@ -99,8 +99,11 @@ impl Scene<'_> {
             return best;
         }
         let best = earlier(best, self.cushion(id, t, horizon));
-        let best = self.jaw(id, t, horizon, best);
-        earlier(best, self.opening(id, t, horizon))
+        let bounds = PathBox::of(seg, t, horizon);
+        // The linear prediction searches jaws along another path than the box's.
+        let exact = self.kinematics() == Kinematics::Exact;
+        let best = self.jaw(id, t, horizon, best, bounds.filter(|_| exact));
+        earlier(best, self.opening(id, t, horizon, bounds))
     }
 
     /// The first cushion contact of moving ball `id` after `t`, within `horizon` seconds.
@@ -155,11 +158,21 @@ impl Scene<'_> {
     /// The first jaw contact of moving ball `id` after `t` if earlier than `best`, searched
     /// only up to `best`; the earlier of the two.
     #[inline]
-    fn jaw(&self, id: BallId, t: f64, horizon: f64, mut best: Option<Pending>) -> Option<Pending> {
+    fn jaw(
+        &self,
+        id: BallId,
+        t: f64,
+        horizon: f64,
+        mut best: Option<Pending>,
+        bounds: Option<PathBox>,
+    ) -> Option<Pending> {
         let seg = &self.segments[id];
         let kin = self.kinematics();
         let jaw_contact = self.params.ball.radius + self.bodies.jaw_radius();
         for (k, jaw) in self.bodies.jaws.iter().enumerate() {
+            if bounds.is_some_and(|b| b.clear_of_point(jaw.centre, jaw_contact)) {
+                continue;
+            }
             let h = best.map_or(horizon, |b| horizon.min(b.time - t));
             if let Some(tau) = detect::ball_jaw(seg, t, jaw.centre, jaw_contact, h, kin) {
                 let kind = PendingKind::Jaw(id, k);
@@ -177,10 +190,19 @@ impl Scene<'_> {
 
     /// When moving ball `id`'s centre first crosses a pocket opening after `t`.
     #[inline]
-    fn opening(&self, id: BallId, t: f64, horizon: f64) -> Option<Pending> {
+    fn opening(
+        &self,
+        id: BallId,
+        t: f64,
+        horizon: f64,
+        bounds: Option<PathBox>,
+    ) -> Option<Pending> {
         let seg = &self.segments[id];
         let mut best = None;
         for (k, o) in self.bodies.openings.iter().enumerate() {
+            if bounds.is_some_and(|b| b.clear_of_line(o.normal, o.offset)) {
+                continue;
+            }
             // The real path decides when a ball drops, even in the linear comparison mode.
             let exact = Kinematics::Exact;
             if let Some(tau) = detect::ball_line(seg, t, o.normal, o.offset, horizon, exact) {
@@ -195,6 +217,76 @@ impl Scene<'_> {
             }
         }
         best
+    }
+}
+
+/// The box the centre of a ball stays in over a search window, from its exact path, widened by
+/// [`PathBox::MARGIN`]: a fixed body it keeps clear of cannot be touched in that window, so
+/// its time-of-impact search (which would find no root) is skipped. Only searches that
+/// return `None` are skipped, so no event changes.
+#[derive(Clone, Copy, Debug)]
+struct PathBox {
+    min: Vec2,
+    max: Vec2,
+}
+
+impl PathBox {
+    /// Clearance kept beyond the box (m): far above the rounding of positions (~1e-16 m) and
+    /// of the contact functions, which then stay positive by about `2 contact MARGIN`.
+    const MARGIN: f64 = 1e-9;
+
+    /// The box of the path of `seg` over `[t, t + horizon]`, `None` for an infinite or
+    /// non-finite window. Each coordinate `p + v s + a s^2 / 2` takes its extremes at the
+    /// ends of the window or at its vertex `s = -v / a`.
+    #[inline]
+    fn of(seg: &Segment, t: f64, horizon: f64) -> Option<Self> {
+        if !horizon.is_finite() {
+            return None;
+        }
+        let h = horizon.max(0.0);
+        let (p, v, a) = (seg.position_at(t), seg.velocity_at(t), seg.acceleration);
+        let range = |p: f64, v: f64, a: f64| {
+            let end = p + (v + 0.5 * a * h) * h;
+            let (mut lo, mut hi) = (p.min(end), p.max(end));
+            if a != 0.0 {
+                let s = -v / a;
+                if s > 0.0 && s < h {
+                    let vertex = p + 0.5 * v * s;
+                    lo = lo.min(vertex);
+                    hi = hi.max(vertex);
+                }
+            }
+            // Rounding of the end and vertex values, relative to the largest term.
+            let slack = Self::MARGIN + 1e-12 * (p.abs() + (v * h).abs() + (a * h * h).abs());
+            (lo - slack, hi + slack)
+        };
+        let (x0, x1) = range(p.x, v.x, a.x);
+        let (y0, y1) = range(p.y, v.y, a.y);
+        let b = Self {
+            min: Vec2::new(x0, y0),
+            max: Vec2::new(x1, y1),
+        };
+        (b.min.is_finite() && b.max.is_finite()).then_some(b)
+    }
+
+    /// Whether every point of the box is more than `distance` from `c` along some axis (so
+    /// the centre never comes within `distance` of `c`).
+    #[inline]
+    fn clear_of_point(&self, c: Vec2, distance: f64) -> bool {
+        c.x < self.min.x - distance
+            || c.x > self.max.x + distance
+            || c.y < self.min.y - distance
+            || c.y > self.max.y + distance
+    }
+
+    /// Whether the whole box lies where `offset + n·p > 0` (so the centre never reaches the
+    /// line).
+    #[inline]
+    fn clear_of_line(&self, n: Vec2, offset: f64) -> bool {
+        // The corner of the box furthest towards the line.
+        let x = if n.x > 0.0 { self.min.x } else { self.max.x };
+        let y = if n.y > 0.0 { self.min.y } else { self.max.y };
+        offset + n.x * x + n.y * y > 0.0
     }
 }
 
