@@ -161,21 +161,30 @@ impl Search<'_> {
     /// The simulation of `cand` before its strike: the cue ball in its place.
     fn start(&self, cand: &Candidate) -> Option<Simulation> {
         let mut sim = self.base.clone();
-        if let Some(p) = cand.place {
-            sim.place(self.cue, p, Vec2::ZERO, Vec3::ZERO).ok()?;
-        }
+        self.reset(cand, &mut sim)?;
         Some(sim)
     }
 
-    /// Runs one noisy sample of candidate `index` (draw `k`): its summary, the layout it
-    /// leaves (`None` when it stopped early on a settled verdict) and the events it took.
+    /// [`Search::start`] into `sim`, reusing its buffers (no allocation per sample).
+    fn reset(&self, cand: &Candidate, sim: &mut Simulation) -> Option<()> {
+        sim.clone_from(&self.base);
+        if let Some(p) = cand.place {
+            sim.place(self.cue, p, Vec2::ZERO, Vec3::ZERO).ok()?;
+        }
+        Some(())
+    }
+
+    /// Runs one noisy sample of candidate `index` (draw `k`) in the scratch simulation `sim`:
+    /// its summary, the layout it leaves (`None` when it stopped early on a settled verdict)
+    /// and the events it took.
     fn run(
         &self,
         cand: &Candidate,
         index: u64,
         k: u64,
+        sim: &mut Simulation,
     ) -> Option<(ShotSummary, Option<Layout>, usize)> {
-        let mut sim = self.start(cand)?;
+        self.reset(cand, sim)?;
         let mut rng = stream(self.seed, index, k);
         let shot = self.noise.apply(cand.shot, sim.params(), &mut rng);
         let first = sim.event_count();
@@ -198,25 +207,25 @@ impl Search<'_> {
                         break;
                     }
                     if sim.event_count() - first > cap {
-                        layout = Layout::of(&sim, None);
+                        layout = Layout::of(sim, None);
                         break;
                     }
                     // Once only stops are left, the final layout is known (crate::quiet).
                     if matches!(e.kind, EventKind::Transition { .. }) {
-                        layout = final_layout(&sim);
+                        layout = final_layout(sim);
                         if layout.is_some() {
                             break;
                         }
                     }
                 }
                 if layout.is_none() && sim.is_at_rest() {
-                    layout = Layout::of(&sim, None);
+                    layout = Layout::of(sim, None);
                 }
             }
             Mode::Full => {
                 let _ = sim.run_to_rest();
                 summary = summarise(sim.history().events(), sim.numbers());
-                layout = Layout::of(&sim, None);
+                layout = Layout::of(sim, None);
             }
         }
         let events = sim.event_count() - first;
@@ -225,6 +234,12 @@ impl Search<'_> {
 
     /// One noisy sample of candidate `index` (draw `k`), scored.
     pub fn sample(&self, cand: &Candidate, index: u64, k: u64) -> Stats {
+        self.sample_in(cand, index, k, &mut self.base.clone())
+    }
+
+    /// [`Search::sample`] run in the scratch simulation `sim` (any earlier state of it is
+    /// overwritten).
+    fn sample_in(&self, cand: &Candidate, index: u64, k: u64, sim: &mut Simulation) -> Stats {
         let me = self.state.next.shooter;
         let foul = Stats {
             n: 1,
@@ -232,7 +247,7 @@ impl Search<'_> {
             fouls: 1,
             ..Stats::default()
         };
-        let Some((summary, layout, events)) = self.run(cand, index, k) else {
+        let Some((summary, layout, events)) = self.run(cand, index, k, sim) else {
             return foul;
         };
         let mut after = self.state.clone();
@@ -291,14 +306,18 @@ impl Search<'_> {
     /// Samples `from..to` of every candidate of `cands`, on all cores. Candidate `i` draws
     /// from the streams `(seed, salt + i, k)`, so the result does not depend on the threads.
     pub fn evaluate(&self, cands: &[Candidate], salt: u64, from: u64, to: u64) -> Vec<Stats> {
+        // One scratch simulation per rayon job, reset from the base for each sample.
         cands
             .par_iter()
             .enumerate()
-            .map(|(i, c)| {
-                (from..to).fold(Stats::default(), |s, k| {
-                    s.merged(self.sample(c, salt + i as u64, k))
-                })
-            })
+            .map_init(
+                || self.base.clone(),
+                |sim, (i, c)| {
+                    (from..to).fold(Stats::default(), |s, k| {
+                        s.merged(self.sample_in(c, salt + i as u64, k, sim))
+                    })
+                },
+            )
             .collect()
     }
 

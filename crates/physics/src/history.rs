@@ -23,7 +23,7 @@ enum Source {
 }
 
 /// Everything that happened in a simulation, in time order.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Debug, PartialEq)]
 pub struct History {
     events: Vec<Event>,
     /// Per ball, the sources of its segments in start order (the first one is its initial
@@ -34,6 +34,13 @@ pub struct History {
     /// The parameters in force from each event index on, in index order (the first from 0).
     params: Vec<(usize, Params)>,
 }
+
+clone_reusing!(History {
+    events,
+    tracks,
+    stored,
+    params
+});
 
 impl History {
     /// A history that starts with these segments, under `params`, and no events.

@@ -19,6 +19,23 @@
 //! assert!(sim.is_at_rest());
 //! ```
 
+/// `Clone` for a struct, field by field, with a `clone_from` that reuses the fields' own
+/// buffers: a search that resets a simulation to a base state thousands of times a second
+/// then allocates nothing (`#[derive(Clone)]` keeps the default `clone_from`, which clones
+/// anew and drops the old value).
+macro_rules! clone_reusing {
+    ($ty:ident $(<$g:ident: $b:path>)? { $($field:ident),* $(,)? }) => {
+        impl$(<$g: $b>)? Clone for $ty$(<$g>)? {
+            fn clone(&self) -> Self {
+                Self { $($field: self.$field.clone()),* }
+            }
+            fn clone_from(&mut self, source: &Self) {
+                $(self.$field.clone_from(&source.$field);)*
+            }
+        }
+    };
+}
+
 pub mod ball;
 pub mod check;
 pub mod detect;

@@ -4,7 +4,7 @@
 /// A tournament tree over `n` slots holding optional keys, each with an integer rank (lower
 /// wins; ties go to the lower slot). Ranks are plain integers so that replaying the matches
 /// of one slot costs a few instructions per level.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct Tournament<K: Copy> {
     size: usize,
     keys: Vec<Option<K>>,
@@ -12,6 +12,8 @@ pub struct Tournament<K: Copy> {
     /// the best key below. A replay carries its winner up and reads only the other side.
     nodes: Vec<(u128, usize)>,
 }
+
+clone_reusing!(Tournament<K: Copy> { size, keys, nodes });
 
 impl<K: Copy> Tournament<K> {
     /// Rank of an empty slot: loses to every key.

@@ -65,7 +65,7 @@ const ON_TABLE: u8 = 2;
 /// stops mattering to pair searches (the ball's next event with no other ball, infinity for
 /// none), one array per component so that the cull of a row of pairs is a loop the compiler
 /// vectorizes. Updated only for the balls an event changes.
-#[derive(Clone, Debug, Default)]
+#[derive(Debug, Default)]
 pub(crate) struct PathColumns {
     start: Vec<f64>,
     px: Vec<f64>,
@@ -82,6 +82,19 @@ pub(crate) struct PathColumns {
     /// scene), the cull drops the acceleration terms.
     accelerating: usize,
 }
+
+clone_reusing!(PathColumns {
+    start,
+    px,
+    py,
+    vx,
+    vy,
+    ax,
+    ay,
+    until,
+    flags,
+    accelerating
+});
 
 impl PathColumns {
     /// Columns for `n` balls, all at rest off the table until [`PathColumns::set`].

@@ -152,11 +152,13 @@ pub enum FixedBody {
 
 /// The contacts of balls with fixed bodies resolved at the current instant: a resting
 /// contact that repeats within one instant is plastic ([`resting_on_fixed_body`]).
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct InstantContacts {
     time: f64,
     contacts: Vec<(BallId, FixedBody)>,
 }
+
+clone_reusing!(InstantContacts { time, contacts });
 
 impl Default for InstantContacts {
     fn default() -> Self {

@@ -12,7 +12,7 @@ use crate::math::Vec2;
 use crate::queue::Tournament;
 
 /// The cell lists and the index of which predictions depend on which ball.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub(super) struct CellLists {
     grid: Grid,
     /// For each ball, the balls whose cached event is a contact with it (may hold stale
@@ -23,6 +23,13 @@ pub(super) struct CellLists {
     /// The current prediction round.
     round: u64,
 }
+
+clone_reusing!(CellLists {
+    grid,
+    dependents,
+    stamps,
+    round
+});
 
 impl CellLists {
     /// Cell lists over `grid` for `n` balls (filled by [`CellLists::predict_all`]).

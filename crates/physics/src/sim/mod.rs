@@ -37,7 +37,7 @@ pub struct Advance {
 /// Each ball follows a closed-form segment from its last event; positions are always evaluated
 /// from there, never accumulated per step, so the trajectory does not depend on how time is
 /// sliced. Predictions are cached per ball and redone only for the balls an event touched.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct Simulation {
     params: Params,
     numbers: Vec<u8>,
@@ -60,6 +60,21 @@ pub struct Simulation {
     /// The contacts with cushions and jaws resolved at the current instant.
     instant_contacts: InstantContacts,
 }
+
+clone_reusing!(Simulation {
+    params,
+    numbers,
+    segments,
+    bodies,
+    predictions,
+    time,
+    history,
+    record_history,
+    last_event,
+    event_count,
+    perturbation,
+    instant_contacts,
+});
 
 impl Simulation {
     /// Builds a simulation at time 0, checking the table, the parameters and the layout.

@@ -13,7 +13,7 @@ use crate::detect::{
 use crate::queue::Tournament;
 
 /// The pair table and what keeps it cheap to update.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub(super) struct PairTable {
     /// Each ball's earliest event with no other ball (transition, cushion, jaw, opening).
     solo: Vec<Option<Pending>>,
@@ -27,6 +27,14 @@ pub(super) struct PairTable {
     /// Scratch: balls whose pair with a touched ball changed in this event.
     changed_partners: Vec<BallId>,
 }
+
+clone_reusing!(PairTable {
+    solo,
+    contact_times,
+    paths,
+    clearance,
+    changed_partners
+});
 
 impl PairTable {
     /// An empty table for `n` balls (filled by [`PairTable::predict_all`]).

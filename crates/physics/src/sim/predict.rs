@@ -17,7 +17,7 @@ use std::hint::select_unpredictable;
 
 /// The fixed bodies a ball can meet: the cushions (as the bounds of its centre), the pocket
 /// jaws and openings (empty unless the table has jaws).
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub(super) struct Bodies {
     /// The table.
     pub table: Table,
@@ -28,6 +28,13 @@ pub(super) struct Bodies {
     /// The table's pocket openings.
     pub openings: Vec<Opening>,
 }
+
+clone_reusing!(Bodies {
+    table,
+    bounds,
+    jaws,
+    openings
+});
 
 impl Bodies {
     /// The bodies of `table` for balls of radius `radius`.
@@ -304,7 +311,7 @@ pub(crate) enum StrategyChoice {
 }
 
 /// How contacts between balls are found; each variant holds the data valid for it only.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub(super) enum Strategy {
     /// Scenes in one cell: every pair's contact time in a table.
     PairTable(PairTable),
@@ -312,14 +319,34 @@ pub(super) enum Strategy {
     CellLists(CellLists),
 }
 
+impl Clone for Strategy {
+    fn clone(&self) -> Self {
+        match self {
+            Self::PairTable(s) => Self::PairTable(s.clone()),
+            Self::CellLists(s) => Self::CellLists(s.clone()),
+        }
+    }
+
+    /// Reuses the buffers of the same strategy (see `clone_reusing!`).
+    fn clone_from(&mut self, source: &Self) {
+        match (self, source) {
+            (Self::PairTable(a), Self::PairTable(b)) => a.clone_from(b),
+            (Self::CellLists(a), Self::CellLists(b)) => a.clone_from(b),
+            (this, source) => *this = source.clone(),
+        }
+    }
+}
+
 /// Every ball's cached earliest event, the earliest of them all, and the strategy that keeps
 /// them up to date.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub(super) struct Predictions {
     /// Each ball's earliest predicted event, and the earliest of them all.
     queue: Tournament<Pending>,
     strategy: Strategy,
 }
+
+clone_reusing!(Predictions { queue, strategy });
 
 impl Predictions {
     /// Empty predictions for `n` balls on a table whose centres stay within `bounds`, with
