@@ -105,17 +105,23 @@ impl Scene<'_> {
         if !seg.state.motion.is_moving() {
             return best;
         }
-        let best = earlier(best, self.cushion(id, t, horizon));
         let bounds = PathBox::of(seg, t, horizon);
-        // The linear prediction searches jaws along another path than the box's.
-        let exact = self.kinematics() == Kinematics::Exact;
-        let best = self.jaw(id, t, horizon, best, bounds.filter(|_| exact));
+        // The linear prediction searches cushions and jaws along another path than the box's.
+        let exact = bounds.filter(|_| self.kinematics() == Kinematics::Exact);
+        let best = earlier(best, self.cushion(id, t, horizon, exact));
+        let best = self.jaw(id, t, horizon, best, exact);
         earlier(best, self.opening(id, t, horizon, bounds))
     }
 
     /// The first cushion contact of moving ball `id` after `t`, within `horizon` seconds.
     #[inline]
-    fn cushion(&self, id: BallId, t: f64, horizon: f64) -> Option<Pending> {
+    fn cushion(
+        &self,
+        id: BallId,
+        t: f64,
+        horizon: f64,
+        bounds: Option<PathBox>,
+    ) -> Option<Pending> {
         let seg = &self.segments[id];
         // The ball's state once for all four cushions (`cushion_contact` starts at `t + 0.0`
         // too); `line_contact` skips a cushion the ball leaves for good before any root.
@@ -147,6 +153,9 @@ impl Scene<'_> {
         let (table, mut best) = (&self.bodies.table, None);
         for &c in cushions.iter().flatten() {
             let limit = self.bodies.cushion_limit(c);
+            if bounds.is_some_and(|b| b.clear_of_line(c.inward_normal(), limit)) {
+                continue;
+            }
             let Some(tau) = detect::cushion_contact(seg, t, (p, v, a), c, limit, table, horizon)
             else {
                 continue;
