@@ -26,6 +26,15 @@ pub fn final_layout(sim: &Simulation) -> Option<Layout> {
             && p.y.abs() <= b.y - MARGIN
             && p.x.abs() + p.y.abs() < corner - MARGIN
     };
+    // A ball still sliding (or curving) answers at once, before anything is built.
+    let curving = |s: &billiards_physics::Segment| match s.state.motion {
+        Motion::Sliding => true,
+        Motion::Rolling => !s.straight,
+        _ => false,
+    };
+    if (0..sim.ball_count()).any(|id| curving(sim.segment(id))) {
+        return None;
+    }
     // Each ball on the table: its path from now to where it stops.
     let mut paths: Vec<(u8, Vec2, Vec2)> = Vec::with_capacity(sim.ball_count());
     for (id, &n) in sim.numbers().iter().enumerate() {
@@ -48,10 +57,17 @@ pub fn final_layout(sim: &Simulation) -> Option<Layout> {
         }
     }
     let contact = 2.0 * r + MARGIN;
+    // Boxes further apart than a contact on some axis need no exact distance.
+    let apart = |a: &(u8, Vec2, Vec2), c: &(u8, Vec2, Vec2)| {
+        a.1.x.max(a.2.x) + contact < c.1.x.min(c.2.x)
+            || c.1.x.max(c.2.x) + contact < a.1.x.min(a.2.x)
+            || a.1.y.max(a.2.y) + contact < c.1.y.min(c.2.y)
+            || c.1.y.max(c.2.y) + contact < a.1.y.min(a.2.y)
+    };
     for (i, a) in paths.iter().enumerate() {
         for c in &paths[i + 1..] {
             let moving = a.1 != a.2 || c.1 != c.2;
-            if moving && segments_apart((a.1, a.2), (c.1, c.2)) <= contact {
+            if moving && !apart(a, c) && segments_apart((a.1, a.2), (c.1, c.2)) <= contact {
                 return None;
             }
         }
