@@ -120,8 +120,8 @@ impl Level {
                 safeties: 5,
             },
             Level::Hard | Level::Perfect => Budget {
-                samples: 8,
-                rounds: &[(32, 24), (8, 96)],
+                samples: 12,
+                rounds: &[(48, 32), (12, 128)],
                 aims: 14,
                 speeds: &[0.8, 1.0, 1.5, 2.4],
                 tips: &[STUN, FOLLOW, DRAW, DEEP_DRAW, LEFT, RIGHT],
