@@ -14,6 +14,7 @@ use crate::{
     mode::GameMode,
     settings::{ClampReport, ShotSettings, ViewSettings, apply_shot_edit},
     sim::{ShotRequested, ShotUndone, SimStatus, SimSystems, Solver, place_ball_in_hand},
+    view,
 };
 use bevy::{
     input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
@@ -157,8 +158,16 @@ impl PointerInput<'_, '_> {
     /// The table-plane point under the pointer, on the horizontal plane `height` above the
     /// cloth (Bevy world units).
     pub fn table_point(&self, height: f32) -> Option<DVec2> {
-        let cursor = self.window.cursor_position()?;
+        let window = *self.window;
         let (camera, camera_transform) = *self.camera;
+        // Below 100 % render scale the camera draws into a smaller image than the window.
+        let cursor = view::cursor_in_target(
+            window.cursor_position()?,
+            window.scale_factor(),
+            window.physical_size(),
+            camera.physical_target_size()?,
+            camera.target_scaling_factor()?,
+        );
         let ray = camera.viewport_to_world(camera_transform, cursor).ok()?;
         let distance = ray.intersect_plane(Vec3::Y * height, InfinitePlane3d::new(Vec3::Y))?;
         Some(to_table_plane(ray.get_point(distance)))
