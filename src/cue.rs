@@ -10,7 +10,7 @@ use crate::{
     balls::{Ball, BallMotion, Pocketed, world_velocity},
     camera::{CameraSystems, TableCamera},
     geometry::{TableSpec, table_dir_to_world, to_table_plane},
-    input::{InputSystems, aim_unlocked},
+    input::{InputSystems, aim_unlocked, held_or_clicked},
     mode::GameMode,
     settings::{ClampReport, ShotSettings, ViewSettings, apply_shot_edit},
     sim::{ShotRequested, ShotUndone, SimStatus, SimSystems, Solver, place_ball_in_hand},
@@ -155,6 +155,11 @@ impl PointerInput<'_, '_> {
         self.buttons.just_pressed(MouseButton::Left)
     }
 
+    /// Whether the left button is held, or was clicked within this frame.
+    pub fn left_down(&self) -> bool {
+        held_or_clicked(&self.buttons, MouseButton::Left)
+    }
+
     /// The table-plane point under the pointer, on the horizontal plane `height` above the
     /// cloth (Bevy world units).
     pub fn table_point(&self, height: f32) -> Option<DVec2> {
@@ -213,7 +218,7 @@ fn aim_with_mouse(
         {
             *dragging_ball = true;
         }
-        if (*dragging_ball || ctrl) && input.buttons.pressed(MouseButton::Left) {
+        if (*dragging_ball || ctrl) && input.left_down() {
             if let Some(target) = target
                 && let Some((_, mut motion)) = balls.iter_mut().find(|(ball, _)| ball.number == 0)
             {
@@ -235,7 +240,7 @@ fn aim_with_mouse(
         .keys
         .any_pressed([KeyCode::ShiftLeft, KeyCode::ShiftRight]);
     let mut next = *shot;
-    if input.buttons.pressed(MouseButton::Left) {
+    if input.left_down() {
         if shift {
             // Pulling the mouse toward the player pulls the cue back: 2 cm/s per pixel.
             next.power += f64::from(input.motion.delta.y) * 0.02;
