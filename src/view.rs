@@ -5,7 +5,9 @@
 //! Below it draws into an image of the window's physical size times the scale
 //! ([`SceneTarget`]), which the UI stretches over the whole window under its panels: the 3D
 //! view costs a quarter of the pixels at 50 % while the UI's text stays sharp. A pointer
-//! position in the window is mapped into that image by [`cursor_in_target`].
+//! position in the window is mapped into that image by [`cursor_in_target`]. Anti-aliasing
+//! works the same on the image: Bevy resolves the camera's multisampled texture before it
+//! writes the target. Screenshots of the window include the image, drawn by the UI.
 
 use bevy::{
     camera::{ImageRenderTarget, RenderTarget, Viewport},
