@@ -10,10 +10,11 @@ use crate::{
     balls::{Ball, BallMotion, Pocketed, world_velocity},
     camera::{CameraSystems, TableCamera},
     geometry::{TableSpec, table_dir_to_world, to_table_plane},
-    input::{InputSystems, aim_unlocked},
+    input::{InputSystems, aim_unlocked, held_or_clicked},
     mode::GameMode,
     settings::{ClampReport, ShotSettings, ViewSettings, apply_shot_edit},
     sim::{ShotRequested, ShotUndone, SimStatus, SimSystems, Solver, place_ball_in_hand},
+    view,
 };
 use bevy::{
     input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
@@ -154,11 +155,24 @@ impl PointerInput<'_, '_> {
         self.buttons.just_pressed(MouseButton::Left)
     }
 
+    /// Whether the left button is held, or was clicked within this frame.
+    pub fn left_down(&self) -> bool {
+        held_or_clicked(&self.buttons, MouseButton::Left)
+    }
+
     /// The table-plane point under the pointer, on the horizontal plane `height` above the
     /// cloth (Bevy world units).
     pub fn table_point(&self, height: f32) -> Option<DVec2> {
-        let cursor = self.window.cursor_position()?;
+        let window = *self.window;
         let (camera, camera_transform) = *self.camera;
+        // Below 100 % render scale the camera draws into a smaller image than the window.
+        let cursor = view::cursor_in_target(
+            window.cursor_position()?,
+            window.scale_factor(),
+            window.physical_size(),
+            camera.physical_target_size()?,
+            camera.target_scaling_factor()?,
+        );
         let ray = camera.viewport_to_world(camera_transform, cursor).ok()?;
         let distance = ray.intersect_plane(Vec3::Y * height, InfinitePlane3d::new(Vec3::Y))?;
         Some(to_table_plane(ray.get_point(distance)))
@@ -204,7 +218,7 @@ fn aim_with_mouse(
         {
             *dragging_ball = true;
         }
-        if (*dragging_ball || ctrl) && input.buttons.pressed(MouseButton::Left) {
+        if (*dragging_ball || ctrl) && input.left_down() {
             if let Some(target) = target
                 && let Some((_, mut motion)) = balls.iter_mut().find(|(ball, _)| ball.number == 0)
             {
@@ -226,7 +240,7 @@ fn aim_with_mouse(
         .keys
         .any_pressed([KeyCode::ShiftLeft, KeyCode::ShiftRight]);
     let mut next = *shot;
-    if input.buttons.pressed(MouseButton::Left) {
+    if input.left_down() {
         if shift {
             // Pulling the mouse toward the player pulls the cue back: 2 cm/s per pixel.
             next.power += f64::from(input.motion.delta.y) * 0.02;

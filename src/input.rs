@@ -24,3 +24,33 @@ pub struct AimLocked(pub bool);
 pub fn aim_unlocked(lock: Option<Res<AimLocked>>) -> bool {
     !lock.is_some_and(|l| l.0)
 }
+
+/// Whether `button` is down this frame, counting a click whose press and release both fell
+/// in this frame: `ButtonInput::pressed` is already false then. A frame takes a second on a
+/// software renderer, so most quick clicks end within one; a click on the table must still
+/// aim at the point clicked.
+pub fn held_or_clicked(buttons: &ButtonInput<MouseButton>, button: MouseButton) -> bool {
+    buttons.pressed(button) || buttons.just_pressed(button)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_click_within_one_frame_counts_as_down() {
+        let mut buttons = ButtonInput::<MouseButton>::default();
+        assert!(!held_or_clicked(&buttons, MouseButton::Left));
+        buttons.press(MouseButton::Left);
+        buttons.release(MouseButton::Left);
+        assert!(!buttons.pressed(MouseButton::Left));
+        assert!(held_or_clicked(&buttons, MouseButton::Left));
+        // The next frame it is up.
+        buttons.clear();
+        assert!(!held_or_clicked(&buttons, MouseButton::Left));
+        // Held over frames.
+        buttons.press(MouseButton::Left);
+        buttons.clear();
+        assert!(held_or_clicked(&buttons, MouseButton::Left));
+    }
+}

@@ -28,6 +28,7 @@ pub mod sound;
 pub mod table;
 pub mod table_mesh;
 pub mod ui;
+pub mod view;
 
 use std::time::Duration;
 
@@ -76,7 +77,7 @@ impl Plugin for GamePlugin {
             game::table_plugin,
             computer::plugin,
         ))
-        .add_plugins((config::plugin, graphics::plugin));
+        .add_plugins((config::plugin, graphics::plugin, view::plugin));
         #[cfg(feature = "sound")]
         app.add_plugins(sound::plugin);
         if let Some(file) = &self.options.replay {

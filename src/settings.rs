@@ -490,6 +490,9 @@ pub struct GraphicsSettings {
     pub shadow_resolution: u32,
     /// Multisample anti-aliasing: samples per pixel (1 is off).
     pub msaa_samples: u32,
+    /// The 3D view's resolution, in percent of the window's: below 100 the table is drawn
+    /// into a smaller image and stretched over the window (the UI stays sharp).
+    pub render_scale: u32,
 }
 
 impl GraphicsSettings {
@@ -497,13 +500,21 @@ impl GraphicsSettings {
     pub const SHADOW_RESOLUTIONS: [u32; 3] = [512, 1024, 2048];
     /// The MSAA sample counts offered (1: off).
     pub const MSAA_SAMPLES: [u32; 3] = [1, 2, 4];
+    /// The render scales offered, in percent.
+    pub const RENDER_SCALES: [u32; 3] = [50, 75, 100];
 
-    /// The lowest settings: no shadows, no anti-aliasing.
+    /// The lowest settings: no shadows, no anti-aliasing, half resolution.
     pub const LOW: Self = Self {
         shadows: false,
         shadow_resolution: 512,
         msaa_samples: 1,
+        render_scale: 50,
     };
+
+    /// The render scale as a fraction of the window's resolution.
+    pub fn render_fraction(&self) -> f32 {
+        self.render_scale as f32 / 100.0
+    }
 
     /// A copy with every value one the game offers (a hand-edited file may hold others).
     pub fn sanitized(self) -> Self {
@@ -517,6 +528,7 @@ impl GraphicsSettings {
             shadows: self.shadows,
             shadow_resolution: nearest(self.shadow_resolution, &Self::SHADOW_RESOLUTIONS),
             msaa_samples: nearest(self.msaa_samples, &Self::MSAA_SAMPLES),
+            render_scale: nearest(self.render_scale, &Self::RENDER_SCALES),
         }
     }
 }
@@ -528,6 +540,7 @@ impl Default for GraphicsSettings {
             // Bevy's default for spot lights.
             shadow_resolution: 1024,
             msaa_samples: 4,
+            render_scale: 100,
         }
     }
 }

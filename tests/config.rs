@@ -91,3 +91,41 @@ fn a_malformed_file_falls_back_to_the_defaults_with_a_message() {
     assert_eq!(app.world().resource::<ConfigFile>().error, None);
     let _ = std::fs::remove_dir_all(path.parent().unwrap().parent().unwrap());
 }
+
+/// The render scale is kept like the other graphics settings, and a value the game does not
+/// offer (a hand-edited file) becomes the nearest one it does.
+#[test]
+fn the_render_scale_is_kept_and_a_bad_one_corrected() {
+    let path = temp_config("render-scale");
+    {
+        let mut app = app_with_config(&path);
+        assert_eq!(app.world().resource::<GraphicsSettings>().render_scale, 100);
+        app.world_mut()
+            .resource_mut::<GraphicsSettings>()
+            .render_scale = 50;
+        app.update();
+    }
+    let app = app_with_config(&path);
+    assert_eq!(app.world().resource::<GraphicsSettings>().render_scale, 50);
+    drop(app);
+    for (written, read) in [(63, 75), (10, 50), (0, 50), (400, 100), (87, 75), (88, 100)] {
+        std::fs::write(
+            &path,
+            format!(r#"{{"graphics": {{"render_scale": {written}}}}}"#),
+        )
+        .unwrap();
+        let app = app_with_config(&path);
+        let graphics = *app.world().resource::<GraphicsSettings>();
+        assert_eq!(graphics.render_scale, read, "{written} in the file");
+        // The rest of the section keeps its defaults.
+        assert_eq!(
+            GraphicsSettings {
+                render_scale: 100,
+                ..graphics
+            },
+            GraphicsSettings::default()
+        );
+        assert_eq!(app.world().resource::<ConfigFile>().error, None);
+    }
+    let _ = std::fs::remove_dir_all(path.parent().unwrap().parent().unwrap());
+}

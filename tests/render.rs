@@ -99,8 +99,13 @@ fn can_render() -> bool {
 /// Runs the game under Xvfb with a screen of `size` and `args`; the settings file is read
 /// from an empty config folder, so the developer's own settings do not change the picture.
 fn run_game(size: (u32, u32), args: &[&str]) -> std::process::Output {
-    let runtime_dir = env::var_os("XDG_RUNTIME_DIR").unwrap_or_else(|| env::temp_dir().into());
     let config = env::temp_dir().join(format!("billiards-render-config-{}", std::process::id()));
+    run_game_with_config(size, args, &config)
+}
+
+/// [`run_game`] with the settings file of the config folder `config` (`XDG_CONFIG_HOME`).
+fn run_game_with_config(size: (u32, u32), args: &[&str], config: &Path) -> std::process::Output {
+    let runtime_dir = env::var_os("XDG_RUNTIME_DIR").unwrap_or_else(|| env::temp_dir().into());
     // `timeout` (coreutils) ends the run with SIGTERM, so xvfb-run can stop its X server.
     let output = Command::new("timeout")
         .args(["--kill-after=10", "300", "xvfb-run", "-a", "-s"])
@@ -110,7 +115,7 @@ fn run_game(size: (u32, u32), args: &[&str]) -> std::process::Output {
         .arg(format!("{}x{}", size.0, size.1))
         .args(args)
         .env("XDG_RUNTIME_DIR", runtime_dir)
-        .env("XDG_CONFIG_HOME", &config)
+        .env("XDG_CONFIG_HOME", config)
         .output()
         .expect("timeout and xvfb-run start");
     assert!(
@@ -136,6 +141,11 @@ fn temp_file(name: &str) -> PathBuf {
 /// Runs the game with `args` and `--screenshot` at 1280x720, returns the captured frame;
 /// `None` (the test is skipped) without xvfb-run or a Vulkan driver.
 fn screenshot(args: &[&str]) -> Option<Shot> {
+    screenshot_with_settings(args, None)
+}
+
+/// [`screenshot`], with `settings` (JSON) in the settings file.
+fn screenshot_with_settings(args: &[&str], settings: Option<&str>) -> Option<Shot> {
     if !can_render() {
         return None;
     }
@@ -143,7 +153,19 @@ fn screenshot(args: &[&str]) -> Option<Shot> {
     let mut all = args.to_vec();
     let out_arg = out.to_string_lossy().into_owned();
     all.extend(["--screenshot", &out_arg]);
-    run_game((1280, 720), &all);
+    match settings {
+        Some(settings) => {
+            let config = temp_file("config");
+            let file = config.join("billiards").join("settings.json");
+            std::fs::create_dir_all(file.parent().unwrap()).unwrap();
+            std::fs::write(&file, settings).unwrap();
+            run_game_with_config((1280, 720), &all, &config);
+            let _ = std::fs::remove_dir_all(&config);
+        }
+        None => {
+            run_game((1280, 720), &all);
+        }
+    }
     let shot = Shot::load(&out);
     let _ = std::fs::remove_file(&out);
     assert_eq!((shot.width, shot.height), (1280, 720));
@@ -266,7 +288,22 @@ fn table_balls_and_cue_are_drawn() {
     let Some(shot) = screenshot(&[]) else {
         return;
     };
+    check_table_balls_and_cue(&shot);
+}
 
+/// At 50 % render scale (from the settings file) the table is drawn into a quarter of the
+/// pixels and stretched over the window: the same table, balls and cue are on the screen.
+#[test]
+fn the_table_is_drawn_at_half_resolution() {
+    let settings = r#"{"graphics": {"render_scale": 50}}"#;
+    let Some(shot) = screenshot_with_settings(&[], Some(settings)) else {
+        return;
+    };
+    check_table_balls_and_cue(&shot);
+}
+
+/// The 3D view shows the cloth, the cue ball, coloured balls and the cue stick.
+fn check_table_balls_and_cue(shot: &Shot) {
     let total = shot.table_view().count();
     let cloth = shot.count(|[r, g, b]| g > 50 && g > r * 3 / 2 + 10 && g > b + 15);
     let white = shot.count(|[r, g, b]| r > 190 && g > 190 && b > 180 && r - b < 40);

@@ -10,8 +10,9 @@
 //! - [`game`]: the match's HUD lines, the new-game dialog, the verdict, the call, the end of
 //!   a rack.
 //!
-//! The 3D view is fitted to the part of the window right of the panel, so the panel never
-//! covers the table. While egui has claimed the pointer or the keyboard, the game's input
+//! The 3D view is fitted to the part of the window right of the panel (the panel's width goes
+//! to [`crate::view`]), so the panel never covers the table; below 100 % render scale the
+//! table's image is drawn here, under everything else. While egui has claimed the pointer or the keyboard, the game's input
 //! systems ([`InputSystems`]) do not run, so input meant for a widget never reaches the table.
 
 pub mod game;
@@ -23,20 +24,25 @@ pub mod settings;
 pub mod timeline;
 
 use bevy::{
-    camera::{CameraOutputMode, Viewport, visibility::RenderLayers},
+    camera::{CameraOutputMode, visibility::RenderLayers},
     prelude::*,
     render::render_resource::BlendState,
     window::PrimaryWindow,
 };
 use bevy_egui::{
     EguiContexts, EguiGlobalSettings, EguiInput, EguiPlugin, EguiPreUpdateSet,
-    EguiPrimaryContextPass, PrimaryEguiContext, egui, input::egui_wants_any_keyboard_input,
+    EguiPrimaryContextPass, EguiTextureHandle, PrimaryEguiContext, egui,
+    input::egui_wants_any_keyboard_input,
 };
 
 pub use layout::PANEL_WIDTH;
 pub use settings::OpenSections;
 
-use crate::{camera::TableCamera, input::InputSystems, mode::GameMode};
+use crate::{
+    input::InputSystems,
+    mode::GameMode,
+    view::{SceneTarget, ViewInset},
+};
 
 /// Adds egui, registers the panels and windows, and keeps the game's input away from them.
 pub fn plugin(app: &mut App) {
@@ -66,6 +72,7 @@ pub fn plugin(app: &mut App) {
         .add_systems(
             EguiPrimaryContextPass,
             (
+                show_scene_image,
                 left_panel,
                 hud::hud,
                 game::game_windows.run_if(in_state(GameMode::Play)),
@@ -146,13 +153,12 @@ fn spawn_ui_camera(mut commands: Commands, mut egui_settings: ResMut<EguiGlobalS
     ));
 }
 
-/// The settings panel on the left, with the Recordings section; fits the 3D view beside it.
+/// The settings panel on the left, with the Recordings section; the 3D view goes beside it.
 fn left_panel(
     mut contexts: EguiContexts,
     mut state: settings::SettingsParam,
     mut recordings: recordings::RecordingsParam,
-    window: Single<&Window, With<PrimaryWindow>>,
-    mut camera: Single<&mut Camera, With<TableCamera>>,
+    mut inset: ResMut<ViewInset>,
 ) -> Result {
     let ctx = contexts.ctx_mut()?.clone();
     // The panel sits in an egui Area, not in a bare root `Ui` on the background layer: egui
@@ -190,26 +196,94 @@ fn left_panel(
         })
         .inner;
     settings::rack_confirm_window(&ctx, &mut state);
-    fit_viewport(&window, &mut camera, panel_width);
+    // The 3D view takes the window right of the panel (src/view.rs).
+    inset.set_if_neq(ViewInset(panel_width));
     Ok(())
 }
 
-/// Gives the table camera the window area right of the panel.
-fn fit_viewport(window: &Window, camera: &mut Camera, panel_width: f32) {
-    let left = ((panel_width * window.scale_factor()) as u32).min(window.physical_width() - 1);
-    let viewport = Viewport {
-        physical_position: UVec2::new(left, 0),
-        physical_size: UVec2::new(
-            window.physical_width() - left,
-            window.physical_height().max(1),
-        ),
-        ..default()
+/// Below 100 % render scale the table camera draws into an image; it is stretched over the
+/// whole window on egui's background layer, under every panel and window, so the UI itself
+/// is still drawn at the window's full resolution.
+fn show_scene_image(mut contexts: EguiContexts, scene: Res<SceneTarget>) -> Result {
+    let Some(image) = &scene.image else {
+        return Ok(());
     };
-    let unchanged = camera.viewport.as_ref().is_some_and(|current| {
-        current.physical_position == viewport.physical_position
-            && current.physical_size == viewport.physical_size
-    });
-    if !unchanged {
-        camera.viewport = Some(viewport);
+    // Registered by id: the image goes when src/view.rs drops it, and bevy_egui then forgets
+    // it too.
+    let texture = contexts.add_image(EguiTextureHandle::Weak(image.id()));
+    let ctx = contexts.ctx_mut()?;
+    let uv = egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0));
+    ctx.layer_painter(egui::LayerId::background()).image(
+        texture,
+        ctx.viewport_rect(),
+        uv,
+        egui::Color32::WHITE,
+    );
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use bevy_egui::egui::{self, Event, PointerButton, pos2, vec2};
+
+    /// Runs one egui pass with `events` over a button at (100, 100); whether it was clicked.
+    fn pass(ctx: &egui::Context, events: Vec<Event>) -> bool {
+        let input = egui::RawInput {
+            screen_rect: Some(egui::Rect::from_min_size(
+                pos2(0.0, 0.0),
+                vec2(800.0, 600.0),
+            )),
+            events,
+            ..Default::default()
+        };
+        let mut clicked = false;
+        let _ = ctx.run_ui(input, |ui| {
+            egui::Area::new(egui::Id::new("area"))
+                .fixed_pos(pos2(100.0, 100.0))
+                .show(ui.ctx(), |ui| clicked = ui.button("Shoot").clicked());
+        });
+        clicked
+    }
+
+    fn button(pos: egui::Pos2, pressed: bool) -> Event {
+        Event::PointerButton {
+            pos,
+            button: PointerButton::Primary,
+            pressed,
+            modifiers: Default::default(),
+        }
+    }
+
+    /// A pointer that jumps onto a button and clicks within one frame (a 1 fps machine, or
+    /// `xdotool mousemove X Y click 1`) clicks it, whatever the order and positions of the
+    /// events egui gets in that frame: bevy_egui 0.42 hands them over in the window's order
+    /// (the move, then the press at the new position), and egui picks the widget under the
+    /// frame's last pointer position even for a press still at the old one or a press and
+    /// release before the move. A click lost this way was the table's, not egui's (see
+    /// `input::held_or_clicked`).
+    #[test]
+    fn a_jump_and_click_within_one_frame_clicks_the_button() {
+        let (away, on) = (pos2(700.0, 500.0), pos2(110.0, 108.0));
+        let orders = [
+            vec![Event::PointerMoved(on), button(on, true), button(on, false)],
+            vec![
+                Event::PointerMoved(on),
+                button(away, true),
+                button(on, false),
+            ],
+            vec![
+                button(away, true),
+                button(away, false),
+                Event::PointerMoved(on),
+            ],
+        ];
+        for events in orders {
+            let ctx = egui::Context::default();
+            assert!(!pass(&ctx, vec![Event::PointerMoved(away)]));
+            assert!(!pass(&ctx, Vec::new()));
+            assert!(pass(&ctx, events.clone()), "not clicked: {events:?}");
+            // Nothing more without a new click.
+            assert!(!pass(&ctx, Vec::new()));
+        }
     }
 }

@@ -249,6 +249,13 @@ fn graphics_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
         }
     });
     ui.horizontal(|ui| {
+        ui.label("render scale:");
+        for percent in GraphicsSettings::RENDER_SCALES {
+            ui.selectable_value(&mut next.render_scale, percent, format!("{percent} %"))
+                .on_hover_text("the 3D view's resolution; the panels stay sharp");
+        }
+    });
+    ui.horizontal(|ui| {
         if ui.button("Fastest").clicked() {
             next = GraphicsSettings::LOW;
         }
