@@ -7,7 +7,7 @@ mod common;
 use billiards_ai::candidates::{combo_aims, direct_aims, rail_aims};
 use billiards_ai::{Decision, Layout, Level, Plan, ShotKind, decide};
 use billiards_physics::{Pocket, Vec2};
-use billiards_rules::{Call, CueBall, check_placement};
+use billiards_rules::{Call, Choice, CueBall, Game, GameState, Seat, ShotSummary, check_placement};
 use common::*;
 
 fn shoot(d: Decision) -> Plan {
@@ -178,5 +178,64 @@ fn a_safety_is_chosen_when_every_pot_is_blocked() {
             "{level}: {plan:?}"
         );
         assert!(plan.foul < 0.5, "{level}: {plan:?}");
+    }
+}
+
+/// A 9-ball rack after A's legal break and B's push out (WPA 2.4), `balls` on the table: A
+/// chooses to shoot the table or to pass it back.
+fn after_push_out(balls: &[u8]) -> GameState {
+    let mut g = GameState::new(Game::NineBall, Seat::A);
+    let to_rail = vec![2, 3, 4, 5];
+    let break_shot = ShotSummary {
+        first_contact: Some(1),
+        rails_after_contact: to_rail.clone(),
+        rails: to_rail,
+        ..ShotSummary::default()
+    };
+    assert!(g.play(&break_shot, Call::None).unwrap().legal());
+    let push = g.play(&ShotSummary::default(), Call::PushOut).unwrap();
+    assert!(push.legal() && push.push_out);
+    g.on_table = balls.to_vec();
+    g.on_table.sort_unstable();
+    assert_eq!(
+        g.next.choices,
+        vec![Choice::ShootFromHere, Choice::PassBack]
+    );
+    g
+}
+
+/// The 1 in a full ring of six balls, 1 mm off it: no path of the cue ball reaches it, so
+/// whoever shoots fouls.
+fn walled_one() -> Vec<(u8, Vec2)> {
+    let r = 0.028575;
+    let centre = Vec2::new(0.3, 0.1);
+    let mut balls = vec![(0, Vec2::new(-0.5, 0.1)), (1, centre)];
+    for (k, n) in [2u8, 3, 4, 5, 6, 9].into_iter().enumerate() {
+        let a = (60.0 * k as f64 + 30.0).to_radians();
+        balls.push((n, centre + Vec2::from_angle(a) * (2.0 * r + 1e-3)));
+    }
+    balls
+}
+
+/// The choice after a push out is searched like a shot: a straight-in ball is shot, and so
+/// is a hidden 1 with an open side (a safety is there to play), but a 1 walled in on every
+/// side is passed back (whoever shoots it fouls).
+#[test]
+fn after_a_push_out_it_shoots_what_it_can_play_and_passes_back_a_walled_in_one() {
+    for (balls, want) in [
+        (cut_layout(0.0), Choice::ShootFromHere),
+        (hidden_one(), Choice::ShootFromHere),
+        (walled_one(), Choice::PassBack),
+    ] {
+        let numbers: Vec<u8> = balls.iter().skip(1).map(|b| b.0).collect();
+        let state = after_push_out(&numbers);
+        let sim = table(&balls);
+        match decide(&state, &sim, Level::Hard, 5).unwrap() {
+            Decision::Choose { choice, estimate } => {
+                assert_eq!(choice, want, "{numbers:?}: estimate {estimate}");
+                assert!((0.0..=1.0).contains(&estimate), "{estimate}");
+            }
+            other => panic!("expected a choice, got {other:?}"),
+        }
     }
 }
