@@ -27,26 +27,64 @@ pub(super) struct Bodies {
     pub jaws: Vec<Jaw>,
     /// The table's pocket openings.
     pub openings: Vec<Opening>,
+    /// Around each opening, the box a centre must enter to cross it: its pocket's two jaw
+    /// centres, widened by a ball and a jaw radius and 1 cm. Beyond it the opening line runs
+    /// behind the cushions, which a ball meets first.
+    pub opening_regions: Vec<PathBox>,
 }
 
 clone_reusing!(Bodies {
     table,
     bounds,
     jaws,
-    openings
+    openings,
+    opening_regions
 });
 
 impl Bodies {
     /// The bodies of `table` for balls of radius `radius`.
     pub fn new(table: Table, radius: f64) -> Self {
+        let jaws = table.jaws();
+        let openings = match table.pockets {
+            PocketShape::Mouth => Vec::new(),
+            PocketShape::Jaws { .. } => table.openings().to_vec(),
+        };
+        let rho = match table.pockets {
+            PocketShape::Jaws { radius } => radius,
+            PocketShape::Mouth => 0.0,
+        };
+        let widen = Vec2::new(radius + rho + 0.01, radius + rho + 0.01);
+        let opening_regions = openings
+            .iter()
+            .map(|o| {
+                let ends = jaws
+                    .iter()
+                    .filter(|j| j.pocket == o.pocket)
+                    .map(|j| j.centre);
+                let (min, max) = ends.fold(
+                    (
+                        Vec2::new(f64::INFINITY, f64::INFINITY),
+                        Vec2::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
+                    ),
+                    |(lo, hi), c| {
+                        (
+                            Vec2::new(lo.x.min(c.x), lo.y.min(c.y)),
+                            Vec2::new(hi.x.max(c.x), hi.y.max(c.y)),
+                        )
+                    },
+                );
+                PathBox {
+                    min: min - widen,
+                    max: max + widen,
+                }
+            })
+            .collect();
         Self {
             table,
             bounds: table.centre_bounds(radius),
-            jaws: table.jaws(),
-            openings: match table.pockets {
-                PocketShape::Mouth => Vec::new(),
-                PocketShape::Jaws { .. } => table.openings().to_vec(),
-            },
+            jaws,
+            openings,
+            opening_regions,
         }
     }
 
@@ -216,7 +254,8 @@ impl Scene<'_> {
         let seg = &self.segments[id];
         let mut best = None;
         for (k, o) in self.bodies.openings.iter().enumerate() {
-            if bounds.is_some_and(|b| b.clear_of_line(o.normal, o.offset)) {
+            let region = &self.bodies.opening_regions[k];
+            if bounds.is_some_and(|b| b.clear_of_line(o.normal, o.offset) || b.apart(region, 0.0)) {
                 continue;
             }
             // The real path decides when a ball drops, even in the linear comparison mode.
@@ -241,7 +280,7 @@ impl Scene<'_> {
 /// its time-of-impact search (which would find no root) is skipped. Only searches that
 /// return `None` are skipped, so no event changes.
 #[derive(Clone, Copy, Debug)]
-struct PathBox {
+pub(super) struct PathBox {
     min: Vec2,
     max: Vec2,
 }
@@ -283,6 +322,15 @@ impl PathBox {
             max: Vec2::new(x1, y1),
         };
         (b.min.is_finite() && b.max.is_finite()).then_some(b)
+    }
+
+    /// Whether the two boxes are more than `distance` apart along some axis.
+    #[inline]
+    fn apart(&self, other: &Self, distance: f64) -> bool {
+        other.min.x - self.max.x > distance
+            || self.min.x - other.max.x > distance
+            || other.min.y - self.max.y > distance
+            || self.min.y - other.max.y > distance
     }
 
     /// Whether every point of the box is more than `distance` from `c` along some axis (so
