@@ -44,48 +44,27 @@ clone_reusing!(Bodies {
 impl Bodies {
     /// The bodies of `table` for balls of radius `radius`.
     pub fn new(table: Table, radius: f64) -> Self {
-        let jaws = table.jaws();
-        let openings = match table.pockets {
-            PocketShape::Mouth => Vec::new(),
-            PocketShape::Jaws { .. } => table.openings().to_vec(),
-        };
-        let rho = match table.pockets {
-            PocketShape::Jaws { radius } => radius,
-            PocketShape::Mouth => 0.0,
-        };
-        let widen = Vec2::new(radius + rho + 0.01, radius + rho + 0.01);
-        let opening_regions = openings
-            .iter()
-            .map(|o| {
-                let ends = jaws
-                    .iter()
-                    .filter(|j| j.pocket == o.pocket)
-                    .map(|j| j.centre);
-                let (min, max) = ends.fold(
-                    (
-                        Vec2::new(f64::INFINITY, f64::INFINITY),
-                        Vec2::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
-                    ),
-                    |(lo, hi), c| {
-                        (
-                            Vec2::new(lo.x.min(c.x), lo.y.min(c.y)),
-                            Vec2::new(hi.x.max(c.x), hi.y.max(c.y)),
-                        )
-                    },
-                );
-                PathBox {
-                    min: min - widen,
-                    max: max + widen,
-                }
-            })
-            .collect();
-        Self {
+        let mut bodies = Self {
             table,
             bounds: table.centre_bounds(radius),
-            jaws,
-            openings,
-            opening_regions,
-        }
+            jaws: table.jaws(),
+            openings: match table.pockets {
+                PocketShape::Mouth => Vec::new(),
+                PocketShape::Jaws { .. } => table.openings().to_vec(),
+            },
+            opening_regions: Vec::new(),
+        };
+        let widen = radius + bodies.jaw_radius() + 0.01;
+        let jaws = &bodies.jaws;
+        bodies.opening_regions = bodies
+            .openings
+            .iter()
+            .map(|o| {
+                let ends = jaws.iter().filter(|j| j.pocket == o.pocket);
+                PathBox::around(ends.map(|j| j.centre), widen)
+            })
+            .collect();
+        bodies
     }
 
     /// How far the centre may go from the table's centre line towards `cushion`.
@@ -322,6 +301,22 @@ impl PathBox {
             max: Vec2::new(x1, y1),
         };
         (b.min.is_finite() && b.max.is_finite()).then_some(b)
+    }
+
+    /// The box of `points` widened by `widen` each way.
+    fn around(points: impl Iterator<Item = Vec2>, widen: f64) -> Self {
+        let inf = Vec2::new(f64::INFINITY, f64::INFINITY);
+        let (min, max) = points.fold((inf, -inf), |(lo, hi), c| {
+            (
+                Vec2::new(lo.x.min(c.x), lo.y.min(c.y)),
+                Vec2::new(hi.x.max(c.x), hi.y.max(c.y)),
+            )
+        });
+        let w = Vec2::new(widen, widen);
+        Self {
+            min: min - w,
+            max: max + w,
+        }
     }
 
     /// Whether the two boxes are more than `distance` apart along some axis.
