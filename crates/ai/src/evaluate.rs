@@ -171,17 +171,22 @@ impl Search<'_> {
     /// The simulation of `cand` before its strike: the cue ball in its place.
     fn start(&self, cand: &Candidate) -> Option<Simulation> {
         let mut sim = self.base.clone();
-        self.reset(cand, &mut sim)?;
+        self.place_cue(cand, &mut sim)?;
         Some(sim)
     }
 
     /// [`Search::start`] into `sim`, reusing its buffers (no allocation per sample).
     fn reset(&self, cand: &Candidate, sim: &mut Simulation) -> Option<()> {
         sim.clone_from(&self.base);
-        if let Some(p) = cand.place {
-            sim.place(self.cue, p, Vec2::ZERO, Vec3::ZERO).ok()?;
+        self.place_cue(cand, sim)
+    }
+
+    /// The cue ball of `sim` where `cand` puts it (ball in hand); `None` when it cannot go.
+    fn place_cue(&self, cand: &Candidate, sim: &mut Simulation) -> Option<()> {
+        match cand.place {
+            Some(p) => sim.place(self.cue, p, Vec2::ZERO, Vec3::ZERO).ok(),
+            None => Some(()),
         }
-        Some(())
     }
 
     /// Runs one noisy sample of candidate `index` (draw `k`) in the scratch simulation `sim`:
@@ -242,14 +247,9 @@ impl Search<'_> {
         Some((summary, layout, events))
     }
 
-    /// One noisy sample of candidate `index` (draw `k`), scored.
-    pub fn sample(&self, cand: &Candidate, index: u64, k: u64) -> Stats {
-        self.sample_in(cand, index, k, &mut self.base.clone())
-    }
-
-    /// [`Search::sample`] run in the scratch simulation `sim` (any earlier state of it is
-    /// overwritten).
-    fn sample_in(&self, cand: &Candidate, index: u64, k: u64, sim: &mut Simulation) -> Stats {
+    /// One noisy sample of candidate `index` (draw `k`), scored, run in the scratch
+    /// simulation `sim` (reset from the base first, its buffers reused).
+    pub fn sample(&self, cand: &Candidate, index: u64, k: u64, sim: &mut Simulation) -> Stats {
         let me = self.state.next.shooter;
         let foul = Stats {
             n: 1,
@@ -325,7 +325,7 @@ impl Search<'_> {
                 || self.base.clone(),
                 |sim, (i, c)| {
                     (from..to).fold(Stats::default(), |s, k| {
-                        s.merged(self.sample_in(c, salt + i as u64, k, sim))
+                        s.merged(self.sample(c, salt + i as u64, k, sim))
                     })
                 },
             )

@@ -102,16 +102,7 @@ pub fn play_rack(
             breaker_now = next.shooter;
             opponent_shot = false;
         }
-        for &n in &next.spot {
-            let id = sim
-                .numbers()
-                .iter()
-                .position(|&m| m == n)
-                .ok_or("no ball to spot")?;
-            let p = object_ball_spot(&sim, id).ok_or("no place to spot a ball")?;
-            sim.place(id, p, Vec2::ZERO, Vec3::ZERO)
-                .map_err(|e| e.to_string())?;
-        }
+        spot_balls(&mut sim, &next.spot)?;
         state.next.spot.clear();
         let who = next.shooter.index();
         let player = players[who];
@@ -181,4 +172,20 @@ pub fn play_rack(
         },
         players: tally,
     })
+}
+
+/// Puts the balls `numbers` back on the table, one after another, where the rules spot them
+/// (WPA 1.4, the foot string), as the game does before the shot that asks for it.
+pub fn spot_balls(sim: &mut Simulation, numbers: &[u8]) -> Result<(), String> {
+    for &n in numbers {
+        let id = sim
+            .numbers()
+            .iter()
+            .position(|&m| m == n)
+            .ok_or("no ball to spot")?;
+        let p = object_ball_spot(sim, id).ok_or("no place to spot a ball")?;
+        sim.place(id, p, Vec2::ZERO, Vec3::ZERO)
+            .map_err(|e| e.to_string())?;
+    }
+    Ok(())
 }

@@ -333,7 +333,7 @@ const BREAK_VALUE: f64 = 0.1;
 /// the side of whoever shoots it (the balls it spots put back first); its value counts for
 /// the chooser, or against them when the opponent shoots. A re-rack is worth
 /// [`BREAK_VALUE`] to whoever breaks. The estimate is the success of the shot the chosen
-/// option leads to. Options the search cannot weigh (no place to spot a ball, no legal
+/// option leads to (an even 0.5 for a break, which is not searched here). Options the search cannot weigh (no place to spot a ball, no legal
 /// shot) fall back to the analytic chance of the table as it lies ([`analytic_choice`]).
 fn choose(
     state: &GameState,
@@ -353,9 +353,10 @@ fn choose(
         let (value, estimate) = if next.rerack {
             (sign * BREAK_VALUE, 0.5)
         } else {
-            let Some(table) = spotted(sim, &next.spot) else {
+            let mut table = sim.clone();
+            if crate::play::spot_balls(&mut table, &next.spot).is_err() {
                 continue;
-            };
+            }
             after.next.spot.clear();
             let salt = seed.wrapping_add(0x9e37_79b9 * (k as u64 + 1));
             match decide_with(&after, &table, level, salt, mode) {
@@ -371,20 +372,6 @@ fn choose(
         Some((_, choice, estimate)) => (choice, estimate),
         None => analytic_choice(state, sim, level),
     }
-}
-
-/// `sim` with the balls `spot` names put on their spots (WPA 1.6), as the game does before
-/// the shot; `None` when a ball has no place.
-fn spotted(sim: &Simulation, spot: &[u8]) -> Option<Simulation> {
-    let mut table = sim.clone();
-    for &n in spot {
-        let id = table.numbers().iter().position(|&m| m == n)?;
-        let p = billiards_rules::object_ball_spot(&table, id)?;
-        table
-            .place(id, p, Vec2::ZERO, billiards_physics::Vec3::ZERO)
-            .ok()?;
-    }
-    Some(table)
 }
 
 /// A choice the rules offer: the analytic best chance from the table as it lies decides
