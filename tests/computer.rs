@@ -2,39 +2,27 @@
 //! to its end through the game's states; the recording of that rack verifies bit for bit and
 //! its rules log re-judges alike, as a human's game does.
 
+mod common;
+
 use std::{
     path::Path,
     time::{Duration, Instant},
 };
 
-use bevy::{prelude::*, time::TimeUpdateStrategy};
+use bevy::prelude::*;
 use billiards::{
     computer::{self, Computer, ComputerPace, HintRequested},
     game::{self, NewGameRequested, Rules, Turn},
     input::AimLocked,
-    mode,
-    recording::{self, Autosave, RecordingsFolder},
-    settings::{self, ShotSettings},
-    sim,
+    recording::{Autosave, RecordingsFolder},
+    settings::ShotSettings,
 };
 use billiards_ai::Level;
 use billiards_physics::recording::{Recording, Verdict};
 use billiards_rules::{Game, GameLog};
 
 fn start(folder: &Path, game: Game) -> App {
-    let mut app = App::new();
-    app.add_plugins((
-        MinimalPlugins,
-        mode::plugin,
-        settings::plugin,
-        sim::plugin,
-        recording::plugin,
-        game::plugin,
-        computer::plugin,
-    ));
-    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
-        16,
-    )));
+    let mut app = common::headless((game::plugin, computer::plugin));
     app.insert_resource(RecordingsFolder(Some(folder.to_path_buf())));
     // A short pace, not zero: what is shown must survive the frames it is shown for.
     app.insert_resource(ComputerPace(Duration::from_millis(20)));

@@ -2,18 +2,18 @@
 //! turns, the cue ball in hand, the winner of each rack and of the match, and the rules log
 //! saved beside the recording (re-judged against it).
 
-use std::{path::Path, time::Duration};
+mod common;
 
-use bevy::{math::DVec2, prelude::*, time::TimeUpdateStrategy};
+use std::path::Path;
+
+use bevy::{math::DVec2, prelude::*};
 use billiards::{
     balls::{Ball, BallMotion},
     game::{self, GameInPlay, NewGameRequested, Rules, Turn, TurnCommand},
     geometry::TableSpec,
     input::AimLocked,
-    mode,
-    recording::{self, Autosave, RecordingsFolder},
+    recording::{Autosave, RecordingsFolder},
     replay::OpenRecording,
-    settings,
     sim::{self, ShotRequested, SimStatus, Solver, place_ball_in_hand},
 };
 use billiards_physics::recording::Recording;
@@ -21,18 +21,7 @@ use billiards_rules::{CueBall, Foul, Game, GameLog, Outcome, PlacementError, Sea
 
 /// A headless game saving into `folder`, with a new match of `game` started.
 fn start(folder: &Path, game: Game, race_to: u32) -> App {
-    let mut app = App::new();
-    app.add_plugins((
-        MinimalPlugins,
-        mode::plugin,
-        settings::plugin,
-        sim::plugin,
-        recording::plugin,
-        game::plugin,
-    ));
-    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
-        16,
-    )));
+    let mut app = common::headless(game::plugin);
     app.insert_resource(RecordingsFolder(Some(folder.to_path_buf())));
     app.update();
     app.world_mut().write_message(NewGameRequested {

@@ -2,28 +2,31 @@
 //! simulation, autosave and replay plugins) plays and saves shots; the saved file is opened
 //! in replay mode through [`ReplayCommand`]s, as the panel does.
 
+mod common;
+
 use std::{
     path::{Path, PathBuf},
     time::Duration,
 };
 
-use bevy::{math::DVec2, prelude::*, time::TimeUpdateStrategy, window::FileDragAndDrop};
+use bevy::{math::DVec2, prelude::*, window::FileDragAndDrop};
 use billiards::{
     balls::{Ball, BallMotion, Pocketed},
     geometry::TableSpec,
-    mode::{self, GameMode},
+    mode::GameMode,
     recording::{self, Autosave, RecordingsFolder},
     replay::{
         self, ExportFormat, ExportRequest, ExportScope, OpenAtStart, Replay, ReplayBall,
         ReplayCommand,
     },
-    settings::{self, PhysicsSettings},
-    sim::{self, RackRequested, ShotRequested, SimStatus, Solver, params_from},
+    settings::PhysicsSettings,
+    sim::{RackRequested, ShotRequested, SimStatus, Solver, params_from},
 };
 use billiards_physics::{
     Motion, Rack, Shot,
     recording::{Recorder, Recording, Verdict},
 };
+use billiards_rules::Shots;
 
 /// A fresh, empty folder for one test.
 fn temp_folder(name: &str) -> PathBuf {
@@ -36,19 +39,7 @@ fn temp_folder(name: &str) -> PathBuf {
 /// A headless app with the simulation, the autosave and the replay, in 16 ms frames; no
 /// frame run yet.
 fn headless() -> App {
-    let mut app = App::new();
-    app.add_plugins((
-        MinimalPlugins,
-        mode::plugin,
-        settings::plugin,
-        sim::plugin,
-        recording::plugin,
-        replay::plugin,
-    ));
-    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
-        16,
-    )));
-    app
+    common::headless(replay::plugin)
 }
 
 /// A headless game saving into `folder`, with `rack` on the table.
@@ -277,17 +268,7 @@ fn stepping_lands_on_event_and_shot_times() {
     assert_eq!(replay_time(&app), end);
 
     // Shots: the strike inputs.
-    let strikes: Vec<f64> = recording
-        .inputs
-        .iter()
-        .filter(|i| {
-            matches!(
-                i.action,
-                billiards_physics::recording::Action::Strike { .. }
-            )
-        })
-        .map(|i| i.time)
-        .collect();
+    let strikes = Shots::of(&recording).starts().to_vec();
     assert_eq!(strikes.len(), 2);
     command(&mut app, ReplayCommand::Seek(0.0));
     let shot = |app: &App| {
@@ -595,16 +576,7 @@ fn a_shot_struck_while_paused_is_saved_before_a_rack_replaces_the_game() {
         .clone()
         .expect("the game was saved before the rack");
     let recording = Recording::load(&saved).unwrap();
-    let strikes = recording
-        .inputs
-        .iter()
-        .filter(|i| {
-            matches!(
-                i.action,
-                billiards_physics::recording::Action::Strike { .. }
-            )
-        })
-        .count();
+    let strikes = Shots::of(&recording).len();
     assert_eq!(strikes, 1, "the paused shot is in the file");
     assert!(matches!(
         recording.verify().unwrap(),

@@ -15,6 +15,7 @@ use billiards::{
     },
 };
 use billiards_physics::{Motion, Rack, Shot, Simulation, TipOffset};
+use billiards_rules::Shots;
 
 /// A headless game with the given rack on the table.
 fn game(rack: Rack) -> App {
@@ -316,16 +317,7 @@ fn an_undo_puts_every_ball_back_and_the_recording_verifies_bit_for_bit() {
     let solver = app.world().resource::<Solver>();
     assert_eq!(solver.undoable_shots(), 1);
     let recording = solver.recorder().recording();
-    let strikes = recording
-        .inputs
-        .iter()
-        .filter(|i| {
-            matches!(
-                i.action,
-                billiards_physics::recording::Action::Strike { .. }
-            )
-        })
-        .count();
+    let strikes = Shots::of(&recording).len();
     assert_eq!(strikes, 3, "every strike stays in the recording");
     assert!(matches!(recording.verify(), Ok(Verdict::Reproduced { .. })));
     let path = std::env::temp_dir().join(format!("billiards-undo-{}.json", std::process::id()));
