@@ -12,8 +12,9 @@
 //!
 //! The 3D view is fitted to the part of the window right of the panel (the panel's width goes
 //! to [`crate::view`]), so the panel never covers the table; below 100 % render scale the
-//! table's image is drawn here, under everything else. While egui has claimed the pointer or the keyboard, the game's input
-//! systems ([`InputSystems`]) do not run, so input meant for a widget never reaches the table.
+//! table's image is drawn here, under everything else. While egui has claimed the pointer or
+//! the keyboard, the game's input systems ([`InputSystems`]) do not run, so input meant for a
+//! widget never reaches the table.
 
 pub mod game;
 pub mod hud;
