@@ -12,6 +12,8 @@ use billiards_rules::CUE;
 
 /// Clearance kept from every boundary and between paths, metres (far above rounding).
 const MARGIN: f64 = 1e-6;
+/// Most balls the shortcut looks at (a pool rack has 16).
+const MAX_BALLS: usize = 24;
 
 /// The layout every ball of `sim` comes to rest in, when nothing but the stops is left.
 pub fn final_layout(sim: &Simulation) -> Option<Layout> {
@@ -35,15 +37,23 @@ pub fn final_layout(sim: &Simulation) -> Option<Layout> {
     if (0..sim.ball_count()).any(|id| curving(sim.segment(id))) {
         return None;
     }
-    // Each ball on the table: its path from now to where it stops.
-    let mut paths: Vec<(u8, Vec2, Vec2)> = Vec::with_capacity(sim.ball_count());
+    // Each ball on the table: its path from now to where it stops (on the stack: this runs
+    // after every transition of every sample; a larger scene takes no shortcut).
+    let mut buffer = [(0u8, Vec2::ZERO, Vec2::ZERO); MAX_BALLS];
+    let mut len = 0;
+    let mut push = |path| {
+        let slot = buffer.get_mut(len)?;
+        *slot = path;
+        len += 1;
+        Some(())
+    };
     for (id, &n) in sim.numbers().iter().enumerate() {
         let seg = sim.segment(id);
         match seg.state.motion {
             Motion::Pocketed(_) => continue,
             Motion::Stationary | Motion::Spinning => {
                 let p = seg.position_at(t.max(seg.start));
-                paths.push((n, p, p));
+                push((n, p, p))?;
             }
             Motion::Rolling if seg.straight => {
                 let end = seg.end?;
@@ -51,11 +61,12 @@ pub fn final_layout(sim: &Simulation) -> Option<Layout> {
                 if !(inside(from) && inside(to)) {
                     return None;
                 }
-                paths.push((n, from, to));
+                push((n, from, to))?;
             }
             Motion::Rolling | Motion::Sliding => return None,
         }
     }
+    let paths = &buffer[..len];
     let contact = 2.0 * r + MARGIN;
     // Boxes further apart than a contact on some axis need no exact distance.
     let apart = |a: &(u8, Vec2, Vec2), c: &(u8, Vec2, Vec2)| {
