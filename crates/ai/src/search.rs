@@ -4,7 +4,7 @@
 use crate::candidates::{
     Candidate, Layout, ShotKind, combo_aims, direct_aims, expand, rail_aims, safeties,
 };
-use crate::evaluate::{Mode, Search, Stats};
+use crate::evaluate::{Mode, Run, Search, Stats};
 use crate::level::{Budget, Level};
 use crate::placement::places;
 use crate::position::{aim_probability, best_success};
@@ -169,13 +169,18 @@ impl Pool {
         let mean = |i: usize| self.stats[i].mean();
         order.sort_by(|&a, &b| mean(b).total_cmp(&mean(a)).then(a.cmp(&b)));
         order.truncate(k);
-        let more: Vec<Stats> = order
-            .par_iter()
+        let runs: Vec<Run> = order
+            .iter()
             .map(|&i| {
                 let n = self.stats[i].n as u64;
-                search.evaluate(&self.cands[i..=i], i as u64, n, n + m as u64)[0]
+                Run {
+                    cand: &self.cands[i],
+                    stream: i as u64,
+                    samples: n..n + m as u64,
+                }
             })
             .collect();
+        let more = search.evaluate_runs(&runs);
         self.count(&more);
         for (&i, s) in order.iter().zip(more) {
             self.stats[i] = self.stats[i].merged(s);
