@@ -17,6 +17,7 @@ use predict::{Bodies, Predictions, Scene, StrategyChoice};
 
 mod cell_lists;
 mod pair_table;
+mod path_box;
 mod pending;
 mod predict;
 mod setup;

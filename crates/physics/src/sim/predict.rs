@@ -5,6 +5,7 @@
 
 use super::cell_lists::CellLists;
 use super::pair_table::PairTable;
+use super::path_box::PathBox;
 use super::pending::{Pending, PendingKind, earlier};
 use crate::ball::{BallId, Segment};
 use crate::detect::{self, Kinematics};
@@ -29,8 +30,11 @@ pub(super) struct Bodies {
     pub openings: Vec<Opening>,
     /// Around each opening, the box a centre must enter to cross it: its pocket's two jaw
     /// centres, widened by a ball and a jaw radius and 1 cm. Beyond it the opening line runs
-    /// behind the cushions, which a ball meets first.
+    /// behind the cushions, which a ball meets first; and a centre outside it is more than a
+    /// ball and a jaw radius from both jaws.
     pub opening_regions: Vec<PathBox>,
+    /// For each jaw, the index of its pocket's opening (and region).
+    pub jaw_regions: Vec<usize>,
 }
 
 clone_reusing!(Bodies {
@@ -38,7 +42,8 @@ clone_reusing!(Bodies {
     bounds,
     jaws,
     openings,
-    opening_regions
+    opening_regions,
+    jaw_regions
 });
 
 impl Bodies {
@@ -53,6 +58,7 @@ impl Bodies {
                 PocketShape::Jaws { .. } => table.openings().to_vec(),
             },
             opening_regions: Vec::new(),
+            jaw_regions: Vec::new(),
         };
         let widen = radius + bodies.jaw_radius() + 0.01;
         let jaws = &bodies.jaws;
@@ -62,6 +68,13 @@ impl Bodies {
             .map(|o| {
                 let ends = jaws.iter().filter(|j| j.pocket == o.pocket);
                 PathBox::around(ends.map(|j| j.centre), widen)
+            })
+            .collect();
+        bodies.jaw_regions = jaws
+            .iter()
+            .map(|j| {
+                let k = bodies.openings.iter().position(|o| o.pocket == j.pocket);
+                k.expect("every pocket with jaws has an opening")
             })
             .collect();
         bodies
@@ -123,11 +136,18 @@ impl Scene<'_> {
             return best;
         }
         let bounds = PathBox::of(seg, t, horizon);
+        // The pockets whose region the path box comes into (bit k: opening k), tested once
+        // for the pocket's two jaws and its opening; every pocket without a box.
+        let near = bounds.map_or(u64::MAX, |b| {
+            let regions = self.bodies.opening_regions.iter().enumerate();
+            regions.fold(0, |m, (k, r)| m | (u64::from(!b.apart(r, 0.0)) << k))
+        });
         // The linear prediction searches cushions and jaws along another path than the box's.
         let exact = bounds.filter(|_| self.kinematics() == Kinematics::Exact);
         let best = earlier(best, self.cushion(id, t, horizon, exact));
-        let best = self.jaw(id, t, horizon, best, exact);
-        earlier(best, self.opening(id, t, horizon, bounds))
+        let jaws_near = if exact.is_some() { near } else { u64::MAX };
+        let best = self.jaw(id, t, horizon, best, exact, jaws_near);
+        earlier(best, self.opening(id, t, horizon, bounds, near))
     }
 
     /// The first cushion contact of moving ball `id` after `t`, within `horizon` seconds.
@@ -189,7 +209,8 @@ impl Scene<'_> {
     }
 
     /// The first jaw contact of moving ball `id` after `t` if earlier than `best`, searched
-    /// only up to `best`; the earlier of the two.
+    /// only up to `best`; the earlier of the two. Only the jaws of the pockets in `near`
+    /// (bit k: opening k) are looked at.
     #[inline]
     fn jaw(
         &self,
@@ -198,12 +219,16 @@ impl Scene<'_> {
         horizon: f64,
         mut best: Option<Pending>,
         bounds: Option<PathBox>,
+        near: u64,
     ) -> Option<Pending> {
         let seg = &self.segments[id];
         let kin = self.kinematics();
         let jaw_contact = self.params.ball.radius + self.bodies.jaw_radius();
-        for (k, jaw) in self.bodies.jaws.iter().enumerate() {
-            if bounds.is_some_and(|b| b.clear_of_point(jaw.centre, jaw_contact)) {
+        let regions = &self.bodies.jaw_regions;
+        for (k, (jaw, &region)) in self.bodies.jaws.iter().zip(regions).enumerate() {
+            if near & (1 << region) == 0
+                || bounds.is_some_and(|b| b.clear_of_point(jaw.centre, jaw_contact))
+            {
                 continue;
             }
             let h = best.map_or(horizon, |b| horizon.min(b.time - t));
@@ -221,7 +246,8 @@ impl Scene<'_> {
         best
     }
 
-    /// When moving ball `id`'s centre first crosses a pocket opening after `t`.
+    /// When moving ball `id`'s centre first crosses a pocket opening after `t`, among the
+    /// openings in `near` (bit k: opening k).
     #[inline]
     fn opening(
         &self,
@@ -229,12 +255,12 @@ impl Scene<'_> {
         t: f64,
         horizon: f64,
         bounds: Option<PathBox>,
+        near: u64,
     ) -> Option<Pending> {
         let seg = &self.segments[id];
         let mut best = None;
         for (k, o) in self.bodies.openings.iter().enumerate() {
-            let region = &self.bodies.opening_regions[k];
-            if bounds.is_some_and(|b| b.clear_of_line(o.normal, o.offset) || b.apart(region, 0.0)) {
+            if near & (1 << k) == 0 || bounds.is_some_and(|b| b.clear_of_line(o.normal, o.offset)) {
                 continue;
             }
             // The real path decides when a ball drops, even in the linear comparison mode.
@@ -251,101 +277,6 @@ impl Scene<'_> {
             }
         }
         best
-    }
-}
-
-/// The box the centre of a ball stays in over a search window, from its exact path, widened by
-/// [`PathBox::MARGIN`]: a fixed body it keeps clear of cannot be touched in that window, so
-/// its time-of-impact search (which would find no root) is skipped. Only searches that
-/// return `None` are skipped, so no event changes.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct PathBox {
-    min: Vec2,
-    max: Vec2,
-}
-
-impl PathBox {
-    /// Clearance kept beyond the box (m): far above the rounding of positions (~1e-16 m) and
-    /// of the contact functions, which then stay positive by about `2 contact MARGIN`.
-    const MARGIN: f64 = 1e-9;
-
-    /// The box of the path of `seg` over `[t, t + horizon]`, `None` for an infinite or
-    /// non-finite window. Each coordinate `p + v s + a s^2 / 2` takes its extremes at the
-    /// ends of the window or at its vertex `s = -v / a`.
-    #[inline]
-    fn of(seg: &Segment, t: f64, horizon: f64) -> Option<Self> {
-        if !horizon.is_finite() {
-            return None;
-        }
-        let h = horizon.max(0.0);
-        let (p, v, a) = (seg.position_at(t), seg.velocity_at(t), seg.acceleration);
-        let range = |p: f64, v: f64, a: f64| {
-            let end = p + (v + 0.5 * a * h) * h;
-            let (mut lo, mut hi) = (p.min(end), p.max(end));
-            if a != 0.0 {
-                let s = -v / a;
-                if s > 0.0 && s < h {
-                    let vertex = p + 0.5 * v * s;
-                    lo = lo.min(vertex);
-                    hi = hi.max(vertex);
-                }
-            }
-            // Rounding of the end and vertex values, relative to the largest term.
-            let slack = Self::MARGIN + 1e-12 * (p.abs() + (v * h).abs() + (a * h * h).abs());
-            (lo - slack, hi + slack)
-        };
-        let (x0, x1) = range(p.x, v.x, a.x);
-        let (y0, y1) = range(p.y, v.y, a.y);
-        let b = Self {
-            min: Vec2::new(x0, y0),
-            max: Vec2::new(x1, y1),
-        };
-        (b.min.is_finite() && b.max.is_finite()).then_some(b)
-    }
-
-    /// The box of `points` widened by `widen` each way.
-    fn around(points: impl Iterator<Item = Vec2>, widen: f64) -> Self {
-        let inf = Vec2::new(f64::INFINITY, f64::INFINITY);
-        let (min, max) = points.fold((inf, -inf), |(lo, hi), c| {
-            (
-                Vec2::new(lo.x.min(c.x), lo.y.min(c.y)),
-                Vec2::new(hi.x.max(c.x), hi.y.max(c.y)),
-            )
-        });
-        let w = Vec2::new(widen, widen);
-        Self {
-            min: min - w,
-            max: max + w,
-        }
-    }
-
-    /// Whether the two boxes are more than `distance` apart along some axis.
-    #[inline]
-    fn apart(&self, other: &Self, distance: f64) -> bool {
-        other.min.x - self.max.x > distance
-            || self.min.x - other.max.x > distance
-            || other.min.y - self.max.y > distance
-            || self.min.y - other.max.y > distance
-    }
-
-    /// Whether every point of the box is more than `distance` from `c` along some axis (so
-    /// the centre never comes within `distance` of `c`).
-    #[inline]
-    fn clear_of_point(&self, c: Vec2, distance: f64) -> bool {
-        c.x < self.min.x - distance
-            || c.x > self.max.x + distance
-            || c.y < self.min.y - distance
-            || c.y > self.max.y + distance
-    }
-
-    /// Whether the whole box lies where `offset + n·p > 0` (so the centre never reaches the
-    /// line).
-    #[inline]
-    fn clear_of_line(&self, n: Vec2, offset: f64) -> bool {
-        // The corner of the box furthest towards the line.
-        let x = if n.x > 0.0 { self.min.x } else { self.max.x };
-        let y = if n.y > 0.0 { self.min.y } else { self.max.y };
-        offset + n.x * x + n.y * y > 0.0
     }
 }
 
