@@ -16,6 +16,9 @@ use crate::{
     sim::SimStatus,
 };
 
+/// Opacity of the HUD's background (its text stays opaque).
+const HUD_OPACITY: f32 = 0.6;
+
 /// What the HUD shows.
 #[derive(bevy::ecs::system::SystemParam)]
 pub struct HudParam<'w, 's> {
@@ -38,8 +41,12 @@ pub fn hud(
 ) -> Result {
     let ctx = contexts.ctx_mut()?.clone();
     let status = state.status.clone();
+    // See-through: at 1280x720 the HUD lies over the foot-right corner of the table, and a
+    // player aiming there (or following a hint there) must see the pocket and the balls.
+    let frame = egui::Frame::window(&ctx.global_style()).multiply_with_opacity(HUD_OPACITY);
     egui::Window::new("HUD")
         .title_bar(false)
+        .frame(frame)
         .resizable(false)
         // One width, whatever the text: long notes wrap inside it instead of running off.
         .min_width(HUD_WIDTH)
@@ -51,22 +58,22 @@ pub fn hud(
             } else {
                 super::game::hud_section(ui, &mut game);
             }
-            ui.label(format!("shots: {}", status.shots));
-            // The frame number shows whether the window redraws at idle (it should not); the
+            // Two lines at most each, so the HUD covers as little of the table as it can. The
+            // frame number shows whether the window redraws at idle (it should not); the
             // frame time is the last frame's, from its input to this one.
+            let fps = match state.rate.fps {
+                Some(fps) => format!("{fps:.1} fps"),
+                None => "idle (draws only on change)".to_owned(),
+            };
             ui.label(format!(
-                "frame {}: {:.1} ms",
+                "frame {}: {:.1} ms, {fps}",
                 state.frames.0,
                 state.time.delta_secs_f64() * 1e3
             ));
-            ui.label(match state.rate.fps {
-                Some(fps) => format!("{fps:.1} fps"),
-                None => "fps: idle (draws only on change)".to_owned(),
-            });
-            ui.label(format!("simulated time: {:.3} s", status.sim_time));
-            ui.label(format!("events this shot: {}", status.events_this_shot));
             ui.label(format!(
-                "solver: {:.3} ms/frame",
+                "simulated {:.3} s, {} events this shot, solver {:.3} ms/frame",
+                status.sim_time,
+                status.events_this_shot,
                 status.solver_seconds_last_frame * 1e3
             ));
             let mut pocketed: Vec<u8> = state.pocketed.iter().map(|b| b.number).collect();
@@ -86,7 +93,7 @@ pub fn hud(
                     .collect::<Vec<_>>()
                     .join(", ")
             };
-            ui.label(format!("pocketed: {list}"));
+            ui.label(format!("shots: {}, pocketed: {list}", status.shots));
             let state_text = if state.physics.paused {
                 "paused"
             } else if status.at_rest {
