@@ -240,6 +240,14 @@ impl GameInPlay {
                 CallRule::EightPocket => format!("{shooter} calls the 8: click a pocket"),
                 _ => format!("{shooter} calls a ball and a pocket: click the pocket"),
             },
+            // The computer's turn: no instructions meant for a human at the mouse (its plan
+            // follows on the next line of the HUD).
+            Turn::BallInHand | Turn::Aiming if let Some(level) = self.computer(next.shooter) => {
+                format!(
+                    "{shooter} (computer, {level}) to {}",
+                    if next.break_shot { "break" } else { "shoot" }
+                )
+            }
             Turn::BallInHand => format!(
                 "{shooter} to {}: ball in hand {}, drag the cue ball, aim and shoot",
                 if next.break_shot { "break" } else { "shoot" },

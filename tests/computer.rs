@@ -64,9 +64,14 @@ fn two_computers_play_a_rack_of_nine_ball_to_its_end() {
                 .len()
         );
         app.update();
-        // Both seats are the computer's: the pointer never aims for it.
+        // Both seats are the computer's: the pointer never aims for it, and the HUD gives
+        // no instructions meant for a human at the mouse.
         if matches!(turn(&app), Turn::Aiming | Turn::BallInHand) {
             assert_eq!(*app.world().resource::<AimLocked>(), AimLocked(true));
+            let rules = app.world().resource::<Rules>();
+            let line = &rules.game.as_ref().unwrap().hud_lines(turn(&app))[1];
+            assert!(line.contains("(computer, easy) to "), "{line}");
+            assert!(!line.contains("aim and shoot"), "{line}");
         }
     }
     let rules = app.world().resource::<Rules>();
