@@ -37,6 +37,22 @@ impl Default for NewGameForm {
     }
 }
 
+/// Copies every new game (from the dialog, `--game` at launch, a test) into the dialog's
+/// form, so that the dialog opens on the match in play rather than on its defaults.
+pub fn remember_new_game(
+    mut requests: MessageReader<NewGameRequested>,
+    mut form: ResMut<NewGameForm>,
+) {
+    for r in requests.read() {
+        *form = NewGameForm {
+            game: r.game,
+            players: r.players.clone(),
+            race_to: r.race_to,
+            computer: r.computer,
+        };
+    }
+}
+
 /// What the game's windows read and write.
 #[derive(bevy::ecs::system::SystemParam)]
 pub struct GameParam<'w> {
@@ -281,4 +297,32 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
             state.commands.write(TurnCommand::CloseDialog);
         }
     });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A match started from outside the dialog (`--game eight-ball`, hard against easy)
+    /// is what the dialog shows next, not its defaults (9-ball, a human against medium).
+    #[test]
+    fn the_dialog_opens_on_the_match_in_play() {
+        let mut app = App::new();
+        app.add_message::<NewGameRequested>()
+            .init_resource::<NewGameForm>()
+            .add_systems(Update, remember_new_game);
+        app.world_mut().write_message(NewGameRequested {
+            game: Game::EightBall,
+            players: ["Ann".to_owned(), "Bob".to_owned()],
+            race_to: 5,
+            seed: 1,
+            computer: [Some(Level::Hard), Some(Level::Easy)],
+        });
+        app.update();
+        let form = app.world().resource::<NewGameForm>();
+        assert_eq!(form.game, Game::EightBall);
+        assert_eq!(form.players, ["Ann".to_owned(), "Bob".to_owned()]);
+        assert_eq!(form.race_to, 5);
+        assert_eq!(form.computer, [Some(Level::Hard), Some(Level::Easy)]);
+    }
 }

@@ -69,6 +69,7 @@ pub fn plugin(app: &mut App) {
         )
         .init_resource::<PointerOnUi>()
         .add_systems(Update, find_pointer_on_ui.before(InputSystems::Pointer))
+        .add_systems(Update, game::remember_new_game)
         .add_systems(Startup, spawn_ui_camera)
         .add_systems(
             EguiPrimaryContextPass,
