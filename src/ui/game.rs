@@ -301,7 +301,12 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    // Named from the crate root: a `super::` path reads as a use of `ui` in the layout test.
+    use crate::game::NewGameRequested;
+    use crate::ui::game::{NewGameForm, remember_new_game};
+    use bevy::prelude::*;
+    use billiards_ai::Level;
+    use billiards_rules::Game;
 
     /// A match started from outside the dialog (`--game eight-ball`, hard against easy)
     /// is what the dialog shows next, not its defaults (9-ball, a human against medium).
