@@ -28,11 +28,11 @@ use bevy::{
     camera::{CameraOutputMode, visibility::RenderLayers},
     prelude::*,
     render::render_resource::BlendState,
-    window::PrimaryWindow,
+    window::{PrimaryWindow, RequestRedraw},
 };
 use bevy_egui::{
-    EguiContexts, EguiGlobalSettings, EguiInput, EguiPlugin, EguiPreUpdateSet,
-    EguiPrimaryContextPass, EguiTextureHandle, PrimaryEguiContext, egui,
+    EguiContexts, EguiGlobalSettings, EguiInput, EguiPlugin, EguiPostUpdateSet, EguiPreUpdateSet,
+    EguiPrimaryContextPass, EguiRenderOutput, EguiTextureHandle, PrimaryEguiContext, egui,
     input::egui_wants_any_keyboard_input,
 };
 
@@ -70,6 +70,12 @@ pub fn plugin(app: &mut App) {
         .init_resource::<PointerOnUi>()
         .add_systems(Update, find_pointer_on_ui.before(InputSystems::Pointer))
         .add_systems(Update, game::remember_new_game)
+        .add_systems(
+            PostUpdate,
+            redraw_after_texture_change
+                .after(EguiPostUpdateSet::ProcessOutput)
+                .before(EguiPostUpdateSet::PostProcessOutput),
+        )
         .add_systems(Startup, spawn_ui_camera)
         .add_systems(
             EguiPrimaryContextPass,
@@ -108,6 +114,19 @@ fn find_pointer_on_ui(
     }) || ctx.egui_is_using_pointer();
     on_ui.set_if_neq(PointerOnUi(over));
     Ok(())
+}
+
+/// A frame that changes egui's textures (new glyphs in the font atlas) can draw its text before
+/// the new texels are there: played under Xvfb, letters were missing ("ne t", "15-ball. son")
+/// and, the idle window drawing only on change, stayed missing until the next input. One more
+/// frame draws them.
+fn redraw_after_texture_change(
+    outputs: Query<&EguiRenderOutput>,
+    mut redraw: MessageWriter<RequestRedraw>,
+) {
+    if outputs.iter().any(|o| !o.textures_delta.set.is_empty()) {
+        redraw.write(RequestRedraw);
+    }
 }
 
 fn pointer_on_ui(on_ui: Res<PointerOnUi>) -> bool {
@@ -226,7 +245,35 @@ fn show_scene_image(mut contexts: EguiContexts, scene: Res<SceneTarget>) -> Resu
 
 #[cfg(test)]
 mod tests {
+    use bevy::{prelude::*, window::RequestRedraw};
+    use bevy_egui::EguiRenderOutput;
     use bevy_egui::egui::{self, Event, PointerButton, pos2, vec2};
+
+    /// Frames whose egui output changes a texture ask for one more frame; others do not.
+    #[test]
+    fn a_texture_change_asks_for_one_more_frame() {
+        let mut app = App::new();
+        app.add_message::<RequestRedraw>()
+            .add_systems(Update, super::redraw_after_texture_change);
+        let context = app.world_mut().spawn(EguiRenderOutput::default()).id();
+        let requests = |app: &mut App| {
+            app.update();
+            let messages = app.world().resource::<Messages<RequestRedraw>>();
+            messages.iter_current_update_messages().count()
+        };
+        assert_eq!(requests(&mut app), 0, "nothing changed");
+        let glyphs = egui::epaint::ImageDelta::full(
+            egui::ColorImage::filled([1, 1], egui::Color32::WHITE),
+            egui::TextureOptions::LINEAR,
+        );
+        let mut output = EguiRenderOutput::default();
+        output
+            .textures_delta
+            .set
+            .insert(egui::TextureId::default(), [glyphs].into_iter().collect());
+        app.world_mut().entity_mut(context).insert(output);
+        assert_eq!(requests(&mut app), 1, "new glyphs");
+    }
 
     /// Runs one egui pass with `events` over a button at (100, 100); whether it was clicked.
     fn pass(ctx: &egui::Context, events: Vec<Event>) -> bool {
