@@ -63,7 +63,7 @@ pub fn plugin(app: &mut App) {
         )
         .add_systems(
             PreUpdate,
-            drop_unchanged_modifiers
+            (drop_unchanged_modifiers, allow_slow_clicks)
                 .after(EguiPreUpdateSet::ProcessInput)
                 .before(EguiPreUpdateSet::BeginPass),
         )
@@ -113,6 +113,28 @@ fn find_pointer_on_ui(
             .is_some_and(|layer| layer.order != egui::Order::Background)
     }) || ctx.egui_is_using_pointer();
     on_ui.set_if_neq(PointerOnUi(over));
+    Ok(())
+}
+
+/// egui's own limit on how long a click's button may be held (`InputOptions`), seconds.
+const EGUI_CLICK_SECONDS: f64 = 0.8;
+
+/// The longest press egui counts as a click after a frame of `frame_seconds`: its own limit
+/// plus that frame. egui times a press by the real time of the frames that read its down and
+/// up events; on a slow frame (a second or more under a software renderer) a click's press
+/// wakes the idle window and its release is read a frame later, a frame's time after.
+fn max_click_duration(frame_seconds: f64) -> f64 {
+    EGUI_CLICK_SECONDS + frame_seconds.max(0.0)
+}
+
+/// Played under Xvfb at 0.5 fps, the new-game dialog's buttons needed two clicks: the first
+/// was held "2 s" by egui's clock. The click limit now grows by the last frame's time (on a
+/// 60 fps machine it is egui's own, give or take 17 ms).
+fn allow_slow_clicks(mut contexts: EguiContexts, time: Res<Time<Real>>) -> Result {
+    let limit = max_click_duration(time.delta_secs_f64());
+    contexts
+        .ctx_mut()?
+        .options_mut(|o| o.input_options.max_click_duration = limit);
     Ok(())
 }
 
@@ -300,6 +322,44 @@ mod tests {
             button: PointerButton::Primary,
             pressed,
             modifiers: Default::default(),
+        }
+    }
+
+    /// A click whose press and release egui reads in two frames 2 s apart (the press woke
+    /// an idle window whose frame took 2 s) is lost at egui's own limit and counted with the
+    /// limit of `max_click_duration` for that frame.
+    #[test]
+    fn a_click_split_over_a_slow_frame_clicks_the_button() {
+        let on = pos2(110.0, 108.0);
+        let at = |time: f64, events: Vec<Event>| egui::RawInput {
+            screen_rect: Some(egui::Rect::from_min_size(
+                pos2(0.0, 0.0),
+                vec2(800.0, 600.0),
+            )),
+            time: Some(time),
+            events,
+            ..Default::default()
+        };
+        let run = |ctx: &egui::Context, input: egui::RawInput| {
+            let mut clicked = false;
+            let _ = ctx.run_ui(input, |ui| {
+                egui::Area::new(egui::Id::new("area"))
+                    .fixed_pos(pos2(100.0, 100.0))
+                    .show(ui.ctx(), |ui| clicked = ui.button("Start").clicked());
+            });
+            clicked
+        };
+        for (limit, expected) in [
+            (super::EGUI_CLICK_SECONDS, false),
+            (super::max_click_duration(2.0), true),
+        ] {
+            let ctx = egui::Context::default();
+            ctx.options_mut(|o| o.input_options.max_click_duration = limit);
+            assert!(!run(&ctx, at(9.0, Vec::new())));
+            assert!(!run(&ctx, at(10.0, vec![Event::PointerMoved(on)])));
+            assert!(!run(&ctx, at(12.0, vec![button(on, true)])));
+            let clicked = run(&ctx, at(14.0, vec![button(on, false)]));
+            assert_eq!(clicked, expected, "limit {limit} s");
         }
     }
 
