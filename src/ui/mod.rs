@@ -63,7 +63,11 @@ pub fn plugin(app: &mut App) {
         )
         .add_systems(
             PreUpdate,
-            (drop_unchanged_modifiers, allow_slow_clicks)
+            (
+                drop_unchanged_modifiers,
+                split_one_frame_clicks,
+                allow_slow_clicks,
+            )
                 .after(EguiPreUpdateSet::ProcessInput)
                 .before(EguiPreUpdateSet::BeginPass),
         )
@@ -114,6 +118,62 @@ fn find_pointer_on_ui(
     }) || ctx.egui_is_using_pointer();
     on_ui.set_if_neq(PointerOnUi(over));
     Ok(())
+}
+
+/// The pointer-button releases (and what follows them) held back for the next frame, by egui
+/// context.
+#[derive(Default)]
+struct HeldEvents(Vec<(Entity, Vec<egui::Event>)>);
+
+/// Splits `events` (after the ones held back from the last frame, `held`) where a button is
+/// released that was pressed earlier in them: what comes from there on is returned, to be
+/// read next frame.
+fn split_at_click(held: Vec<egui::Event>, events: &mut Vec<egui::Event>) -> Vec<egui::Event> {
+    let mut all = held;
+    all.append(events);
+    let mut pressed = [false; egui::NUM_POINTER_BUTTONS];
+    let split = all.iter().position(|event| match *event {
+        egui::Event::PointerButton {
+            button, pressed: p, ..
+        } => {
+            let released_after_press = !p && pressed[button as usize];
+            pressed[button as usize] |= p;
+            released_after_press
+        }
+        _ => false,
+    });
+    let later = split.map_or_else(Vec::new, |k| all.split_off(k));
+    *events = all;
+    later
+}
+
+/// egui's slider senses drags only: a press and its release read in one frame (a click on a
+/// slow frame, a second under a software renderer) is no drag, and a click on a slider's
+/// rail did nothing (the time scale, played under Xvfb). The release of a button pressed in
+/// the same frame, and every event after it, is read one frame later, and that frame is asked
+/// for. Buttons take their click a frame later; nothing else changes.
+fn split_one_frame_clicks(
+    mut inputs: Query<(Entity, &mut EguiInput)>,
+    mut held: Local<HeldEvents>,
+    mut redraw: MessageWriter<RequestRedraw>,
+) {
+    let mut next = Vec::new();
+    for (entity, mut input) in &mut inputs {
+        let from_last = held
+            .0
+            .iter_mut()
+            .find(|(e, _)| *e == entity)
+            .map(|(_, events)| std::mem::take(events))
+            .unwrap_or_default();
+        let later = split_at_click(from_last, &mut input.events);
+        if !later.is_empty() {
+            next.push((entity, later));
+        }
+    }
+    if !next.is_empty() {
+        redraw.write(RequestRedraw);
+    }
+    held.0 = next;
 }
 
 /// egui's own limit on how long a click's button may be held (`InputOptions`), seconds.
@@ -323,6 +383,74 @@ mod tests {
             pressed,
             modifiers: Default::default(),
         }
+    }
+
+    /// A click on a slider's rail moves it once the release is held back a frame
+    /// (`split_at_click`), and not when egui reads press and release in one frame.
+    #[test]
+    fn a_click_on_a_slider_rail_moves_it_when_split() {
+        let run = |ctx: &egui::Context, time: f64, events: Vec<Event>, value: &mut f64| {
+            let input = egui::RawInput {
+                screen_rect: Some(egui::Rect::from_min_size(
+                    pos2(0.0, 0.0),
+                    vec2(800.0, 600.0),
+                )),
+                time: Some(time),
+                events,
+                ..Default::default()
+            };
+            let _ = ctx.run_ui(input, |ui| {
+                egui::Area::new(egui::Id::new("area"))
+                    .fixed_pos(pos2(100.0, 100.0))
+                    .show(ui.ctx(), |ui| {
+                        ui.add(egui::Slider::new(value, 0.0..=4.0).show_value(false))
+                    });
+            });
+        };
+        // 90 % along the rail (the slider is 100 points wide by default).
+        let at = pos2(190.0, 109.0);
+        for split in [false, true] {
+            let ctx = egui::Context::default();
+            let mut value = 1.0;
+            run(&ctx, 1.0, Vec::new(), &mut value);
+            run(&ctx, 2.0, vec![Event::PointerMoved(at)], &mut value);
+            let mut events = vec![button(at, true), button(at, false)];
+            let later = if split {
+                super::split_at_click(Vec::new(), &mut events)
+            } else {
+                Vec::new()
+            };
+            run(&ctx, 3.0, events, &mut value);
+            let mut next = Vec::new();
+            let held = super::split_at_click(later, &mut next);
+            assert!(held.is_empty());
+            run(&ctx, 4.0, next, &mut value);
+            let moved = (value - 3.6).abs() < 0.2;
+            assert_eq!(moved, split, "split {split}: value {value}");
+        }
+    }
+
+    /// Only a release after a press of the same button in the same frame is held back, with
+    /// what follows it; held events come first next frame.
+    #[test]
+    fn only_a_release_after_its_press_is_held_back() {
+        let p = pos2(1.0, 1.0);
+        let mut events = vec![button(p, false), Event::PointerMoved(p), button(p, true)];
+        assert!(super::split_at_click(Vec::new(), &mut events).is_empty());
+        assert_eq!(events.len(), 3);
+        let mut events = vec![
+            button(p, true),
+            Event::PointerMoved(p),
+            button(p, false),
+            Event::Text("a".to_owned()),
+        ];
+        let later = super::split_at_click(Vec::new(), &mut events);
+        assert_eq!(events, vec![button(p, true), Event::PointerMoved(p)]);
+        assert_eq!(later, vec![button(p, false), Event::Text("a".to_owned())]);
+        let mut next = vec![Event::PointerMoved(p)];
+        assert!(super::split_at_click(later, &mut next).is_empty());
+        assert_eq!(next[0], button(p, false));
+        assert_eq!(next.len(), 3);
     }
 
     /// A click whose press and release egui reads in two frames 2 s apart (the press woke
