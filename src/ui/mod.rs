@@ -359,21 +359,33 @@ mod tests {
 
     /// Runs one egui pass with `events` over a button at (100, 100); whether it was clicked.
     fn pass(ctx: &egui::Context, events: Vec<Event>) -> bool {
+        timed_pass(ctx, None, events, |ui| ui.button("Shoot").clicked())
+    }
+
+    /// One egui pass of an 800x600 screen at `time` (egui's own clock when `None`) with
+    /// `events`, `widget` in an area at (100, 100); what `widget` returned.
+    fn timed_pass<R: Default>(
+        ctx: &egui::Context,
+        time: Option<f64>,
+        events: Vec<Event>,
+        mut widget: impl FnMut(&mut egui::Ui) -> R,
+    ) -> R {
         let input = egui::RawInput {
             screen_rect: Some(egui::Rect::from_min_size(
                 pos2(0.0, 0.0),
                 vec2(800.0, 600.0),
             )),
+            time,
             events,
             ..Default::default()
         };
-        let mut clicked = false;
+        let mut out = R::default();
         let _ = ctx.run_ui(input, |ui| {
             egui::Area::new(egui::Id::new("area"))
                 .fixed_pos(pos2(100.0, 100.0))
-                .show(ui.ctx(), |ui| clicked = ui.button("Shoot").clicked());
+                .show(ui.ctx(), |ui| out = widget(ui));
         });
-        clicked
+        out
     }
 
     fn button(pos: egui::Pos2, pressed: bool) -> Event {
@@ -390,22 +402,9 @@ mod tests {
     #[test]
     fn a_click_on_a_slider_rail_moves_it_when_split() {
         let run = |ctx: &egui::Context, time: f64, events: Vec<Event>, value: &mut f64| {
-            let input = egui::RawInput {
-                screen_rect: Some(egui::Rect::from_min_size(
-                    pos2(0.0, 0.0),
-                    vec2(800.0, 600.0),
-                )),
-                time: Some(time),
-                events,
-                ..Default::default()
-            };
-            let _ = ctx.run_ui(input, |ui| {
-                egui::Area::new(egui::Id::new("area"))
-                    .fixed_pos(pos2(100.0, 100.0))
-                    .show(ui.ctx(), |ui| {
-                        ui.add(egui::Slider::new(value, 0.0..=4.0).show_value(false))
-                    });
-            });
+            timed_pass(ctx, Some(time), events, |ui| {
+                ui.add(egui::Slider::new(value, 0.0..=4.0).show_value(false));
+            })
         };
         // 90 % along the rail (the slider is 100 points wide by default).
         let at = pos2(190.0, 109.0);
@@ -459,23 +458,8 @@ mod tests {
     #[test]
     fn a_click_split_over_a_slow_frame_clicks_the_button() {
         let on = pos2(110.0, 108.0);
-        let at = |time: f64, events: Vec<Event>| egui::RawInput {
-            screen_rect: Some(egui::Rect::from_min_size(
-                pos2(0.0, 0.0),
-                vec2(800.0, 600.0),
-            )),
-            time: Some(time),
-            events,
-            ..Default::default()
-        };
-        let run = |ctx: &egui::Context, input: egui::RawInput| {
-            let mut clicked = false;
-            let _ = ctx.run_ui(input, |ui| {
-                egui::Area::new(egui::Id::new("area"))
-                    .fixed_pos(pos2(100.0, 100.0))
-                    .show(ui.ctx(), |ui| clicked = ui.button("Start").clicked());
-            });
-            clicked
+        let run = |ctx: &egui::Context, time: f64, events: Vec<Event>| {
+            timed_pass(ctx, Some(time), events, |ui| ui.button("Start").clicked())
         };
         for (limit, expected) in [
             (super::EGUI_CLICK_SECONDS, false),
@@ -483,10 +467,10 @@ mod tests {
         ] {
             let ctx = egui::Context::default();
             ctx.options_mut(|o| o.input_options.max_click_duration = limit);
-            assert!(!run(&ctx, at(9.0, Vec::new())));
-            assert!(!run(&ctx, at(10.0, vec![Event::PointerMoved(on)])));
-            assert!(!run(&ctx, at(12.0, vec![button(on, true)])));
-            let clicked = run(&ctx, at(14.0, vec![button(on, false)]));
+            assert!(!run(&ctx, 9.0, Vec::new()));
+            assert!(!run(&ctx, 10.0, vec![Event::PointerMoved(on)]));
+            assert!(!run(&ctx, 12.0, vec![button(on, true)]));
+            let clicked = run(&ctx, 14.0, vec![button(on, false)]);
             assert_eq!(clicked, expected, "limit {limit} s");
         }
     }
