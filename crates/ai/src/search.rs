@@ -338,8 +338,9 @@ const BREAK_VALUE: f64 = 0.1;
 /// the side of whoever shoots it (the balls it spots put back first); its value counts for
 /// the chooser, or against them when the opponent shoots. A re-rack is worth
 /// [`BREAK_VALUE`] to whoever breaks. The estimate is the success of the shot the chosen
-/// option leads to (an even 0.5 for a break, which is not searched here). Options the search cannot weigh (no place to spot a ball, no legal
-/// shot) fall back to the analytic chance of the table as it lies ([`analytic_choice`]).
+/// option leads to (an even 0.5 for a break, which is not searched here). Options the search
+/// cannot weigh (no place to spot a ball, no legal shot) fall back to the analytic chance of
+/// the table as it lies ([`analytic_choice`]).
 fn choose(
     state: &GameState,
     sim: &Simulation,
