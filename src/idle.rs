@@ -2,7 +2,9 @@
 //! (the render test's measure of the reactive window). Once every render pipeline is ready
 //! and the window has drawn nothing for a few seconds (the start-up frames are over), a thread
 //! wakes the event loop twice, `SECONDS` apart; the frames between the two wake-ups are the
-//! idle frames. Prints `idle frames: N in S s`, then exits.
+//! idle frames. Prints `idle frames: N in S s`, then one line for each idle frame naming what
+//! woke it (window and input events, `RequestRedraw` messages, egui's repaint causes, the
+//! pipeline counts), then exits.
 
 use std::{
     sync::{
@@ -15,8 +17,10 @@ use std::{
 use bevy::{
     diagnostic::FrameCount,
     prelude::*,
+    window::{RequestRedraw, WindowEvent},
     winit::{EventLoopProxyWrapper, WinitUserEvent},
 };
+use bevy_egui::EguiContexts;
 
 use crate::pipelines::PipelineProgress;
 
@@ -38,6 +42,7 @@ impl Plugin for IdleCountPlugin {
             frame: Arc::default(),
             started: false,
             first_frame: None,
+            trace: Vec::new(),
         })
         .add_systems(Last, count_idle_frames);
     }
@@ -52,16 +57,28 @@ struct IdleCount {
     frame: Arc<AtomicU32>,
     started: bool,
     first_frame: Option<u32>,
+    /// What woke each frame of the interval, one line a frame.
+    trace: Vec<String>,
 }
 
+#[expect(
+    clippy::too_many_arguments,
+    reason = "a diagnostic that reads every wake-up source"
+)]
 fn count_idle_frames(
     mut count: ResMut<IdleCount>,
     progress: Res<PipelineProgress>,
     frames: Res<FrameCount>,
     proxy: Option<Res<EventLoopProxyWrapper>>,
+    mut window_events: MessageReader<WindowEvent>,
+    mut redraws: MessageReader<RequestRedraw>,
+    mut contexts: EguiContexts,
     mut exit: MessageWriter<AppExit>,
 ) {
     count.frame.store(frames.0, Ordering::SeqCst);
+    // Read every frame, so that a frame reports only what arrived since the last one.
+    let events = window_events.read().map(event_name).collect::<Vec<_>>();
+    let redraw_count = redraws.read().count();
     let (total, waiting) = progress.counts();
     if !count.started {
         if total == 0 || waiting > 0 {
@@ -97,12 +114,51 @@ fn count_idle_frames(
     }
     match (count.phase.load(Ordering::SeqCst), count.first_frame) {
         (1, None) => count.first_frame = Some(frames.0),
+        (1, Some(_)) => {
+            // egui's causes are those of its last pass, which asked for this frame.
+            let causes = contexts.ctx_mut().map_or_else(
+                |_| "no egui context".to_owned(),
+                |ctx| {
+                    ctx.repaint_causes()
+                        .iter()
+                        .map(ToString::to_string)
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                },
+            );
+            let (total, waiting) = progress.counts();
+            let line = format!(
+                "idle frame {}: window events [{}]; RequestRedraw written: {redraw_count}; \
+                 egui repaint causes [{causes}]; pipelines {total} ({waiting} waiting)",
+                frames.0,
+                events.join(", ")
+            );
+            count.trace.push(line);
+        }
         (2, Some(first)) => {
             // Neither wake-up frame counts.
             let idle = frames.0.saturating_sub(first).saturating_sub(1);
             println!("idle frames: {idle} in {} s", count.seconds.as_secs_f64());
+            for line in &count.trace {
+                println!("{line}");
+            }
             exit.write(AppExit::Success);
         }
         _ => {}
+    }
+}
+
+/// The kind of a window event, with the details that tell its source.
+fn event_name(event: &WindowEvent) -> String {
+    match event {
+        WindowEvent::CursorMoved(e) => format!("CursorMoved({:?})", e.position),
+        WindowEvent::WindowFocused(e) => format!("WindowFocused({})", e.focused),
+        WindowEvent::WindowOccluded(e) => format!("WindowOccluded({})", e.occluded),
+        WindowEvent::KeyboardInput(e) => format!("KeyboardInput({:?})", e.key_code),
+        WindowEvent::MouseButtonInput(e) => format!("MouseButtonInput({:?})", e.button),
+        other => {
+            let debug = format!("{other:?}");
+            debug.split('(').next().unwrap_or_default().to_owned()
+        }
     }
 }

@@ -262,8 +262,17 @@ fn an_idle_window_draws_almost_no_frames() {
         .and_then(|rest| rest.split_whitespace().next())
         .and_then(|n| n.parse().ok())
         .unwrap_or_else(|| panic!("no idle frame count in {stdout:?}"));
-    eprintln!("idle frames in 10 s: {idle}");
-    assert!(idle <= 2, "the idle window drew {idle} frames in 10 s");
+    // One line a frame, naming what woke it.
+    let causes: Vec<&str> = stdout
+        .lines()
+        .filter(|l| l.starts_with("idle frame "))
+        .collect();
+    eprintln!("idle frames in 10 s: {idle}\n{}", causes.join("\n"));
+    assert!(
+        idle <= 2,
+        "the idle window drew {idle} frames in 10 s:\n{}",
+        causes.join("\n")
+    );
 }
 
 /// A match in progress (`--game nine-ball`) shows its lines in the HUD: the turn's line is
