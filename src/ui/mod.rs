@@ -83,6 +83,10 @@ pub fn plugin(app: &mut App) {
         .add_systems(Startup, spawn_ui_camera)
         .add_systems(
             EguiPrimaryContextPass,
+            whole_pixel_glyphs.before(show_scene_image),
+        )
+        .add_systems(
+            EguiPrimaryContextPass,
             (
                 show_scene_image,
                 left_panel,
@@ -209,6 +213,22 @@ fn redraw_after_texture_change(
     if outputs.iter().any(|o| !o.textures_delta.set.is_empty()) {
         redraw.write(RequestRedraw);
     }
+}
+
+/// egui draws each glyph at one of four sub-pixel offsets and rasterizes a variant the first
+/// time text lands on it. The HUD's numbers change every frame and shift the text after them,
+/// so a frame woken by input kept finding new variants, changing the font texture and, through
+/// [`redraw_after_texture_change`], asking for the next frame: an idle window drew up to 8
+/// frames after a single wake-up (issue 22, traced with `--count-idle-frames`). Glyphs on whole
+/// pixels need one bitmap per character, all rasterized in the first frames.
+fn whole_pixel_glyphs(mut contexts: EguiContexts, mut done: Local<bool>) -> Result {
+    if !*done {
+        contexts
+            .ctx_mut()?
+            .all_styles_mut(|style| style.visuals.text_options.subpixel_binning = false);
+        *done = true;
+    }
+    Ok(())
 }
 
 fn pointer_on_ui(on_ui: Res<PointerOnUi>) -> bool {
