@@ -2,7 +2,8 @@
 //!
 //! On a software renderer shader pipelines compile for seconds, and until they have, frames
 //! come out blank. Once every pipeline has been ready ([`crate::pipelines`]; and no new one has
-//! appeared) for the settle time, the primary window is captured. The process exits with status 0 once the PNG
+//! appeared) for the settle time and for [`SETTLE_FRAMES`] frames, the primary window is
+//! captured: the frame count, not the clock, is what a loaded machine cannot cut short. The process exits with status 0 once the PNG
 //! is written, 1 if it could not be, and 3 if the scene never became ready.
 
 use std::{path::PathBuf, time::Duration};
@@ -24,6 +25,11 @@ pub struct ScreenshotPlugin {
     pub settle: Duration,
 }
 
+/// Frames drawn with every pipeline ready before the capture: the first such frame can still
+/// lack egui's new glyphs (one more frame after a texture change, [`crate::ui`]), and the swap
+/// chain may lag a frame.
+pub const SETTLE_FRAMES: u32 = 4;
+
 /// Give up if the pipelines are still compiling after this long.
 const TIMEOUT: Duration = Duration::from_secs(180);
 
@@ -36,6 +42,7 @@ impl Plugin for ScreenshotPlugin {
                 settle: self.settle,
                 phase: CapturePhase::WaitingForPipelines {
                     ready_since: None,
+                    ready_frames: 0,
                     pipelines: 0,
                 },
             })
@@ -52,9 +59,11 @@ struct Capture {
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum CapturePhase {
-    /// Watching the pipeline counts; `ready_since` is when they last became all ready.
+    /// Watching the pipeline counts; `ready_since` is when they last became all ready, and
+    /// `ready_frames` how many frames have run since.
     WaitingForPipelines {
         ready_since: Option<Duration>,
+        ready_frames: u32,
         pipelines: usize,
     },
     /// The screenshot has been requested; the observer exits when it is saved.
@@ -70,6 +79,7 @@ fn capture_when_drawn(
 ) {
     let CapturePhase::WaitingForPipelines {
         ready_since,
+        ready_frames,
         pipelines,
     } = capture.phase
     else {
@@ -79,16 +89,18 @@ fn capture_when_drawn(
     let (total, waiting) = progress.counts();
     // A new pipeline appearing restarts the wait: it may belong to something not yet drawn.
     let ready = total > 0 && waiting == 0 && total == pipelines;
-    let ready_since = if ready {
-        ready_since.or(Some(now))
+    let (ready_since, ready_frames) = if ready {
+        (ready_since.or(Some(now)), ready_frames + 1)
     } else {
-        None
+        (None, 0)
     };
     if let Some(since) = ready_since
         && now - since >= capture.settle
+        && ready_frames > SETTLE_FRAMES
     {
         info!(
-            "{total} pipelines ready for {:.1} s after {:.1} s: capturing {}",
+            "{total} pipelines ready for {:.1} s and {ready_frames} frames after {:.1} s: \
+             capturing {}",
             (now - since).as_secs_f64(),
             now.as_secs_f64(),
             capture.path.display()
@@ -127,6 +139,7 @@ fn capture_when_drawn(
     }
     capture.phase = CapturePhase::WaitingForPipelines {
         ready_since,
+        ready_frames,
         pipelines: total,
     };
 }

@@ -4,10 +4,7 @@
 
 mod common;
 
-use std::{
-    path::{Path, PathBuf},
-    time::Duration,
-};
+use std::path::{Path, PathBuf};
 
 use bevy::{math::DVec2, prelude::*, window::FileDragAndDrop};
 use billiards::{
@@ -362,13 +359,9 @@ fn another_ball_count_gets_its_own_balls_and_the_live_ones_come_back() {
 
     // Verify re-simulates the recording, on its own thread.
     command(&mut app, ReplayCommand::Verify);
-    for _ in 0..2_000 {
-        if app.world().resource::<Replay>().verifying.is_none() {
-            break;
-        }
-        std::thread::sleep(Duration::from_millis(5));
-        app.update();
-    }
+    common::update_until(&mut app, |app| {
+        app.world().resource::<Replay>().verifying.is_none()
+    });
     let replay = app.world().resource::<Replay>();
     let verdict = replay
         .verdict
@@ -456,16 +449,10 @@ fn a_cancelled_export_stops_and_leaves_no_gif() {
     );
     assert!(app.world().resource::<Replay>().export.is_some());
     command(&mut app, ReplayCommand::CancelExport);
-    let mut finished = None;
-    for _ in 0..2_000 {
-        app.update();
-        let replay = app.world().resource::<Replay>();
-        if replay.export.is_none() {
-            finished = replay.export_result.clone();
-            break;
-        }
-        std::thread::sleep(Duration::from_millis(5));
-    }
+    common::update_until(&mut app, |app| {
+        app.world().resource::<Replay>().export.is_none()
+    });
+    let finished = app.world().resource::<Replay>().export_result.clone();
     let error = finished.expect("the export ended").unwrap_err();
     assert!(error.contains("cancelled after"), "{error}");
     let left: Vec<_> = std::fs::read_dir(file.parent().unwrap())
@@ -496,19 +483,17 @@ fn an_export_runs_in_the_background_and_reports_its_frames() {
             path: Some(out.clone()),
         }),
     );
-    let mut finished = None;
-    for _ in 0..2_000 {
-        app.update();
-        let replay = app.world().resource::<Replay>();
-        if let Some(job) = &replay.export {
-            let (done, total) = job.progress();
-            assert!(done <= total || total == 0);
-        } else {
-            finished = replay.export_result.clone();
-            break;
+    common::update_until(&mut app, |app| {
+        match &app.world().resource::<Replay>().export {
+            Some(job) => {
+                let (done, total) = job.progress();
+                assert!(done <= total || total == 0);
+                false
+            }
+            None => true,
         }
-        std::thread::sleep(Duration::from_millis(5));
-    }
+    });
+    let finished = app.world().resource::<Replay>().export_result.clone();
     let message = finished.expect("export finished").unwrap();
     assert!(message.ends_with("frames"), "{message}");
     assert!(std::fs::metadata(&out).unwrap().len() > 100);
@@ -527,13 +512,9 @@ fn an_export_runs_in_the_background_and_reports_its_frames() {
     );
     let stem = file.file_stem().unwrap().to_string_lossy().into_owned();
     let target = file.with_file_name(format!("{stem}_frames"));
-    for _ in 0..2_000 {
-        if app.world().resource::<Replay>().export.is_none() {
-            break;
-        }
-        std::thread::sleep(Duration::from_millis(5));
-        app.update();
-    }
+    common::update_until(&mut app, |app| {
+        app.world().resource::<Replay>().export.is_none()
+    });
     let result = app
         .world()
         .resource::<Replay>()

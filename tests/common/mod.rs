@@ -22,3 +22,15 @@ pub fn headless<M>(extra: impl Plugins<M>) -> App {
     )));
     app
 }
+
+/// Runs frames until `done` holds, however long the machine takes: the work it waits for
+/// (a verification, an export, a decision) runs on a thread of its own, and a loaded machine
+/// must not fail a test that a quiet one passes. Between frames the thread is given the core
+/// for a moment. A hang is a bug to find, and shows as a test that does not end.
+#[allow(dead_code, reason = "not every test file waits for a thread")]
+pub fn update_until(app: &mut App, mut done: impl FnMut(&mut App) -> bool) {
+    while !done(app) {
+        std::thread::sleep(Duration::from_millis(2));
+        app.update();
+    }
+}

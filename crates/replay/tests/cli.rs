@@ -277,16 +277,19 @@ fn killing_the_recorder_mid_game_leaves_the_last_complete_shot_on_disk() {
         cmd.args(["--shot", &format!("{}:{}", (k * 37) % 360, 1 + k % 5)]);
     }
     let mut child = cmd.stdout(std::process::Stdio::null()).spawn().unwrap();
-    // Wait for a few saves, then kill it while it is still playing and saving.
-    let start = std::time::Instant::now();
-    while !file.exists() && start.elapsed().as_secs() < 60 {
+    // Wait for a few saves (counted in the file, not timed: a loaded machine only takes
+    // longer), then kill it while it is still playing and saving. Each save replaces the file
+    // whole (a rename), so every read sees a complete recording.
+    const SAVES: usize = 3;
+    loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            panic!("the recorder ended ({status}) before {SAVES} saves");
+        }
+        if Recording::load(&file).is_ok_and(|rec| rec.inputs.len() >= SAVES) {
+            break;
+        }
         std::thread::sleep(std::time::Duration::from_millis(5));
     }
-    std::thread::sleep(std::time::Duration::from_millis(150));
-    assert!(
-        child.try_wait().unwrap().is_none(),
-        "the recorder must still be running when killed"
-    );
     child.kill().unwrap();
     child.wait().unwrap();
     let rec = Recording::load(&file).expect("the file on disk is a complete recording");
