@@ -1,6 +1,7 @@
 //! `--count-idle-frames SECONDS`: how many frames the window draws while nothing happens
-//! (the render test's measure of the reactive window). Once every render pipeline is ready
-//! and the window has drawn nothing for a few seconds (the start-up frames are over), a thread
+//! (the render test's measure of the reactive window). Once every render pipeline is ready,
+//! the last two frames asked for no other and the window has drawn nothing for a few seconds
+//! (the start-up frames are over), a thread
 //! wakes the event loop twice, `SECONDS` apart; the frames between the two wake-ups are the
 //! idle frames. Prints `idle frames: N in S s`, then one line for each idle frame naming what
 //! woke it (window and input events, `RequestRedraw` messages, egui's repaint causes, the
@@ -9,7 +10,7 @@
 use std::{
     sync::{
         Arc,
-        atomic::{AtomicU8, AtomicU32, Ordering},
+        atomic::{AtomicBool, AtomicU8, AtomicU32, Ordering},
     },
     time::{Duration, Instant},
 };
@@ -40,6 +41,8 @@ impl Plugin for IdleCountPlugin {
             seconds: self.seconds,
             phase: Arc::default(),
             frame: Arc::default(),
+            settled: Arc::default(),
+            redraw_free: 0,
             started: false,
             first_frame: None,
             trace: Vec::new(),
@@ -55,6 +58,13 @@ struct IdleCount {
     phase: Arc<AtomicU8>,
     /// The last frame drawn, for the thread to see when drawing has stopped.
     frame: Arc<AtomicU32>,
+    /// Whether the app has asked for no further frame: every pipeline ready and no
+    /// `RequestRedraw` in the last two frames (the runner reads a message in the frame after
+    /// it too). A slow frame still being drawn is not taken for idle: the thread waits for
+    /// this state, not only for the clock.
+    settled: Arc<AtomicBool>,
+    /// Frames in a row that wrote no `RequestRedraw`.
+    redraw_free: u32,
     started: bool,
     first_frame: Option<u32>,
     /// What woke each frame of the interval, one line a frame.
@@ -80,6 +90,13 @@ fn count_idle_frames(
     let events = window_events.read().map(event_name).collect::<Vec<_>>();
     let redraw_count = redraws.read().count();
     let (total, waiting) = progress.counts();
+    count.redraw_free = if redraw_count == 0 {
+        count.redraw_free.saturating_add(1)
+    } else {
+        0
+    };
+    let settled = total > 0 && waiting == 0 && count.redraw_free >= 2;
+    count.settled.store(settled, Ordering::SeqCst);
     if !count.started {
         if total == 0 || waiting > 0 {
             return;
@@ -93,11 +110,13 @@ fn count_idle_frames(
         let proxy = (**proxy).clone();
         let phase = count.phase.clone();
         let frame = count.frame.clone();
+        let settled = count.settled.clone();
         let seconds = count.seconds;
         std::thread::spawn(move || {
-            // Wait until no frame has been drawn for QUIET (the start-up redraws are over).
+            // Wait until the app has settled and no frame has been drawn for QUIET (late
+            // window events of the start-up are over).
             let (mut last, mut since) = (frame.load(Ordering::SeqCst), Instant::now());
-            while since.elapsed() < QUIET {
+            while since.elapsed() < QUIET || !settled.load(Ordering::SeqCst) {
                 std::thread::sleep(Duration::from_millis(100));
                 let now = frame.load(Ordering::SeqCst);
                 if now != last {
