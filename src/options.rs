@@ -82,7 +82,7 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
 
   --screenshot PATH   wait until the scene has been drawn, save it as PNG to PATH, exit
   --settle SECONDS    how long every render pipeline must have been ready before the
-                      capture (default 2)
+                      capture (default 2; 4 frames at least, however long they take)
   --top-view          start with the camera straight above the table (T toggles it)
   --size WxH          window size in logical pixels (default 1280x720)
   --check-layout PATH write every text of the UI that is cut, elided or off screen to
