@@ -468,7 +468,7 @@ fn simulate_a_nine_ball_game_prints_verdicts_and_verify_rejudges_them() {
     let dir = temp("nine");
     let file = dir.join("rack.json");
     let (ok, stdout, err) = run(bin()
-        .args(["simulate", "--game", "nine-ball", "--rack-seed", "3"])
+        .args(["simulate", "--game", "nine-ball", "--rack-seed", "4"])
         .args(["--shot", "0:9", "--shot", "10:2", "--call", "2:push-out"])
         .args(["--choice", "pass", "--shot", "45:2", "--out"])
         .arg(&file));

@@ -5,9 +5,12 @@
 mod ball_ball;
 mod ball_cushion;
 pub mod cue;
+pub mod hertz;
 mod resting;
 
-pub use ball_ball::{equal_mass_restitution, frictional_spheres, resting_contact, unpress};
+pub use ball_ball::{
+    equal_mass_restitution, friction_impulse, frictional_spheres, resting_contact, unpress,
+};
 pub use ball_cushion::{SETTLE_SPEED, han_2005, reflect, resting_reflect, settle};
 pub use resting::{
     FixedBody, InstantContacts, is_resting, keep_rolling, resting_on_fixed_body, resting_pair,
