@@ -36,14 +36,19 @@ pub struct Hertz {
     pub mass: f64,
     /// Dimensionless damping `alpha` (0: elastic).
     pub alpha: f64,
+    /// Damping coefficient `c = alpha sqrt(m* k)`, N s/m^1.25.
+    pub damping: f64,
 }
 
 impl Hertz {
     /// The contact of two balls of `ball` made of `material`, damped to restitution `e`.
     pub fn new(material: &HertzContact, ball: &BallSpec, e: f64) -> Self {
+        let h = Self::elastic(material, ball);
+        let alpha = damping_for_restitution(e);
         Self {
-            alpha: damping_for_restitution(e),
-            ..Self::elastic(material, ball)
+            alpha,
+            damping: alpha * (0.5 * h.mass * h.stiffness).sqrt(),
+            ..h
         }
     }
 
@@ -54,6 +59,7 @@ impl Hertz {
             stiffness: 4.0 / 3.0 * e_star * (0.5 * ball.radius).sqrt(),
             mass: ball.mass,
             alpha: 0.0,
+            damping: 0.0,
         }
     }
 
@@ -80,9 +86,8 @@ impl Hertz {
         if d <= 0.0 {
             return 0.0;
         }
-        let q = d.sqrt().sqrt(); // d^0.25
-        let c = self.alpha * (0.5 * self.mass * self.stiffness).sqrt();
-        (self.stiffness * d * d.sqrt() + c * q * rate).max(0.0)
+        let q = d.sqrt(); // d^0.5
+        (self.stiffness * d * q + self.damping * q.sqrt() * rate).max(0.0)
     }
 }
 
@@ -180,8 +185,11 @@ pub struct Impact {
 }
 
 /// Relative error allowed per step (Dormand–Prince 5(4) estimate) on displacements, in units
-/// of the largest compression, and on velocities, in units of the fastest approach.
-pub const TOLERANCE: f64 = 1e-9;
+/// of the largest compression, and on velocities, in units of the fastest approach. Against
+/// an RK4 solution at 1/20000 of a contact (tests/cradle.rs) the balls of a 5-ball cradle
+/// leave within 3e-5 of the approach speed, and an elastic one keeps its energy to 4e-6;
+/// a frozen 15-ball break takes about 60 steps.
+pub const TOLERANCE: f64 = 3e-7;
 
 /// Largest number of accepted steps before an impact is cut short (it is then left as it
 /// stands: momentum kept, energy not raised; the event loop meets any pair still approaching).
@@ -387,24 +395,30 @@ impl Chain<'_> {
         h: f64,
         scales: (f64, f64),
     ) -> f64 {
-        let dim = y.len();
         for s in 1..7 {
-            for i in 0..dim {
-                let mut acc = 0.0;
-                for (j, kj) in k.iter().enumerate().take(s) {
-                    acc += DP_A[s - 1][j] * kj[i];
+            tmp.copy_from_slice(y);
+            for (j, kj) in k.iter().enumerate().take(s) {
+                let c = h * DP_A[s - 1][j];
+                if c != 0.0 {
+                    for (t, x) in tmp.iter_mut().zip(kj) {
+                        *t += c * x;
+                    }
                 }
-                tmp[i] = y[i] + h * acc;
             }
             self.deriv(tmp, &mut k[s]);
         }
-        let mut err = 0.0f64;
-        for i in 0..4 * self.n {
-            let e: f64 = k.iter().zip(DP_E).map(|(kj, w)| w * kj[i]).sum();
-            let scale = if i < 2 * self.n { scales.0 } else { scales.1 };
-            err = err.max((h * e).abs() / (TOLERANCE * scale));
+        let m = 4 * self.n;
+        let mut e = vec![0.0; m];
+        for (kj, w) in k.iter().zip(DP_E) {
+            if w != 0.0 {
+                for (x, y) in e.iter_mut().zip(&kj[..m]) {
+                    *x += w * y;
+                }
+            }
         }
-        err
+        let (eu, ev) = e.split_at(2 * self.n);
+        let worst = |e: &[f64]| e.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+        (h / TOLERANCE) * (worst(eu) / scales.0).max(worst(ev) / scales.1)
     }
 
     /// Writes the impact's end velocities into `velocities` (those before), after sharing
@@ -485,7 +499,7 @@ mod tests {
                 }];
                 let out = impact(&h, &mut vel, &edges);
                 let got = (vel[1].x - vel[0].x) / v;
-                assert!((got - e).abs() < 1e-5, "e {e} v {v}: {got}");
+                assert!((got - e).abs() < 1e-4, "e {e} v {v}: {got}");
                 assert!(((vel[0] + vel[1]).x - v).abs() < 1e-14 * v);
                 assert!(out.steps > 10 && out.duration > 0.5 * h.duration(v));
             }
