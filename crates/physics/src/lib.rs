@@ -68,4 +68,7 @@ pub use params::{
 pub use racks::Rack;
 pub use resolve::cue::{Miscue, TipOffset};
 pub use sim::{Advance, BallSetup, SetupError, SimError, Simulation};
-pub use table::{Cushion, Jaw, Opening, Pocket, PocketShape, Table, TableError};
+pub use table::{
+    Cushion, Jaw, Opening, Pocket, PocketCut, PocketShape, Table, TableChoice, TableError,
+    TableSize,
+};
