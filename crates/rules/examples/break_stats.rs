@@ -281,7 +281,7 @@ fn gap_label(gap: f64) -> String {
     if gap == 0.0 {
         "frozen".into()
     } else {
-        format!("gaps 0–{} mm", 2.0 * gap * 1e3)
+        format!("slack {gap:e} m (gaps 0–{:e} m)", 2.0 * gap)
     }
 }
 
