@@ -28,9 +28,10 @@ pub(super) struct Cluster {
 }
 
 /// The cluster distance: balls whose surfaces are closer than this to a ball of a contact
-/// whose pair approaches at `approach` (m/s) take part in it (`None` without a cluster model,
-/// or when the contact is too slow or resting). `n` is the unit normal, `depth` how far the
-/// pair is into each other, `pressing` their relative normal acceleration.
+/// whose pair approaches at `approach` (m/s, along their normal) take part in it (`None`
+/// without a cluster model, or when the contact is too slow or resting: `depth` is how far
+/// the pair is into each other, `pressing` their relative normal acceleration, as in
+/// [`resolve::is_resting`]).
 pub fn cluster_reach(
     model: &Model,
     ball: &crate::params::BallSpec,
