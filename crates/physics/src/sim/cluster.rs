@@ -114,7 +114,8 @@ impl Simulation {
     }
 
     /// Resolves `cluster` as one impact now: Hertz forces integrated over its duration, then
-    /// each pair's friction impulse in the order their contacts began. Records one
+    /// each pair's friction impulse in the order their contacts began (no normal is
+    /// randomized: the perturbation draws nothing here). Records one
     /// [`EventKind::BallBall`] per pair that carried an impulse (the starting pair first),
     /// each with its balls' states after the whole impact, and marks them as one impact.
     pub(super) fn cluster_impact(&mut self, cluster: &Cluster) {
