@@ -63,7 +63,7 @@ pub use limits::LimitError;
 pub use math::{Vec2, Vec3};
 pub use params::{
     BallSpec, CushionModel, G, HertzContact, Model, PaperModel, ParamError, Params, Prediction,
-    Randomization, SpinModel,
+    Randomization, SlipFriction, SpinModel,
 };
 pub use racks::Rack;
 pub use resolve::cue::{Miscue, TipOffset};

@@ -14,6 +14,10 @@
 //! 9-ball, 7-ft for 8-ball), `--rack template|triangle` (default triangle), `--gaps-mm G,..`
 //! (rack lattice slack instead of the rack style's), `--speed MIN:MAX` (default 10:12 m/s),
 //! `--gaps-mm` is the lattice slack (neighbours end 0 to twice it apart), as `racks::RACK_GAP`.
+//! `--set NAME=VALUE` (repeatable: one of the game's physical constants changed, for
+//! sensitivity: mu_slide, mu_roll, e_ball, mu_ball (a constant), e_cushion, mu_cushion,
+//! young, mu_ball_slip (a factor on Alciatore's slip-dependent fit; 0: the constant mu_ball)),
+//! `--tip-height H` (tip offset as a fraction of the radius, negative for draw; default 0),
 //! `--cue box|kitchen|string` (default box), `--pairwise` (every contact pair by pair: the
 //! solver without cluster impacts), `--suite` (the standard comparison: both games, their
 //! tables, both racks, then the continuity sweep).
@@ -24,7 +28,8 @@
 //! game's defaults (spin model, Han 2005 cushion, 15 mm jaws, cluster impacts).
 
 use billiards_physics::{
-    BallSetup, Model, Params, Shot, Simulation, SpinModel, Table, TableChoice, Vec2, table::INCH,
+    BallSetup, CushionModel, Model, Params, Shot, Simulation, SlipFriction, SpinModel, Table,
+    TableChoice, TipOffset, Vec2, table::INCH,
 };
 use billiards_rules::{Call, Foul, Game, GameState, RackStyle, Seat, summarise};
 use rand::{Rng, SeedableRng};
@@ -54,6 +59,10 @@ struct Options {
     cue: Cue,
     pairwise: bool,
     suite: bool,
+    /// Changes to the game's physics, for sensitivity: (name, value).
+    set: Vec<(String, f64)>,
+    /// Tip height as a fraction of the radius (0: centre ball, negative: draw).
+    tip_height: f64,
 }
 
 fn options() -> Result<Options, String> {
@@ -68,6 +77,8 @@ fn options() -> Result<Options, String> {
         cue: Cue::Box,
         pairwise: false,
         suite: false,
+        set: Vec::new(),
+        tip_height: 0.0,
     };
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut it = args.iter();
@@ -126,6 +137,14 @@ fn options() -> Result<Options, String> {
                     _ => return Err(bad(&"expected box, kitchen or string")),
                 }
             }
+            "--set" => {
+                let (k, v) = value.split_once('=').ok_or(bad(&"expected NAME=VALUE"))?;
+                if !SETTABLE.contains(&k) {
+                    return Err(bad(&format!("NAME is one of {SETTABLE:?}")));
+                }
+                o.set.push((k.into(), v.parse().map_err(|e| bad(&e))?));
+            }
+            "--tip-height" => o.tip_height = value.parse().map_err(|e| bad(&e))?,
             _ => return Err(format!("unknown option {flag}")),
         }
     }
@@ -154,20 +173,60 @@ struct Setup {
     label: String,
 }
 
-fn params(pairwise: bool) -> Params {
-    let model = SpinModel::default();
-    let model = if pairwise {
-        SpinModel {
-            cluster: None,
-            ..model
+/// The physical constants `--set` may change.
+const SETTABLE: [&str; 8] = [
+    "mu_slide",
+    "mu_roll",
+    "e_ball",
+    "mu_ball",
+    "e_cushion",
+    "mu_cushion",
+    "young",
+    "mu_ball_slip",
+];
+
+fn params(pairwise: bool, set: &[(String, f64)]) -> Params {
+    let mut model = SpinModel::default();
+    if pairwise {
+        model.cluster = None;
+    }
+    for (k, v) in set {
+        let v = *v;
+        match (k.as_str(), &mut model.cushion) {
+            ("mu_slide", _) => model.mu_slide = v,
+            ("mu_roll", _) => model.mu_roll = v,
+            ("e_ball", _) => model.e_ball = v,
+            ("mu_ball", _) => {
+                model.mu_ball = v;
+                model.mu_ball_slip = None;
+            }
+            // 0: the constant mu_ball; otherwise Alciatore's fit scaled by v.
+            ("mu_ball_slip", _) => {
+                model.mu_ball_slip = (v > 0.0).then(|| {
+                    let f = SlipFriction::ALCIATORE;
+                    SlipFriction {
+                        a: f.a * v,
+                        b: f.b * v,
+                        c: f.c,
+                    }
+                })
+            }
+            ("e_cushion", CushionModel::Han2005 { e, .. } | CushionModel::Reflect { e }) => *e = v,
+            ("mu_cushion", CushionModel::Han2005 { mu, .. }) => *mu = v,
+            ("young", _) => {
+                if let Some(h) = model.cluster.as_mut() {
+                    h.young = v;
+                }
+            }
+            _ => {}
         }
-    } else {
-        model
-    };
-    Params {
+    }
+    let p = Params {
         model: Model::Spin(model),
         ..Params::default()
-    }
+    };
+    p.validate().expect("--set values in the physical ranges");
+    p
 }
 
 /// The cue ball's start.
@@ -189,7 +248,7 @@ fn cue_position(table: &Table, cue: Cue, r: f64, rng: &mut ChaCha8Rng) -> Vec2 {
 
 fn run(o: &Options, s: &Setup) -> Stats {
     let table = s.table.table().with_jaws(0.015);
-    let params = params(o.pairwise);
+    let params = params(o.pairwise, &o.set);
     let r = params.ball.radius;
     let mut rng = ChaCha8Rng::seed_from_u64(o.seed);
     let mut st = Stats::default();
@@ -206,7 +265,14 @@ fn run(o: &Options, s: &Setup) -> Stats {
         let aim = (balls[1].position - cue).angle();
         let speed = rng.random_range(o.speed.0..=o.speed.1);
         let mut sim = Simulation::new(table, params, &balls).expect("valid layout");
-        sim.strike(0, Shot::new(aim, speed)).expect("valid shot");
+        let shot = Shot {
+            tip: TipOffset {
+                side: 0.0,
+                height: o.tip_height,
+            },
+            ..Shot::new(aim, speed)
+        };
+        sim.strike(0, shot).expect("valid shot");
         sim.run_to_rest().expect("comes to rest");
         let summary = summarise(sim.history().events(), sim.numbers());
         let verdict = GameState::new(s.game, Seat::A)

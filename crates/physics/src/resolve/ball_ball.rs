@@ -34,7 +34,7 @@ pub fn frictional_spheres(
     b: &BallState,
     n: Vec2,
     e: f64,
-    mu: f64,
+    mu: super::BallFriction,
     radius: f64,
 ) -> Option<(BallState, BallState)> {
     let approach = (a.velocity - b.velocity).dot(n);
@@ -54,6 +54,7 @@ pub fn frictional_spheres(
     let mut va = a.velocity - n * jn;
     let mut vb = b.velocity + n * jn;
     let (mut wa2, mut wb2) = (wa, wb);
+    let mu = mu.at(slip_speed);
     if slip_speed > 0.0 && mu > 0.0 {
         // Per unit mass; 7 = 2 (linear, both balls) + 2 x 5/2 (angular, I = 2/5 m R^2).
         let jt = (mu * jn).min(slip_speed / 7.0);
@@ -90,7 +91,7 @@ pub fn friction_impulse(
     b: &BallState,
     n: Vec2,
     jn: f64,
-    mu: f64,
+    mu: super::BallFriction,
     radius: f64,
 ) -> (BallState, BallState) {
     let n3 = n.extend();
@@ -100,6 +101,7 @@ pub fn friction_impulse(
     let rel = ca - cb;
     let slip = rel - n3 * rel.dot(n3);
     let slip_speed = slip.length();
+    let mu = mu.at(slip_speed);
     if !(slip_speed > 0.0 && mu > 0.0 && jn > 0.0) {
         return (*a, *b);
     }

@@ -126,6 +126,7 @@ impl Simulation {
         let t = self.time;
         let r = self.params.ball.radius;
         let hertz = Hertz::new(&material, &self.params.ball, m.e_ball);
+        let friction = resolve::BallFriction::of(&m);
         let mut states: Vec<BallState> = cluster
             .members
             .iter()
@@ -151,7 +152,7 @@ impl Simulation {
             let e = cluster.edges[k];
             let jn = impact.impulse[k] / self.params.ball.mass;
             let (sa, sb) =
-                resolve::friction_impulse(&states[e.a], &states[e.b], e.n, jn, m.mu_ball, r);
+                resolve::friction_impulse(&states[e.a], &states[e.b], e.n, jn, friction, r);
             states[e.a] = sa;
             states[e.b] = sb;
         }
