@@ -17,8 +17,11 @@
 //! `--set NAME=VALUE` (repeatable: one of the game's physical constants changed, for
 //! sensitivity: mu_slide, mu_roll, e_ball, mu_ball (a constant), e_cushion, mu_cushion,
 //! young, mu_ball_slip (a factor on Alciatore's slip-dependent fit; 0: the constant mu_ball)),
-//! `--tip-height H` (tip offset as a fraction of the radius, negative for draw; default 0),
-//! `--cue box|kitchen|string` (default box), `--pairwise` (every contact pair by pair: the
+//! `--aim-sd-deg D` (Gaussian aim error of standard deviation D degrees; FastFiz's noise at
+//! magnitude 1 is 0.125), `--tip-height H` (tip offset as a fraction of the radius, negative for draw; default 0),
+//! `--cue box|kitchen|string|side|y:F` (default box; side: on the head string within half a
+//! diamond of a long cushion; y:F on the head string at F in [0, 1] of the way from the head
+//! spot to a long cushion, either side), `--pairwise` (every contact pair by pair: the
 //! solver without cluster impacts), `--suite` (the standard comparison: both games, their
 //! tables, both racks, then the continuity sweep).
 //!
@@ -45,6 +48,12 @@ enum Cue {
     Kitchen,
     /// On the head string.
     String,
+    /// On the head string within half a diamond (`W/8`) of a long cushion, either side: the
+    /// 9-ball side break (Alciatore, "How to Rack and Break 9-Ball Like a Pro").
+    Side,
+    /// On the head string at `f` times the largest distance from the long axis (0: the head
+    /// spot, 1: frozen to a long cushion), either side.
+    Across(f64),
 }
 
 #[derive(Clone, Debug)]
@@ -63,6 +72,8 @@ struct Options {
     set: Vec<(String, f64)>,
     /// Tip height as a fraction of the radius (0: centre ball, negative: draw).
     tip_height: f64,
+    /// Standard deviation of a Gaussian error of the aim, radians (0: exactly at the ball).
+    aim_sd: f64,
 }
 
 fn options() -> Result<Options, String> {
@@ -79,6 +90,7 @@ fn options() -> Result<Options, String> {
         suite: false,
         set: Vec::new(),
         tip_height: 0.0,
+        aim_sd: 0.0,
     };
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut it = args.iter();
@@ -134,7 +146,11 @@ fn options() -> Result<Options, String> {
                     "box" => Cue::Box,
                     "kitchen" => Cue::Kitchen,
                     "string" => Cue::String,
-                    _ => return Err(bad(&"expected box, kitchen or string")),
+                    "side" => Cue::Side,
+                    v => match v.strip_prefix("y:").map(str::parse::<f64>) {
+                        Some(Ok(f)) if (0.0..=1.0).contains(&f) => Cue::Across(f),
+                        _ => return Err(bad(&"expected box, kitchen, string, side or y:F")),
+                    },
                 }
             }
             "--set" => {
@@ -145,6 +161,13 @@ fn options() -> Result<Options, String> {
                 o.set.push((k.into(), v.parse().map_err(|e| bad(&e))?));
             }
             "--tip-height" => o.tip_height = value.parse().map_err(|e| bad(&e))?,
+            "--aim-sd-deg" => {
+                let d: f64 = value.parse().map_err(|e| bad(&e))?;
+                if !(0.0..=10.0).contains(&d) {
+                    return Err(bad(&"expected 0 to 10 degrees"));
+                }
+                o.aim_sd = d.to_radians();
+            }
             _ => return Err(format!("unknown option {flag}")),
         }
     }
@@ -243,6 +266,14 @@ fn cue_position(table: &Table, cue: Cue, r: f64, rng: &mut ChaCha8Rng) -> Vec2 {
             rng.random_range(-b.y..=b.y),
         ),
         Cue::String => Vec2::new(string, rng.random_range(-b.y..=b.y)),
+        Cue::Side => {
+            let y = rng.random_range(b.y - table.width / 8.0..=b.y);
+            Vec2::new(string, if rng.random::<bool>() { y } else { -y })
+        }
+        Cue::Across(f) => {
+            let y = f * b.y;
+            Vec2::new(string, if rng.random::<bool>() { y } else { -y })
+        }
     }
 }
 
@@ -262,8 +293,15 @@ fn run(o: &Options, s: &Setup) -> Stats {
         };
         let cue = cue_position(&table, o.cue, r, &mut rng);
         balls[0].position = cue;
-        let aim = (balls[1].position - cue).angle();
         let speed = rng.random_range(o.speed.0..=o.speed.1);
+        let mut aim = (balls[1].position - cue).angle();
+        if o.aim_sd > 0.0 {
+            // Box-Muller: one standard normal draw (none without the option, so the default
+            // runs keep their published numbers).
+            let (u1, u2): (f64, f64) = (rng.random(), rng.random());
+            let normal = (-2.0 * (1.0 - u1).ln()).sqrt() * (std::f64::consts::TAU * u2).cos();
+            aim += o.aim_sd * normal;
+        }
         let mut sim = Simulation::new(table, params, &balls).expect("valid layout");
         let shot = Shot {
             tip: TipOffset {
