@@ -23,7 +23,7 @@
 //! diamond of a long cushion; y:F on the head string at F in [0, 1] of the way from the head
 //! spot to a long cushion, either side), `--pairwise` (every contact pair by pair: the
 //! solver without cluster impacts), `--suite` (the standard comparison: both games, their
-//! tables, both racks, then the continuity sweep).
+//! tables, both racks, then the continuity sweep, then 9-ball's side break with aim noise).
 //!
 //! The default break: the cue ball in the break box (behind the head string, within one
 //! diamond of it and of the long axis: `x` in `[head string - L/8, head string]`, `|y| <= W/4`),
@@ -188,12 +188,15 @@ struct Stats {
     events: usize,
 }
 
-/// One set of breaks: a game on a table with a rack slack.
+/// One set of breaks: a game on a table with a rack slack, the cue ball's place and the
+/// aim's error (radians).
 struct Setup {
     game: Game,
     table: TableChoice,
     gap: f64,
     label: String,
+    cue: Cue,
+    aim_sd: f64,
 }
 
 /// The physical constants `--set` may change.
@@ -291,16 +294,16 @@ fn run(o: &Options, s: &Setup) -> Stats {
             }
             _ => billiards_rules::racks::eight_ball_spaced(&table, &params.ball, seed, s.gap),
         };
-        let cue = cue_position(&table, o.cue, r, &mut rng);
+        let cue = cue_position(&table, s.cue, r, &mut rng);
         balls[0].position = cue;
         let speed = rng.random_range(o.speed.0..=o.speed.1);
         let mut aim = (balls[1].position - cue).angle();
-        if o.aim_sd > 0.0 {
+        if s.aim_sd > 0.0 {
             // Box-Muller: one standard normal draw (none without the option, so the default
             // runs keep their published numbers).
             let (u1, u2): (f64, f64) = (rng.random(), rng.random());
             let normal = (-2.0 * (1.0 - u1).ln()).sqrt() * (std::f64::consts::TAU * u2).cos();
-            aim += o.aim_sd * normal;
+            aim += s.aim_sd * normal;
         }
         let mut sim = Simulation::new(table, params, &balls).expect("valid layout");
         let shot = Shot {
@@ -430,6 +433,8 @@ fn main() {
                         table,
                         gap: rack.gap(),
                         label: rack.name().into(),
+                        cue: o.cue,
+                        aim_sd: o.aim_sd,
                     });
                 }
             }
@@ -440,6 +445,20 @@ fn main() {
                 table: nine("9ft"),
                 gap,
                 label: gap_label(gap),
+                cue: o.cue,
+                aim_sd: o.aim_sd,
+            });
+        }
+        // The pros' 9-ball break: from near a long cushion, square on the 1, with FastFiz's
+        // aim noise at magnitude 1 (crates/rules/README.md, "Why the target is missed").
+        for rack in RackStyle::ALL {
+            setups.push(Setup {
+                game: Game::NineBall,
+                table: nine("9ft"),
+                gap: rack.gap(),
+                label: format!("{}, side break, aim ± 0.125°", rack.name()),
+                cue: Cue::Side,
+                aim_sd: 0.125f64.to_radians(),
             });
         }
     } else {
@@ -457,6 +476,8 @@ fn main() {
                     table,
                     gap,
                     label,
+                    cue: o.cue,
+                    aim_sd: o.aim_sd,
                 });
             }
         }
