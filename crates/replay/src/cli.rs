@@ -92,9 +92,18 @@ pub struct SimulateArgs {
     /// A scene file (JSON, see crates/physics/README.md); its shots are played first.
     #[arg(long, conflicts_with = "rack")]
     pub scene: Option<PathBuf>,
-    /// A standard rack on the WPA 8-ft table.
+    /// A standard rack on the table of `--table`.
     #[arg(long, value_enum, default_value = "fifteen-ball")]
     pub rack: RackArg,
+    /// The table: `7ft`, `8ft` or `9ft` (WPA playing areas 78 x 39, 92 x 46, 100 x 50 in),
+    /// optionally `-wide` (4.625 in corner, 5.125 in side mouths) or `-tight` (4 in corner)
+    /// pockets instead of the WPA 4.5 in and 5 in; saved in the recording.
+    #[arg(long, default_value = "8ft", conflicts_with = "scene")]
+    pub table: TableChoice,
+    /// How a game's rack is racked: `template` (every ball frozen) or `triangle` (the small
+    /// seeded gaps of a hand-racked triangle).
+    #[arg(long, default_value = "triangle", requires = "game")]
+    pub rack_style: billiards_rules::RackStyle,
     /// The physics model (with a rack).
     #[arg(long, value_enum, default_value = "spin")]
     pub model: ModelArg,
@@ -295,8 +304,8 @@ pub(crate) fn setup(
         ModelArg::Spin => Model::Spin(SpinModel::default()),
     };
     let table = match a.model {
-        ModelArg::Paper => Table::wpa_8ft(),
-        ModelArg::Spin => Table::wpa_8ft().with_jaws(0.015),
+        ModelArg::Paper => a.table.table(),
+        ModelArg::Spin => a.table.table().with_jaws(0.015),
     };
     let params = Params {
         model,

@@ -5,9 +5,12 @@
 mod ball_ball;
 mod ball_cushion;
 pub mod cue;
+pub mod hertz;
 mod resting;
 
-pub use ball_ball::{equal_mass_restitution, frictional_spheres, resting_contact, unpress};
+pub use ball_ball::{
+    equal_mass_restitution, friction_impulse, frictional_spheres, resting_contact, unpress,
+};
 pub use ball_cushion::{SETTLE_SPEED, han_2005, reflect, resting_reflect, settle};
 pub use resting::{
     FixedBody, InstantContacts, is_resting, keep_rolling, resting_on_fixed_body, resting_pair,
@@ -15,7 +18,7 @@ pub use resting::{
 
 use crate::ball::BallState;
 use crate::math::{Vec2, Vec3};
-use crate::params::{BallSpec, CushionModel, Model, Randomization, SpinModel};
+use crate::params::{BallSpec, CushionModel, Model, Randomization, SlipFriction, SpinModel};
 use cue::{Miscue, TipOffset};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -57,7 +60,7 @@ impl Laws {
                 },
                 ball: BallLaw::FrictionalSpheres {
                     e: m.e_ball,
-                    mu: m.mu_ball,
+                    mu: BallFriction::of(&m),
                 },
                 settles: true,
             },
@@ -136,8 +139,36 @@ pub enum BallLaw {
         /// Restitution.
         e: f64,
         /// Ball–ball friction.
-        mu: f64,
+        mu: BallFriction,
     },
+}
+
+/// Ball–ball friction: constant, or falling with the slip speed ([`SlipFriction`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum BallFriction {
+    /// The same at every slip speed.
+    Constant(f64),
+    /// `mu(v)` of the contact points' slip speed `v`.
+    Slip(SlipFriction),
+}
+
+impl BallFriction {
+    /// The spin model's ball–ball friction.
+    pub fn of(m: &SpinModel) -> Self {
+        match m.mu_ball_slip {
+            Some(f) => Self::Slip(f),
+            None => Self::Constant(m.mu_ball),
+        }
+    }
+
+    /// The coefficient at slip speed `v` (m/s).
+    #[inline]
+    pub fn at(&self, v: f64) -> f64 {
+        match self {
+            Self::Constant(mu) => *mu,
+            Self::Slip(f) => f.mu(v),
+        }
+    }
 }
 
 impl BallLaw {
