@@ -81,6 +81,46 @@ impl Default for CushionModel {
     }
 }
 
+/// How the ball–ball friction coefficient is found at each collision.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum BallFriction {
+    /// A constant coefficient, [`SpinModel::mu_ball`].
+    #[default]
+    Constant,
+    /// `mu = a + b exp(-c v)`, with `v` the sliding speed of the contact points at the start
+    /// of the collision (m/s): Alciatore's fit to Marlow's measurements (TP A-14 and TP A-28,
+    /// "Throw plots for all types of shots", p. 1). Slow slip grips (0.118 at rest), fast slip
+    /// slides (0.010 far above 3 m/s), so slow cuts throw more. `mu_ball` is then unused.
+    SpeedDependent {
+        /// Coefficient far above the sliding speed 1/c.
+        a: f64,
+        /// Extra coefficient at zero sliding speed.
+        b: f64,
+        /// Decay rate, s/m.
+        c: f64,
+    },
+}
+
+impl BallFriction {
+    /// Alciatore's fitted constants (TP A-28 p. 1): a = 9.951e-3, b = 0.108, c = 1.088 s/m.
+    pub const ALCIATORE: Self = BallFriction::SpeedDependent {
+        a: 9.951e-3,
+        b: 0.108,
+        c: 1.088,
+    };
+
+    /// The coefficient for a contact sliding at `slip_speed` (m/s), with `constant` the
+    /// model's `mu_ball`.
+    #[inline]
+    pub fn mu(&self, constant: f64, slip_speed: f64) -> f64 {
+        match *self {
+            BallFriction::Constant => constant,
+            BallFriction::SpeedDependent { a, b, c } => a + b * (-c * slip_speed).exp(),
+        }
+    }
+}
+
 /// The realistic model with spin (Leckie & Greenspan's event-based model, as in pooltool and
 /// FastFiz): sliding and rolling friction acting at the contact point, spin about the vertical
 /// decaying on its own, frictional ball–ball collisions (throw) and a spin-aware cushion.
@@ -95,8 +135,10 @@ pub struct SpinModel {
     pub mu_spin: f64,
     /// Ball–ball restitution.
     pub e_ball: f64,
-    /// Ball–ball friction (cut- and spin-induced throw).
+    /// Ball–ball friction (cut- and spin-induced throw), when `ball_friction` is constant.
     pub mu_ball: f64,
+    /// Constant or speed-dependent ball–ball friction (absent from old files: constant).
+    pub ball_friction: BallFriction,
     /// The cushion model.
     pub cushion: CushionModel,
     /// Height of the cushion nose above the cloth as a fraction of the ball's diameter.
@@ -117,6 +159,7 @@ impl Default for SpinModel {
             mu_spin: 0.044,
             e_ball: 0.95,
             mu_ball: 0.05,
+            ball_friction: BallFriction::Constant,
             cushion: CushionModel::default(),
             cushion_height: 0.635,
             cue_mass: 0.54,
@@ -312,6 +355,11 @@ impl SpinModel {
         check("mu_spin", self.mu_spin, self.mu_spin >= 0.0, "non-negative")?;
         check("e_ball", self.e_ball, unit(self.e_ball), "in [0, 1]")?;
         check("mu_ball", self.mu_ball, self.mu_ball >= 0.0, "non-negative")?;
+        if let BallFriction::SpeedDependent { a, b, c } = self.ball_friction {
+            check("ball_friction.a", a, a >= 0.0, "non-negative")?;
+            check("ball_friction.b", b, b >= 0.0, "non-negative")?;
+            check("ball_friction.c", c, c >= 0.0, "non-negative, s/m")?;
+        }
         let h = self.cushion_height;
         check(
             "cushion_height",

@@ -86,6 +86,15 @@ pub enum ModelArg {
     Spin,
 }
 
+/// Ball–ball friction of the spin model.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum BallFrictionArg {
+    /// A constant coefficient (the model's `mu_ball`).
+    Constant,
+    /// `a + b exp(-c v)` of the sliding speed `v` (Alciatore, TP ).
+    SpeedDependent,
+}
+
 /// `simulate` options.
 #[derive(clap::Args, Debug)]
 pub struct SimulateArgs {
@@ -98,6 +107,9 @@ pub struct SimulateArgs {
     /// The physics model (with a rack).
     #[arg(long, value_enum, default_value = "spin")]
     pub model: ModelArg,
+    /// Ball–ball friction (spin model; overrides a scene file's).
+    #[arg(long, value_enum)]
+    pub ball_friction: Option<BallFrictionArg>,
     /// A shot of the cue ball, `ANGLE_DEG:SPEED[:SIDE:HEIGHT]`; repeat for several shots,
     /// each played once everything rests. SPEED in m/s: 0 or from 1e-10 to 100 (a hard break
     /// is 12); ANGLE_DEG any finite; SIDE and HEIGHT in ball radii, within the miscue limit.
@@ -278,10 +290,13 @@ pub(crate) fn setup(
     if let Some(path) = &a.scene {
         let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
         let scene = Scene::from_json(&text).map_err(|e| format!("{}: {e}", path.display()))?;
-        let params = Params {
-            randomization: randomization.or(scene.params.randomization),
-            ..scene.params
-        };
+        let params = with_choices(
+            Params {
+                randomization: randomization.or(scene.params.randomization),
+                ..scene.params
+            },
+            a,
+        )?;
         let shots = scene
             .shots
             .iter()
@@ -298,11 +313,14 @@ pub(crate) fn setup(
         ModelArg::Paper => Table::wpa_8ft(),
         ModelArg::Spin => Table::wpa_8ft().with_jaws(0.015),
     };
-    let params = Params {
-        model,
-        randomization,
-        ..Params::default()
-    };
+    let params = with_choices(
+        Params {
+            model,
+            randomization,
+            ..Params::default()
+        },
+        a,
+    )?;
     let rack = match a.rack {
         RackArg::PaperDefault => Rack::PaperDefault,
         RackArg::FifteenBall => Rack::FifteenBall,
@@ -315,6 +333,24 @@ pub(crate) fn setup(
         rack.layout(&table, &params.ball),
         a.shots.clone(),
     ))
+}
+
+/// `params` with the model choices of the command line applied: they need the spin model.
+fn with_choices(params: Params, a: &SimulateArgs) -> Result<Params, String> {
+    let Some(friction) = a.ball_friction else {
+        return Ok(params);
+    };
+    let Model::Spin(m) = params.model else {
+        return Err("--ball-friction needs the spin model (--model spin)".into());
+    };
+    let ball_friction = match friction {
+        BallFrictionArg::Constant => BallFriction::Constant,
+        BallFrictionArg::SpeedDependent => BallFriction::ALCIATORE,
+    };
+    Ok(Params {
+        model: Model::Spin(SpinModel { ball_friction, ..m }),
+        ..params
+    })
 }
 
 /// After a scratch the cue ball goes back on the head string: the rule of

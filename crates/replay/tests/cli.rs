@@ -508,3 +508,38 @@ fn simulate_a_nine_ball_game_prints_verdicts_and_verify_rejudges_them() {
     );
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn model_choices_reach_the_recording_and_need_the_spin_model() {
+    let dir = temp("choices");
+    let file = dir.join("throw.json");
+    let (ok, _, err) = run(bin()
+        .args([
+            "simulate",
+            "--rack",
+            "nine-ball",
+            "--shot",
+            "1:3",
+            "--ball-friction",
+            "speed-dependent",
+            "--out",
+        ])
+        .arg(&file));
+    assert!(ok, "{err}");
+    let rec = Recording::load(&file).unwrap();
+    let Model::Spin(m) = rec.params.model else {
+        panic!("spin model expected: {:?}", rec.params.model);
+    };
+    assert_eq!(m.ball_friction, BallFriction::ALCIATORE);
+    let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
+    assert!(ok && stdout.contains("bit for bit"), "{stdout} {err}");
+    let (ok, _, err) = run(bin().args([
+        "simulate",
+        "--model",
+        "paper",
+        "--ball-friction",
+        "speed-dependent",
+    ]));
+    assert!(!ok && err.contains("needs the spin model"), "{err}");
+    std::fs::remove_dir_all(dir).ok();
+}

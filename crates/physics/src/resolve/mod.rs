@@ -6,16 +6,18 @@ mod ball_ball;
 mod ball_cushion;
 pub mod cue;
 mod resting;
+mod throw;
 
 pub use ball_ball::{equal_mass_restitution, frictional_spheres, resting_contact, unpress};
 pub use ball_cushion::{SETTLE_SPEED, han_2005, reflect, resting_reflect, settle};
 pub use resting::{
     FixedBody, InstantContacts, is_resting, keep_rolling, resting_on_fixed_body, resting_pair,
 };
+pub use throw::{contact_slip_speed, speed_dependent_spheres};
 
 use crate::ball::BallState;
 use crate::math::{Vec2, Vec3};
-use crate::params::{BallSpec, CushionModel, Model, Randomization, SpinModel};
+use crate::params::{BallFriction, BallSpec, CushionModel, Model, Randomization, SpinModel};
 use cue::{Miscue, TipOffset};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -55,9 +57,15 @@ impl Laws {
                         height: m.cushion_height,
                     },
                 },
-                ball: BallLaw::FrictionalSpheres {
-                    e: m.e_ball,
-                    mu: m.mu_ball,
+                ball: match m.ball_friction {
+                    BallFriction::Constant => BallLaw::FrictionalSpheres {
+                        e: m.e_ball,
+                        mu: m.mu_ball,
+                    },
+                    friction => BallLaw::SpeedDependentFriction {
+                        e: m.e_ball,
+                        friction,
+                    },
                 },
                 settles: true,
             },
@@ -138,6 +146,13 @@ pub enum BallLaw {
         /// Ball–ball friction.
         mu: f64,
     },
+    /// [`speed_dependent_spheres`]: throw with friction depending on the sliding speed.
+    SpeedDependentFriction {
+        /// Restitution.
+        e: f64,
+        /// How the coefficient depends on the sliding speed.
+        friction: BallFriction,
+    },
 }
 
 impl BallLaw {
@@ -161,6 +176,9 @@ impl BallLaw {
                 })
             }
             BallLaw::FrictionalSpheres { e, mu } => frictional_spheres(a, b, n, e, mu, radius),
+            BallLaw::SpeedDependentFriction { e, friction } => {
+                speed_dependent_spheres(a, b, n, e, friction, radius)
+            }
         }
     }
 }
