@@ -5,7 +5,7 @@
 use billiards_physics::check::Tolerances;
 use billiards_physics::scene::Scene;
 use billiards_physics::soak::{run_scenario, scenario};
-use billiards_physics::{BallFriction, Model, Params, SpinModel};
+use billiards_physics::{BallFriction, CushionModel, Model, Params, SpinModel};
 
 fn spin_of(scene: &Scene) -> SpinModel {
     match scene.params.model {
@@ -75,4 +75,42 @@ fn speed_dependent_ball_friction_keeps_every_invariant() {
         ..m
     });
     assert!(ran > 50, "only {ran} spin scenes");
+}
+
+#[test]
+fn a_scene_file_chooses_the_mathavan_cushion() {
+    let text = r#"{ "rack": "nine_ball", "shots": [{ "ball": 0, "angle": 0.01, "speed": 3.0 }],
+        "params": { "model": { "kind": "spin",
+        "cushion": { "kind": "mathavan2010", "e": 0.98, "mu": 0.14 } } } }"#;
+    let scene = Scene::from_json(text).unwrap();
+    assert_eq!(spin_of(&scene).cushion, CushionModel::MATHAVAN_2010);
+    let result = scene.run().expect("runs");
+    assert!(result.error.is_none(), "{:?}", result.error);
+    assert!(
+        result
+            .events
+            .iter()
+            .any(|e| matches!(e.kind, billiards_physics::EventKind::Cushion { .. }))
+    );
+    let bad = text.replace("0.98", "1.5");
+    let err = Scene::from_json(&bad)
+        .unwrap()
+        .run()
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("cushion.e"), "{err}");
+}
+
+#[test]
+fn the_mathavan_cushion_keeps_every_invariant() {
+    let ran = soak_spin_scenes(150, |m| SpinModel {
+        cushion: match m.cushion {
+            CushionModel::Han2005 { e, mu } | CushionModel::Mathavan2010 { e, mu } => {
+                CushionModel::Mathavan2010 { e, mu }
+            }
+            CushionModel::Reflect { e } => CushionModel::Mathavan2010 { e, mu: 0.14 },
+        },
+        ..m
+    });
+    assert!(ran > 30, "only {ran} spin scenes");
 }

@@ -95,6 +95,17 @@ pub enum BallFrictionArg {
     SpeedDependent,
 }
 
+/// Cushion models of the spin model.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum CushionArg {
+    /// Han (2005): one impulse at the nose height, e = 0.85, mu = 0.2 (the default).
+    Han2005,
+    /// Mathavan, Jackson & Parkin (2010): the impact integrated, e = 0.98, mu = 0.14.
+    Mathavan2010,
+    /// Plain reflection, e = 0.85.
+    Reflect,
+}
+
 /// `simulate` options.
 #[derive(clap::Args, Debug)]
 pub struct SimulateArgs {
@@ -110,6 +121,9 @@ pub struct SimulateArgs {
     /// Ball–ball friction (spin model; overrides a scene file's).
     #[arg(long, value_enum)]
     pub ball_friction: Option<BallFrictionArg>,
+    /// Cushion model with its published constants (spin model; overrides a scene file's).
+    #[arg(long, value_enum)]
+    pub cushion: Option<CushionArg>,
     /// A shot of the cue ball, `ANGLE_DEG:SPEED[:SIDE:HEIGHT]`; repeat for several shots,
     /// each played once everything rests. SPEED in m/s: 0 or from 1e-10 to 100 (a hard break
     /// is 12); ANGLE_DEG any finite; SIDE and HEIGHT in ball radii, within the miscue limit.
@@ -337,18 +351,27 @@ pub(crate) fn setup(
 
 /// `params` with the model choices of the command line applied: they need the spin model.
 fn with_choices(params: Params, a: &SimulateArgs) -> Result<Params, String> {
-    let Some(friction) = a.ball_friction else {
+    if a.ball_friction.is_none() && a.cushion.is_none() {
         return Ok(params);
+    }
+    let Model::Spin(mut m) = params.model else {
+        return Err("--ball-friction and --cushion need the spin model (--model spin)".into());
     };
-    let Model::Spin(m) = params.model else {
-        return Err("--ball-friction needs the spin model (--model spin)".into());
-    };
-    let ball_friction = match friction {
-        BallFrictionArg::Constant => BallFriction::Constant,
-        BallFrictionArg::SpeedDependent => BallFriction::ALCIATORE,
-    };
+    if let Some(friction) = a.ball_friction {
+        m.ball_friction = match friction {
+            BallFrictionArg::Constant => BallFriction::Constant,
+            BallFrictionArg::SpeedDependent => BallFriction::ALCIATORE,
+        };
+    }
+    if let Some(cushion) = a.cushion {
+        m.cushion = match cushion {
+            CushionArg::Han2005 => CushionModel::default(),
+            CushionArg::Mathavan2010 => CushionModel::MATHAVAN_2010,
+            CushionArg::Reflect => CushionModel::Reflect { e: 0.85 },
+        };
+    }
     Ok(Params {
-        model: Model::Spin(SpinModel { ball_friction, ..m }),
+        model: Model::Spin(m),
         ..params
     })
 }

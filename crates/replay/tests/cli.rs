@@ -522,6 +522,8 @@ fn model_choices_reach_the_recording_and_need_the_spin_model() {
             "1:3",
             "--ball-friction",
             "speed-dependent",
+            "--cushion",
+            "mathavan2010",
             "--out",
         ])
         .arg(&file));
@@ -531,6 +533,7 @@ fn model_choices_reach_the_recording_and_need_the_spin_model() {
         panic!("spin model expected: {:?}", rec.params.model);
     };
     assert_eq!(m.ball_friction, BallFriction::ALCIATORE);
+    assert_eq!(m.cushion, CushionModel::MATHAVAN_2010);
     let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
     assert!(ok && stdout.contains("bit for bit"), "{stdout} {err}");
     let (ok, _, err) = run(bin().args([
@@ -540,6 +543,6 @@ fn model_choices_reach_the_recording_and_need_the_spin_model() {
         "--ball-friction",
         "speed-dependent",
     ]));
-    assert!(!ok && err.contains("needs the spin model"), "{err}");
+    assert!(!ok && err.contains("need the spin model"), "{err}");
     std::fs::remove_dir_all(dir).ok();
 }

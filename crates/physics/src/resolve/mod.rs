@@ -5,11 +5,13 @@
 mod ball_ball;
 mod ball_cushion;
 pub mod cue;
+pub mod mathavan_2010;
 mod resting;
 mod throw;
 
 pub use ball_ball::{equal_mass_restitution, frictional_spheres, resting_contact, unpress};
 pub use ball_cushion::{SETTLE_SPEED, han_2005, reflect, resting_reflect, settle};
+pub use mathavan_2010::{Mathavan2010, mathavan_2010};
 pub use resting::{
     FixedBody, InstantContacts, is_resting, keep_rolling, resting_on_fixed_body, resting_pair,
 };
@@ -56,6 +58,15 @@ impl Laws {
                         mu,
                         height: m.cushion_height,
                     },
+                    CushionModel::Mathavan2010 { e, mu } => {
+                        CushionLaw::Mathavan2010(Mathavan2010 {
+                            e,
+                            mu_cushion: mu,
+                            mu_table: m.mu_slide,
+                            // Set from the ball's radius in `respond`.
+                            height: m.cushion_height,
+                        })
+                    }
                 },
                 ball: match m.ball_friction {
                     BallFriction::Constant => BallLaw::FrictionalSpheres {
@@ -115,6 +126,8 @@ pub enum CushionLaw {
         /// Height of the cushion nose as a fraction of the ball's diameter.
         height: f64,
     },
+    /// [`mathavan_2010`]; its `height` is the nose height as a fraction of the diameter.
+    Mathavan2010(Mathavan2010),
 }
 
 impl CushionLaw {
@@ -126,6 +139,13 @@ impl CushionLaw {
             CushionLaw::Reflect { e } => reflect(v, n, e).map(|v| (v, w)),
             CushionLaw::Han2005 { e, mu, height } => {
                 han_2005(v, w, n, e, mu, radius, 2.0 * radius * height)
+            }
+            CushionLaw::Mathavan2010(m) => {
+                let m = Mathavan2010 {
+                    height: 2.0 * radius * m.height,
+                    ..m
+                };
+                mathavan_2010(v, w, n, &m, radius)
             }
         }
     }
