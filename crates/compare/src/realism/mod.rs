@@ -280,5 +280,30 @@ pub fn report() -> Result<Vec<String>, String> {
             .collect();
         out.push(format!("rolling 1 m/s, {}: {}", m.name(), cells.join("; ")));
     }
+    for (name, top, side) in [
+        ("draw k -1", -1.0, 0.0),
+        ("stun", 0.0, 0.0),
+        ("follow k 2", 2.0, 0.0),
+        ("rolling, reverse english (w_z = -v/R)", 1.0, -1.0),
+        ("rolling, running english (w_z = +v/R)", 1.0, 1.0),
+    ] {
+        let cells: Vec<String> = [CushionCurve::Han2005, CushionCurve::Mathavan2010]
+            .iter()
+            .flat_map(|&m| {
+                [20.0, 45.0, 70.0].map(|a| {
+                    let (_, b) = m.rebound(1.0, a, top, side);
+                    format!(
+                        "{} {a:.0} -> {b:.1}",
+                        if m == CushionCurve::Han2005 {
+                            "Han"
+                        } else {
+                            "Mathavan"
+                        }
+                    )
+                })
+            })
+            .collect();
+        out.push(format!("1 m/s, {name}: {}", cells.join("; ")));
+    }
     Ok(out)
 }

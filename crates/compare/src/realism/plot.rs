@@ -315,7 +315,7 @@ fn draw_cushion(path: &Path) -> Result<(), Box<dyn Error>> {
             &[(-1.0, 0.0), (0.0, 0.0), (1.0, 0.0), (2.0, 0.0)],
         ),
         (
-            "Rebound angle vs side spin (k v/R), rolling, 1 m/s",
+            "Rebound angle vs side spin (k v/R; k > 0 running), rolling, 1 m/s",
             &[(1.0, -1.0), (1.0, 0.0), (1.0, 1.0)],
         ),
     ];
