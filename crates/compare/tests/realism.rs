@@ -70,7 +70,7 @@ fn the_solvers_throw_follows_tp_a14_within_0_15_degrees() {
 fn the_plots_are_written() {
     let dir = std::env::temp_dir().join(format!("realism-{}", std::process::id()));
     realism::draw(&dir).unwrap();
-    for name in ["throw.svg", "cushion.svg"] {
+    for name in ["throw.svg", "cushion.svg", "squirt.svg"] {
         let text = std::fs::read_to_string(dir.join(name)).unwrap();
         assert!(
             text.starts_with("<svg") && text.contains("polyline"),
@@ -79,4 +79,16 @@ fn the_plots_are_written() {
         assert!(!text.to_lowercase().contains("nan"), "{name}");
     }
     std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn squirt_at_the_miscue_limit_spans_the_quoted_1_to_3_degrees() {
+    // docs/realism.md: the two end masses give 2.77 and 1.48 deg at half a radius of english.
+    let ball = billiards_physics::BallSpec::default().mass;
+    let at = |m: f64| billiards_physics::resolve::cue::squirt_angle(0.5, ball / m).to_degrees();
+    let (standard, low) = (at(realism::END_MASSES[0].1), at(realism::END_MASSES[1].1));
+    assert!(
+        (standard - 2.77).abs() < 0.01 && (low - 1.48).abs() < 0.01,
+        "{standard} {low}"
+    );
 }

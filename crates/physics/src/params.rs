@@ -162,6 +162,10 @@ pub struct SpinModel {
     pub cue_mass: f64,
     /// Largest tip offset from the ball's centre, as a fraction of its radius, before a miscue.
     pub miscue_limit: f64,
+    /// Effective end mass of the shaft, kg: side english then squirts the ball away from the
+    /// english (Alciatore TP A-31; a low-deflection shaft has a smaller one). `None` (the
+    /// default, and old files): no squirt, the ball leaves along the cue.
+    pub end_mass: Option<f64>,
 }
 
 impl Default for SpinModel {
@@ -179,6 +183,7 @@ impl Default for SpinModel {
             cushion_height: 0.635,
             cue_mass: 0.54,
             miscue_limit: 0.5,
+            end_mass: None,
         }
     }
 }
@@ -388,6 +393,9 @@ impl SpinModel {
             self.cue_mass > 0.0,
             "positive, kg",
         )?;
+        if let Some(m) = self.end_mass {
+            check("end_mass", m, m > 0.0, "positive, kg")?;
+        }
         let l = self.miscue_limit;
         check(
             "miscue_limit",

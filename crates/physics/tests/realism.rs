@@ -114,3 +114,24 @@ fn the_mathavan_cushion_keeps_every_invariant() {
     });
     assert!(ran > 30, "only {ran} spin scenes");
 }
+
+#[test]
+fn a_scene_file_sets_the_shafts_end_mass_and_old_files_have_no_squirt() {
+    let old = r#"{ "rack": "nine_ball", "params": { "model": { "kind": "spin" } } }"#;
+    assert_eq!(spin_of(&Scene::from_json(old).unwrap()).end_mass, None);
+    let text = r#"{ "rack": "nine_ball",
+        "shots": [{ "ball": 0, "angle": 0.0, "speed": 2.0, "tip": { "side": 0.4 } }],
+        "params": { "model": { "kind": "spin", "end_mass": 0.008 } } }"#;
+    let scene = Scene::from_json(text).unwrap();
+    assert_eq!(spin_of(&scene).end_mass, Some(0.008));
+    // The first event's cue ball heads left of the cue line (right english squirts left).
+    let sim = scene.build().unwrap();
+    assert!(sim.ball(0).velocity.y > 0.0, "{:?}", sim.ball(0).velocity);
+    let bad = text.replace("0.008", "-0.008");
+    let err = Scene::from_json(&bad)
+        .unwrap()
+        .run()
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("end_mass"), "{err}");
+}

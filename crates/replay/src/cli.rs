@@ -124,6 +124,10 @@ pub struct SimulateArgs {
     /// Cushion model with its published constants (spin model; overrides a scene file's).
     #[arg(long, value_enum)]
     pub cushion: Option<CushionArg>,
+    /// Effective end mass of the shaft in kg, for squirt (spin model; TP A-31): about 0.008
+    /// for a standard shaft, 0.004 for a low-deflection one. Without it, no squirt.
+    #[arg(long, value_parser = parse_end_mass)]
+    pub end_mass: Option<f64>,
     /// A shot of the cue ball, `ANGLE_DEG:SPEED[:SIDE:HEIGHT]`; repeat for several shots,
     /// each played once everything rests. SPEED in m/s: 0 or from 1e-10 to 100 (a hard break
     /// is 12); ANGLE_DEG any finite; SIDE and HEIGHT in ball radii, within the miscue limit.
@@ -185,6 +189,15 @@ pub struct ExportArgs {
     /// Export only this shot, counted from 1 as in the game's timeline; default the whole game.
     #[arg(long)]
     pub shot: Option<usize>,
+}
+
+fn parse_end_mass(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(kg) if kg.is_finite() && kg > 0.0 && kg < 1.0 => Ok(kg),
+        _ => Err(format!(
+            "end mass {s:?}: a positive mass in kg below 1 (e.g. 0.008)"
+        )),
+    }
 }
 
 fn parse_shot(s: &str) -> Result<Shot, String> {
@@ -351,12 +364,17 @@ pub(crate) fn setup(
 
 /// `params` with the model choices of the command line applied: they need the spin model.
 fn with_choices(params: Params, a: &SimulateArgs) -> Result<Params, String> {
-    if a.ball_friction.is_none() && a.cushion.is_none() {
+    if a.ball_friction.is_none() && a.cushion.is_none() && a.end_mass.is_none() {
         return Ok(params);
     }
     let Model::Spin(mut m) = params.model else {
-        return Err("--ball-friction and --cushion need the spin model (--model spin)".into());
+        return Err(
+            "--ball-friction, --cushion and --end-mass need the spin model (--model spin)".into(),
+        );
     };
+    if let Some(kg) = a.end_mass {
+        m.end_mass = Some(kg);
+    }
     if let Some(friction) = a.ball_friction {
         m.ball_friction = match friction {
             BallFrictionArg::Constant => BallFriction::Constant,

@@ -524,6 +524,8 @@ fn model_choices_reach_the_recording_and_need_the_spin_model() {
             "speed-dependent",
             "--cushion",
             "mathavan2010",
+            "--end-mass",
+            "0.004",
             "--out",
         ])
         .arg(&file));
@@ -534,6 +536,9 @@ fn model_choices_reach_the_recording_and_need_the_spin_model() {
     };
     assert_eq!(m.ball_friction, BallFriction::ALCIATORE);
     assert_eq!(m.cushion, CushionModel::MATHAVAN_2010);
+    assert_eq!(m.end_mass, Some(0.004));
+    let (ok, _, err) = run(bin().args(["simulate", "--end-mass", "0"]));
+    assert!(!ok && err.contains("end mass"), "{err}");
     let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
     assert!(ok && stdout.contains("bit for bit"), "{stdout} {err}");
     let (ok, _, err) = run(bin().args([

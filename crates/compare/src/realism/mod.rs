@@ -9,6 +9,15 @@ pub use plot::draw;
 use billiards_physics::resolve::{Mathavan2010, han_2005, mathavan_2010, reflect};
 use billiards_physics::*;
 
+/// Two shaft end masses for the squirt curves, kg: a standard maple shaft and a
+/// low-deflection one (illustrative: about 3 and 1.5 degrees at half a radius of english, the
+/// ends of the 1-3 degree range the issue quotes from Dr. Dave; no measured end masses were in
+/// reach).
+pub const END_MASSES: [(&str, f64); 2] = [
+    ("standard shaft, 8 g", 0.008),
+    ("low-deflection, 4 g", 0.004),
+];
+
 /// The cue ball's spin at contact.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Spin {
@@ -279,6 +288,15 @@ pub fn report() -> Result<Vec<String>, String> {
             })
             .collect();
         out.push(format!("rolling 1 m/s, {}: {}", m.name(), cells.join("; ")));
+    }
+    for &(name, m) in &END_MASSES {
+        let ratio = BallSpec::default().mass / m;
+        let at = |b: f64| billiards_physics::resolve::cue::squirt_angle(b, ratio).to_degrees();
+        out.push(format!(
+            "squirt, {name}: {:.2} deg at 0.25 R, {:.2} deg at 0.5 R (the miscue limit)",
+            at(0.25),
+            at(0.5)
+        ));
     }
     for (name, top, side) in [
         ("draw k -1", -1.0, 0.0),

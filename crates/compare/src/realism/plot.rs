@@ -1,4 +1,4 @@
-//! The realism plots, SVG only: `throw.svg` and `cushion.svg`.
+//! The realism plots, SVG only: `throw.svg`, `cushion.svg` and `squirt.svg`.
 
 use super::{CushionCurve, Spin, data, solver_throw, tp_a14_throw};
 use billiards_physics::{BallFriction, SpinModel};
@@ -108,11 +108,53 @@ fn throw_curve(
     })
 }
 
-/// Draws `throw.svg` and `cushion.svg` into `out`.
+/// Draws `throw.svg`, `cushion.svg` and `squirt.svg` into `out`.
 pub fn draw(out: &Path) -> Result<(), Box<dyn Error>> {
     std::fs::create_dir_all(out)?;
     draw_throw(&out.join("throw.svg"))?;
     draw_cushion(&out.join("cushion.svg"))?;
+    draw_squirt(&out.join("squirt.svg"))?;
+    Ok(())
+}
+
+fn draw_squirt(path: &Path) -> Result<(), Box<dyn Error>> {
+    let root = SVGBackend::new(path, (800, 550)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let ball = billiards_physics::BallSpec::default().mass;
+    let curves = super::END_MASSES
+        .iter()
+        .enumerate()
+        .map(|(k, &(name, m))| Curve {
+            label: format!("TP A-31, {name}"),
+            colour: COLOURS[k],
+            width: 3,
+            points: range(0.0, 0.6, 60)
+                .map(|b| {
+                    (
+                        b,
+                        billiards_physics::resolve::cue::squirt_angle(b, ball / m).to_degrees(),
+                    )
+                })
+                .collect(),
+        })
+        .chain([1.0, 3.0].map(|deg| Curve {
+            label: format!("issue 24: about 1-3 deg at full english ({deg} deg)"),
+            colour: COLOURS[5],
+            width: 1,
+            points: vec![(0.45, deg), (0.6, deg)],
+        }))
+        .collect();
+    draw_panel(
+        &root,
+        Panel {
+            title: "Squirt against side offset (level cue)",
+            x: ("tip offset from centre (ball radii)", 0.0, 0.6),
+            y: ("squirt angle (deg)", 0.0, 4.0),
+            curves,
+            marks: vec![],
+        },
+    )?;
+    root.present()?;
     Ok(())
 }
 
