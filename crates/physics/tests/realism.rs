@@ -50,9 +50,14 @@ fn negative_friction_constants_are_named_errors() {
     assert!(err.contains("unknown variant"), "{err}");
 }
 
-/// The spin scenes among soak seeds `0..n`, with `change` applied to their model, all pass
-/// the monitor (no overlap, no energy gain, rest within the cap).
+/// The spin scenes among soak seeds `0..n` (`REALISM_SEEDS` overrides `n` for a long run),
+/// with `change` applied to their model, all pass the monitor (no overlap, no energy gain,
+/// rest within the cap).
 fn soak_spin_scenes(n: u64, change: impl Fn(SpinModel) -> SpinModel) -> usize {
+    let n = std::env::var("REALISM_SEEDS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(n);
     let mut ran = 0;
     for seed in 0..n {
         let mut s = scenario(seed);
