@@ -62,8 +62,8 @@ pub use history::History;
 pub use limits::LimitError;
 pub use math::{Vec2, Vec3};
 pub use params::{
-    BallSpec, CushionModel, G, HertzContact, Model, PaperModel, ParamError, Params, Prediction,
-    Randomization, SlipFriction, SpinModel,
+    BallFriction, BallSpec, CushionModel, G, HertzContact, Model, PaperModel, ParamError, Params,
+    Prediction, Randomization, SpinModel,
 };
 pub use racks::Rack;
 pub use resolve::cue::{Miscue, TipOffset};

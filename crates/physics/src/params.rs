@@ -73,11 +73,66 @@ pub enum CushionModel {
         /// Ball–cushion friction coefficient.
         mu: f64,
     },
+    /// Mathavan, Jackson & Parkin (2010), Proc. IMechE C 224: the impact's equations of
+    /// motion integrated over the impulse, with friction at the nose and at the cloth (the
+    /// cloth's is `mu_slide`) and an energetic restitution. Their fit: `e = 0.98`,
+    /// `mu = 0.14`, for normal speeds below about 2.5 m/s.
+    Mathavan2010 {
+        /// Energetic restitution at the nose.
+        e: f64,
+        /// Ball–cushion sliding friction.
+        mu: f64,
+    },
+}
+
+impl CushionModel {
+    /// Mathavan et al.'s fitted constants (2010, abstract and section 5).
+    pub const MATHAVAN_2010: Self = CushionModel::Mathavan2010 { e: 0.98, mu: 0.14 };
 }
 
 impl Default for CushionModel {
     fn default() -> Self {
         CushionModel::Han2005 { e: 0.85, mu: 0.2 }
+    }
+}
+
+/// How the ball–ball friction coefficient is found at each collision.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum BallFriction {
+    /// A constant coefficient, [`SpinModel::mu_ball`].
+    #[default]
+    Constant,
+    /// `mu = a + b exp(-c v)`, with `v` the sliding speed of the contact points at the start
+    /// of the collision (m/s): Alciatore's fit to Marlow's measurements (TP A-14 and TP A-28,
+    /// "Throw plots for all types of shots", p. 1). Slow slip grips (0.118 at rest), fast slip
+    /// slides (0.010 far above 3 m/s), so slow cuts throw more. `mu_ball` is then unused.
+    SpeedDependent {
+        /// Coefficient far above the sliding speed 1/c.
+        a: f64,
+        /// Extra coefficient at zero sliding speed.
+        b: f64,
+        /// Decay rate, s/m.
+        c: f64,
+    },
+}
+
+impl BallFriction {
+    /// Alciatore's fitted constants (TP A-28 p. 1): a = 9.951e-3, b = 0.108, c = 1.088 s/m.
+    pub const ALCIATORE: Self = BallFriction::SpeedDependent {
+        a: 9.951e-3,
+        b: 0.108,
+        c: 1.088,
+    };
+
+    /// The coefficient for a contact sliding at `slip_speed` (m/s), with `constant` the
+    /// model's `mu_ball`.
+    #[inline]
+    pub fn mu(&self, constant: f64, slip_speed: f64) -> f64 {
+        match *self {
+            BallFriction::Constant => constant,
+            BallFriction::SpeedDependent { a, b, c } => a + b * (-c * slip_speed).exp(),
+        }
     }
 }
 
@@ -95,15 +150,10 @@ pub struct SpinModel {
     pub mu_spin: f64,
     /// Ball–ball restitution.
     pub e_ball: f64,
-    /// Ball–ball friction (cut- and spin-induced throw) when `mu_ball_slip` is `None`.
+    /// Ball–ball friction (cut- and spin-induced throw), when `ball_friction` is constant.
     pub mu_ball: f64,
-    /// Ball–ball friction that falls with the slip speed of the contact points
-    /// ([`SlipFriction`]); it replaces `mu_ball`. `None` (the default, and a file that omits
-    /// it) uses the constant `mu_ball`. Not the default yet: at break speed it moves the
-    /// break statistics by less than their spread (crates/rules/README.md), and it changes
-    /// every cut shot's throw, which the computer player's tests were measured with.
-    #[serde(default)]
-    pub mu_ball_slip: Option<SlipFriction>,
+    /// Constant or speed-dependent ball–ball friction (absent from old files: constant).
+    pub ball_friction: BallFriction,
     /// The cushion model.
     pub cushion: CushionModel,
     /// Height of the cushion nose above the cloth as a fraction of the ball's diameter.
@@ -112,42 +162,16 @@ pub struct SpinModel {
     pub cue_mass: f64,
     /// Largest tip offset from the ball's centre, as a fraction of its radius, before a miscue.
     pub miscue_limit: f64,
+    /// Effective end mass of the shaft, kg: side english then squirts the ball away from the
+    /// english (Alciatore TP A-31; a low-deflection shaft has a smaller one). `None` (the
+    /// default, and old files): no squirt, the ball leaves along the cue.
+    pub end_mass: Option<f64>,
     /// Compliant contact of balls in clusters: a ball–ball impact reaching a ball with
     /// neighbours closer than the distance one contact closes is resolved over the whole
     /// cluster with Hertz forces ([`crate::resolve::hertz`]). `None` (and a file that omits
     /// it: recordings made before it existed) resolves every contact pair by pair.
     #[serde(default)]
     pub cluster: Option<HertzContact>,
-}
-
-/// Ball–ball friction as a function of the slip speed `v` (m/s) of the contact points:
-/// `mu = a + b exp(-c v)`. Measured throw shows the friction between pool balls falling from
-/// about 0.11 for slow slips to 0.01 for fast ones; [`SlipFriction::ALCIATORE`] is the fit to
-/// those measurements (Marlow's data) in Alciatore's TP A-14 "Ball-ball collision throw"
-/// (pooltool's `AlciatoreBallBallFriction`): 0.05 at 0.9 m/s, 0.014 at 3 m/s, 0.010 at 10.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct SlipFriction {
-    /// Friction at high slip speeds.
-    pub a: f64,
-    /// Extra friction at zero slip.
-    pub b: f64,
-    /// Decay rate of the extra friction, s/m.
-    pub c: f64,
-}
-
-impl SlipFriction {
-    /// Alciatore's fit (TP A-14): `a = 9.951e-3`, `b = 0.108`, `c = 1.088 s/m`.
-    pub const ALCIATORE: Self = Self {
-        a: 9.951e-3,
-        b: 0.108,
-        c: 1.088,
-    };
-
-    /// The friction coefficient at slip speed `v` (m/s).
-    #[inline]
-    pub fn mu(&self, v: f64) -> f64 {
-        self.a + self.b * (-self.c * v).exp()
-    }
 }
 
 /// The elastic constants of the balls, for Hertz contact (Landau & Lifshitz, *Theory of
@@ -186,11 +210,12 @@ impl Default for SpinModel {
             mu_spin: 0.044,
             e_ball: 0.95,
             mu_ball: 0.05,
-            mu_ball_slip: None,
+            ball_friction: BallFriction::Constant,
             cushion: CushionModel::default(),
             cushion_height: 0.635,
             cue_mass: 0.54,
             miscue_limit: 0.5,
+            end_mass: None,
             cluster: Some(HertzContact::default()),
         }
     }
@@ -383,10 +408,10 @@ impl SpinModel {
         check("mu_spin", self.mu_spin, self.mu_spin >= 0.0, "non-negative")?;
         check("e_ball", self.e_ball, unit(self.e_ball), "in [0, 1]")?;
         check("mu_ball", self.mu_ball, self.mu_ball >= 0.0, "non-negative")?;
-        if let Some(f) = self.mu_ball_slip {
-            check("mu_ball_slip.a", f.a, f.a >= 0.0, "non-negative")?;
-            check("mu_ball_slip.b", f.b, f.b >= 0.0, "non-negative")?;
-            check("mu_ball_slip.c", f.c, f.c >= 0.0, "non-negative")?;
+        if let BallFriction::SpeedDependent { a, b, c } = self.ball_friction {
+            check("ball_friction.a", a, a >= 0.0, "non-negative")?;
+            check("ball_friction.b", b, b >= 0.0, "non-negative")?;
+            check("ball_friction.c", c, c >= 0.0, "non-negative, s/m")?;
         }
         let h = self.cushion_height;
         check(
@@ -401,6 +426,9 @@ impl SpinModel {
             self.cue_mass > 0.0,
             "positive, kg",
         )?;
+        if let Some(m) = self.end_mass {
+            check("end_mass", m, m > 0.0, "positive, kg")?;
+        }
         let l = self.miscue_limit;
         check(
             "miscue_limit",
@@ -419,7 +447,7 @@ impl SpinModel {
         }
         match self.cushion {
             CushionModel::Reflect { e } => check("cushion.e", e, unit(e), "in [0, 1]"),
-            CushionModel::Han2005 { e, mu } => {
+            CushionModel::Han2005 { e, mu } | CushionModel::Mathavan2010 { e, mu } => {
                 check("cushion.e", e, unit(e), "in [0, 1]")?;
                 check("cushion.mu", mu, mu >= 0.0, "non-negative")
             }
@@ -433,24 +461,29 @@ mod tests {
 
     #[test]
     fn alciatore_ball_friction_falls_with_slip_speed_as_tp_a14_fits_it() {
-        let f = SlipFriction::ALCIATORE;
-        assert!((f.mu(0.0) - 0.117_951).abs() < 1e-6);
-        assert!((f.mu(0.9) - 0.0505).abs() < 5e-4, "{}", f.mu(0.9));
-        assert!((f.mu(3.0) - 0.0141).abs() < 5e-4, "{}", f.mu(3.0));
-        assert!((f.mu(10.0) - 0.00995).abs() < 1e-4, "{}", f.mu(10.0));
+        let f = BallFriction::ALCIATORE;
+        assert!((f.mu(0.0, 0.0) - 0.117_951).abs() < 1e-6);
+        assert!((f.mu(0.0, 0.9) - 0.0505).abs() < 5e-4, "{}", f.mu(0.0, 0.9));
+        assert!((f.mu(0.0, 3.0) - 0.0141).abs() < 5e-4, "{}", f.mu(0.0, 3.0));
+        assert!(
+            (f.mu(0.0, 10.0) - 0.00995).abs() < 1e-4,
+            "{}",
+            f.mu(0.0, 10.0)
+        );
     }
 
     #[test]
-    fn a_spin_model_without_slip_friction_keeps_the_constant_mu_ball() {
+    fn a_spin_model_without_ball_friction_keeps_the_constant_mu_ball() {
         // Files written before the field existed read as the constant law.
         let m: SpinModel = serde_json::from_str(r#"{"mu_ball": 0.06}"#).unwrap();
-        assert_eq!((m.mu_ball, m.mu_ball_slip), (0.06, None));
-        assert_eq!(SpinModel::default().mu_ball_slip, None);
+        assert_eq!((m.mu_ball, m.ball_friction), (0.06, BallFriction::Constant));
+        assert_eq!(SpinModel::default().ball_friction, BallFriction::Constant);
         let bad = SpinModel {
-            mu_ball_slip: Some(SlipFriction {
+            ball_friction: BallFriction::SpeedDependent {
                 a: -1.0,
-                ..SlipFriction::ALCIATORE
-            }),
+                b: 0.108,
+                c: 1.088,
+            },
             ..SpinModel::default()
         };
         assert!(bad.validate().is_err());

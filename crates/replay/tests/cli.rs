@@ -540,3 +540,46 @@ fn simulate_on_a_nine_foot_table_saves_the_table_and_a_bad_table_is_refused() {
     );
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn model_choices_reach_the_recording_and_need_the_spin_model() {
+    let dir = temp("choices");
+    let file = dir.join("throw.json");
+    let (ok, _, err) = run(bin()
+        .args([
+            "simulate",
+            "--rack",
+            "nine-ball",
+            "--shot",
+            "1:3",
+            "--ball-friction",
+            "speed-dependent",
+            "--cushion",
+            "mathavan2010",
+            "--end-mass",
+            "0.004",
+            "--out",
+        ])
+        .arg(&file));
+    assert!(ok, "{err}");
+    let rec = Recording::load(&file).unwrap();
+    let Model::Spin(m) = rec.params.model else {
+        panic!("spin model expected: {:?}", rec.params.model);
+    };
+    assert_eq!(m.ball_friction, BallFriction::ALCIATORE);
+    assert_eq!(m.cushion, CushionModel::MATHAVAN_2010);
+    assert_eq!(m.end_mass, Some(0.004));
+    let (ok, _, err) = run(bin().args(["simulate", "--end-mass", "0"]));
+    assert!(!ok && err.contains("end mass"), "{err}");
+    let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
+    assert!(ok && stdout.contains("bit for bit"), "{stdout} {err}");
+    let (ok, _, err) = run(bin().args([
+        "simulate",
+        "--model",
+        "paper",
+        "--ball-friction",
+        "speed-dependent",
+    ]));
+    assert!(!ok && err.contains("need the spin model"), "{err}");
+    std::fs::remove_dir_all(dir).ok();
+}

@@ -31,7 +31,7 @@
 //! game's defaults (spin model, Han 2005 cushion, 15 mm jaws, cluster impacts).
 
 use billiards_physics::{
-    BallSetup, CushionModel, Model, Params, Shot, Simulation, SlipFriction, SpinModel, Table,
+    BallFriction, BallSetup, CushionModel, Model, Params, Shot, Simulation, SpinModel, Table,
     TableChoice, TipOffset, Vec2, table::INCH,
 };
 use billiards_rules::{Call, Foul, Game, GameState, RackStyle, Seat, summarise};
@@ -224,18 +224,22 @@ fn params(pairwise: bool, set: &[(String, f64)]) -> Params {
             ("e_ball", _) => model.e_ball = v,
             ("mu_ball", _) => {
                 model.mu_ball = v;
-                model.mu_ball_slip = None;
+                model.ball_friction = BallFriction::Constant;
             }
             // 0: the constant mu_ball; otherwise Alciatore's fit scaled by v.
             ("mu_ball_slip", _) => {
-                model.mu_ball_slip = (v > 0.0).then(|| {
-                    let f = SlipFriction::ALCIATORE;
-                    SlipFriction {
-                        a: f.a * v,
-                        b: f.b * v,
-                        c: f.c,
+                model.ball_friction = if v > 0.0 {
+                    let BallFriction::SpeedDependent { a, b, c } = BallFriction::ALCIATORE else {
+                        unreachable!("Alciatore's fit is speed-dependent")
+                    };
+                    BallFriction::SpeedDependent {
+                        a: a * v,
+                        b: b * v,
+                        c,
                     }
-                })
+                } else {
+                    BallFriction::Constant
+                }
             }
             ("e_cushion", CushionModel::Han2005 { e, .. } | CushionModel::Reflect { e }) => *e = v,
             ("mu_cushion", CushionModel::Han2005 { mu, .. }) => *mu = v,

@@ -34,7 +34,7 @@ pub fn frictional_spheres(
     b: &BallState,
     n: Vec2,
     e: f64,
-    mu: super::BallFriction,
+    mu: super::PairFriction,
     radius: f64,
 ) -> Option<(BallState, BallState)> {
     let approach = (a.velocity - b.velocity).dot(n);
@@ -91,7 +91,7 @@ pub fn friction_impulse(
     b: &BallState,
     n: Vec2,
     jn: f64,
-    mu: super::BallFriction,
+    mu: super::PairFriction,
     radius: f64,
 ) -> (BallState, BallState) {
     let n3 = n.extend();

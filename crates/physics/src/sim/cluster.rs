@@ -126,7 +126,7 @@ impl Simulation {
         let t = self.time;
         let r = self.params.ball.radius;
         let hertz = Hertz::new(&material, &self.params.ball, m.e_ball);
-        let friction = resolve::BallFriction::of(&m);
+        let friction = resolve::PairFriction::of(&m);
         let mut states: Vec<BallState> = cluster
             .members
             .iter()
