@@ -1,14 +1,16 @@
 //! A whole rack between two players, headless: what `billiards-cli tournament` runs on every
 //! core, and what the tests and examples use to watch the players at work.
 //!
-//! The table is the game's (WPA 8-ft, jaws of 15 mm, the spin model); each rack comes from
-//! the game's seed ([`billiards_rules::Game::rack`]); every shot is the player's decision
+//! The table is the game's (WPA 8-ft, jaws of 15 mm, the spin model) or another [`Venue`];
+//! each rack comes from the game's seed ([`billiards_rules::Game::rack_styled`]); every shot is the player's decision
 //! struck with its execution noise, run to rest without a history, summarised and judged.
 
 use crate::noise::stream;
 use crate::{Decision, Player};
-use billiards_physics::{Model, Params, Simulation, SpinModel, Table, Vec2, Vec3};
-use billiards_rules::{CUE, Game, GameState, Outcome, Seat, ShotSummary, object_ball_spot};
+use billiards_physics::{Model, Params, Simulation, SpinModel, Table, TableChoice, Vec2, Vec3};
+use billiards_rules::{
+    CUE, Game, GameState, Outcome, RackStyle, Seat, ShotSummary, object_ball_spot,
+};
 use rand::Rng;
 use serde::{Deserialize, Serialize};
 use std::time::Instant;
@@ -58,28 +60,54 @@ pub struct RackRecord {
     pub players: [Tally; 2],
 }
 
+/// Where racks are played: the table and how its racks are racked.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Venue {
+    /// The table's size and pockets.
+    pub table: TableChoice,
+    /// Template (frozen) or triangle (small seeded gaps).
+    pub rack: RackStyle,
+}
+
 /// The solver's table and parameters for the game: the game's defaults.
 pub fn table_and_params() -> (Table, Params) {
+    table_and_params_on(TableChoice::default())
+}
+
+/// [`table_and_params`] on another table (15 mm jaws, the spin model).
+pub fn table_and_params_on(table: TableChoice) -> (Table, Params) {
     let params = Params {
         model: Model::Spin(SpinModel::default()),
         ..Params::default()
     };
-    (Table::wpa_8ft().with_jaws(0.015), params)
+    (table.table().with_jaws(0.015), params)
 }
 
-/// A fresh rack of `game` from `seed`, without a history.
-fn rack(game: Game, seed: u64) -> Result<Simulation, String> {
-    let (table, params) = table_and_params();
-    let balls = game.rack(&table, &params.ball, seed);
+/// A fresh rack of `game` from `seed` at `venue`, without a history.
+fn rack(venue: Venue, game: Game, seed: u64) -> Result<Simulation, String> {
+    let (table, params) = table_and_params_on(venue.table);
+    let balls = game.rack_styled(&table, &params.ball, seed, venue.rack);
     let mut sim = Simulation::new(table, params, &balls).map_err(|e| e.to_string())?;
     sim.set_record_history(false);
     Ok(sim)
 }
 
 /// Plays one rack of `game` between `players` (`players[0]` is seat A), `breaker` breaking,
-/// every random draw from `seed`. Re-racks (8-ball break options) start a new rack in the
-/// same record.
+/// every random draw from `seed`, on the game's default table. Re-racks (8-ball break
+/// options) start a new rack in the same record.
 pub fn play_rack(
+    game: Game,
+    players: [Player; 2],
+    index: u64,
+    seed: u64,
+    breaker: usize,
+) -> Result<RackRecord, String> {
+    play_rack_at(Venue::default(), game, players, index, seed, breaker)
+}
+
+/// [`play_rack`] at `venue`.
+pub fn play_rack_at(
+    venue: Venue,
     game: Game,
     players: [Player; 2],
     index: u64,
@@ -88,7 +116,7 @@ pub fn play_rack(
 ) -> Result<RackRecord, String> {
     let seat = |i: usize| if i == 0 { Seat::A } else { Seat::B };
     let mut racks = 0u64;
-    let mut sim = rack(game, stream(seed, 0, racks).random())?;
+    let mut sim = rack(venue, game, stream(seed, 0, racks).random())?;
     let mut state = GameState::new(game, seat(breaker));
     let mut tally: [Tally; 2] = Default::default();
     let (mut shots, mut last, mut opponent_shot) = (0, None, false);
@@ -97,7 +125,7 @@ pub fn play_rack(
         let next = state.next.clone();
         if next.rerack {
             racks += 1;
-            sim = rack(game, stream(seed, 0, racks).random())?;
+            sim = rack(venue, game, stream(seed, 0, racks).random())?;
             state.next.rerack = false;
             breaker_now = next.shooter;
             opponent_shot = false;

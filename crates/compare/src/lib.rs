@@ -12,6 +12,7 @@ pub mod fixed_step;
 pub mod measure;
 pub mod plot;
 pub mod rapier;
+pub mod realism;
 pub mod report;
 pub mod scene;
 pub mod trace;

@@ -1,15 +1,20 @@
-//! The benchmark program: `billiards-compare [--quick] [--out DIR]`.
+//! The benchmark program: `billiards-compare [--quick] [--out DIR]`; and
+//! `billiards-compare realism [--out DIR]`, the models against measurements (issue 24:
+//! `throw.svg`, `cushion.svg`, `squirt.svg` and the numbers of `docs/realism.md`, default `docs/realism`).
 //!
 //! Runs every solver on every scene, prints one line per configuration, writes
 //! `results.csv` and `runtime_vs_error.svg` into `DIR` (default `target/compare`), and exits
 //! non-zero if the exact solver's error anywhere exceeds 1e-9 m.
 
-use billiards_compare::{bench, plot, report};
+use billiards_compare::{bench, plot, realism as models, report};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
 fn main() -> ExitCode {
+    if std::env::args().nth(1).as_deref() == Some("realism") {
+        return realism(std::env::args().skip(2).collect());
+    }
     let mut quick = false;
     let mut out = PathBuf::from("target/compare");
     let mut args = std::env::args().skip(1);
@@ -70,4 +75,31 @@ fn write(report: &bench::Report, out: &std::path::Path) -> Result<(), Box<dyn st
 fn usage(msg: &str) -> ExitCode {
     eprintln!("{msg}\nusage: billiards-compare [--quick] [--out DIR]");
     ExitCode::from(2)
+}
+
+fn realism(args: Vec<String>) -> ExitCode {
+    let out = match args.as_slice() {
+        [] => PathBuf::from("docs/realism"),
+        [flag, dir] if flag == "--out" => PathBuf::from(dir),
+        _ => return usage("usage: billiards-compare realism [--out DIR]"),
+    };
+    let lines = match models::report() {
+        Ok(l) => l,
+        Err(e) => {
+            eprintln!("realism: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    for line in &lines {
+        println!("{line}");
+    }
+    if let Err(e) = models::draw(&out) {
+        eprintln!("cannot write the plots to {}: {e}", out.display());
+        return ExitCode::FAILURE;
+    }
+    println!(
+        "wrote {0}/throw.svg, {0}/cushion.svg and {0}/squirt.svg",
+        out.display()
+    );
+    ExitCode::SUCCESS
 }

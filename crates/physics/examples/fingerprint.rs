@@ -4,7 +4,16 @@
 //!
 //! ```sh
 //! cargo run --release -p billiards-physics --example fingerprint -- 2000 0   # N FIRST
+//! cargo run --release -p billiards-physics --example fingerprint -- 2000 0 --pairwise
+//! cargo run --release -p billiards-physics --example fingerprint -- 2000 0 --no-near
 //! ```
+//!
+//! `--pairwise` turns the cluster impacts off (`SpinModel::cluster = None`: every contact
+//! pair by pair, the solver before cluster impacts existed). `--no-near` fingerprints only
+//! the scenes that never have a contact within the cluster reach of a third ball (found on
+//! their pairwise run, conservatively: at every event instant, any touching pair approaching
+//! faster than `CLUSTER_MIN_SPEED` with a third ball within its reach), twice: pairwise and
+//! with cluster impacts; the two hashes are equal when those scenes keep every event.
 
 use billiards_physics::soak::scenario;
 use billiards_physics::*;
@@ -40,35 +49,163 @@ impl Fnv {
     }
 }
 
+/// `params` with the cluster impacts off.
+fn pairwise(params: Params) -> Params {
+    match params.model {
+        Model::Spin(m) => Params {
+            model: Model::Spin(SpinModel { cluster: None, ..m }),
+            ..params
+        },
+        Model::Paper(_) => params,
+    }
+}
+
+/// Runs soak scene `seed` under `params` (its own, or changed) and returns the simulation;
+/// with `near` set, reports (conservatively) whether any contact had a third ball within its
+/// cluster reach.
+fn run(seed: u64, params: impl Fn(Params) -> Params, near: Option<&mut bool>) -> Simulation {
+    let s = scenario(seed);
+    let mut sim = Simulation::new(s.table, params(s.params), &s.balls).expect("a valid scene");
+    let mut found = false;
+    for shot in &s.shots {
+        let Some(ball) = (0..sim.ball_count()).find(|&i| sim.ball(i).motion.on_table()) else {
+            break;
+        };
+        sim.strike(ball, *shot).expect("a valid shot");
+        // Errors (an event cap) are part of the result: the events so far still count.
+        let _ = match (s.duration, near.is_some()) {
+            (Some(d), false) => sim.advance_to(sim.time() + d).map(|_| ()),
+            (None, false) => sim.run_to_rest().map(|_| ()),
+            (d, true) => {
+                let end = d.map_or(f64::INFINITY, |d| sim.time() + d);
+                let mut count = 0;
+                while let Some(t) = sim.next_event_time().filter(|&t| t <= end) {
+                    found |= near_contact(&sim, &s.params, t);
+                    count += 1;
+                    if count > sim.params().max_events || sim.step_event().is_none() {
+                        break;
+                    }
+                }
+                // The clock ends where the scene's own run leaves it.
+                if end.is_finite() && sim.time() < end {
+                    let _ = sim.advance_to(end);
+                }
+                Ok::<(), SimError>(())
+            }
+        };
+    }
+    if let Some(near) = near {
+        *near = found;
+    }
+    sim
+}
+
+/// Whether at time `t` some touching pair approaches faster than `CLUSTER_MIN_SPEED` with a
+/// third ball within its cluster reach (the cluster model's own constants, in `params`).
+fn near_contact(sim: &Simulation, params: &Params, t: f64) -> bool {
+    let Model::Spin(SpinModel {
+        cluster: Some(material),
+        ..
+    }) = params.model
+    else {
+        return false;
+    };
+    let r2 = 2.0 * params.ball.radius;
+    let hertz = resolve::hertz::Hertz::elastic(&material, &params.ball);
+    let states: Vec<Option<BallState>> = (0..sim.ball_count())
+        .map(|i| {
+            let s = sim.segment(i).state_at(t);
+            s.motion.on_table().then_some(s)
+        })
+        .collect();
+    for (a, sa) in states.iter().enumerate() {
+        let Some(sa) = sa else { continue };
+        for (b, sb) in states.iter().enumerate().skip(a + 1) {
+            let Some(sb) = sb else { continue };
+            let d = sb.position - sa.position;
+            let approach = -(sb.velocity - sa.velocity).dot(d.normalized().unwrap_or(d));
+            if (d.length() - r2).abs() > 1e-9
+                || approach.is_nan()
+                || approach <= sim::CLUSTER_MIN_SPEED
+            {
+                continue;
+            }
+            let reach = hertz.reach(approach);
+            let third = states.iter().enumerate().any(|(c, sc)| {
+                sc.is_some_and(|sc| {
+                    c != a
+                        && c != b
+                        && ((sc.position - sa.position).length() - r2 < reach
+                            || (sc.position - sb.position).length() - r2 < reach)
+                })
+            });
+            if third {
+                return true;
+            }
+        }
+    }
+    false
+}
+
 fn main() {
+    let flags: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| a.starts_with("--"))
+        .collect();
     let args: Vec<u64> = std::env::args()
         .skip(1)
-        .map(|a| a.parse().expect("usage: fingerprint N FIRST"))
+        .filter(|a| !a.starts_with("--"))
+        .map(|a| {
+            a.parse()
+                .expect("usage: fingerprint N FIRST [--pairwise | --no-near]")
+        })
         .collect();
     let (n, first) = (
         args.first().copied().unwrap_or(500),
         args.get(1).copied().unwrap_or(0),
     );
-    let mut h = Fnv(0xcbf2_9ce4_8422_2325);
-    let mut events = 0usize;
-    for seed in first..first + n {
-        let s = scenario(seed);
-        let mut sim = Simulation::new(s.table, s.params, &s.balls).expect("a valid scene");
-        for shot in &s.shots {
-            let Some(ball) = (0..sim.ball_count()).find(|&i| sim.ball(i).motion.on_table()) else {
-                break;
-            };
-            sim.strike(ball, *shot).expect("a valid shot");
-            // Errors (an event cap) are part of the result: the events so far still count.
-            let _ = match s.duration {
-                Some(d) => sim.advance_to(sim.time() + d).map(|_| ()),
-                None => sim.run_to_rest().map(|_| ()),
-            };
+    let flag = |f: &str| flags.iter().any(|a| a == f);
+    if flag("--no-near") {
+        let (mut hp, mut hc) = (Fnv(0xcbf2_9ce4_8422_2325), Fnv(0xcbf2_9ce4_8422_2325));
+        let (mut scenes, mut events, mut impacts) = (0, 0, 0);
+        for seed in first..first + n {
+            let mut near = false;
+            run(seed, pairwise, Some(&mut near));
+            if near {
+                continue;
+            }
+            let p = run(seed, pairwise, None);
+            let c = run(seed, |p| p, None);
+            p.history().events().iter().for_each(|e| hp.event(e));
+            c.history().events().iter().for_each(|e| hc.event(e));
+            scenes += 1;
+            events += p.history().events().len();
+            impacts += c.cluster_impacts();
         }
+        println!(
+            "{scenes} of {n} scenes without near contacts: pairwise {:016x}, clusters {:016x} \
+             ({events} events, {impacts} cluster impacts)",
+            hp.0, hc.0
+        );
+        return;
+    }
+    let pairwise_only = flag("--pairwise");
+    let mut h = Fnv(0xcbf2_9ce4_8422_2325);
+    let (mut events, mut impacts) = (0usize, 0usize);
+    for seed in first..first + n {
+        let sim = if pairwise_only {
+            run(seed, pairwise, None)
+        } else {
+            run(seed, |p| p, None)
+        };
         for e in sim.history().events() {
             h.event(e);
         }
         events += sim.history().events().len();
+        impacts += sim.cluster_impacts();
+    }
+    if impacts > 0 {
+        eprintln!("{impacts} cluster impacts");
     }
     let (table, params, balls) = racks::frictionless_gas(16);
     let mut sim = Simulation::new(table, params, &balls).expect("the gas");

@@ -33,13 +33,17 @@ pub struct History {
     stored: Vec<Segment>,
     /// The parameters in force from each event index on, in index order (the first from 0).
     params: Vec<(usize, Params)>,
+    /// Event index ranges that are one cluster impact each, in order (not saved in
+    /// recordings: a history rebuilt from one has none).
+    impacts: Vec<std::ops::Range<usize>>,
 }
 
 clone_reusing!(History {
     events,
     tracks,
     stored,
-    params
+    params,
+    impacts
 });
 
 impl History {
@@ -52,7 +56,21 @@ impl History {
                 .collect(),
             stored: initial.to_vec(),
             params: vec![(0, params)],
+            impacts: Vec::new(),
         }
+    }
+
+    /// Marks the events `range` (the last ones pushed) as one cluster impact: pair events at
+    /// one instant, each holding its balls' states after the whole impact.
+    pub fn mark_impact(&mut self, range: std::ops::Range<usize>) {
+        debug_assert!(range.end == self.events.len());
+        self.impacts.push(range);
+    }
+
+    /// The cluster impact event `index` belongs to, if any.
+    pub fn impact_of(&self, index: usize) -> Option<std::ops::Range<usize>> {
+        let k = self.impacts.partition_point(|r| r.end <= index);
+        self.impacts.get(k).filter(|r| r.contains(&index)).cloned()
     }
 
     /// Appends an event; the balls it names continue on the segments that their states in

@@ -62,10 +62,13 @@ pub use history::History;
 pub use limits::LimitError;
 pub use math::{Vec2, Vec3};
 pub use params::{
-    BallSpec, CushionModel, G, Model, PaperModel, ParamError, Params, Prediction, Randomization,
-    SpinModel,
+    BallFriction, BallSpec, CushionModel, G, HertzContact, Model, PaperModel, ParamError, Params,
+    Prediction, Randomization, SpinModel,
 };
 pub use racks::Rack;
 pub use resolve::cue::{Miscue, TipOffset};
 pub use sim::{Advance, BallSetup, SetupError, SimError, Simulation};
-pub use table::{Cushion, Jaw, Opening, Pocket, PocketShape, Table, TableError};
+pub use table::{
+    Cushion, Jaw, Opening, Pocket, PocketCut, PocketShape, Table, TableChoice, TableError,
+    TableSize,
+};

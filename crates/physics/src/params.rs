@@ -73,11 +73,66 @@ pub enum CushionModel {
         /// Ball–cushion friction coefficient.
         mu: f64,
     },
+    /// Mathavan, Jackson & Parkin (2010), Proc. IMechE C 224: the impact's equations of
+    /// motion integrated over the impulse, with friction at the nose and at the cloth (the
+    /// cloth's is `mu_slide`) and an energetic restitution. Their fit: `e = 0.98`,
+    /// `mu = 0.14`, for normal speeds below about 2.5 m/s.
+    Mathavan2010 {
+        /// Energetic restitution at the nose.
+        e: f64,
+        /// Ball–cushion sliding friction.
+        mu: f64,
+    },
+}
+
+impl CushionModel {
+    /// Mathavan et al.'s fitted constants (2010, abstract and section 5).
+    pub const MATHAVAN_2010: Self = CushionModel::Mathavan2010 { e: 0.98, mu: 0.14 };
 }
 
 impl Default for CushionModel {
     fn default() -> Self {
         CushionModel::Han2005 { e: 0.85, mu: 0.2 }
+    }
+}
+
+/// How the ball–ball friction coefficient is found at each collision.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum BallFriction {
+    /// A constant coefficient, [`SpinModel::mu_ball`].
+    #[default]
+    Constant,
+    /// `mu = a + b exp(-c v)`, with `v` the sliding speed of the contact points at the start
+    /// of the collision (m/s): Alciatore's fit to Marlow's measurements (TP A-14 and TP A-28,
+    /// "Throw plots for all types of shots", p. 1). Slow slip grips (0.118 at rest), fast slip
+    /// slides (0.010 far above 3 m/s), so slow cuts throw more. `mu_ball` is then unused.
+    SpeedDependent {
+        /// Coefficient far above the sliding speed 1/c.
+        a: f64,
+        /// Extra coefficient at zero sliding speed.
+        b: f64,
+        /// Decay rate, s/m.
+        c: f64,
+    },
+}
+
+impl BallFriction {
+    /// Alciatore's fitted constants (TP A-28 p. 1): a = 9.951e-3, b = 0.108, c = 1.088 s/m.
+    pub const ALCIATORE: Self = BallFriction::SpeedDependent {
+        a: 9.951e-3,
+        b: 0.108,
+        c: 1.088,
+    };
+
+    /// The coefficient for a contact sliding at `slip_speed` (m/s), with `constant` the
+    /// model's `mu_ball`.
+    #[inline]
+    pub fn mu(&self, constant: f64, slip_speed: f64) -> f64 {
+        match *self {
+            BallFriction::Constant => constant,
+            BallFriction::SpeedDependent { a, b, c } => a + b * (-c * slip_speed).exp(),
+        }
     }
 }
 
@@ -95,8 +150,10 @@ pub struct SpinModel {
     pub mu_spin: f64,
     /// Ball–ball restitution.
     pub e_ball: f64,
-    /// Ball–ball friction (cut- and spin-induced throw).
+    /// Ball–ball friction (cut- and spin-induced throw), when `ball_friction` is constant.
     pub mu_ball: f64,
+    /// Constant or speed-dependent ball–ball friction (absent from old files: constant).
+    pub ball_friction: BallFriction,
     /// The cushion model.
     pub cushion: CushionModel,
     /// Height of the cushion nose above the cloth as a fraction of the ball's diameter.
@@ -105,6 +162,42 @@ pub struct SpinModel {
     pub cue_mass: f64,
     /// Largest tip offset from the ball's centre, as a fraction of its radius, before a miscue.
     pub miscue_limit: f64,
+    /// Effective end mass of the shaft, kg: side english then squirts the ball away from the
+    /// english (Alciatore TP A-31; a low-deflection shaft has a smaller one). `None` (the
+    /// default, and old files): no squirt, the ball leaves along the cue.
+    pub end_mass: Option<f64>,
+    /// Compliant contact of balls in clusters: a ball–ball impact reaching a ball with
+    /// neighbours closer than the distance one contact closes is resolved over the whole
+    /// cluster with Hertz forces ([`crate::resolve::hertz`]). `None` (and a file that omits
+    /// it: recordings made before it existed) resolves every contact pair by pair.
+    #[serde(default)]
+    pub cluster: Option<HertzContact>,
+}
+
+/// The elastic constants of the balls, for Hertz contact (Landau & Lifshitz, *Theory of
+/// Elasticity*, section 9): two spheres of radius `R` pressed `d` into each other push with
+/// `F = (4/3) E* sqrt(R/2) d^1.5`, with `1/E* = 2 (1 - nu^2) / E`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct HertzContact {
+    /// Young's modulus of the ball material, Pa.
+    pub young: f64,
+    /// Poisson's ratio of the ball material.
+    pub poisson: f64,
+}
+
+impl Default for HertzContact {
+    fn default() -> Self {
+        // Phenolic resin billiard balls: E = 5.84 GPa, nu = 0.34 (S. Crown, "Modeling the
+        // effects of velocity, spin, frictional coefficient, and impact angle on deflection
+        // angle in near-elastic collisions of phenolic resin spheres", as quoted in
+        // dbkcues.ru, "Collision of billiard balls"). They give a contact of about 0.24 ms at
+        // 10 m/s, as measured for pool balls (a few hundred microseconds).
+        Self {
+            young: 5.84e9,
+            poisson: 0.34,
+        }
+    }
 }
 
 impl Default for SpinModel {
@@ -117,10 +210,13 @@ impl Default for SpinModel {
             mu_spin: 0.044,
             e_ball: 0.95,
             mu_ball: 0.05,
+            ball_friction: BallFriction::Constant,
             cushion: CushionModel::default(),
             cushion_height: 0.635,
             cue_mass: 0.54,
             miscue_limit: 0.5,
+            end_mass: None,
+            cluster: Some(HertzContact::default()),
         }
     }
 }
@@ -312,6 +408,11 @@ impl SpinModel {
         check("mu_spin", self.mu_spin, self.mu_spin >= 0.0, "non-negative")?;
         check("e_ball", self.e_ball, unit(self.e_ball), "in [0, 1]")?;
         check("mu_ball", self.mu_ball, self.mu_ball >= 0.0, "non-negative")?;
+        if let BallFriction::SpeedDependent { a, b, c } = self.ball_friction {
+            check("ball_friction.a", a, a >= 0.0, "non-negative")?;
+            check("ball_friction.b", b, b >= 0.0, "non-negative")?;
+            check("ball_friction.c", c, c >= 0.0, "non-negative, s/m")?;
+        }
         let h = self.cushion_height;
         check(
             "cushion_height",
@@ -325,6 +426,9 @@ impl SpinModel {
             self.cue_mass > 0.0,
             "positive, kg",
         )?;
+        if let Some(m) = self.end_mass {
+            check("end_mass", m, m > 0.0, "positive, kg")?;
+        }
         let l = self.miscue_limit;
         check(
             "miscue_limit",
@@ -332,12 +436,56 @@ impl SpinModel {
             (0.0..1.0).contains(&l),
             "in [0, 1) of the radius",
         )?;
+        if let Some(h) = self.cluster {
+            check("cluster.young", h.young, h.young > 0.0, "positive, Pa")?;
+            check(
+                "cluster.poisson",
+                h.poisson,
+                (0.0..0.5).contains(&h.poisson),
+                "in [0, 0.5)",
+            )?;
+        }
         match self.cushion {
             CushionModel::Reflect { e } => check("cushion.e", e, unit(e), "in [0, 1]"),
-            CushionModel::Han2005 { e, mu } => {
+            CushionModel::Han2005 { e, mu } | CushionModel::Mathavan2010 { e, mu } => {
                 check("cushion.e", e, unit(e), "in [0, 1]")?;
                 check("cushion.mu", mu, mu >= 0.0, "non-negative")
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn alciatore_ball_friction_falls_with_slip_speed_as_tp_a14_fits_it() {
+        let f = BallFriction::ALCIATORE;
+        assert!((f.mu(0.0, 0.0) - 0.117_951).abs() < 1e-6);
+        assert!((f.mu(0.0, 0.9) - 0.0505).abs() < 5e-4, "{}", f.mu(0.0, 0.9));
+        assert!((f.mu(0.0, 3.0) - 0.0141).abs() < 5e-4, "{}", f.mu(0.0, 3.0));
+        assert!(
+            (f.mu(0.0, 10.0) - 0.00995).abs() < 1e-4,
+            "{}",
+            f.mu(0.0, 10.0)
+        );
+    }
+
+    #[test]
+    fn a_spin_model_without_ball_friction_keeps_the_constant_mu_ball() {
+        // Files written before the field existed read as the constant law.
+        let m: SpinModel = serde_json::from_str(r#"{"mu_ball": 0.06}"#).unwrap();
+        assert_eq!((m.mu_ball, m.ball_friction), (0.06, BallFriction::Constant));
+        assert_eq!(SpinModel::default().ball_friction, BallFriction::Constant);
+        let bad = SpinModel {
+            ball_friction: BallFriction::SpeedDependent {
+                a: -1.0,
+                b: 0.108,
+                c: 1.088,
+            },
+            ..SpinModel::default()
+        };
+        assert!(bad.validate().is_err());
     }
 }

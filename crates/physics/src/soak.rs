@@ -83,6 +83,9 @@ pub fn vary(params: Params, v: &Variation) -> Params {
             cushion: match m.cushion {
                 CushionModel::Reflect { .. } => CushionModel::Reflect { e: v.e_cushion },
                 CushionModel::Han2005 { mu, .. } => CushionModel::Han2005 { e: v.e_cushion, mu },
+                CushionModel::Mathavan2010 { mu, .. } => {
+                    CushionModel::Mathavan2010 { e: v.e_cushion, mu }
+                }
             },
             ..m
         }),

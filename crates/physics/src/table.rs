@@ -150,7 +150,150 @@ pub enum TableError {
     },
 }
 
+/// A WPA table size: the playing surface between the cushion noses.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TableSize {
+    /// 7-ft (bar box): 78 x 39 in.
+    Seven,
+    /// 8-ft: 92 x 46 in (the paper's table, the game's default).
+    #[default]
+    Eight,
+    /// 9-ft (tournament): 100 x 50 in.
+    Nine,
+}
+
+impl TableSize {
+    /// Every size, smallest first.
+    pub const ALL: [TableSize; 3] = [TableSize::Seven, TableSize::Eight, TableSize::Nine];
+
+    /// Length and width of the playing surface, metres (WPA equipment specifications).
+    pub fn surface(self) -> (f64, f64) {
+        let (l, w) = match self {
+            TableSize::Seven => (78.0, 39.0),
+            TableSize::Eight => (92.0, 46.0),
+            TableSize::Nine => (100.0, 50.0),
+        };
+        (l * INCH, w * INCH)
+    }
+
+    /// Its name on the command line: `7ft`, `8ft`, `9ft`.
+    pub fn name(self) -> &'static str {
+        match self {
+            TableSize::Seven => "7ft",
+            TableSize::Eight => "8ft",
+            TableSize::Nine => "9ft",
+        }
+    }
+}
+
+/// Pocket mouths, measured straight across between the cushion noses.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PocketCut {
+    /// The WPA's widest: corner 4.625 in, side 5.125 in.
+    WpaWide,
+    /// The WPA's narrowest: corner 4.5 in, side 5 in (the paper's, the game's default).
+    #[default]
+    Wpa,
+    /// A tight pro table: corner 4 in, side 5 in (the 9- and 10-ball pro events of issue 23).
+    Tight,
+}
+
+impl PocketCut {
+    /// Every cut, widest first.
+    pub const ALL: [PocketCut; 3] = [PocketCut::WpaWide, PocketCut::Wpa, PocketCut::Tight];
+
+    /// Corner and side mouths, metres.
+    pub fn mouths(self) -> (f64, f64) {
+        let (c, s) = match self {
+            PocketCut::WpaWide => (4.625, 5.125),
+            PocketCut::Wpa => (4.5, 5.0),
+            PocketCut::Tight => (4.0, 5.0),
+        };
+        (c * INCH, s * INCH)
+    }
+
+    /// Its name on the command line: `wide`, `wpa`, `tight`.
+    pub fn name(self) -> &'static str {
+        match self {
+            PocketCut::WpaWide => "wide",
+            PocketCut::Wpa => "wpa",
+            PocketCut::Tight => "tight",
+        }
+    }
+}
+
+/// A table size with its pocket cut: what a player chooses (`9ft`, `9ft-tight`, `7ft-wide`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub struct TableChoice {
+    /// The playing surface.
+    pub size: TableSize,
+    /// The pocket mouths.
+    pub pockets: PocketCut,
+}
+
+impl TableChoice {
+    /// The table (pocket mouths of the paper's rule; add jaws with [`Table::with_jaws`]).
+    pub fn table(self) -> Table {
+        let ((length, width), (corner_mouth, side_mouth)) =
+            (self.size.surface(), self.pockets.mouths());
+        Table {
+            length,
+            width,
+            corner_mouth,
+            side_mouth,
+            pockets: PocketShape::Mouth,
+        }
+    }
+}
+
+impl std::fmt::Display for TableChoice {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.pockets {
+            PocketCut::Wpa => write!(f, "{}", self.size.name()),
+            p => write!(f, "{}-{}", self.size.name(), p.name()),
+        }
+    }
+}
+
+impl std::str::FromStr for TableChoice {
+    type Err = String;
+
+    /// `7ft`, `8ft` or `9ft`, optionally followed by `-wpa`, `-wide` or `-tight`.
+    fn from_str(s: &str) -> Result<Self, String> {
+        let (size, cut) = s.split_once('-').unwrap_or((s, "wpa"));
+        let size = TableSize::ALL
+            .into_iter()
+            .find(|t| t.name() == size)
+            .ok_or_else(|| format!("table `{s}`: expected 7ft, 8ft or 9ft"))?;
+        let pockets = PocketCut::ALL
+            .into_iter()
+            .find(|p| p.name() == cut)
+            .ok_or_else(|| format!("table `{s}`: pockets expected wpa, wide or tight"))?;
+        Ok(Self { size, pockets })
+    }
+}
+
 impl Table {
+    /// The WPA 7-ft table: 78 x 39 in, corner mouths 4.5 in, side mouths 5 in.
+    pub fn wpa_7ft() -> Self {
+        TableChoice {
+            size: TableSize::Seven,
+            pockets: PocketCut::Wpa,
+        }
+        .table()
+    }
+
+    /// The WPA 9-ft table: 100 x 50 in, corner mouths 4.5 in, side mouths 5 in.
+    pub fn wpa_9ft() -> Self {
+        TableChoice {
+            size: TableSize::Nine,
+            pockets: PocketCut::Wpa,
+        }
+        .table()
+    }
+
     /// The WPA 8-ft table of the paper: 92 x 46 in, corner mouths 4.5 in, side mouths 5 in.
     pub fn wpa_8ft() -> Self {
         Self {
@@ -383,5 +526,36 @@ impl Table {
     /// Foot spot (a quarter of the length from the foot cushion), apex of the rack.
     pub fn foot_spot(&self) -> Vec2 {
         Vec2::new(0.25 * self.length, 0.0)
+    }
+}
+
+#[cfg(test)]
+mod choice_tests {
+    use super::*;
+
+    #[test]
+    fn table_choices_parse_print_and_give_the_wpa_sizes() {
+        for text in ["7ft", "8ft", "9ft", "9ft-tight", "7ft-wide"] {
+            let c: TableChoice = text.parse().unwrap();
+            assert_eq!(c.to_string(), text);
+        }
+        assert_eq!("8ft-wpa".parse::<TableChoice>().unwrap().to_string(), "8ft");
+        assert_eq!(TableChoice::default().table(), Table::wpa_8ft());
+        let t = "9ft-tight".parse::<TableChoice>().unwrap().table();
+        assert_eq!((t.length, t.width), (100.0 * INCH, 50.0 * INCH));
+        assert_eq!((t.corner_mouth, t.side_mouth), (4.0 * INCH, 5.0 * INCH));
+        assert_eq!(Table::wpa_7ft().length, 78.0 * INCH);
+        for bad in ["6ft", "9ft-huge", "", "9"] {
+            let e = bad.parse::<TableChoice>().unwrap_err();
+            assert!(e.contains("expected"), "{e}");
+        }
+        for c in TableSize::ALL {
+            let t = TableChoice {
+                size: c,
+                pockets: PocketCut::Tight,
+            }
+            .table();
+            assert!(t.validate(0.028575).is_ok());
+        }
     }
 }

@@ -78,15 +78,20 @@ fn without_a_history_the_events_are_the_same_and_none_is_stored() {
         full.strike(ball, s.shots[0]).unwrap();
         lean.strike(ball, s.shots[0]).unwrap();
         let p = soak::scale_friction(*full.params(), 0.5);
+        // Index of the next event step_event hands out (a cluster impact records several at
+        // once and hands them out one a call).
+        let mut next = full.history().events().len();
         for k in 0..2000 {
             if k == 300 {
                 full.set_params(p).unwrap();
                 lean.set_params(p).unwrap();
+                next += 1;
             }
             let e = lean.step_event();
-            assert_eq!(e.is_some(), full.step_event().is_some(), "seed {seed}");
+            assert_eq!(e, full.step_event(), "seed {seed}");
             let Some(e) = e else { break };
-            assert_eq!(Some(&e), full.history().events().last(), "seed {seed}");
+            assert_eq!(Some(&e), full.history().events().get(next), "seed {seed}");
+            next += 1;
             compared += 1;
         }
         assert_eq!(lean.event_count(), full.history().events().len());

@@ -197,3 +197,42 @@ fn saving_over_an_existing_recording_replaces_it_whole() {
     assert_eq!(names.len(), 1, "{names:?}");
     std::fs::remove_dir_all(dir).ok();
 }
+
+/// A frozen 9-ball break on a 9-ft table, in the spin model with cluster impacts or without.
+fn frozen_break(cluster: bool) -> Recording {
+    let table = Table::wpa_9ft().with_jaws(0.015);
+    let m = SpinModel::default();
+    let params = Params {
+        model: Model::Spin(SpinModel {
+            cluster: if cluster { m.cluster } else { None },
+            ..m
+        }),
+        ..Params::default()
+    };
+    let balls = Rack::NineBall.layout(&table, &params.ball);
+    let mut rec = Recorder::new(table, params, balls).unwrap();
+    rec.strike(0, Shot::new(0.0, 11.0)).unwrap();
+    rec.run_to_rest().unwrap();
+    rec.recording()
+}
+
+#[test]
+fn a_recording_from_before_cluster_impacts_loads_and_verifies_pair_by_pair() {
+    // A file written before `cluster` existed has no such key: it must load as pairwise
+    // (the solver it was made with) and reproduce every event.
+    let old = frozen_break(false);
+    let json = serde_json::to_string(&old).unwrap();
+    assert!(json.contains("\"cluster\":null"), "the key is written");
+    let stripped = json.replace(",\"cluster\":null", "");
+    assert!(!stripped.contains("cluster"));
+    let loaded = Recording::from_json(&stripped, Path::new("old.json")).unwrap();
+    assert!(matches!(loaded.verify(), Ok(Verdict::Reproduced { .. })));
+    // The same break with cluster impacts is another history, which also verifies, and its
+    // table (9 ft) is kept.
+    let new = frozen_break(true);
+    assert_ne!(new.events, old.events);
+    let text = serde_json::to_string(&new).unwrap();
+    let back = Recording::from_json(&text, Path::new("new.json")).unwrap();
+    assert_eq!(back.table.length, 100.0 * table::INCH);
+    assert!(matches!(back.verify(), Ok(Verdict::Reproduced { .. })));
+}

@@ -86,18 +86,57 @@ pub enum ModelArg {
     Spin,
 }
 
+/// Ball–ball friction of the spin model.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum BallFrictionArg {
+    /// A constant coefficient (the model's `mu_ball`).
+    Constant,
+    /// `a + b exp(-c v)` of the sliding speed `v` (Alciatore, TP ).
+    SpeedDependent,
+}
+
+/// Cushion models of the spin model.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum CushionArg {
+    /// Han (2005): one impulse at the nose height, e = 0.85, mu = 0.2 (the default).
+    Han2005,
+    /// Mathavan, Jackson & Parkin (2010): the impact integrated, e = 0.98, mu = 0.14.
+    Mathavan2010,
+    /// Plain reflection, e = 0.85.
+    Reflect,
+}
+
 /// `simulate` options.
 #[derive(clap::Args, Debug)]
 pub struct SimulateArgs {
     /// A scene file (JSON, see crates/physics/README.md); its shots are played first.
     #[arg(long, conflicts_with = "rack")]
     pub scene: Option<PathBuf>,
-    /// A standard rack on the WPA 8-ft table.
+    /// A standard rack on the table of `--table`.
     #[arg(long, value_enum, default_value = "fifteen-ball")]
     pub rack: RackArg,
+    /// The table: `7ft`, `8ft` or `9ft` (WPA playing areas 78 x 39, 92 x 46, 100 x 50 in),
+    /// optionally `-wide` (4.625 in corner, 5.125 in side mouths) or `-tight` (4 in corner)
+    /// pockets instead of the WPA 4.5 in and 5 in; saved in the recording.
+    #[arg(long, default_value = "8ft", conflicts_with = "scene")]
+    pub table: TableChoice,
+    /// How a game's rack is racked: `template` (every ball frozen) or `triangle` (the small
+    /// seeded gaps of a hand-racked triangle).
+    #[arg(long, default_value = "triangle", requires = "game")]
+    pub rack_style: billiards_rules::RackStyle,
     /// The physics model (with a rack).
     #[arg(long, value_enum, default_value = "spin")]
     pub model: ModelArg,
+    /// Ball–ball friction (spin model; overrides a scene file's).
+    #[arg(long, value_enum)]
+    pub ball_friction: Option<BallFrictionArg>,
+    /// Cushion model with its published constants (spin model; overrides a scene file's).
+    #[arg(long, value_enum)]
+    pub cushion: Option<CushionArg>,
+    /// Effective end mass of the shaft in kg, for squirt (spin model; TP A-31): about 0.008
+    /// for a standard shaft, 0.004 for a low-deflection one. Without it, no squirt.
+    #[arg(long, value_parser = parse_end_mass)]
+    pub end_mass: Option<f64>,
     /// A shot of the cue ball, `ANGLE_DEG:SPEED[:SIDE:HEIGHT]`; repeat for several shots,
     /// each played once everything rests. SPEED in m/s: 0 or from 1e-10 to 100 (a hard break
     /// is 12); ANGLE_DEG any finite; SIDE and HEIGHT in ball radii, within the miscue limit.
@@ -159,6 +198,15 @@ pub struct ExportArgs {
     /// Export only this shot, counted from 1 as in the game's timeline; default the whole game.
     #[arg(long)]
     pub shot: Option<usize>,
+}
+
+fn parse_end_mass(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(kg) if kg.is_finite() && kg > 0.0 && kg < 1.0 => Ok(kg),
+        _ => Err(format!(
+            "end mass {s:?}: a positive mass in kg below 1 (e.g. 0.008)"
+        )),
+    }
 }
 
 fn parse_shot(s: &str) -> Result<Shot, String> {
@@ -278,10 +326,13 @@ pub(crate) fn setup(
     if let Some(path) = &a.scene {
         let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
         let scene = Scene::from_json(&text).map_err(|e| format!("{}: {e}", path.display()))?;
-        let params = Params {
-            randomization: randomization.or(scene.params.randomization),
-            ..scene.params
-        };
+        let params = with_choices(
+            Params {
+                randomization: randomization.or(scene.params.randomization),
+                ..scene.params
+            },
+            a,
+        )?;
         let shots = scene
             .shots
             .iter()
@@ -295,14 +346,17 @@ pub(crate) fn setup(
         ModelArg::Spin => Model::Spin(SpinModel::default()),
     };
     let table = match a.model {
-        ModelArg::Paper => Table::wpa_8ft(),
-        ModelArg::Spin => Table::wpa_8ft().with_jaws(0.015),
+        ModelArg::Paper => a.table.table(),
+        ModelArg::Spin => a.table.table().with_jaws(0.015),
     };
-    let params = Params {
-        model,
-        randomization,
-        ..Params::default()
-    };
+    let params = with_choices(
+        Params {
+            model,
+            randomization,
+            ..Params::default()
+        },
+        a,
+    )?;
     let rack = match a.rack {
         RackArg::PaperDefault => Rack::PaperDefault,
         RackArg::FifteenBall => Rack::FifteenBall,
@@ -315,6 +369,38 @@ pub(crate) fn setup(
         rack.layout(&table, &params.ball),
         a.shots.clone(),
     ))
+}
+
+/// `params` with the model choices of the command line applied: they need the spin model.
+fn with_choices(params: Params, a: &SimulateArgs) -> Result<Params, String> {
+    if a.ball_friction.is_none() && a.cushion.is_none() && a.end_mass.is_none() {
+        return Ok(params);
+    }
+    let Model::Spin(mut m) = params.model else {
+        return Err(
+            "--ball-friction, --cushion and --end-mass need the spin model (--model spin)".into(),
+        );
+    };
+    if let Some(kg) = a.end_mass {
+        m.end_mass = Some(kg);
+    }
+    if let Some(friction) = a.ball_friction {
+        m.ball_friction = match friction {
+            BallFrictionArg::Constant => BallFriction::Constant,
+            BallFrictionArg::SpeedDependent => BallFriction::ALCIATORE,
+        };
+    }
+    if let Some(cushion) = a.cushion {
+        m.cushion = match cushion {
+            CushionArg::Han2005 => CushionModel::default(),
+            CushionArg::Mathavan2010 => CushionModel::MATHAVAN_2010,
+            CushionArg::Reflect => CushionModel::Reflect { e: 0.85 },
+        };
+    }
+    Ok(Params {
+        model: Model::Spin(m),
+        ..params
+    })
 }
 
 /// After a scratch the cue ball goes back on the head string: the rule of

@@ -17,7 +17,7 @@ pub(crate) fn play_game(a: &SimulateArgs, game: Game) -> Result<(), String> {
         return Err("no shots: give --shot ANGLE_DEG:SPEED".into());
     }
     let rack_seed = a.rack_seed.or(a.seed).unwrap_or(0);
-    let balls = game.rack(&table, &params.ball, rack_seed);
+    let balls = game.rack_styled(&table, &params.ball, rack_seed, a.rack_style);
     let players: [String; 2] = match a.players.split_once(',') {
         Some((x, y)) => [x.trim().to_string(), y.trim().to_string()],
         None => return Err(format!("--players {:?}: expected NAME,NAME", a.players)),

@@ -5,7 +5,7 @@
 
 use billiards_ai::Player;
 use billiards_ai::noise::stream;
-use billiards_ai::play::{RackRecord, play_rack};
+use billiards_ai::play::{RackRecord, Venue, play_rack_at};
 use billiards_rules::Game;
 use indicatif::{ProgressBar, ProgressStyle};
 use rand::Rng;
@@ -38,6 +38,12 @@ pub struct TournamentArgs {
     /// Write the results as JSON here.
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// The table: `7ft`, `8ft` or `9ft`, optionally `-wide` or `-tight` pockets.
+    #[arg(long, default_value = "8ft")]
+    pub table: billiards_physics::TableChoice,
+    /// How the racks are racked: `template` (frozen) or `triangle` (small seeded gaps).
+    #[arg(long, default_value = "triangle")]
+    pub rack_style: billiards_rules::RackStyle,
 }
 
 /// A tournament's results (or one shard's).
@@ -53,6 +59,9 @@ pub struct Results {
     pub seed: u64,
     /// The racks played here, by game index.
     pub racks: Vec<RackRecord>,
+    /// Where they were played (results written before tables existed: the 8-ft table).
+    #[serde(default)]
+    pub venue: Venue,
 }
 
 fn parse_shard(s: &str) -> Result<(u64, u64), String> {
@@ -107,7 +116,11 @@ fn tournament(a: TournamentArgs) -> Result<(), Failure> {
         }
         let players = players(&a.players).map_err(Failure::Input)?;
         let (k, m) = a.shard.unwrap_or((1, 1));
-        play(game, players, a.games, a.seed, k, m).map_err(Failure::Run)?
+        let venue = Venue {
+            table: a.table,
+            rack: a.rack_style,
+        };
+        play(venue, game, players, a.games, a.seed, k, m).map_err(Failure::Run)?
     } else {
         merge(&a.merge).map_err(Failure::Input)?
     };
@@ -125,6 +138,7 @@ fn tournament(a: TournamentArgs) -> Result<(), Failure> {
 
 /// Plays the games of slice `k` of `m` on all cores, with a progress bar.
 fn play(
+    venue: Venue,
     game: Game,
     players: [Player; 2],
     games: u64,
@@ -141,7 +155,8 @@ fn play(
     let racks: Vec<RackRecord> = mine
         .par_iter()
         .map(|&g| {
-            let r = play_rack(
+            let r = play_rack_at(
+                venue,
                 game,
                 players,
                 g,
@@ -159,6 +174,7 @@ fn play(
         games,
         seed,
         racks,
+        venue,
     })
 }
 
@@ -172,9 +188,11 @@ fn merge(files: &[PathBuf]) -> Result<Results, String> {
         match &mut all {
             None => all = Some(r),
             Some(a) => {
-                if (a.game, a.players, a.games, a.seed) != (r.game, r.players, r.games, r.seed) {
+                if (a.game, a.players, a.games, a.seed, a.venue)
+                    != (r.game, r.players, r.games, r.seed, r.venue)
+                {
                     return Err(format!(
-                        "{}: another tournament (game, players, games or seed differ)",
+                        "{}: another tournament (game, players, games, seed or table differ)",
                         f.display()
                     ));
                 }
@@ -201,8 +219,14 @@ fn merge(files: &[PathBuf]) -> Result<Results, String> {
 pub fn report(r: &Results) -> String {
     let n = r.racks.len();
     let mut out = format!(
-        "{:?}, {} vs {}: {n} of {} games (seed {})\n",
-        r.game, r.players[0], r.players[1], r.games, r.seed
+        "{:?}, {} vs {}: {n} of {} games (seed {}), {} table, {} racks\n",
+        r.game,
+        r.players[0],
+        r.players[1],
+        r.games,
+        r.seed,
+        r.venue.table,
+        r.venue.rack.name()
     );
     out += &format!(
         "{:<8} {:>5} {:>7} {:>13} {:>12} {:>14} {:>11} {:>15}\n",

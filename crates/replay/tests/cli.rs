@@ -471,7 +471,7 @@ fn simulate_a_nine_ball_game_prints_verdicts_and_verify_rejudges_them() {
     let dir = temp("nine");
     let file = dir.join("rack.json");
     let (ok, stdout, err) = run(bin()
-        .args(["simulate", "--game", "nine-ball", "--rack-seed", "3"])
+        .args(["simulate", "--game", "nine-ball", "--rack-seed", "4"])
         .args(["--shot", "0:9", "--shot", "10:2", "--call", "2:push-out"])
         .args(["--choice", "pass", "--shot", "45:2", "--out"])
         .arg(&file));
@@ -509,5 +509,77 @@ fn simulate_a_nine_ball_game_prints_verdicts_and_verify_rejudges_them() {
         !ok && err.contains("shot 1: NineBall has no called shots"),
         "{err}"
     );
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn simulate_on_a_nine_foot_table_saves_the_table_and_a_bad_table_is_refused() {
+    let dir = temp("table");
+    let file = dir.join("nine.json");
+    let (ok, stdout, err) = run(bin()
+        .args(["simulate", "--game", "nine-ball", "--rack-seed", "2"])
+        .args(["--table", "9ft-tight", "--rack-style", "template"])
+        .args(["--shot", "0:11", "--out"])
+        .arg(&file));
+    assert!(ok, "{err}");
+    assert!(stdout.contains("shot 1: A (break)"), "{stdout}");
+    let rec = Recording::load(&file).unwrap();
+    assert_eq!(rec.table.length, 100.0 * table::INCH);
+    assert_eq!(rec.table.corner_mouth, 4.0 * table::INCH);
+    // The template rack: the 1 exactly on the 9-ft table's foot spot.
+    let one = rec.balls.iter().find(|b| b.number == 1).unwrap();
+    assert_eq!(one.position, rec.table.foot_spot());
+    let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
+    assert!(ok && stdout.contains("reproduced"), "{stdout} {err}");
+    let (ok, _, err) = run(bin().args(["simulate", "--table", "6ft", "--shot", "0:9"]));
+    assert!(!ok && err.contains("expected 7ft, 8ft or 9ft"), "{err}");
+    let (ok, _, err) = run(bin().args(["simulate", "--table", "9ft-huge", "--shot", "0:9"]));
+    assert!(
+        !ok && err.contains("pockets expected wpa, wide or tight"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn model_choices_reach_the_recording_and_need_the_spin_model() {
+    let dir = temp("choices");
+    let file = dir.join("throw.json");
+    let (ok, _, err) = run(bin()
+        .args([
+            "simulate",
+            "--rack",
+            "nine-ball",
+            "--shot",
+            "1:3",
+            "--ball-friction",
+            "speed-dependent",
+            "--cushion",
+            "mathavan2010",
+            "--end-mass",
+            "0.004",
+            "--out",
+        ])
+        .arg(&file));
+    assert!(ok, "{err}");
+    let rec = Recording::load(&file).unwrap();
+    let Model::Spin(m) = rec.params.model else {
+        panic!("spin model expected: {:?}", rec.params.model);
+    };
+    assert_eq!(m.ball_friction, BallFriction::ALCIATORE);
+    assert_eq!(m.cushion, CushionModel::MATHAVAN_2010);
+    assert_eq!(m.end_mass, Some(0.004));
+    let (ok, _, err) = run(bin().args(["simulate", "--end-mass", "0"]));
+    assert!(!ok && err.contains("end mass"), "{err}");
+    let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
+    assert!(ok && stdout.contains("bit for bit"), "{stdout} {err}");
+    let (ok, _, err) = run(bin().args([
+        "simulate",
+        "--model",
+        "paper",
+        "--ball-friction",
+        "speed-dependent",
+    ]));
+    assert!(!ok && err.contains("need the spin model"), "{err}");
     std::fs::remove_dir_all(dir).ok();
 }

@@ -1,34 +1,79 @@
-//! Break statistics: many breaks of the seeded 9-ball and 8-ball racks from random places
-//! behind the head string, at firm speeds, aimed at the head ball; judged by the rules.
+//! Break statistics: many breaks of seeded 9-ball and 8-ball racks, judged by the rules, per
+//! game, table and rack, with 95 % intervals.
 //!
 //! ```text
-//! cargo run --release -p billiards-rules --example break_stats -- --breaks 1000 --seed 1
+//! cargo run --release -p billiards-rules --example break_stats -- --suite
+//! cargo run --release -p billiards-rules --example break_stats -- --game nine --table 9ft \
+//!     --rack template --breaks 1000 --seed 1
+//! cargo run --release -p billiards-rules --example break_stats -- --game nine --table 8ft \
+//!     --gaps-mm 0,0.000001,0.01,0.05          # continuity: one row per rack gap
 //! ```
 //!
 //! Options: `--breaks N` (default 1000), `--seed S` (default 1), `--game nine|eight|both`,
-//! `--table 8ft|7ft` (default 8ft, the game's), `--speed MIN:MAX` (default 7:10 m/s),
-//! `--gap-mm G` (rack lattice slack, default 0.05 mm), `--cue kitchen|string` (anywhere
-//! behind the head string, the default, or on it as pooltool's break script places it),
-//! `--mouths-in C:S` (corner and side pocket mouths in inches, after `--table`).
-//! Physics: the game's defaults (spin model, Han 2005 cushion, 8-ft table with 15 mm jaws).
+//! `--table T` (`7ft`, `8ft`, `9ft`, optionally `-wide` or `-tight` pockets; default: 9-ft for
+//! 9-ball, 7-ft for 8-ball), `--rack template|triangle` (default triangle), `--gaps-mm G,..`
+//! (rack lattice slack instead of the rack style's), `--speed MIN:MAX` (default 10:12 m/s),
+//! `--gaps-mm` is the lattice slack (neighbours end 0 to twice it apart), as `racks::RACK_GAP`.
+//! `--set NAME=VALUE` (repeatable: one of the game's physical constants changed, for
+//! sensitivity: mu_slide, mu_roll, e_ball, mu_ball (a constant), e_cushion, mu_cushion,
+//! young, mu_ball_slip (a factor on Alciatore's slip-dependent fit; 0: the constant mu_ball)),
+//! `--aim-sd-deg D` (Gaussian aim error of standard deviation D degrees; FastFiz's noise at
+//! magnitude 1 is 0.125), `--tip-height H` (tip offset as a fraction of the radius, negative for draw; default 0),
+//! `--cue box|kitchen|string|side|y:F` (default box; side: on the head string within half a
+//! diamond of a long cushion; y:F on the head string at F in [0, 1] of the way from the head
+//! spot to a long cushion, either side), `--pairwise` (every contact pair by pair: the
+//! solver without cluster impacts), `--suite` (the standard comparison: both games, their
+//! tables, both racks, then the continuity sweep, then 9-ball's side break with aim noise).
+//!
+//! The default break: the cue ball in the break box (behind the head string, within one
+//! diamond of it and of the long axis: `x` in `[head string - L/8, head string]`, `|y| <= W/4`),
+//! aimed at the centre of the head ball, centre ball, speed uniform in 10–12 m/s. Physics: the
+//! game's defaults (spin model, Han 2005 cushion, 15 mm jaws, cluster impacts).
 
 use billiards_physics::{
-    BallSetup, Model, Params, Shot, Simulation, SpinModel, Table, Vec2, table::INCH,
+    BallFriction, BallSetup, CushionModel, Model, Params, Shot, Simulation, SpinModel, Table,
+    TableChoice, TipOffset, Vec2, table::INCH,
 };
-use billiards_rules::{Call, Game, GameState, Seat, racks, summarise};
+use billiards_rules::{Call, Foul, Game, GameState, RackStyle, Seat, summarise};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::time::Instant;
 
+/// Where the cue ball starts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Cue {
+    /// The break box.
+    Box,
+    /// Anywhere behind the head string.
+    Kitchen,
+    /// On the head string.
+    String,
+    /// On the head string within half a diamond (`W/8`) of a long cushion, either side: the
+    /// 9-ball side break (Alciatore, "How to Rack and Break 9-Ball Like a Pro").
+    Side,
+    /// On the head string at `f` times the largest distance from the long axis (0: the head
+    /// spot, 1: frozen to a long cushion), either side.
+    Across(f64),
+}
+
+#[derive(Clone, Debug)]
 struct Options {
     breaks: usize,
     seed: u64,
     games: Vec<Game>,
-    table: Table,
-    table_name: &'static str,
+    table: Option<TableChoice>,
+    rack: RackStyle,
+    gaps: Option<Vec<f64>>,
     speed: (f64, f64),
-    gap: f64,
-    on_string: bool,
+    cue: Cue,
+    pairwise: bool,
+    suite: bool,
+    /// Changes to the game's physics, for sensitivity: (name, value).
+    set: Vec<(String, f64)>,
+    /// Tip height as a fraction of the radius (0: centre ball, negative: draw).
+    tip_height: f64,
+    /// Standard deviation of a Gaussian error of the aim, radians (0: exactly at the ball).
+    aim_sd: f64,
 }
 
 fn options() -> Result<Options, String> {
@@ -36,15 +81,31 @@ fn options() -> Result<Options, String> {
         breaks: 1000,
         seed: 1,
         games: vec![Game::NineBall, Game::EightBall],
-        table: Table::wpa_8ft(),
-        table_name: "8-ft",
-        speed: (7.0, 10.0),
-        gap: billiards_rules::racks::RACK_GAP,
-        on_string: false,
+        table: None,
+        rack: RackStyle::Triangle,
+        gaps: None,
+        speed: (10.0, 12.0),
+        cue: Cue::Box,
+        pairwise: false,
+        suite: false,
+        set: Vec::new(),
+        tip_height: 0.0,
+        aim_sd: 0.0,
     };
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut it = args.iter();
     while let Some(flag) = it.next() {
+        match flag.as_str() {
+            "--pairwise" => {
+                o.pairwise = true;
+                continue;
+            }
+            "--suite" => {
+                o.suite = true;
+                continue;
+            }
+            _ => {}
+        }
         let value = it.next().ok_or(format!("{flag} needs a value"))?;
         let bad = |e: &dyn std::fmt::Display| format!("{flag} {value}: {e}");
         match flag.as_str() {
@@ -58,40 +119,54 @@ fn options() -> Result<Options, String> {
                     _ => return Err(bad(&"expected nine, eight or both")),
                 }
             }
-            "--table" => {
-                (o.table, o.table_name) = match value.as_str() {
-                    "8ft" => (Table::wpa_8ft(), "8-ft"),
-                    // WPA 7-ft playing surface: 78 x 39 in, the same pocket mouths.
-                    "7ft" => (
-                        Table {
-                            length: 78.0 * INCH,
-                            width: 39.0 * INCH,
-                            ..Table::wpa_8ft()
-                        },
-                        "7-ft",
-                    ),
-                    _ => return Err(bad(&"expected 8ft or 7ft")),
+            "--table" => o.table = Some(value.parse().map_err(|e: String| bad(&e))?),
+            "--rack" => o.rack = value.parse().map_err(|e: String| bad(&e))?,
+            "--gaps-mm" => {
+                let gaps: Result<Vec<f64>, _> =
+                    value.split(',').map(|g| g.trim().parse::<f64>()).collect();
+                let gaps = gaps.map_err(|e| bad(&e))?;
+                if gaps.iter().any(|g| !(0.0..=10.0).contains(g)) {
+                    return Err(bad(&"gaps in [0, 10] mm"));
                 }
+                o.gaps = Some(gaps.into_iter().map(|g| g * 1e-3).collect());
             }
             "--speed" => {
                 let (a, b) = value.split_once(':').ok_or(bad(&"expected MIN:MAX"))?;
-                o.speed = (
+                let (a, b): (f64, f64) = (
                     a.parse().map_err(|e| bad(&e))?,
                     b.parse().map_err(|e| bad(&e))?,
                 );
-            }
-            "--mouths-in" => {
-                let (a, b) = value.split_once(':').ok_or(bad(&"expected CORNER:SIDE"))?;
-                o.table.corner_mouth = a.parse::<f64>().map_err(|e| bad(&e))? * INCH;
-                o.table.side_mouth = b.parse::<f64>().map_err(|e| bad(&e))? * INCH;
-            }
-            "--gap-mm" => o.gap = value.parse::<f64>().map_err(|e| bad(&e))? * 1e-3,
-            "--cue" => {
-                o.on_string = match value.as_str() {
-                    "kitchen" => false,
-                    "string" => true,
-                    _ => return Err(bad(&"expected kitchen or string")),
+                if !(0.0 < a && a <= b && b <= 100.0) {
+                    return Err(bad(&"expected 0 < MIN <= MAX <= 100 m/s"));
                 }
+                o.speed = (a, b);
+            }
+            "--cue" => {
+                o.cue = match value.as_str() {
+                    "box" => Cue::Box,
+                    "kitchen" => Cue::Kitchen,
+                    "string" => Cue::String,
+                    "side" => Cue::Side,
+                    v => match v.strip_prefix("y:").map(str::parse::<f64>) {
+                        Some(Ok(f)) if (0.0..=1.0).contains(&f) => Cue::Across(f),
+                        _ => return Err(bad(&"expected box, kitchen, string, side or y:F")),
+                    },
+                }
+            }
+            "--set" => {
+                let (k, v) = value.split_once('=').ok_or(bad(&"expected NAME=VALUE"))?;
+                if !SETTABLE.contains(&k) {
+                    return Err(bad(&format!("NAME is one of {SETTABLE:?}")));
+                }
+                o.set.push((k.into(), v.parse().map_err(|e| bad(&e))?));
+            }
+            "--tip-height" => o.tip_height = value.parse().map_err(|e| bad(&e))?,
+            "--aim-sd-deg" => {
+                let d: f64 = value.parse().map_err(|e| bad(&e))?;
+                if !(0.0..=10.0).contains(&d) {
+                    return Err(bad(&"expected 0 to 10 degrees"));
+                }
+                o.aim_sd = d.to_radians();
             }
             _ => return Err(format!("unknown option {flag}")),
         }
@@ -99,15 +174,231 @@ fn options() -> Result<Options, String> {
     Ok(o)
 }
 
+/// Counts over one set of breaks.
 #[derive(Default)]
 struct Stats {
     breaks: usize,
     with_ball: usize,
     balls: usize,
+    balls_sq: usize,
     scratches: usize,
     legal: usize,
+    success: usize,
     money_ball: usize,
     events: usize,
+}
+
+/// One set of breaks: a game on a table with a rack slack, the cue ball's place and the
+/// aim's error (radians).
+struct Setup {
+    game: Game,
+    table: TableChoice,
+    gap: f64,
+    label: String,
+    cue: Cue,
+    aim_sd: f64,
+}
+
+/// The physical constants `--set` may change.
+const SETTABLE: [&str; 8] = [
+    "mu_slide",
+    "mu_roll",
+    "e_ball",
+    "mu_ball",
+    "e_cushion",
+    "mu_cushion",
+    "young",
+    "mu_ball_slip",
+];
+
+fn params(pairwise: bool, set: &[(String, f64)]) -> Params {
+    let mut model = SpinModel::default();
+    if pairwise {
+        model.cluster = None;
+    }
+    for (k, v) in set {
+        let v = *v;
+        match (k.as_str(), &mut model.cushion) {
+            ("mu_slide", _) => model.mu_slide = v,
+            ("mu_roll", _) => model.mu_roll = v,
+            ("e_ball", _) => model.e_ball = v,
+            ("mu_ball", _) => {
+                model.mu_ball = v;
+                model.ball_friction = BallFriction::Constant;
+            }
+            // 0: the constant mu_ball; otherwise Alciatore's fit scaled by v.
+            ("mu_ball_slip", _) => {
+                model.ball_friction = if v > 0.0 {
+                    let BallFriction::SpeedDependent { a, b, c } = BallFriction::ALCIATORE else {
+                        unreachable!("Alciatore's fit is speed-dependent")
+                    };
+                    BallFriction::SpeedDependent {
+                        a: a * v,
+                        b: b * v,
+                        c,
+                    }
+                } else {
+                    BallFriction::Constant
+                }
+            }
+            ("e_cushion", CushionModel::Han2005 { e, .. } | CushionModel::Reflect { e }) => *e = v,
+            ("mu_cushion", CushionModel::Han2005 { mu, .. }) => *mu = v,
+            ("young", _) => {
+                if let Some(h) = model.cluster.as_mut() {
+                    h.young = v;
+                }
+            }
+            _ => {}
+        }
+    }
+    let p = Params {
+        model: Model::Spin(model),
+        ..Params::default()
+    };
+    p.validate().expect("--set values in the physical ranges");
+    p
+}
+
+/// The cue ball's start.
+fn cue_position(table: &Table, cue: Cue, r: f64, rng: &mut ChaCha8Rng) -> Vec2 {
+    let b = table.centre_bounds(r);
+    let string = table.head_spot().x;
+    match cue {
+        Cue::Box => Vec2::new(
+            rng.random_range(string - table.length / 8.0..=string),
+            rng.random_range(-table.width / 4.0..=table.width / 4.0),
+        ),
+        Cue::Kitchen => Vec2::new(
+            rng.random_range(-b.x..=string),
+            rng.random_range(-b.y..=b.y),
+        ),
+        Cue::String => Vec2::new(string, rng.random_range(-b.y..=b.y)),
+        Cue::Side => {
+            let y = rng.random_range(b.y - table.width / 8.0..=b.y);
+            Vec2::new(string, if rng.random::<bool>() { y } else { -y })
+        }
+        Cue::Across(f) => {
+            let y = f * b.y;
+            Vec2::new(string, if rng.random::<bool>() { y } else { -y })
+        }
+    }
+}
+
+fn run(o: &Options, s: &Setup) -> Stats {
+    let table = s.table.table().with_jaws(0.015);
+    let params = params(o.pairwise, &o.set);
+    let r = params.ball.radius;
+    let mut rng = ChaCha8Rng::seed_from_u64(o.seed);
+    let mut st = Stats::default();
+    for _ in 0..o.breaks {
+        let seed = rng.random();
+        let mut balls: Vec<BallSetup> = match s.game {
+            Game::NineBall => {
+                billiards_rules::racks::nine_ball_spaced(&table, &params.ball, seed, s.gap)
+            }
+            _ => billiards_rules::racks::eight_ball_spaced(&table, &params.ball, seed, s.gap),
+        };
+        let cue = cue_position(&table, s.cue, r, &mut rng);
+        balls[0].position = cue;
+        let speed = rng.random_range(o.speed.0..=o.speed.1);
+        let mut aim = (balls[1].position - cue).angle();
+        if s.aim_sd > 0.0 {
+            // Box-Muller: one standard normal draw (none without the option, so the default
+            // runs keep their published numbers).
+            let (u1, u2): (f64, f64) = (rng.random(), rng.random());
+            let normal = (-2.0 * (1.0 - u1).ln()).sqrt() * (std::f64::consts::TAU * u2).cos();
+            aim += s.aim_sd * normal;
+        }
+        let mut sim = Simulation::new(table, params, &balls).expect("valid layout");
+        let shot = Shot {
+            tip: TipOffset {
+                side: 0.0,
+                height: o.tip_height,
+            },
+            ..Shot::new(aim, speed)
+        };
+        sim.strike(0, shot).expect("valid shot");
+        sim.run_to_rest().expect("comes to rest");
+        let summary = summarise(sim.history().events(), sim.numbers());
+        let verdict = GameState::new(s.game, Seat::A)
+            .play(&summary, Call::None)
+            .expect("a break is always judged");
+        let down = summary.pocketed_object_balls().count();
+        let illegal = verdict
+            .fouls
+            .iter()
+            .any(|f| matches!(f, Foul::IllegalBreak { .. }));
+        st.breaks += 1;
+        st.with_ball += usize::from(down > 0);
+        st.balls += down;
+        st.balls_sq += down * down;
+        st.scratches += usize::from(summary.scratch());
+        st.legal += usize::from(!illegal);
+        st.success += usize::from(down > 0 && verdict.legal());
+        let money = if s.game == Game::NineBall { 9 } else { 8 };
+        st.money_ball += usize::from(summary.pocket_of(money).is_some());
+        st.events += sim.history().events().len();
+    }
+    st
+}
+
+/// Wilson 95 % interval of `k` successes in `n`, in percent.
+fn wilson(k: usize, n: usize) -> (f64, f64) {
+    let (n, p, z) = (n.max(1) as f64, k as f64 / n.max(1) as f64, 1.96);
+    let d = 1.0 + z * z / n;
+    let c = (p + z * z / (2.0 * n)) / d;
+    let h = z * (p * (1.0 - p) / n + z * z / (4.0 * n * n)).sqrt() / d;
+    (100.0 * (c - h), 100.0 * (c + h))
+}
+
+fn header() {
+    println!(
+        "| game | table | rack | >= 1 ball (95 %) | balls/break | scratch | legal | success | \
+         9/8 on the break | events/break | s |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|---|---|");
+}
+
+fn row(o: &Options, s: &Setup) {
+    let start = Instant::now();
+    let st = run(o, s);
+    let n = st.breaks.max(1) as f64;
+    let pct = |k: usize| 100.0 * k as f64 / n;
+    let (lo, hi) = wilson(st.with_ball, st.breaks);
+    let mean = st.balls as f64 / n;
+    let sd = (st.balls_sq as f64 / n - mean * mean).max(0.0).sqrt();
+    println!(
+        "| {} | {} | {} | {:.1} % ({lo:.1}–{hi:.1}) | {mean:.2} ± {:.2} | {:.1} % | {:.1} % | \
+         {:.1} % | {:.1} % | {:.0} | {:.1} |",
+        match s.game {
+            Game::NineBall => "9-ball",
+            Game::EightBall => "8-ball",
+            Game::FreePlay => "free play",
+        },
+        s.table,
+        s.label,
+        pct(st.with_ball),
+        1.96 * sd / n.sqrt(),
+        pct(st.scratches),
+        pct(st.legal),
+        pct(st.success),
+        pct(st.money_ball),
+        st.events as f64 / n,
+        start.elapsed().as_secs_f64()
+    );
+}
+
+fn gap_label(gap: f64) -> String {
+    if gap == 0.0 {
+        "frozen".into()
+    } else {
+        format!("slack {gap:e} m (gaps 0–{:e} m)", 2.0 * gap)
+    }
+}
+
+fn default_table(game: Game) -> TableChoice {
+    let name = if game == Game::NineBall { "9ft" } else { "7ft" };
+    name.parse().expect("a table name")
 }
 
 fn main() {
@@ -118,85 +409,90 @@ fn main() {
             std::process::exit(2);
         }
     };
-    // The game's defaults (src/sim.rs `table_for`, `params_from` of the default settings).
-    let table = o.table.with_jaws(0.015);
-    let params = Params {
-        model: Model::Spin(SpinModel::default()),
-        ..Params::default()
-    };
-    let r = params.ball.radius;
     println!(
-        "{} breaks per game, seed {}, {} table ({:.3} in corner, {:.3} in side mouths) with jaws, \
-         spin model, {}-{} m/s, centre ball, rack gap {} mm, cue ball {}",
+        "{} breaks a row, seed {}, {}–{} m/s, cue ball {:?}, spin model with 15 mm jaws, {}",
         o.breaks,
         o.seed,
-        o.table_name,
-        o.table.corner_mouth / INCH,
-        o.table.side_mouth / INCH,
         o.speed.0,
         o.speed.1,
-        o.gap * 1e3,
-        if o.on_string {
-            "on the head string"
+        o.cue,
+        if o.pairwise {
+            "contacts pair by pair"
         } else {
-            "behind the head string"
+            "cluster impacts"
         }
     );
-    for &game in &o.games {
-        let mut rng = ChaCha8Rng::seed_from_u64(o.seed);
-        let mut s = Stats::default();
-        let start = Instant::now();
-        for _ in 0..o.breaks {
-            let seed = rng.random();
-            let mut balls: Vec<BallSetup> = match game {
-                Game::NineBall => racks::nine_ball_spaced(&table, &params.ball, seed, o.gap),
-                _ => racks::eight_ball_spaced(&table, &params.ball, seed, o.gap),
-            };
-            // Anywhere behind the head string (the kitchen), clear of the cushions.
-            let b = table.centre_bounds(r);
-            let x = rng.random_range(-b.x..=table.head_spot().x);
-            let cue = Vec2::new(
-                if o.on_string { table.head_spot().x } else { x },
-                rng.random_range(-b.y..=b.y),
-            );
-            balls[0].position = cue;
-            let aim = (balls[1].position - cue).angle();
-            let speed = rng.random_range(o.speed.0..=o.speed.1);
-            let mut sim = Simulation::new(table, params, &balls).expect("valid layout");
-            sim.strike(0, Shot::new(aim, speed)).expect("valid shot");
-            sim.run_to_rest().expect("comes to rest");
-            let summary = summarise(sim.history().events(), sim.numbers());
-            let verdict = GameState::new(game, Seat::A)
-                .play(&summary, Call::None)
-                .expect("a break is always judged");
-            let down = summary.pocketed_object_balls().count();
-            s.breaks += 1;
-            s.with_ball += usize::from(down > 0);
-            s.balls += down;
-            s.scratches += usize::from(summary.scratch());
-            s.legal += usize::from(verdict.legal());
-            let money = if game == Game::NineBall { 9 } else { 8 };
-            s.money_ball += usize::from(summary.pocket_of(money).is_some());
-            s.events += sim.history().events().len();
+    header();
+    let mut setups = Vec::new();
+    if o.suite {
+        let nine = |t: &str| t.parse::<TableChoice>().expect("a table name");
+        for (game, tables) in [
+            (Game::NineBall, vec![nine("9ft"), nine("9ft-tight")]),
+            (Game::EightBall, vec![nine("7ft")]),
+        ] {
+            for table in tables {
+                for rack in RackStyle::ALL {
+                    setups.push(Setup {
+                        game,
+                        table,
+                        gap: rack.gap(),
+                        label: rack.name().into(),
+                        cue: o.cue,
+                        aim_sd: o.aim_sd,
+                    });
+                }
+            }
         }
-        let n = s.breaks.max(1) as f64;
-        let pct = |k: usize| 100.0 * k as f64 / n;
-        println!(
-            "{:<9} pocket >= 1: {:5.1} %  balls/break: {:.2}  scratch: {:4.1} %  legal: {:5.1} %  \
-             {} on the break: {:3.1} %  events/break: {:.0}  ({:.1} s)",
-            match game {
-                Game::NineBall => "9-ball",
-                Game::EightBall => "8-ball",
-                Game::FreePlay => "free play",
-            },
-            pct(s.with_ball),
-            s.balls as f64 / n,
-            pct(s.scratches),
-            pct(s.legal),
-            if game == Game::NineBall { 9 } else { 8 },
-            pct(s.money_ball),
-            s.events as f64 / n,
-            start.elapsed().as_secs_f64()
-        );
+        for gap in [0.0, 1e-9, 0.01e-3, 0.05e-3] {
+            setups.push(Setup {
+                game: Game::NineBall,
+                table: nine("9ft"),
+                gap,
+                label: gap_label(gap),
+                cue: o.cue,
+                aim_sd: o.aim_sd,
+            });
+        }
+        // The pros' 9-ball break: from near a long cushion, square on the 1, with FastFiz's
+        // aim noise at magnitude 1 (crates/rules/README.md, "Why the target is missed").
+        for rack in RackStyle::ALL {
+            setups.push(Setup {
+                game: Game::NineBall,
+                table: nine("9ft"),
+                gap: rack.gap(),
+                label: format!("{}, side break, aim ± 0.125°", rack.name()),
+                cue: Cue::Side,
+                aim_sd: 0.125f64.to_radians(),
+            });
+        }
+    } else {
+        for &game in &o.games {
+            let table = o.table.unwrap_or(default_table(game));
+            let gaps = o.gaps.clone().unwrap_or(vec![o.rack.gap()]);
+            for gap in gaps {
+                let label = if o.gaps.is_some() {
+                    gap_label(gap)
+                } else {
+                    o.rack.name().into()
+                };
+                setups.push(Setup {
+                    game,
+                    table,
+                    gap,
+                    label,
+                    cue: o.cue,
+                    aim_sd: o.aim_sd,
+                });
+            }
+        }
     }
+    for s in &setups {
+        row(&o, s);
+    }
+    let t = o.table.map(|t| t.table()).unwrap_or(Table::wpa_9ft());
+    println!(
+        "(a table's pockets: {:.3} in corner, {:.3} in side; `-tight`: 4 in corner)",
+        t.corner_mouth / INCH,
+        t.side_mouth / INCH
+    );
 }

@@ -44,9 +44,23 @@ impl Game {
     /// The rack of this game from `seed` ([`crate::racks`]); free play racks the 15 balls
     /// as 8-ball does. The cue ball comes first, on the head spot.
     pub fn rack(self, table: &Table, ball: &BallSpec, seed: u64) -> Vec<BallSetup> {
+        self.rack_styled(table, ball, seed, crate::racks::RackStyle::Triangle)
+    }
+
+    /// [`Game::rack`] racked in `style`: a template (frozen) or a triangle (seeded gaps).
+    pub fn rack_styled(
+        self,
+        table: &Table,
+        ball: &BallSpec,
+        seed: u64,
+        style: crate::racks::RackStyle,
+    ) -> Vec<BallSetup> {
+        let gap = style.gap();
         match self {
-            Game::NineBall => crate::racks::nine_ball(table, ball, seed),
-            Game::EightBall | Game::FreePlay => crate::racks::eight_ball(table, ball, seed),
+            Game::NineBall => crate::racks::nine_ball_spaced(table, ball, seed, gap),
+            Game::EightBall | Game::FreePlay => {
+                crate::racks::eight_ball_spaced(table, ball, seed, gap)
+            }
         }
     }
 }

@@ -33,6 +33,7 @@ pub use game::{
 pub use hand::{PlacementError, check_placement};
 pub use log::{GameLog, LogError, LoggedShot};
 pub use race::Match;
+pub use racks::RackStyle;
 
 pub use respot::{
     RESPOT_CLEARANCE, SPOT_CLEARANCE, cue_ball_spot, foot_spot_position, head_string_spot,

@@ -10,6 +10,10 @@
 //! (0.1 mm). The paper's 1/10 in (2.5 mm) is 25 times more, and a break of it rarely pockets
 //! a ball; a perfectly frozen rack is a measure-zero case whose break depends on rounding.
 //!
+//! Two ways of racking, as players do ([`RackStyle`]): a template (a thin sheet that holds
+//! every ball frozen against its neighbours: no gaps at all) or a triangle (racked by hand:
+//! the seeded gaps above).
+//!
 //! Orders: 9-ball (WPA 2.2): the 1 at the apex on the foot spot, the 9 in the centre, the
 //! others at random. 8-ball (WPA 3.2): the 8 in the centre of the third row, a solid and a
 //! stripe in the two back corners (which one left is random), the other twelve at random.
@@ -18,12 +22,56 @@ use billiards_physics::{BallSetup, BallSpec, Table, Vec2};
 use rand::seq::SliceRandom;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
 
 /// Slack added to the lattice spacing of a rack, metres (0.05 mm).
 pub const RACK_GAP: f64 = 0.05e-3;
 
 /// Largest random offset of a racked ball from its lattice point, metres (0.025 mm).
 pub const RACK_JITTER: f64 = 0.5 * RACK_GAP;
+
+/// How the balls are racked.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RackStyle {
+    /// A template rack: every ball frozen to its neighbours (gaps of zero).
+    Template,
+    /// A triangle racked by hand: gaps of 0 to 0.1 mm from the seed ([`RACK_GAP`]).
+    #[default]
+    Triangle,
+}
+
+impl RackStyle {
+    /// Both styles.
+    pub const ALL: [RackStyle; 2] = [RackStyle::Template, RackStyle::Triangle];
+
+    /// The lattice slack of this style, metres.
+    pub fn gap(self) -> f64 {
+        match self {
+            RackStyle::Template => 0.0,
+            RackStyle::Triangle => RACK_GAP,
+        }
+    }
+
+    /// Its name on the command line: `template`, `triangle`.
+    pub fn name(self) -> &'static str {
+        match self {
+            RackStyle::Template => "template",
+            RackStyle::Triangle => "triangle",
+        }
+    }
+}
+
+impl std::str::FromStr for RackStyle {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, String> {
+        RackStyle::ALL
+            .into_iter()
+            .find(|r| r.name() == s)
+            .ok_or_else(|| format!("rack `{s}`: expected template or triangle"))
+    }
+}
 
 /// Row sizes of the 9-ball diamond, apex first.
 const DIAMOND: [usize; 5] = [1, 2, 3, 2, 1];
@@ -197,6 +245,38 @@ mod tests {
             (10..=40).contains(&left_solid),
             "the solid's side is random"
         );
+    }
+
+    #[test]
+    fn a_template_rack_is_frozen_and_a_triangle_has_small_gaps() {
+        let (table, spec) = (Table::wpa_9ft(), BallSpec::default());
+        let gaps = |balls: &[BallSetup]| -> Vec<f64> {
+            let mut g = Vec::new();
+            for (i, a) in balls.iter().enumerate().skip(1) {
+                for b in &balls[i + 1..] {
+                    let gap = (a.position - b.position).length() - 2.0 * spec.radius;
+                    if gap < 0.2e-3 {
+                        g.push(gap);
+                    }
+                }
+            }
+            g
+        };
+        let t = nine_ball_spaced(&table, &spec, 3, RackStyle::Template.gap());
+        Simulation::new(table, Params::default(), &t).expect("valid rack");
+        assert!(gaps(&t).iter().all(|g| g.abs() < 1e-15), "{:?}", gaps(&t));
+        assert_eq!(gaps(&t).len(), 16, "the diamond's 16 touching pairs");
+        let h = nine_ball_spaced(&table, &spec, 3, RackStyle::Triangle.gap());
+        assert!(gaps(&h).iter().any(|&g| g > 1e-6));
+        assert_eq!("template".parse::<RackStyle>(), Ok(RackStyle::Template));
+        assert!(
+            "loose"
+                .parse::<RackStyle>()
+                .unwrap_err()
+                .contains("expected")
+        );
+        // On the 9-ft table the apex is on its foot spot.
+        assert_eq!(t[1].position, table.foot_spot());
     }
 
     #[test]

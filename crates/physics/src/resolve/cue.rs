@@ -52,5 +52,54 @@ pub fn strike(
     let v = speed * (1.0 + mass_ratio) / (1.0 + mass_ratio + 2.5 * offset * offset);
     let k = 2.5 * v / radius;
     let w = Vec3::new(0.0, 0.0, k * tip.side) + dir.perp().extend() * (k * tip.height);
-    Ok((dir * v, w))
+    let heading = match model.end_mass {
+        // Right english (side > 0) squirts the ball left of the cue line.
+        Some(m) => dir.rotated(squirt_angle(tip.side, ball_mass / m)),
+        None => dir,
+    };
+    Ok((heading * v, w))
+}
+
+/// Squirt angle (radians, signed like `side`) of a ball struck at a side offset `side` (in
+/// radii) by a shaft of effective end mass `ball_mass / mass_ratio` (Alciatore TP A-31,
+/// after Shepard 2001: the ball pushes the tip sideways during contact):
+/// `tan(squirt) = (5/2) b sqrt(1 - b^2) / (1 + m/m_e + (5/2)(1 - b^2))`, `b = side`.
+pub fn squirt_angle(side: f64, mass_ratio: f64) -> f64 {
+    let b = side.clamp(-1.0, 1.0);
+    let c2 = 1.0 - b * b;
+    (2.5 * b * c2.sqrt() / (1.0 + mass_ratio + 2.5 * c2)).atan()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn squirt_follows_tp_a31_and_points_away_from_the_english() {
+        let m = SpinModel {
+            end_mass: Some(0.17 / 22.0),
+            ..SpinModel::default()
+        };
+        let tip = TipOffset {
+            side: 0.5,
+            height: 0.0,
+        };
+        let (v, w) = strike(&m, 0.17, 0.028575, Vec2::new(1.0, 0.0), 2.0, tip).unwrap();
+        // tan = 2.5 * 0.5 * sqrt(0.75) / (1 + 22 + 2.5 * 0.75) = 1.0825 / 24.875.
+        let want = (1.25 * 0.75f64.sqrt() / 24.875).atan();
+        assert!((v.angle() - want).abs() < 1e-15, "{} vs {want}", v.angle());
+        assert!(
+            v.y > 0.0 && w.z > 0.0,
+            "right english spins +z and squirts left"
+        );
+        // The same speed and spin as without squirt: only the heading turns.
+        let plain = SpinModel::default();
+        let (v0, w0) = strike(&plain, 0.17, 0.028575, Vec2::new(1.0, 0.0), 2.0, tip).unwrap();
+        assert!((v.length() - v0.length()).abs() < 1e-15 && w == w0);
+        assert_eq!(v0.y, 0.0);
+        // Centre ball: no squirt; a lighter end mass squirts less.
+        assert_eq!(squirt_angle(0.0, 22.0), 0.0);
+        assert!(squirt_angle(0.5, 40.0) < squirt_angle(0.5, 22.0));
+        assert_eq!(squirt_angle(-0.5, 22.0), -squirt_angle(0.5, 22.0));
+    }
 }

@@ -5,17 +5,24 @@
 mod ball_ball;
 mod ball_cushion;
 pub mod cue;
+pub mod hertz;
+pub mod mathavan_2010;
 mod resting;
+mod throw;
 
-pub use ball_ball::{equal_mass_restitution, frictional_spheres, resting_contact, unpress};
+pub use ball_ball::{
+    equal_mass_restitution, friction_impulse, frictional_spheres, resting_contact, unpress,
+};
 pub use ball_cushion::{SETTLE_SPEED, han_2005, reflect, resting_reflect, settle};
+pub use mathavan_2010::{Mathavan2010, mathavan_2010};
 pub use resting::{
     FixedBody, InstantContacts, is_resting, keep_rolling, resting_on_fixed_body, resting_pair,
 };
+pub use throw::{contact_slip_speed, speed_dependent_spheres};
 
 use crate::ball::BallState;
 use crate::math::{Vec2, Vec3};
-use crate::params::{BallSpec, CushionModel, Model, Randomization, SpinModel};
+use crate::params::{BallFriction, BallSpec, CushionModel, Model, Randomization, SpinModel};
 use cue::{Miscue, TipOffset};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -54,10 +61,19 @@ impl Laws {
                         mu,
                         height: m.cushion_height,
                     },
+                    CushionModel::Mathavan2010 { e, mu } => {
+                        CushionLaw::Mathavan2010(Mathavan2010 {
+                            e,
+                            mu_cushion: mu,
+                            mu_table: m.mu_slide,
+                            // Set from the ball's radius in `respond`.
+                            height: m.cushion_height,
+                        })
+                    }
                 },
                 ball: BallLaw::FrictionalSpheres {
                     e: m.e_ball,
-                    mu: m.mu_ball,
+                    mu: PairFriction::of(&m),
                 },
                 settles: true,
             },
@@ -107,6 +123,8 @@ pub enum CushionLaw {
         /// Height of the cushion nose as a fraction of the ball's diameter.
         height: f64,
     },
+    /// [`mathavan_2010`]; its `height` is the nose height as a fraction of the diameter.
+    Mathavan2010(Mathavan2010),
 }
 
 impl CushionLaw {
@@ -118,6 +136,13 @@ impl CushionLaw {
             CushionLaw::Reflect { e } => reflect(v, n, e).map(|v| (v, w)),
             CushionLaw::Han2005 { e, mu, height } => {
                 han_2005(v, w, n, e, mu, radius, 2.0 * radius * height)
+            }
+            CushionLaw::Mathavan2010(m) => {
+                let m = Mathavan2010 {
+                    height: 2.0 * radius * m.height,
+                    ..m
+                };
+                mathavan_2010(v, w, n, &m, radius)
             }
         }
     }
@@ -136,8 +161,42 @@ pub enum BallLaw {
         /// Restitution.
         e: f64,
         /// Ball–ball friction.
-        mu: f64,
+        mu: PairFriction,
     },
+}
+
+/// The ball–ball friction of one model: its constant `mu_ball` and how the coefficient
+/// depends on the contact's slip speed ([`BallFriction`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PairFriction {
+    /// The model's constant coefficient, used by [`BallFriction::Constant`].
+    pub constant: f64,
+    /// Constant, or speed-dependent (Alciatore TP A-14).
+    pub law: BallFriction,
+}
+
+impl PairFriction {
+    /// The same coefficient `mu` at every slip speed.
+    pub fn constant(mu: f64) -> Self {
+        Self {
+            constant: mu,
+            law: BallFriction::Constant,
+        }
+    }
+
+    /// The spin model's ball–ball friction.
+    pub fn of(m: &SpinModel) -> Self {
+        Self {
+            constant: m.mu_ball,
+            law: m.ball_friction,
+        }
+    }
+
+    /// The coefficient at slip speed `v` (m/s).
+    #[inline]
+    pub fn at(&self, v: f64) -> f64 {
+        self.law.mu(self.constant, v)
+    }
 }
 
 impl BallLaw {

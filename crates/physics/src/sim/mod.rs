@@ -9,19 +9,21 @@ use crate::history::History;
 use crate::limits;
 use crate::math::{Vec2, Vec3};
 use crate::motion;
-use crate::params::{ParamError, Params};
+use crate::params::{Model, ParamError, Params, SpinModel};
 use crate::resolve::{self, FixedBody, FixedContact, InstantContacts, Laws, NormalPerturbation};
 use crate::table::{Cushion, Pocket, PocketShape, Table};
 use pending::{Pending, PendingKind};
 use predict::{Bodies, Predictions, Scene, StrategyChoice};
 
 mod cell_lists;
+mod cluster;
 mod pair_table;
 mod path_box;
 mod pending;
 mod predict;
 mod setup;
 
+pub use cluster::{CLUSTER_MIN_SPEED, MAX_CLUSTER, cluster_reach};
 pub use setup::{BallSetup, PLACEMENT_TOLERANCE, SetupError, SimError};
 
 /// What one [`Simulation::advance`] did.
@@ -60,6 +62,12 @@ pub struct Simulation {
     perturbation: NormalPerturbation,
     /// The contacts with cushions and jaws resolved at the current instant.
     instant_contacts: InstantContacts,
+    /// Cluster impacts resolved so far.
+    impacts: usize,
+    /// The events of the last processed prediction (a cluster impact records several), and
+    /// how many of them [`Simulation::step_event`] has handed out.
+    burst: Vec<Event>,
+    burst_next: usize,
 }
 
 clone_reusing!(Simulation {
@@ -75,6 +83,9 @@ clone_reusing!(Simulation {
     event_count,
     perturbation,
     instant_contacts,
+    impacts,
+    burst,
+    burst_next,
 });
 
 impl Simulation {
@@ -113,6 +124,9 @@ impl Simulation {
             time: 0.0,
             perturbation: NormalPerturbation::new(params.randomization),
             instant_contacts: InstantContacts::default(),
+            impacts: 0,
+            burst: Vec::new(),
+            burst_next: 0,
         };
         sim.predict_all();
         Ok(sim)
@@ -189,6 +203,12 @@ impl Simulation {
         self.event_count
     }
 
+    /// Cluster impacts resolved since the simulation was built (each recorded as one
+    /// [`EventKind::BallBall`] per pair it pressed, see [`History::impact_of`]).
+    pub fn cluster_impacts(&self) -> usize {
+        self.impacts
+    }
+
     /// No ball is moving.
     pub fn is_at_rest(&self) -> bool {
         self.segments.iter().all(|s| s.state.motion.is_at_rest())
@@ -220,14 +240,21 @@ impl Simulation {
     }
 
     /// Advances exactly to the next event and processes it (and only it); `None` at rest.
+    /// A cluster impact records several events at one instant: they are handed out one a
+    /// call, the first when the impact is processed.
     pub fn step_event(&mut self) -> Option<Event> {
+        if let Some(&e) = self.burst.get(self.burst_next) {
+            self.burst_next += 1;
+            return Some(e);
+        }
         let before = self.event_count;
         // Grid crossings are internal: keep going until a physical event is processed.
         while self.event_count == before {
             let p = self.predictions.next()?;
             self.process(p);
         }
-        self.last_event
+        self.burst_next = 1;
+        self.burst.first().copied()
     }
 
     /// Runs until every ball rests; the clock ends at the last event.
@@ -265,6 +292,7 @@ impl Simulation {
         let (v, w) = cue.strike(&self.params.ball, dir, shot.speed, shot.tip)?;
         self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v, w);
         self.record(EventKind::Strike { ball: id, shot });
+        self.inputs_done();
         self.repredict([id]);
         Ok(())
     }
@@ -298,6 +326,7 @@ impl Simulation {
         }
         self.segments[id] = motion::segment_from(&self.params, self.time, position, velocity, spin);
         self.record(EventKind::Placed { ball: id });
+        self.inputs_done();
         self.repredict([id]);
         Ok(())
     }
@@ -327,6 +356,7 @@ impl Simulation {
         };
         self.event_count += 1;
         self.last_event = Some(event);
+        self.inputs_done();
         if self.record_history {
             self.history.push_all(event, &self.segments, params);
         }
@@ -350,6 +380,8 @@ impl Simulation {
     /// are bookkeeping) and its balls re-predicted.
     fn process(&mut self, p: Pending) {
         debug_assert!(p.time >= self.time, "time never goes back");
+        self.burst.clear();
+        self.burst_next = 0;
         self.time = p.time;
         match p.kind {
             PendingKind::Crossing(id, side) => {
@@ -366,6 +398,7 @@ impl Simulation {
             PendingKind::Jaw(id, k) => self.jaw(id, k),
             PendingKind::Pair(a, b) => self.ball_pair(a, b),
         }
+        self.burst_next = self.burst.len();
     }
 
     /// Ball `id`'s motion changes by itself (slide to roll, roll to rest).
@@ -434,10 +467,32 @@ impl Simulation {
         self.segments[id] = motion::segment_from(&self.params, self.time, s.position, v, w);
     }
 
-    /// Balls `a` and `b` touch.
+    /// Balls `a` and `b` touch: a cluster impact if they have neighbours within the reach of
+    /// the contact, else the pair's own law.
     fn ball_pair(&mut self, a: BallId, b: BallId) {
         let t = self.time;
         let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
+        if let Model::Spin(SpinModel {
+            cluster: Some(_), ..
+        }) = self.params.model
+        {
+            let d = sb.position - sa.position;
+            let n = d.normalized().unwrap_or(Vec2::new(1.0, 0.0));
+            let dv = sb.velocity - sa.velocity;
+            let da = self.segments[b].acceleration - self.segments[a].acceleration;
+            let pressing = -da.dot(n) - dv.perp_dot(n).powi(2) / d.length().max(f64::MIN_POSITIVE);
+            let depth = 2.0 * self.params.ball.radius - d.length();
+            let reach = cluster::cluster_reach(
+                &self.params.model,
+                &self.params.ball,
+                -dv.dot(n),
+                depth,
+                pressing,
+            );
+            if let Some(cluster) = reach.and_then(|reach| self.cluster_of(a, b, reach)) {
+                return self.cluster_impact(&cluster);
+            }
+        }
         let laws = Laws::of(&self.params.model);
         let (na, nb) = resolve::ball_pair(
             &laws,
@@ -467,9 +522,17 @@ impl Simulation {
         };
         self.event_count += 1;
         self.last_event = Some(event);
+        self.burst.push(event);
         if self.record_history {
             self.history.push(event);
         }
+    }
+
+    /// Marks the events recorded so far as handed out (after an input: a strike, a
+    /// placement, a change of parameters is not returned by [`Simulation::step_event`]).
+    fn inputs_done(&mut self) {
+        self.burst.clear();
+        self.burst_next = 0;
     }
 
     /// Predicts every ball from now.

@@ -500,7 +500,7 @@ mod tests {
             total.ties += a.ties;
         }
         // Thousands of events compared, every one the same event, nearly all to the bit.
-        assert!(total.close > 4000 && total.ties == 0, "{total:?}");
+        assert!(total.close > 3500 && total.ties == 0, "{total:?}");
         assert!(total.exact * 10 > total.close * 9, "{total:?}");
     }
 

@@ -1,0 +1,261 @@
+//! The contacts of the Mathavan 2010 impact: slips, friction within the cones, the rates
+//! of the velocities per unit impulse, one Runge–Kutta step, and the grip of a zero slip.
+
+/// One contact's friction: sliding against its slip (the direction kept for a slip of zero),
+/// or stuck.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Grip {
+    Slide([f64; 2]),
+    Stick,
+}
+
+/// The geometry and constants in the form the equations use.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Setup {
+    pub(super) s: f64,
+    pub(super) c: f64,
+    pub(super) r: f64,
+    pub(super) mu_w: f64,
+    pub(super) mu_s: f64,
+    /// Slips below this (m/s) count as zero.
+    pub(super) tol: f64,
+}
+
+/// State: `vx, vy, wx, wy, wz, W` (W: the normal force's work per unit mass).
+pub(super) type State = [f64; 6];
+
+pub(super) fn hypot(v: [f64; 2]) -> f64 {
+    v[0].hypot(v[1])
+}
+
+pub(super) fn unit(v: [f64; 2], fallback: [f64; 2]) -> [f64; 2] {
+    let l = hypot(v);
+    if l > 0.0 {
+        [v[0] / l, v[1] / l]
+    } else {
+        fallback
+    }
+}
+
+impl Setup {
+    /// Slips at the nose `(x_I, y'_I)` and at the cloth `(x_C, y_C)` (eqs. 12–13).
+    pub(super) fn slips(&self, y: &State) -> ([f64; 2], [f64; 2]) {
+        let (s, c, r) = (self.s, self.c, self.r);
+        (
+            [y[0] + r * (y[3] * s - y[4] * c), -y[1] * s + r * y[2]],
+            [y[0] - r * y[3], y[1] + r * y[2]],
+        )
+    }
+
+    pub(super) fn direction(&self, slip: [f64; 2], grip: Grip) -> [f64; 2] {
+        match grip {
+            Grip::Slide(d) if hypot(slip) <= self.tol => d,
+            Grip::Slide(d) => unit(slip, d),
+            Grip::Stick => [0.0, 0.0],
+        }
+    }
+
+    /// Friction `(a, b, p, q)` per unit impulse for the grips, and the table's normal `N`.
+    pub(super) fn friction(&self, y: &State, gi: Grip, gc: Grip) -> ([f64; 4], f64) {
+        self.friction_fixed(y, gi, gc, [false; 2])
+    }
+
+    /// [`Self::friction`], the nose's (`Some(true)`) or cloth's sliding direction held at the
+    /// one its grip keeps.
+    pub(super) fn friction_fixed(
+        &self,
+        y: &State,
+        gi: Grip,
+        gc: Grip,
+        fixed: [bool; 2],
+    ) -> ([f64; 4], f64) {
+        let (s, c) = (self.s, self.c);
+        let (si, sc) = self.slips(y);
+        let kept = |g: Grip| match g {
+            Grip::Slide(d) => d,
+            Grip::Stick => [0.0, 0.0],
+        };
+        let ui = if fixed[0] {
+            kept(gi)
+        } else {
+            self.direction(si, gi)
+        };
+        let uc = if fixed[1] {
+            kept(gc)
+        } else {
+            self.direction(sc, gc)
+        };
+        let normal = |b: f64| (s - c * b).max(0.0);
+        // The slip rates are d(slip)/dP = g + K f with g = (0, s c | 0, -c) and
+        // K = [[7/2, 1 - 5s/2], [1 - 5s/2, 7/2]] on (a, p), [[s^2 + 5/2, 5/2 - s], [5/2 - s, 7/2]]
+        // on (b, q): a stuck contact takes the friction that keeps its slip rate zero.
+        let (kx, ky) = (1.0 - 2.5 * s, 2.5 - s);
+        let f = match (gi, gc) {
+            (Grip::Slide(_), Grip::Slide(_)) => {
+                let (a, b) = (-self.mu_w * ui[0], -self.mu_w * ui[1]);
+                let n = normal(b);
+                [a, b, -self.mu_s * n * uc[0], -self.mu_s * n * uc[1]]
+            }
+            (Grip::Stick, Grip::Slide(_)) => {
+                // q = -mu_s uc_y (s - c b) is linear in b: solve the Y' row for b.
+                let m = self.mu_s * uc[1];
+                let b = (-s * c + ky * m * s) / (s * s + 2.5 + ky * m * c);
+                let n = normal(b);
+                let (p, q) = (-self.mu_s * n * uc[0], -self.mu_s * n * uc[1]);
+                [-kx * p / 3.5, b, p, q]
+            }
+            (Grip::Slide(_), Grip::Stick) => {
+                let (a, b) = (-self.mu_w * ui[0], -self.mu_w * ui[1]);
+                [a, b, -kx * a / 3.5, (c - ky * b) / 3.5]
+            }
+            (Grip::Stick, Grip::Stick) => {
+                let (ka, kb, kd) = (s * s + 2.5, ky, 3.5);
+                let det = ka * kd - kb * kb;
+                let (g1, g2) = (-s * c, c);
+                [
+                    0.0,
+                    (g1 * kd - kb * g2) / det,
+                    0.0,
+                    (ka * g2 - kb * g1) / det,
+                ]
+            }
+        };
+        (f, normal(f[1]))
+    }
+
+    /// Whether stuck contacts' friction lies within their cones.
+    pub(super) fn holds(&self, f: &[f64; 4], n: f64, gi: Grip, gc: Grip) -> bool {
+        let slack = 1.0 + 1e-12;
+        (gi != Grip::Stick || hypot([f[0], f[1]]) <= self.mu_w * slack)
+            && (gc != Grip::Stick || hypot([f[2], f[3]]) <= self.mu_s * n * slack)
+    }
+
+    pub(super) fn rate(&self, y: &State, gi: Grip, gc: Grip) -> State {
+        self.rate_fixed(y, gi, gc, [false; 2])
+    }
+
+    pub(super) fn rate_fixed(&self, y: &State, gi: Grip, gc: Grip, fixed: [bool; 2]) -> State {
+        let (s, c) = (self.s, self.c);
+        let ([a, b, p, q], _) = self.friction_fixed(y, gi, gc, fixed);
+        let k = 2.5 / self.r;
+        [
+            a + p,
+            -c - b * s + q,
+            k * (b + q),
+            k * (a * s - p),
+            -k * a * c,
+            c * y[1],
+        ]
+    }
+
+    /// Slip rates of the nose and the cloth.
+    pub(super) fn slip_rates(&self, y: &State, gi: Grip, gc: Grip) -> ([f64; 2], [f64; 2]) {
+        let d = self.rate(y, gi, gc);
+        let (s, c, r) = (self.s, self.c, self.r);
+        (
+            [d[0] + r * (d[3] * s - d[4] * c), -d[1] * s + r * d[2]],
+            [d[0] - r * d[3], d[1] + r * d[2]],
+        )
+    }
+
+    /// One step; contacts marked `fixed` slide along their kept direction throughout (a
+    /// slip's own direction is lost near zero).
+    pub(super) fn rk4(&self, y: &State, h: f64, gi: Grip, gc: Grip, fixed: [bool; 2]) -> State {
+        let add =
+            |y: &State, k: &State, f: f64| -> State { std::array::from_fn(|i| y[i] + f * k[i]) };
+        let rate = |t: &State| self.rate_fixed(t, gi, gc, fixed);
+        let k1 = rate(y);
+        let k2 = rate(&add(y, &k1, 0.5 * h));
+        let k3 = rate(&add(y, &k2, 0.5 * h));
+        let k4 = rate(&add(y, &k3, h));
+        std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
+    }
+
+    /// The grip of the nose (`nose`) or cloth contact whose slip is zero: stuck if the cone
+    /// holds the friction that keeps it so, otherwise sliding the way its slip then grows
+    /// (the direction `u` with slip rate along `u` while friction opposes `u`, by fixed point).
+    pub(super) fn grip_at_zero(&self, y: &State, nose: bool, other: Grip) -> Grip {
+        let (gi, gc) = if nose {
+            (Grip::Stick, other)
+        } else {
+            (other, Grip::Stick)
+        };
+        let (f, n) = self.friction(y, gi, gc);
+        if self.holds(&f, n, gi, gc) {
+            return Grip::Stick;
+        }
+        let pick = |u: [f64; 2]| {
+            let (ri, rc) = if nose {
+                self.slip_rates(y, Grip::Slide(u), other)
+            } else {
+                self.slip_rates(y, other, Grip::Slide(u))
+            };
+            if nose { ri } else { rc }
+        };
+        let need = if nose { [f[0], f[1]] } else { [f[2], f[3]] };
+        let cone = if nose { self.mu_w } else { self.mu_s * n };
+        let boundary = unit(need, [1.0, 0.0]);
+        let boundary = [-boundary[0], -boundary[1]];
+        // Just past a let-go the friction stays continuous: it opposes what sticking needs.
+        if hypot(need) <= cone * (1.0 + 1e-6) {
+            return Grip::Slide(boundary);
+        }
+        let mut u = boundary;
+        for _ in 0..30 {
+            u = unit(pick(u), u);
+        }
+        let r = pick(u);
+        if r[0] * u[0] + r[1] * u[1] > 0.0 {
+            Grip::Slide(u)
+        } else {
+            Grip::Slide(boundary)
+        }
+    }
+}
+
+/// What ends a step early.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Event {
+    /// The normal velocity reaches zero: compression ends.
+    Compressed,
+    /// The work reaches its final value: the impact ends.
+    Restituted,
+    /// The nose's (`true`) or the cloth's slip reaches zero along its start direction.
+    SlipZero(bool),
+    /// A stuck nose (`true`) or cloth contact needs more friction than its cone holds.
+    LetsGo(bool),
+}
+
+impl Setup {
+    /// Sets a contact's slip, found zero to within the last step's error, to exactly zero
+    /// through the spins (a change of the order of that error), so that its sliding direction
+    /// after a let-go is not the residue's.
+    pub(super) fn snap(&self, y: &mut State, nose: bool) {
+        let (si, sc) = self.slips(y);
+        if nose {
+            y[2] -= si[1] / self.r;
+            y[4] += si[0] / (self.r * self.c.max(1e-3));
+        } else {
+            y[3] += sc[0] / self.r;
+            y[2] -= sc[1] / self.r;
+        }
+    }
+
+    /// Grips made consistent at state `y`: a stuck contact whose cone no longer holds its
+    /// friction slides, the other contact then re-checked (both may have zero slip at once).
+    pub(super) fn settle(&self, y: &State, mut gi: Grip, mut gc: Grip) -> (Grip, Grip) {
+        for _ in 0..4 {
+            let (f, n) = self.friction(y, gi, gc);
+            if self.holds(&f, n, gi, gc) {
+                break;
+            }
+            let nose_holds = gi != Grip::Stick || self.holds(&f, n, gi, Grip::Slide([0.0, 0.0]));
+            if !nose_holds {
+                gi = self.grip_at_zero(y, true, gc);
+            } else {
+                gc = self.grip_at_zero(y, false, gi);
+            }
+        }
+        (gi, gc)
+    }
+}

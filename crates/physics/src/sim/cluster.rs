@@ -1,0 +1,196 @@
+//! Impacts that reach a cluster: a ball–ball contact whose balls have neighbours closer than
+//! the distance one contact closes is resolved over the whole connected cluster at once, with
+//! Hertz forces over the impact's finite duration ([`crate::resolve::hertz`]).
+
+use super::Simulation;
+use crate::ball::{BallId, BallState};
+use crate::event::EventKind;
+use crate::math::Vec2;
+use crate::motion;
+use crate::params::{HertzContact, Model};
+use crate::resolve;
+use crate::resolve::hertz::{self, Edge, Hertz};
+
+/// Slowest approach (m/s) that makes a cluster impact; slower contacts are resolved pair by
+/// pair (their balls move less than a micrometre before stopping, so their order is moot).
+pub const CLUSTER_MIN_SPEED: f64 = 1e-3;
+
+/// Most balls in one cluster impact; a larger connected cluster is resolved pair by pair.
+pub const MAX_CLUSTER: usize = 64;
+
+/// The balls and pairs of one cluster.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Cluster {
+    /// Ball ids; `members[0]` and `members[1]` are the pair whose contact started it.
+    pub members: Vec<BallId>,
+    /// Pairs closer than the reach, as local indices, with their normals and gaps.
+    pub edges: Vec<Edge>,
+}
+
+/// The cluster distance: balls whose surfaces are closer than this to a ball of a contact
+/// whose pair approaches at `approach` (m/s, along their normal) take part in it (`None`
+/// without a cluster model, or when the contact is too slow or resting: `depth` is how far
+/// the pair is into each other, `pressing` their relative normal acceleration, as in
+/// [`resolve::is_resting`]).
+pub fn cluster_reach(
+    model: &Model,
+    ball: &crate::params::BallSpec,
+    approach: f64,
+    depth: f64,
+    pressing: f64,
+) -> Option<f64> {
+    let Model::Spin(m) = model else { return None };
+    let material: HertzContact = m.cluster?;
+    if approach.is_nan()
+        || approach <= CLUSTER_MIN_SPEED
+        || resolve::is_resting(depth, approach, pressing)
+    {
+        return None;
+    }
+    Some(Hertz::elastic(&material, ball).reach(approach))
+}
+
+impl Simulation {
+    /// The cluster a contact of `a` and `b` reaches: every ball in play connected to them by
+    /// gaps under `reach` (m). `None` if it is only the pair, or larger than [`MAX_CLUSTER`].
+    pub(super) fn cluster_of(&self, a: BallId, b: BallId, reach: f64) -> Option<Cluster> {
+        let t = self.time;
+        let r2 = 2.0 * self.params.ball.radius;
+        let near = r2 + reach;
+        let positions: Vec<Option<Vec2>> = self
+            .segments
+            .iter()
+            .map(|s| s.state.motion.on_table().then(|| s.position_at(t)))
+            .collect();
+        let mut local = vec![usize::MAX; positions.len()];
+        let mut cluster = Cluster::default();
+        for id in [a, b] {
+            local[id] = cluster.members.len();
+            cluster.members.push(id);
+        }
+        // The starting pair is edge 0.
+        let (pa, pb) = (positions[a]?, positions[b]?);
+        cluster.edges.push(Edge {
+            a: 0,
+            b: 1,
+            n: (pb - pa).normalized().unwrap_or(Vec2::new(1.0, 0.0)),
+            gap: (pb - pa).length() - r2,
+        });
+        let mut next = 0;
+        while next < cluster.members.len() {
+            let id = cluster.members[next];
+            let p = positions[id].expect("members are in play");
+            for (j, q) in positions.iter().enumerate() {
+                let Some(q) = *q else { continue };
+                if j == id || (local[j] != usize::MAX && local[j] <= next) || (next == 0 && j == b)
+                {
+                    continue;
+                }
+                let d = q - p;
+                if d.x.abs() >= near || d.y.abs() >= near {
+                    continue;
+                }
+                let dist = d.length();
+                if dist >= near {
+                    continue;
+                }
+                if local[j] == usize::MAX {
+                    if cluster.members.len() == MAX_CLUSTER {
+                        return None;
+                    }
+                    local[j] = cluster.members.len();
+                    cluster.members.push(j);
+                }
+                cluster.edges.push(Edge {
+                    a: next,
+                    b: local[j],
+                    n: d.normalized().unwrap_or(Vec2::new(1.0, 0.0)),
+                    gap: dist - r2,
+                });
+            }
+            next += 1;
+        }
+        (cluster.members.len() > 2).then_some(cluster)
+    }
+
+    /// Resolves `cluster` as one impact now: Hertz forces integrated over its duration, then
+    /// each pair's friction impulse in the order their contacts began (no normal is
+    /// randomized: the perturbation draws nothing here). Records one
+    /// [`EventKind::BallBall`] per pair that carried an impulse (the starting pair first),
+    /// each with its balls' states after the whole impact, and marks them as one impact.
+    pub(super) fn cluster_impact(&mut self, cluster: &Cluster) {
+        let Model::Spin(m) = self.params.model else {
+            unreachable!("only the spin model has cluster contacts")
+        };
+        let material = m.cluster.expect("a cluster model");
+        let t = self.time;
+        let r = self.params.ball.radius;
+        let hertz = Hertz::new(&material, &self.params.ball, m.e_ball);
+        let friction = resolve::PairFriction::of(&m);
+        let mut states: Vec<BallState> = cluster
+            .members
+            .iter()
+            .map(|&id| self.segments[id].state_at(t))
+            .collect();
+        let mut velocities: Vec<Vec2> = states.iter().map(|s| s.velocity).collect();
+        let impact = hertz::impact(&hertz, &mut velocities, &cluster.edges);
+        for (s, v) in states.iter_mut().zip(&velocities) {
+            s.velocity = *v;
+        }
+        let mut order: Vec<usize> = (0..cluster.edges.len())
+            .filter(|&k| impact.impulse[k] > 0.0)
+            .collect();
+        // The starting pair first, then by onset (ties by index: deterministic).
+        order.sort_by(|&x, &y| {
+            let key = |k: usize| (k != 0, impact.onset[k]);
+            key(x)
+                .partial_cmp(&key(y))
+                .expect("onsets are not NaN")
+                .then(x.cmp(&y))
+        });
+        for &k in &order {
+            let e = cluster.edges[k];
+            let jn = impact.impulse[k] / self.params.ball.mass;
+            let (sa, sb) =
+                resolve::friction_impulse(&states[e.a], &states[e.b], e.n, jn, friction, r);
+            states[e.a] = sa;
+            states[e.b] = sb;
+        }
+        let mut changed = vec![false; cluster.members.len()];
+        for &k in &order {
+            let e = cluster.edges[k];
+            changed[e.a] = true;
+            changed[e.b] = true;
+        }
+        for (i, &id) in cluster.members.iter().enumerate() {
+            if changed[i] {
+                let s = &states[i];
+                self.segments[id] = motion::segment_from(
+                    &self.params,
+                    t,
+                    s.position,
+                    s.velocity,
+                    s.angular_velocity,
+                );
+            }
+        }
+        for &k in &order {
+            let e = cluster.edges[k];
+            let (x, y) = (cluster.members[e.a], cluster.members[e.b]);
+            self.record(EventKind::BallBall {
+                a: x.min(y),
+                b: x.max(y),
+            });
+        }
+        self.impacts += 1;
+        if self.record_history {
+            let start = self.history.events().len() - order.len();
+            self.history.mark_impact(start..self.history.events().len());
+        }
+        for (i, &id) in cluster.members.iter().enumerate() {
+            if changed[i] {
+                self.repredict([id]);
+            }
+        }
+    }
+}
