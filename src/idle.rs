@@ -21,9 +21,8 @@ use bevy::{
     window::{RequestRedraw, WindowEvent},
     winit::{EventLoopProxyWrapper, WinitUserEvent},
 };
-use bevy_egui::EguiContexts;
 
-use crate::pipelines::PipelineProgress;
+use crate::{pipelines::PipelineProgress, ui::RepaintCauses};
 
 /// Counts the frames drawn in `seconds` of idle, prints them and exits.
 #[derive(Debug, Clone)]
@@ -47,6 +46,7 @@ impl Plugin for IdleCountPlugin {
             first_frame: None,
             trace: Vec::new(),
         })
+        .init_resource::<RepaintCauses>()
         .add_systems(Last, count_idle_frames);
     }
 }
@@ -82,7 +82,7 @@ fn count_idle_frames(
     proxy: Option<Res<EventLoopProxyWrapper>>,
     mut window_events: MessageReader<WindowEvent>,
     mut redraws: MessageReader<RequestRedraw>,
-    mut contexts: EguiContexts,
+    causes: Res<RepaintCauses>,
     mut exit: MessageWriter<AppExit>,
 ) {
     count.frame.store(frames.0, Ordering::SeqCst);
@@ -134,21 +134,10 @@ fn count_idle_frames(
     match (count.phase.load(Ordering::SeqCst), count.first_frame) {
         (1, None) => count.first_frame = Some(frames.0),
         (1, Some(_)) => {
-            // egui's causes are those of its last pass, which asked for this frame.
-            let causes = contexts.ctx_mut().map_or_else(
-                |_| "no egui context".to_owned(),
-                |ctx| {
-                    ctx.repaint_causes()
-                        .iter()
-                        .map(ToString::to_string)
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                },
-            );
-            let (total, waiting) = progress.counts();
+            let causes = &causes.0;
             let line = format!(
                 "idle frame {}: window events [{}]; RequestRedraw written: {redraw_count}; \
-                 egui repaint causes [{causes}]; pipelines {total} ({waiting} waiting)",
+                 UI repaint causes [{causes}]; pipelines {total} ({waiting} waiting)",
                 frames.0,
                 events.join(", ")
             );

@@ -80,6 +80,12 @@ pub fn plugin(app: &mut App) {
                 .after(EguiPostUpdateSet::ProcessOutput)
                 .before(EguiPostUpdateSet::PostProcessOutput),
         )
+        .add_systems(
+            PostUpdate,
+            record_repaint_causes
+                .run_if(resource_exists::<RepaintCauses>)
+                .after(EguiPostUpdateSet::EndPass),
+        )
         .add_systems(Startup, spawn_ui_camera)
         .add_systems(
             EguiPrimaryContextPass,
@@ -228,6 +234,23 @@ fn whole_pixel_glyphs(mut contexts: EguiContexts, mut done: Local<bool>) -> Resu
             .all_styles_mut(|style| style.visuals.text_options.subpixel_binning = false);
         *done = true;
     }
+    Ok(())
+}
+
+/// What made egui ask for the frame now running (its repaint causes, "file:line reason"),
+/// kept only while something reads it (`--count-idle-frames`, [`crate::idle`]).
+#[derive(Resource, Debug, Default, Clone, PartialEq, Eq)]
+pub struct RepaintCauses(pub String);
+
+/// egui's causes are those of its last pass, which asked for this frame.
+fn record_repaint_causes(mut contexts: EguiContexts, mut causes: ResMut<RepaintCauses>) -> Result {
+    causes.0 = contexts
+        .ctx_mut()?
+        .repaint_causes()
+        .iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join(", ");
     Ok(())
 }
 
