@@ -123,7 +123,7 @@ pub enum CushionLaw {
         /// Height of the cushion nose as a fraction of the ball's diameter.
         height: f64,
     },
-    /// [`mathavan_2010`]; its `height` is the nose height as a fraction of the diameter.
+    /// [`mathavan_2010()`]; its `height` is the nose height as a fraction of the diameter.
     Mathavan2010(Mathavan2010),
 }
 
