@@ -1,9 +1,8 @@
 //! `--count-idle-frames SECONDS`: how many frames the window draws while nothing happens
 //! (the render test's measure of the reactive window). Once every render pipeline is ready,
 //! the last two frames asked for no other and the window has drawn nothing for a few seconds
-//! (the start-up frames are over), a thread
-//! wakes the event loop twice, `SECONDS` apart; the frames between the two wake-ups are the
-//! idle frames. Prints `idle frames: N in S s`, then one line for each idle frame naming what
+//! (the start-up frames are over), a thread wakes the event loop twice, `SECONDS` apart; the
+//! frames between the two wake-ups are the idle frames. Prints `idle frames: N in S s`, then one line for each idle frame naming what
 //! woke it (window and input events, `RequestRedraw` messages, egui's repaint causes, the
 //! pipeline counts), then exits.
 
