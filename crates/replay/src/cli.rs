@@ -189,6 +189,9 @@ pub struct ExportArgs {
     /// Write a numbered PNG sequence into this folder.
     #[arg(long)]
     pub png: Option<PathBuf>,
+    /// Write a video here: MP4, or WebM for a `.webm` name (needs `ffmpeg` on the PATH).
+    #[arg(long)]
+    pub video: Option<PathBuf>,
     /// Frames per second of simulated time.
     #[arg(long, default_value_t = 30.0)]
     pub fps: f64,
@@ -587,8 +590,8 @@ fn export_cmd(a: ExportArgs) -> Result<(), String> {
         height: a.size.1,
         span,
     };
-    if a.gif.is_none() && a.png.is_none() {
-        return Err("nothing to export: give --gif FILE and/or --png DIR".into());
+    if a.gif.is_none() && a.png.is_none() && a.video.is_none() {
+        return Err("nothing to export: give --gif FILE, --png DIR and/or --video FILE".into());
     }
     let bar = ProgressBar::new(0);
     bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} frames").expect("template"));
@@ -606,6 +609,11 @@ fn export_cmd(a: ExportArgs) -> Result<(), String> {
         let n = export::png_sequence(&rec, &opts, dir, &mut progress).map_err(|e| e.to_string())?;
         bar.finish_and_clear();
         println!("{}: {n} frames", dir.display());
+    }
+    if let Some(out) = &a.video {
+        let n = export::video(&rec, &opts, out, &mut progress).map_err(|e| e.to_string())?;
+        bar.finish_and_clear();
+        println!("{}: {n} frames", out.display());
     }
     Ok(())
 }
