@@ -300,12 +300,14 @@ fn breaks(search: &Search, place_list: &[Option<Vec2>], budget: &Budget) -> Vec<
     out
 }
 
-/// Where the breaker may put the cue ball: the head spot and two points either side of it
-/// on the head string (a quarter and a half of the way to the side cushions), those legal.
+/// Where the breaker may put the cue ball: the head spot, a quarter of the way to either side
+/// cushion, and three quarters of the way, near the rail, where pros break 9-ball from: the
+/// wing ball then reaches the corner pocket (crates/rules/README.md, the break study), those
+/// legal.
 fn break_places(sim: &Simulation, cue: usize, rule: CueBall) -> Vec<Vec2> {
     let spot = sim.table().head_spot();
     let half = sim.table().centre_bounds(sim.params().ball.radius).y;
-    [0.0, 0.25, -0.25, 0.5]
+    [0.0, 0.25, -0.25, 0.75, -0.75]
         .into_iter()
         .map(|f| spot + Vec2::new(0.0, f * half))
         .filter(|&p| check_placement(sim, cue, p, rule).is_ok())
