@@ -24,7 +24,7 @@ fn game(rack: Rack) -> App {
     app.add_plugins((MinimalPlugins, mode::plugin, settings::plugin, sim::plugin));
     app.insert_resource(TimeUpdateStrategy::ManualDuration(FRAME));
     app.update();
-    app.world_mut().write_message(RackRequested(rack));
+    app.world_mut().write_message(RackRequested::standard(rack));
     app.update();
     app
 }

@@ -1,4 +1,4 @@
-//! Settings kept between runs: the physics, view and graphics settings in a JSON file in the
+//! Settings kept between runs: the physics, view and graphics settings and the table in a JSON file in the
 //! platform's config directory (`$XDG_CONFIG_HOME/billiards/settings.json`, else
 //! `~/.config/billiards/settings.json`; `~/Library/Application Support/billiards` on macOS,
 //! `%APPDATA%\billiards` on Windows).
@@ -16,7 +16,10 @@ use std::{
 use bevy::prelude::*;
 use serde::{Deserialize, Serialize};
 
-use crate::settings::{GraphicsSettings, PhysicsSettings, ViewSettings};
+use crate::{
+    settings::{GraphicsSettings, PhysicsSettings, TableSetup, ViewSettings},
+    table::geometry::TableSpec,
+};
 
 /// Loads the settings file at start and saves it on every change.
 pub fn plugin(app: &mut App) {
@@ -68,6 +71,8 @@ pub struct Config {
     pub view: ViewSettings,
     /// Graphics quality.
     pub graphics: GraphicsSettings,
+    /// The table and the rack style.
+    pub table: TableSetup,
 }
 
 impl Config {
@@ -136,6 +141,7 @@ fn load_config(
     mut physics: ResMut<PhysicsSettings>,
     mut view: ResMut<ViewSettings>,
     mut graphics: ResMut<GraphicsSettings>,
+    (mut table, spec): (ResMut<TableSetup>, Option<ResMut<TableSpec>>),
 ) {
     let Some(path) = file.path.clone() else {
         return;
@@ -145,6 +151,11 @@ fn load_config(
             *physics = config.physics;
             *view = config.view;
             *graphics = config.graphics;
+            *table = config.table;
+            // The first rack and the table's meshes already follow the kept table.
+            if let Some(mut spec) = spec {
+                spec.set_if_neq(TableSpec::of(table.table));
+            }
             file.written = Some(config.to_json());
         }
         // Nothing yet: the file appears at the first change.
@@ -167,8 +178,9 @@ fn save_config(
     physics: Res<PhysicsSettings>,
     view: Res<ViewSettings>,
     graphics: Res<GraphicsSettings>,
+    table: Res<TableSetup>,
 ) {
-    if !(physics.is_changed() || view.is_changed() || graphics.is_changed()) {
+    if !(physics.is_changed() || view.is_changed() || graphics.is_changed() || table.is_changed()) {
         return;
     }
     let Some(path) = file.path.clone() else {
@@ -178,6 +190,7 @@ fn save_config(
         physics: *physics,
         view: *view,
         graphics: *graphics,
+        table: *table,
     }
     .to_json();
     // Pausing, or a slider back where it was, changes nothing kept.

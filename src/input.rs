@@ -16,7 +16,7 @@ pub enum InputSystems {
 
 /// While set, a click or drag on the table does not aim the cue: it means something else (a
 /// pocket being called) or the shot is not the player's (the computer's turn). Set by the game
-/// flow ([`crate::game`]), read by the cue's pointer input.
+/// flow ([`crate::play::game`]), read by the cue's pointer input.
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
 pub struct AimLocked(pub bool);
 

@@ -3,30 +3,17 @@
 //! One plugin per feature; [`GamePlugin`] puts them together with Bevy's. The game's modes are
 //! [`mode::GameMode`]; every egui part lives in [`ui`], which also adds egui itself.
 
-pub mod aim;
-pub mod balls;
-pub mod camera;
-pub mod computer;
 pub mod config;
-pub mod cue;
-pub mod display;
-pub mod game;
-pub mod geometry;
-pub mod graphics;
-pub mod idle;
 pub mod input;
-pub mod lighting;
 pub mod mode;
 pub mod options;
-pub mod pipelines;
+pub mod play;
 pub mod recording;
 pub mod replay;
-pub mod screenshot;
 pub mod settings;
 pub mod sim;
 pub mod sound;
 pub mod table;
-pub mod table_mesh;
 pub mod ui;
 pub mod view;
 
@@ -60,31 +47,31 @@ impl Plugin for GamePlugin {
             }),
             ..default()
         }))
-        .add_plugins((mode::plugin, pipelines::plugin))
+        .add_plugins((mode::plugin, view::pipelines::plugin))
         .add_plugins((
             settings::plugin,
             sim::plugin,
             table::plugin,
-            balls::plugin,
-            cue::plugin,
-            aim::plugin,
-            camera::plugin,
-            lighting::plugin,
+            table::balls::plugin,
+            play::cue::plugin,
+            play::aim::plugin,
+            view::camera::plugin,
+            view::lighting::plugin,
             ui::plugin,
             recording::plugin,
             replay::plugin,
-            game::plugin,
-            game::table_plugin,
-            computer::plugin,
+            play::game::plugin,
+            play::game::table_plugin,
+            play::computer::plugin,
         ))
-        .add_plugins((config::plugin, graphics::plugin, view::plugin));
+        .add_plugins((config::plugin, view::graphics::plugin, view::plugin));
         #[cfg(feature = "sound")]
         app.add_plugins(sound::plugin);
         if let Some(file) = &self.options.replay {
             app.insert_resource(replay::OpenAtStart(file.clone()));
         }
         if let Some(game) = self.options.game {
-            app.insert_resource(game::StartGame(game));
+            app.insert_resource(play::game::StartGame(game));
         }
         if self.options.no_record {
             app.insert_resource(recording::RecordingsFolder(None));
@@ -103,14 +90,14 @@ impl Plugin for GamePlugin {
             app.insert_resource(ui::OpenSections(true));
         }
         if let Some(seconds) = self.options.count_idle_frames {
-            app.add_plugins(idle::IdleCountPlugin { seconds });
+            app.add_plugins(view::idle::IdleCountPlugin { seconds });
         }
         if self.options.top_view {
-            app.insert_resource(camera::OrbitCamera::top_view());
+            app.insert_resource(view::camera::OrbitCamera::top_view());
         }
         match &self.options.screenshot {
             Some(path) => {
-                app.add_plugins(screenshot::ScreenshotPlugin {
+                app.add_plugins(view::screenshot::ScreenshotPlugin {
                     path: path.clone(),
                     settle: self.options.screenshot_settle,
                 });
@@ -118,7 +105,7 @@ impl Plugin for GamePlugin {
             // Redraw only on input or when something asks for it (moving balls, the camera
             // easing): an idle table costs no CPU.
             None => {
-                app.add_systems(Update, pipelines::redraw_until_ready);
+                app.add_systems(Update, view::pipelines::redraw_until_ready);
                 // No periodic wake-up either (`desktop_app` updates every 5 s at idle): a frame
                 // is drawn only for input, a window event or a `RequestRedraw`.
                 app.insert_resource(WinitSettings {

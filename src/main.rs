@@ -17,7 +17,7 @@ fn main() -> ExitCode {
         println!("{}", LaunchOptions::USAGE);
         return ExitCode::SUCCESS;
     }
-    if let Err(error) = billiards::display::check(std::env::var("DISPLAY").ok().as_deref()) {
+    if let Err(error) = billiards::view::display::check(std::env::var("DISPLAY").ok().as_deref()) {
         eprintln!("billiards: {error}");
         return ExitCode::FAILURE;
     }

@@ -11,9 +11,7 @@ use std::{
 
 use bevy::prelude::*;
 
-use crate::sim::{
-    RackRequested, ShotFinished, ShotUndone, SimStatus, SimSystems, Solver, rack_slug,
-};
+use crate::sim::{RackRequested, ShotFinished, ShotUndone, SimStatus, SimSystems, Solver};
 
 /// Registers the autosave.
 pub fn plugin(app: &mut App) {
@@ -107,7 +105,7 @@ fn save_before_rack(
         return;
     };
     let inputs = solver.recorder().recording().inputs.len();
-    let path = game_file(folder, solver.started(), solver.rack());
+    let path = game_file(folder, solver.started(), solver.name());
     let saved = autosave.file.as_ref() == Some(&path) && autosave.inputs == inputs;
     if inputs > 0 && !saved {
         save_game(folder, &solver, status.shots, &mut autosave);
@@ -116,7 +114,7 @@ fn save_before_rack(
 
 /// Writes the game in `solver` to its file in `folder` and notes what was written.
 fn save_game(folder: &Path, solver: &Solver, shots: u32, autosave: &mut Autosave) {
-    let path = game_file(folder, solver.started(), solver.rack());
+    let path = game_file(folder, solver.started(), solver.name());
     let recording = solver.recorder().recording();
     let result = std::fs::create_dir_all(folder)
         .map_err(|error| format!("{}: {error}", folder.display()))
@@ -137,9 +135,9 @@ fn save_game(folder: &Path, solver: &Solver, shots: u32, autosave: &mut Autosave
     }
 }
 
-/// The file of the game that started at `started` from `rack`:
-/// `YYYY-MM-DD_HH-MM-SS.mmm_<rack>.json` (UTC), so a folder listing sorts by date.
-pub fn game_file(folder: &Path, started: SystemTime, rack: billiards_physics::Rack) -> PathBuf {
+/// The file of the game that started at `started` from the rack named `name` ("9-ball"):
+/// `YYYY-MM-DD_HH-MM-SS.mmm_<name>.json` (UTC), so a folder listing sorts by date.
+pub fn game_file(folder: &Path, started: SystemTime, name: &str) -> PathBuf {
     let since_epoch = started.duration_since(UNIX_EPOCH).unwrap_or_default();
     let secs = since_epoch.as_secs();
     let (year, month, day) = civil_from_days((secs / 86_400) as i64);
@@ -150,7 +148,7 @@ pub fn game_file(folder: &Path, started: SystemTime, rack: billiards_physics::Ra
         of_day / 60 % 60,
         of_day % 60,
         since_epoch.subsec_millis(),
-        rack_slug(rack),
+        name,
     ))
 }
 
@@ -204,7 +202,7 @@ mod tests {
             game_file(
                 folder,
                 UNIX_EPOCH + Duration::from_millis(s * 1000 + ms),
-                billiards_physics::Rack::NineBall,
+                "9-ball",
             )
         };
         assert_eq!(

@@ -8,9 +8,9 @@ use std::{path::Path, time::Duration};
 
 use bevy::prelude::*;
 use billiards::{
-    computer::{self, Computer, ComputerPace, HintRequested},
-    game::{self, NewGameRequested, Rules, Turn},
     input::AimLocked,
+    play::computer::{self, Computer, ComputerPace, HintRequested},
+    play::game::{self, NewGameRequested, Rules, Turn},
     recording::{Autosave, RecordingsFolder},
     settings::ShotSettings,
 };
@@ -30,6 +30,7 @@ fn start(folder: &Path, game: Game) -> App {
         race_to: 1,
         seed: 11,
         computer: [Some(Level::Easy), Some(Level::Easy)],
+        setup: Default::default(),
     });
     app.update();
     app.update();

@@ -8,13 +8,13 @@ use std::path::Path;
 
 use bevy::{math::DVec2, prelude::*};
 use billiards::{
-    balls::{Ball, BallMotion},
-    game::{self, GameInPlay, NewGameRequested, Rules, Turn, TurnCommand},
-    geometry::TableSpec,
     input::AimLocked,
+    play::game::{self, GameInPlay, NewGameRequested, Rules, Turn, TurnCommand},
     recording::{Autosave, RecordingsFolder},
     replay::OpenRecording,
     sim::{self, ShotRequested, SimStatus, Solver, place_ball_in_hand},
+    table::balls::{Ball, BallMotion},
+    table::geometry::TableSpec,
 };
 use billiards_physics::recording::Recording;
 use billiards_rules::{CueBall, Foul, Game, GameLog, Outcome, PlacementError, Seat, WinReason};
@@ -30,6 +30,7 @@ fn start(folder: &Path, game: Game, race_to: u32) -> App {
         race_to,
         seed: 7,
         computer: [None, None],
+        setup: Default::default(),
     });
     app.update();
     app.update();
@@ -294,6 +295,7 @@ fn a_nine_ball_match_is_played_through_the_turns_to_its_winner() {
         race_to: 1,
         seed: 0,
         computer: [None, None],
+        setup: Default::default(),
     });
     app.update();
     app.update();

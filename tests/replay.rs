@@ -8,8 +8,6 @@ use std::path::{Path, PathBuf};
 
 use bevy::{math::DVec2, prelude::*, window::FileDragAndDrop};
 use billiards::{
-    balls::{Ball, BallMotion, Pocketed},
-    geometry::TableSpec,
     mode::GameMode,
     recording::{self, Autosave, RecordingsFolder},
     replay::{
@@ -18,6 +16,8 @@ use billiards::{
     },
     settings::PhysicsSettings,
     sim::{RackRequested, ShotRequested, SimStatus, Solver, params_from},
+    table::balls::{Ball, BallMotion, Pocketed},
+    table::geometry::TableSpec,
 };
 use billiards_physics::{
     Motion, Rack, Shot,
@@ -44,7 +44,7 @@ fn game(folder: &Path, rack: Rack) -> App {
     let mut app = headless();
     app.insert_resource(RecordingsFolder(Some(folder.to_path_buf())));
     app.update();
-    app.world_mut().write_message(RackRequested(rack));
+    app.world_mut().write_message(RackRequested::standard(rack));
     app.update();
     app
 }
@@ -375,7 +375,7 @@ fn another_ball_count_gets_its_own_balls_and_the_live_ones_come_back() {
 
     // A rack asked for while replaying closes the replay and racks the live table.
     app.world_mut()
-        .write_message(RackRequested(Rack::PaperDefault));
+        .write_message(RackRequested::standard(Rack::PaperDefault));
     app.update();
     assert_eq!(mode(&app), GameMode::Play);
     assert_eq!(balls::<With<Ball>>(&mut app).len(), 1);
@@ -441,7 +441,7 @@ fn a_cancelled_export_stops_and_leaves_no_gif() {
         ReplayCommand::Export(ExportRequest {
             format: ExportFormat::Gif,
             scope: ExportScope::WholeGame,
-            fps: 60.0,
+            fps: 50.0,
             width: 1280,
             height: 720,
             path: Some(out.clone()),
@@ -548,7 +548,7 @@ fn a_shot_struck_while_paused_is_saved_before_a_rack_replaces_the_game() {
     // Nothing finished (paused), so the shot is not saved yet: then a rack is asked for.
     assert!(app.world().resource::<Autosave>().file.is_none());
     app.world_mut()
-        .write_message(RackRequested(Rack::FifteenBall));
+        .write_message(RackRequested::standard(Rack::FifteenBall));
     app.update();
     let saved = app
         .world()
@@ -570,7 +570,8 @@ fn a_shot_struck_while_paused_is_saved_before_a_rack_replaces_the_game() {
     );
     // A second rack request with nothing new played writes nothing more.
     let modified = std::fs::metadata(&saved).unwrap().modified().unwrap();
-    app.world_mut().write_message(RackRequested(Rack::NineBall));
+    app.world_mut()
+        .write_message(RackRequested::standard(Rack::NineBall));
     app.update();
     assert_eq!(
         std::fs::metadata(&saved).unwrap().modified().unwrap(),

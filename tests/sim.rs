@@ -5,14 +5,14 @@ use std::time::Duration;
 
 use bevy::{math::DVec2, prelude::*, time::TimeUpdateStrategy};
 use billiards::{
-    balls::{Ball, BallMotion, Pocketed},
-    geometry::TableSpec,
     mode,
     settings::{self, PhysicsSettings},
     sim::{
         self, BallPocketed, RackRequested, ShotFinished, ShotRequested, SimStatus, Solver,
         params_from, table_for,
     },
+    table::balls::{Ball, BallMotion, Pocketed},
+    table::geometry::TableSpec,
 };
 use billiards_physics::{Motion, Rack, Shot, Simulation, TipOffset};
 use billiards_rules::Shots;
@@ -25,7 +25,7 @@ fn game(rack: Rack) -> App {
         16,
     )));
     app.update();
-    app.world_mut().write_message(RackRequested(rack));
+    app.world_mut().write_message(RackRequested::standard(rack));
     app.update();
     app
 }

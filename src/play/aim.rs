@@ -12,9 +12,9 @@ use bevy::{math::DVec2, prelude::*};
 use billiards_physics::{BallSetup, BallState, EventKind, Shot, Simulation};
 
 use crate::{
-    geometry::{TableSpec, to_world},
     settings::{ShotSettings, ViewSettings},
     sim::{SimStatus, SimSystems, Solver, to_dvec2},
+    table::geometry::{TableSpec, to_world},
 };
 
 /// Registers the prediction and its drawing.
@@ -66,6 +66,8 @@ pub struct BallPath {
     pub number: u8,
     /// Its centre, sampled along each piece of its motion (every event it takes is a point).
     pub points: Vec<DVec2>,
+    /// The pocket its drawn path ends in, if it drops.
+    pub pocket: Option<billiards_physics::Pocket>,
 }
 
 impl AimPrediction {
@@ -178,6 +180,8 @@ struct Trace {
     contacts: u32,
     /// When its path ends (its last counted contact, rest, a pocket), once it has.
     until: Option<f64>,
+    /// The pocket, when the path ends in one.
+    pocket: Option<billiards_physics::Pocket>,
 }
 
 /// Steps the simulation on from the first contact (`first`, just resolved) and returns the
@@ -197,6 +201,7 @@ fn follow(sim: &mut Simulation, first: billiards_physics::Event, contacts: u32) 
                 breaks: Vec::new(),
                 contacts: 0,
                 until: None,
+                pocket: None,
             })
         })
         .collect();
@@ -217,6 +222,7 @@ fn follow(sim: &mut Simulation, first: billiards_physics::Event, contacts: u32) 
                 breaks: Vec::new(),
                 contacts: 0,
                 until: None,
+                pocket: None,
             });
             if trace.until.is_some() {
                 continue;
@@ -226,6 +232,9 @@ fn follow(sim: &mut Simulation, first: billiards_physics::Event, contacts: u32) 
                 trace.contacts += 1;
             }
             let state = sim.ball(id);
+            if let billiards_physics::Motion::Pocketed(pocket) = state.motion {
+                trace.pocket = Some(pocket);
+            }
             if trace.contacts >= contacts || !state.motion.on_table() || state.motion.is_at_rest() {
                 trace.until = Some(event.time);
             }
@@ -257,6 +266,7 @@ fn follow(sim: &mut Simulation, first: billiards_physics::Event, contacts: u32) 
             moved.then(|| BallPath {
                 number: sim.numbers()[id],
                 points,
+                pocket: trace.pocket,
             })
         })
         .collect();

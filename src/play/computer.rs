@@ -15,12 +15,12 @@ use billiards_physics::{Cushion, Vec2};
 use billiards_rules::{Call, CueBall, GameState, pocket_name};
 
 use crate::{
-    balls::{Ball, BallMotion, Pocketed},
-    game::{Rules, Turn, TurnCommand},
-    geometry::TableSpec,
     mode::GameMode,
+    play::game::{Rules, Turn, TurnCommand},
     settings::ShotSettings,
     sim::{ShotRequested, SimStatus, SimSystems, Solver, place_ball_in_hand},
+    table::balls::{Ball, BallMotion, Pocketed},
+    table::geometry::TableSpec,
 };
 
 /// How long the computer shows its aim (or its choice) before it acts; tests set zero.
@@ -163,7 +163,12 @@ fn play_computer_turn(
     // The window draws on demand only: keep frames coming while the computer plays.
     redraw.write(RequestRedraw);
     if *turn.get() == Turn::Verdict && next.choices.is_empty() {
-        // A verdict to read before the computer shoots: it continues after a moment.
+        // A human at the table reads the verdict (a foul of theirs, ball in hand) and says
+        // when: it stays until they continue. Between two computers it goes on after a moment.
+        if game.seats.iter().any(Option::is_none) {
+            computer.doing = Some(format!("{} waits for you to continue", game.name(seat)));
+            return;
+        }
         let since = match &computer.turn {
             Some(Task::Reading { since, .. }) => *since,
             _ => {
@@ -294,7 +299,7 @@ fn give_hint(
     mut computer: ResMut<Computer>,
     mut shot_settings: ResMut<ShotSettings>,
     mut cue_ball: Query<(&Ball, &mut BallMotion), Without<Pocketed>>,
-    mut redraw: MessageWriter<RequestRedraw>,
+    (mut redraw, mut calls): (MessageWriter<RequestRedraw>, MessageWriter<TurnCommand>),
 ) {
     let asked = requests.read().count() > 0;
     let (Some(game), Some(solver)) = (&rules.game, solver) else {
@@ -339,6 +344,11 @@ fn give_hint(
                     &mut shot_settings,
                     &mut cue_ball,
                 );
+                // The hint's call too (a ball and pocket, a safety): the player confirms it by
+                // shooting, or changes it.
+                if plan.call != Call::None {
+                    calls.write(TurnCommand::Call(plan.call));
+                }
             }
             format!("hint: {}", describe(&decision))
         }

@@ -7,14 +7,15 @@
 //! - Space: shoot.
 
 use crate::{
-    balls::{Ball, BallMotion, Pocketed, world_velocity},
-    camera::{CameraSystems, TableCamera},
-    geometry::{TableSpec, table_dir_to_world, to_table_plane},
     input::{InputSystems, aim_unlocked, held_or_clicked},
     mode::GameMode,
+    play::key_repeat::HeldKeys,
     settings::{ClampReport, ShotSettings, ViewSettings, apply_shot_edit},
-    sim::{ShotRequested, ShotUndone, SimStatus, SimSystems, Solver, place_ball_in_hand},
+    sim::{Referee, ShotRequested, ShotUndone, SimStatus, SimSystems, Solver, place_ball_in_hand},
+    table::balls::{Ball, BallMotion, Pocketed, world_velocity},
+    table::geometry::{TableSpec, table_dir_to_world, to_table_plane},
     view,
+    view::camera::{CameraSystems, TableCamera},
 };
 use bevy::{
     input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
@@ -264,33 +265,39 @@ fn aim_with_mouse(
     apply_shot_edit(next, &mut shot, &mut report);
 }
 
-/// Arrow keys turn the aim and change the power; Space shoots.
+/// Arrow keys turn the aim and change the power, a tap by one step and a held key at a rate
+/// in real time ([`HeldKeys`]); Space shoots.
+#[allow(clippy::too_many_arguments)]
 fn cue_keys(
     keys: Res<ButtonInput<KeyCode>>,
     time: Res<Time<Real>>,
     status: Res<SimStatus>,
+    mut held: Local<HeldKeys>,
     mut shot: ResMut<ShotSettings>,
     mut report: ResMut<ClampReport>,
     mut shots: MessageWriter<ShotRequested>,
+    mut redraw: MessageWriter<RequestRedraw>,
 ) {
     if !status.at_rest {
+        *held = HeldKeys::default();
         return;
     }
-    let dt = f64::from(time.delta_secs());
+    let now = time.elapsed_secs_f64();
+    let frame = (now - time.delta_secs_f64(), now);
     let fine = keys.any_pressed([KeyCode::ShiftLeft, KeyCode::ShiftRight]);
-    let turn_rate = if fine { 2f64 } else { 30.0 }.to_radians();
+    // A tap: 1 degree (0.1 with Shift) or 0.1 m/s; held: 30 (2) degrees or 3 m/s a second.
+    let turn: (f64, f64) = if fine { (0.1, 2.0) } else { (1.0, 30.0) };
+    let turn = (turn.0.to_radians(), turn.1.to_radians());
+    let mut motion = |key: KeyCode, rates: (f64, f64)| {
+        let state = (keys.just_pressed(key), keys.pressed(key));
+        held.motion(key, state, frame, rates)
+    };
     let mut next = *shot;
-    if keys.pressed(KeyCode::ArrowLeft) {
-        next.angle += turn_rate * dt;
-    }
-    if keys.pressed(KeyCode::ArrowRight) {
-        next.angle -= turn_rate * dt;
-    }
-    if keys.pressed(KeyCode::ArrowUp) {
-        next.power += 3.0 * dt;
-    }
-    if keys.pressed(KeyCode::ArrowDown) {
-        next.power -= 3.0 * dt;
+    next.angle += motion(KeyCode::ArrowLeft, turn) - motion(KeyCode::ArrowRight, turn);
+    next.power += motion(KeyCode::ArrowUp, (0.1, 3.0)) - motion(KeyCode::ArrowDown, (0.1, 3.0));
+    if held.any_held() {
+        // The window draws on input only: keep frames coming while a key is held.
+        redraw.write(RequestRedraw);
     }
     apply_shot_edit(next, &mut shot, &mut report);
     if keys.just_pressed(KeyCode::Space) {
@@ -302,6 +309,7 @@ fn cue_keys(
 /// and shows it only while a shot can be taken.
 fn place_cue(
     spec: Res<TableSpec>,
+    referee: Res<Referee>,
     shot: Res<ShotSettings>,
     status: Res<SimStatus>,
     balls: Query<(&Ball, &BallMotion), Without<Pocketed>>,
@@ -309,7 +317,7 @@ fn place_cue(
     mut redraw: MessageWriter<RequestRedraw>,
 ) {
     let (mut transform, mut visibility) = cue.into_inner();
-    let cue_ball = cue_ball_position(&balls).filter(|_| status.at_rest);
+    let cue_ball = cue_ball_position(&balls).filter(|_| status.at_rest && !referee.rack_over);
     let wanted_visibility = if cue_ball.is_some() {
         Visibility::Inherited
     } else {

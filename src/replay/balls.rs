@@ -6,9 +6,9 @@ use billiards_physics::{BallState, Motion};
 
 use super::open::OpenRecording;
 use crate::{
-    balls::{Ball, BallMotion, Pocketed},
-    geometry::TableSpec,
     sim::ball_motion,
+    table::balls::{Ball, BallMotion, Pocketed},
+    table::geometry::TableSpec,
 };
 
 /// Marks the entities that show a recorded ball (despawned when the replay closes).

@@ -1,4 +1,4 @@
-//! The replay's background jobs: an export (GIF or PNG sequence) and a verification, each on
+//! The replay's background jobs: an export (GIF, PNG sequence or MP4) and a verification, each on
 //! its own thread so a long recording never freezes the window. The viewer starts them, polls
 //! [`ExportJob::is_finished`] / [`VerifyJob::is_finished`] each frame and collects the result.
 
@@ -23,6 +23,8 @@ pub enum ExportFormat {
     Gif,
     /// A folder of numbered PNG files.
     PngSequence,
+    /// An MP4 video for sharing, encoded by the `ffmpeg` on the PATH.
+    Video,
 }
 
 /// Which part of the recording an export covers.
@@ -38,7 +40,7 @@ pub enum ExportScope {
 /// An export of the open recording.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ExportRequest {
-    /// GIF or PNG sequence.
+    /// GIF, PNG sequence or MP4.
     pub format: ExportFormat,
     /// Current shot or whole game.
     pub scope: ExportScope,
@@ -95,6 +97,7 @@ impl ExportJob {
                     ExportFormat::PngSequence => {
                         export::png_sequence(&recording, &options, &out, &mut progress)
                     }
+                    ExportFormat::Video => export::video(&recording, &options, &out, &mut progress),
                 }
                 .map_err(|error| error.to_string())
             })

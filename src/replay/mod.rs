@@ -7,8 +7,8 @@
 //! - the live balls are put aside ([`shelf`]) and one [`ReplayBall`] entity per recorded ball
 //!   shows the recording at the replay time;
 //! - positions and pockets are sampled exactly from the recording's history (no
-//!   re-simulation) and written to the same [`BallMotion`](crate::balls::BallMotion) /
-//!   [`Pocketed`](crate::balls::Pocketed) components the live game uses, so balls roll and
+//!   re-simulation) and written to the same [`BallMotion`](crate::table::balls::BallMotion) /
+//!   [`Pocketed`](crate::table::balls::Pocketed) components the live game uses, so balls roll and
 //!   drop into pockets as in play.
 //!
 //! Closing despawns those entities and leaves the mode; the shelf gives the live balls back. A
@@ -45,10 +45,10 @@ pub use self::{
     open::OpenRecording,
 };
 use crate::{
-    balls::ShownTime,
     input::InputSystems,
     mode::GameMode,
     sim::{RackRequested, Solver},
+    table::{balls::ShownTime, geometry::TableSpec},
 };
 
 /// Registers the replay logic (headless: no egui, no window needed; the widgets are in
@@ -153,6 +153,8 @@ pub struct Replay {
     pub export_result: Option<Result<String, String>>,
     /// The entities showing the open recording's balls, by recorded ball index.
     entities: Vec<Entity>,
+    /// The live game's table while a recording on another table is shown.
+    live_table: Option<TableSpec>,
 }
 
 impl Default for Replay {
@@ -169,6 +171,7 @@ impl Default for Replay {
             export: None,
             export_result: None,
             entities: Vec::new(),
+            live_table: None,
         }
     }
 }
@@ -340,6 +343,16 @@ fn open(world: &mut World, path: &Path) {
     };
     let previous = std::mem::take(&mut world.resource_mut::<Replay>().entities);
     balls::despawn_all(world, &previous);
+    // The recording's own table (7, 8 or 9 ft); the live one comes back on closing.
+    let recorded = TableSpec::fitting(&opened.recording.table);
+    if *world.resource::<TableSpec>() != recorded {
+        let live = std::mem::replace(&mut *world.resource_mut::<TableSpec>(), recorded);
+        // A second recording keeps the first one's live table to go back to.
+        world
+            .resource_mut::<Replay>()
+            .live_table
+            .get_or_insert(live);
+    }
     let entities = balls::spawn_replay_balls(world, &opened);
     let mut replay = world.resource_mut::<Replay>();
     replay.open = Some(opened);
@@ -366,7 +379,11 @@ fn close(world: &mut World) {
     replay.verdict = None;
     replay.rules_verdict = None;
     let entities = std::mem::take(&mut replay.entities);
+    let live_table = replay.live_table.take();
     balls::despawn_all(world, &entities);
+    if let Some(live) = live_table {
+        *world.resource_mut::<TableSpec>() = live;
+    }
     let mut next = world.resource_mut::<NextState<GameMode>>();
     // The state's own `set_if_neq`, not change detection's of the same name.
     NextState::set_if_neq(&mut *next, GameMode::Play);

@@ -148,6 +148,7 @@ impl OpenRecording {
         match format {
             ExportFormat::Gif => dir.join(format!("{name}.gif")),
             ExportFormat::PngSequence => dir.join(format!("{name}_frames")),
+            ExportFormat::Video => dir.join(format!("{name}.mp4")),
         }
     }
 }

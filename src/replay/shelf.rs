@@ -7,9 +7,9 @@ use bevy::{prelude::*, window::RequestRedraw};
 
 use super::balls::{ReplayBall, show_state};
 use crate::{
-    balls::{Ball, Pocketed},
     mode::GameMode,
     sim::Solver,
+    table::balls::{Ball, Pocketed},
 };
 
 /// Shelves the live game on entering a replay and restores it on leaving.

@@ -11,7 +11,7 @@ use bevy::{
     render::render_resource::{Extent3d, TextureDimension, TextureFormat},
 };
 
-use crate::geometry::{TableSpec, table_dir_to_world, to_world};
+use crate::table::geometry::{TableSpec, table_dir_to_world, to_world};
 
 /// Adds ball visuals and the writeback from [`BallMotion`] to [`Transform`].
 pub fn plugin(app: &mut App) {
@@ -93,7 +93,7 @@ pub enum MotionState {
     Rolling,
 }
 
-/// A ball's state in the physics table plane (see [`crate::geometry`] for the axes).
+/// A ball's state in the physics table plane (see [`crate::table::geometry`] for the axes).
 #[derive(Component, Debug, Clone, Copy, PartialEq, Default)]
 pub struct BallMotion {
     /// Centre of the ball in the table plane, metres.

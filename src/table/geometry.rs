@@ -7,6 +7,7 @@
 
 use bevy::math::{DVec2, DVec3, Vec3};
 use bevy::prelude::Resource;
+use billiards_physics::{PocketCut, TableChoice, TableSize};
 
 /// One inch in metres: equipment specifications are in inches, everything else is SI.
 pub const INCH: f64 = 0.0254;
@@ -62,7 +63,8 @@ pub struct CushionSegment {
     pub end_jaw_slope: f64,
 }
 
-/// The dimensions of a WPA 8-ft pool table and its balls, in metres.
+/// The dimensions of the pool table in play and its balls, in metres (by default the WPA
+/// 8-ft table; [`TableSpec::of`] for the others).
 #[derive(Resource, Debug, Clone, PartialEq)]
 pub struct TableSpec {
     /// Playing-surface length between the cushion noses (92 in).
@@ -112,6 +114,32 @@ impl TableSpec {
             corner_jaw_angle: 142f64.to_radians(),
             side_jaw_angle: 104f64.to_radians(),
         }
+    }
+
+    /// The table a player chose ([`TableChoice`]: 7, 8 or 9 ft, WPA, wide or tight pockets),
+    /// with regulation balls, rails and jaw angles.
+    pub fn of(choice: TableChoice) -> Self {
+        Self::fitting(&choice.table())
+    }
+
+    /// The table drawn for a solver's table (a recording's): its playing surface and pocket
+    /// mouths, with regulation rails.
+    pub fn fitting(table: &billiards_physics::Table) -> Self {
+        Self {
+            length: table.length,
+            width: table.width,
+            corner_mouth: table.corner_mouth,
+            side_mouth: table.side_mouth,
+            ..Self::wpa_eight_foot()
+        }
+    }
+
+    /// The choice this table was made from, if it is one of them.
+    pub fn choice(&self) -> Option<TableChoice> {
+        TableSize::ALL
+            .into_iter()
+            .flat_map(|size| PocketCut::ALL.map(|pockets| TableChoice { size, pockets }))
+            .find(|&c| Self::of(c) == *self)
     }
 
     /// Half the playing-surface length and width.

@@ -1,6 +1,6 @@
 //! Mesh generation for the table, from [`TableSpec`] alone.
 //!
-//! Everything is built in physics coordinates (z up, see [`crate::geometry`]) and mapped to
+//! Everything is built in physics coordinates (z up, see [`crate::table::geometry`]) and mapped to
 //! Bevy's y-up world when the mesh is finished. The functions are pure so that they can be
 //! tested without a renderer.
 
@@ -11,7 +11,7 @@ use bevy::{
     prelude::*,
 };
 
-use crate::geometry::{CushionSegment, Pocket, Rail, TableSpec, to_world};
+use crate::table::geometry::{CushionSegment, Pocket, Rail, TableSpec, to_world};
 
 /// Collects flat-shaded triangles in physics coordinates.
 #[derive(Debug, Default)]
@@ -364,7 +364,7 @@ mod tests {
         // No cloth vertex lies strictly inside a hole.
         for pocket in spec.pockets() {
             for p in &points {
-                let d = crate::geometry::to_table_plane(*p).distance(pocket.centre);
+                let d = crate::table::geometry::to_table_plane(*p).distance(pocket.centre);
                 assert!(
                     d > pocket.radius - 1e-6,
                     "cloth vertex {p} inside {pocket:?}"

@@ -1,16 +1,30 @@
 //! The table: cloth, cushions, wooden rails, pockets, diamond sights, legs and the floor.
 
+pub mod balls;
+pub mod geometry;
+pub mod mesh;
+
 use bevy::{light::NotShadowCaster, math::DVec3, prelude::*};
 
-use crate::{
-    geometry::{TableSpec, to_world},
-    table_mesh,
-};
+use geometry::{TableSpec, to_world};
 
-/// Spawns the table from the [`TableSpec`] resource.
+/// Spawns the table from the [`TableSpec`] resource, and again when another table is chosen.
 pub fn plugin(app: &mut App) {
     app.init_resource::<TableSpec>()
-        .add_systems(Startup, spawn_table);
+        .add_systems(Startup, spawn_table)
+        .add_systems(
+            PostUpdate,
+            (despawn_table, spawn_table)
+                .chain()
+                .run_if(resource_changed::<TableSpec>.and_then(not(resource_added::<TableSpec>))),
+        );
+}
+
+/// Clears the old table before another is spawned (a new game on another table).
+fn despawn_table(mut commands: Commands, parts: Query<Entity, With<TablePart>>) {
+    for part in &parts {
+        commands.entity(part).despawn();
+    }
 }
 
 /// Marks every part of the table.
@@ -74,11 +88,11 @@ fn spawn_table(
             ))
             .id()
     };
-    part(table_mesh::cloth(&spec), &cloth, "Cloth");
-    part(table_mesh::cushions(&spec), &cushion_cloth, "Cushions");
-    part(table_mesh::rails(&spec, -APRON_DEPTH), &wood, "Rails");
+    part(mesh::cloth(&spec), &cloth, "Cloth");
+    part(mesh::cushions(&spec), &cushion_cloth, "Cushions");
+    part(mesh::rails(&spec, -APRON_DEPTH), &wood, "Rails");
     part(
-        table_mesh::pocket_liners(&spec, POCKET_DEPTH),
+        mesh::pocket_liners(&spec, POCKET_DEPTH),
         &liner,
         "Pocket liners",
     );
@@ -87,8 +101,8 @@ fn spawn_table(
 
     // Diamond sights: small flat rhombi inlaid in the rail tops.
     let diamond = meshes.add(Rhombus::new(0.028, 0.014));
-    for (rail, position) in table_mesh::diamond_positions(&spec) {
-        use crate::geometry::Rail;
+    for (rail, position) in mesh::diamond_positions(&spec) {
+        use crate::table::geometry::Rail;
         // Lay the 2D rhombus flat, its long diagonal across the rail.
         let across = match rail {
             Rail::Left | Rail::Right => 0.0,
@@ -125,6 +139,7 @@ fn spawn_table(
         ));
     }
     commands.spawn((
+        TablePart,
         Name::new("Floor"),
         Mesh3d(meshes.add(Plane3d::default().mesh().size(12.0, 12.0))),
         MeshMaterial3d(materials.add(StandardMaterial {

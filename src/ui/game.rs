@@ -7,10 +7,12 @@ use bevy_egui::{EguiContexts, egui};
 use billiards_ai::Level;
 use billiards_rules::{Call, CallRule, Game};
 
-use super::layout::{INFO, PANEL_WIDTH, WARNING};
+use super::layout::{HUD_BUTTON_WIDTH, HudLine, INFO, PANEL_WIDTH, WARNING};
 use crate::{
-    computer::{Computer, HintRequested},
-    game::{NewGameRequested, Rules, Turn, TurnCommand, clock_seed},
+    play::computer::{Computer, HintRequested},
+    play::game::{NewGameRequested, Rules, Turn, TurnCommand},
+    settings::{TableSetup, rack_style_label, table_choices, table_label},
+    sim::{Solver, clock_seed},
 };
 
 /// What the new-game dialog holds between frames.
@@ -24,6 +26,10 @@ pub struct NewGameForm {
     pub race_to: u32,
     /// Each seat: a human (`None`) or the computer at a level.
     pub computer: [Option<Level>; 2],
+    /// The table and rack style; `None` until the dialog first opens, then the table in play.
+    pub setup: Option<TableSetup>,
+    /// Start was pressed over a game in progress: the dialog asks before ending it.
+    pub confirm: bool,
 }
 
 impl Default for NewGameForm {
@@ -33,6 +39,8 @@ impl Default for NewGameForm {
             players: ["Player 1".to_owned(), "Player 2".to_owned()],
             race_to: 3,
             computer: [None, Some(Level::Medium)],
+            setup: None,
+            confirm: false,
         }
     }
 }
@@ -49,6 +57,8 @@ pub fn remember_new_game(
             players: r.players.clone(),
             race_to: r.race_to,
             computer: r.computer,
+            setup: Some(r.setup),
+            confirm: false,
         };
     }
 }
@@ -63,66 +73,100 @@ pub struct GameParam<'w> {
     new_games: MessageWriter<'w, NewGameRequested>,
     computer: Res<'w, Computer>,
     hints: MessageWriter<'w, HintRequested>,
+    setup: Res<'w, TableSetup>,
+    solver: Option<Res<'w, Solver>>,
 }
 
-/// The match's lines and the buttons of the phase, inside the HUD window.
-pub fn hud_section(ui: &mut egui::Ui, state: &mut GameParam) {
+/// The HUD's buttons, one row, each always in its place: disabled when it does not apply
+/// (free play, the computer's turn, a replay), never moved or hidden.
+pub fn hud_buttons(ui: &mut egui::Ui, state: &mut GameParam) {
+    let turn = state.turn.as_ref().map(|t| *t.get());
+    let game = state.rules.game.as_ref();
+    let next = game.map(|g| g.next());
+    let human_to_shoot = game.zip(next).is_some_and(|(game, next)| {
+        game.computer(next.shooter).is_none()
+            && matches!(turn, Some(Turn::Aiming | Turn::BallInHand))
+    });
+    let size = egui::vec2(HUD_BUTTON_WIDTH, 0.0);
+    ui.horizontal(|ui| {
+        let new_game = ui.add_enabled(
+            turn.is_some_and(|t| t != Turn::NewGame),
+            egui::Button::new("New game...").min_size(size),
+        );
+        if new_game.clicked() {
+            state.commands.write(TurnCommand::OpenDialog);
+        }
+        let hint = ui
+            .add_enabled(human_to_shoot, egui::Button::new("Hint").min_size(size))
+            .on_hover_text("the computer's choice for you, shown as your aim (and its call)");
+        if hint.clicked() {
+            state.hints.write(HintRequested);
+        }
+        let can_call = human_to_shoot && next.is_some_and(|n| n.call != CallRule::NotUsed);
+        if ui
+            .add_enabled(can_call, egui::Button::new("Call a pocket").min_size(size))
+            .on_hover_text("8-ball: the ball and pocket, proposed from your aim")
+            .clicked()
+        {
+            state.commands.write(TurnCommand::StartCalling);
+        }
+        let called = game.is_some_and(|g| g.call != Call::None);
+        if ui
+            .add_enabled(
+                human_to_shoot && called,
+                egui::Button::new("Clear the call").min_size(size),
+            )
+            .clicked()
+        {
+            state.commands.write(TurnCommand::Call(Call::None));
+        }
+        let push_out = human_to_shoot
+            && next.is_some_and(|n| n.push_out_allowed)
+            && game.is_some_and(|g| g.call != Call::PushOut);
+        if ui
+            .add_enabled(push_out, egui::Button::new("Push out").min_size(size))
+            .on_hover_text("9-ball, right after the break: declare a push out (WPA 2.4)")
+            .clicked()
+        {
+            state.commands.write(TurnCommand::Call(Call::PushOut));
+        }
+    });
+}
+
+/// The HUD's lines about the match: who is to do what, the computer's plan and the hint
+/// (first column); the balls on, groups, call, fouls and the last verdict (second column).
+pub fn hud_lines(state: &GameParam) -> (Vec<HudLine>, Vec<HudLine>) {
     let Some(turn) = state.turn.as_ref().map(|t| *t.get()) else {
-        return;
+        return (Vec::new(), Vec::new());
     };
-    match &state.rules.game {
-        None => {
-            ui.label("free play");
-        }
-        Some(game) => {
-            for (k, line) in game.hud_lines(turn).into_iter().enumerate() {
-                if k == 1 {
-                    ui.colored_label(INFO, line);
-                } else if line.starts_with("last foul") {
-                    ui.colored_label(WARNING, line);
-                } else {
-                    ui.label(line);
-                }
-            }
-            let next = game.next();
-            let human = game.computer(next.shooter).is_none();
-            if let Some(doing) = &state.computer.doing {
-                ui.colored_label(INFO, doing);
-            }
-            if let Some((key, hint)) = &state.computer.hint
-                && *key == game.turn_key()
-            {
-                ui.colored_label(INFO, hint);
-            }
-            if human && matches!(turn, Turn::Aiming | Turn::BallInHand) {
-                ui.horizontal(|ui| {
-                    if ui
-                        .button("Hint")
-                        .on_hover_text("the computer's choice for you, shown as your aim")
-                        .clicked()
-                    {
-                        state.hints.write(HintRequested);
-                    }
-                    if next.call != CallRule::NotUsed && ui.button("Call a pocket").clicked() {
-                        state.commands.write(TurnCommand::StartCalling);
-                    }
-                    if game.call != Call::None && ui.button("Clear the call").clicked() {
-                        state.commands.write(TurnCommand::Call(Call::None));
-                    }
-                    if next.push_out_allowed
-                        && game.call != Call::PushOut
-                        && ui.button("Declare a push out").clicked()
-                    {
-                        state.commands.write(TurnCommand::Call(Call::PushOut));
-                    }
-                });
-            }
+    let Some(game) = &state.rules.game else {
+        return (vec![("free play".to_owned(), None)], Vec::new());
+    };
+    let mut first = Vec::new();
+    let mut second = Vec::new();
+    for (k, line) in game.hud_lines(turn).into_iter().enumerate() {
+        let colour = if k == 1 {
+            Some(INFO)
+        } else if line.starts_with("last foul") {
+            Some(WARNING)
+        } else {
+            None
+        };
+        if k < 2 {
+            first.push((line, colour));
+        } else {
+            second.push((line, colour));
         }
     }
-    if turn != Turn::NewGame && ui.button("New game...").clicked() {
-        state.commands.write(TurnCommand::OpenDialog);
+    if let Some(doing) = &state.computer.doing {
+        first.push((doing.clone(), Some(INFO)));
     }
-    ui.separator();
+    if let Some((key, hint)) = &state.computer.hint
+        && *key == game.turn_key()
+    {
+        first.push((hint.clone(), Some(INFO)));
+    }
+    (first, second)
 }
 
 /// The windows of the phase: new game, verdict, calling, game over.
@@ -162,19 +206,17 @@ pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result 
                     }
                 }
                 let next = game.next();
-                if game.computer(next.shooter).is_some() {
+                if game.computer(next.shooter).is_some() && !next.choices.is_empty() {
                     ui.label(format!(
-                        "{} (computer) {} next",
-                        game.name(next.shooter),
-                        if next.choices.is_empty() {
-                            "shoots"
-                        } else {
-                            "chooses"
-                        }
+                        "{} (computer) chooses next",
+                        game.name(next.shooter)
                     ));
                 } else if next.choices.is_empty() {
-                    ui.label(format!("{} shoots next", game.name(next.shooter)));
-                    if ui.button("Continue (Enter)").clicked() {
+                    ui.label(game.next_text());
+                    // Between two computers the verdict goes on by itself.
+                    if game.seats.iter().any(Option::is_none)
+                        && ui.button("Continue (Enter)").clicked()
+                    {
                         state.commands.write(TurnCommand::Continue);
                     }
                 } else {
@@ -195,6 +237,15 @@ pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result 
             };
             centre("Call").show(&ctx, |ui| {
                 let next = game.next();
+                // What the aim sends into a pocket, one click to confirm.
+                if let Some(call) = game.proposed
+                    && let Some(text) = call.text()
+                {
+                    if ui.button(format!("Call {text} (your aim)")).clicked() {
+                        state.commands.write(TurnCommand::Call(call));
+                    }
+                    ui.label("or choose another:");
+                }
                 if next.call == CallRule::EightPocket {
                     ui.label("The 8: click the pocket on the table.");
                 } else {
@@ -260,7 +311,25 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
         ui.selectable_value(&mut form.game, Game::EightBall, "8-ball");
         ui.selectable_value(&mut form.game, Game::FreePlay, "free play");
     });
+    let setup = form.setup.get_or_insert(*state.setup);
+    ui.horizontal(|ui| {
+        ui.label("Table:");
+        egui::ComboBox::from_id_salt("new-game-table")
+            .selected_text(table_label(setup.table))
+            .width(230.0)
+            .show_ui(ui, |ui| {
+                for choice in table_choices() {
+                    ui.selectable_value(&mut setup.table, choice, table_label(choice));
+                }
+            });
+    });
     if form.game != Game::FreePlay {
+        ui.horizontal(|ui| {
+            ui.label("Rack:");
+            for style in billiards_rules::RackStyle::ALL {
+                ui.selectable_value(&mut setup.rack_style, style, rack_style_label(style));
+            }
+        });
         for (k, (name, seat)) in form
             .players
             .iter_mut()
@@ -278,22 +347,48 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
         }
         ui.horizontal(|ui| {
             ui.label("Race to");
-            ui.add(egui::DragValue::new(&mut form.race_to).range(1..=15));
+            ui.add(
+                egui::DragValue::new(&mut form.race_to)
+                    .update_while_editing(false)
+                    .range(1..=15),
+            );
             ui.label("racks; player 1 breaks first, then the break alternates");
         });
     }
+    // A game with shots in it ends only when the player says so (as the rack buttons ask).
+    let in_progress = state
+        .solver
+        .as_ref()
+        .is_some_and(|s| !s.simulation().history().events().is_empty());
+    if form.confirm {
+        ui.colored_label(
+            WARNING,
+            "This ends the game in progress (it stays in the recordings).",
+        );
+    }
     ui.horizontal(|ui| {
-        if ui.button("Start").clicked() {
+        let start = if form.confirm {
+            "End it and start"
+        } else {
+            "Start"
+        };
+        let clicked = ui.button(start).clicked();
+        if clicked && in_progress && !form.confirm {
+            form.confirm = true;
+        } else if clicked {
+            form.confirm = false;
             let request = NewGameRequested {
                 game: form.game,
                 players: form.players.clone(),
                 race_to: form.race_to,
                 seed: clock_seed(),
                 computer: form.computer,
+                setup: form.setup.unwrap_or(*state.setup),
             };
             state.new_games.write(request);
         }
         if ui.button("Cancel").clicked() {
+            form.confirm = false;
             state.commands.write(TurnCommand::CloseDialog);
         }
     });
@@ -302,7 +397,7 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
 #[cfg(test)]
 mod tests {
     // Named from the crate root: a `super::` path reads as a use of `ui` in the layout test.
-    use crate::game::NewGameRequested;
+    use crate::play::game::NewGameRequested;
     use crate::ui::game::{NewGameForm, remember_new_game};
     use bevy::prelude::*;
     use billiards_ai::Level;
@@ -322,6 +417,7 @@ mod tests {
             race_to: 5,
             seed: 1,
             computer: [Some(Level::Hard), Some(Level::Easy)],
+            setup: crate::settings::TableSetup::default(),
         });
         app.update();
         let form = app.world().resource::<NewGameForm>();

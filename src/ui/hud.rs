@@ -1,23 +1,23 @@
-//! The HUD in the top-right corner of the 3D view: the match in play (`super::game`), shots,
-//! simulated time, events, the solver's cost per frame, the pocketed balls, what the table
-//! is doing, the frame rate, and the notes (the last one of the simulation, a miscue, a
-//! clamped value): transient text goes here, at the bottom of the HUD, where it pushes nothing.
+//! The HUD: a strip along the top of the 3D view, right of the panel, that the table's
+//! viewport leaves free ([`ViewInset::top`]), so it never covers a pocket, a ball or the
+//! computer's aim. Its buttons come first and keep their places in every state (disabled when
+//! they do not apply); then three columns of text: the match in play (`super::game`), the
+//! table (shots, pocketed balls, what it is doing) and the solver with the notes (the last
+//! one of the simulation, a miscue, a clamped value). A column that overflows scrolls; the
+//! strip never grows.
 
 use bevy::{diagnostic::FrameCount, prelude::*};
 use bevy_egui::{EguiContexts, egui};
 
-use super::layout::{HUD_WIDTH, INFO, WARNING, WINDOW_MARGIN};
+use super::layout::{HUD_HEIGHT, HudLine, INFO, WARNING};
 use crate::{
-    aim::AimPrediction,
-    balls::{Ball, Pocketed},
-    graphics::FrameRate,
     mode::GameMode,
+    play::aim::AimPrediction,
     settings::{ClampReport, PhysicsSettings},
     sim::SimStatus,
+    table::balls::{Ball, Pocketed},
+    view::{ViewInset, graphics::FrameRate},
 };
-
-/// Opacity of the HUD's background (its text stays opaque).
-const HUD_OPACITY: f32 = 0.6;
 
 /// What the HUD shows.
 #[derive(bevy::ecs::system::SystemParam)]
@@ -33,89 +33,153 @@ pub struct HudParam<'w, 's> {
     report: ResMut<'w, ClampReport>,
 }
 
-/// The HUD in the top-right corner: shot count, times, events, solver cost, pocketed balls.
+/// The HUD strip along the top of the 3D view.
 pub fn hud(
     mut contexts: EguiContexts,
     mut state: HudParam,
     mut game: super::game::GameParam,
+    mut inset: ResMut<ViewInset>,
 ) -> Result {
     let ctx = contexts.ctx_mut()?.clone();
     let status = state.status.clone();
-    // See-through: at 1280x720 the HUD lies over the foot-right corner of the table, and a
-    // player aiming there (or following a hint there) must see the pocket and the balls.
-    let frame = egui::Frame::window(&ctx.global_style()).multiply_with_opacity(HUD_OPACITY);
-    egui::Window::new("HUD")
-        .title_bar(false)
-        .frame(frame)
-        .resizable(false)
-        // One width, whatever the text: long notes wrap inside it instead of running off.
-        .min_width(HUD_WIDTH)
-        .max_width(HUD_WIDTH)
-        .anchor(egui::Align2::RIGHT_TOP, [-WINDOW_MARGIN, WINDOW_MARGIN])
-        .show(&ctx, |ui| {
-            if *state.mode.get() == GameMode::Replay {
-                ui.colored_label(INFO, "replaying a recording: the live game below waits");
-            } else {
-                super::game::hud_section(ui, &mut game);
-            }
-            // Two lines at most each, so the HUD covers as little of the table as it can. The
-            // frame number shows whether the window redraws at idle (it should not); the
-            // frame time is the last frame's, from its input to this one.
-            let fps = match state.rate.fps {
-                Some(fps) => format!("{fps:.1} fps"),
-                None => "idle (draws only on change)".to_owned(),
-            };
-            ui.label(format!(
+    let screen = ctx.viewport_rect();
+    let left = inset.left;
+    let size = egui::vec2((screen.width() - left).max(1.0), HUD_HEIGHT);
+    egui::Area::new(egui::Id::new("hud"))
+        .order(egui::Order::Middle)
+        .fixed_pos(egui::pos2(screen.min.x + left, screen.min.y))
+        .movable(false)
+        .constrain(false)
+        .show(&ctx, |area| {
+            egui::Frame::side_top_panel(&ctx.global_style()).show(area, |ui| {
+                let inner = size - egui::vec2(16.0, 12.0);
+                ui.set_min_size(inner);
+                ui.set_max_size(inner);
+                let (match_lines, table_lines) = if *state.mode.get() == GameMode::Replay {
+                    let replay = "replaying a recording: the live game below waits";
+                    (vec![(replay.to_owned(), Some(INFO))], Vec::new())
+                } else {
+                    super::game::hud_lines(&game)
+                };
+                // The buttons first, always in the same places.
+                super::game::hud_buttons(ui, &mut game);
+                let height = ui.available_height();
+                let width = ui.available_width();
+                let widths = [0.36 * width, 0.30 * width];
+                ui.horizontal_top(|ui| {
+                    column(ui, "hud-match", widths[0], height, &match_lines);
+                    ui.separator();
+                    let mut table = table_lines;
+                    table.extend(table_state_lines(&state, &status));
+                    column(ui, "hud-table", widths[1], height, &table);
+                    ui.separator();
+                    let solver = solver_lines(&state, &status);
+                    // The rest of the strip, whatever the separators took.
+                    let rest = ui.available_width();
+                    ui.vertical(|ui| {
+                        ui.set_width(rest.max(40.0));
+                        column(ui, "hud-solver", rest, height - 20.0, &solver);
+                        if !state.report.notes.is_empty() && ui.small_button("dismiss").clicked() {
+                            state.report.notes.clear();
+                        }
+                    });
+                });
+            });
+        });
+    if inset.top != HUD_HEIGHT {
+        inset.top = HUD_HEIGHT;
+    }
+    Ok(())
+}
+
+/// One column of lines, wrapped to `width`, scrolling past `height`.
+fn column(ui: &mut egui::Ui, id: &str, width: f32, height: f32, lines: &[HudLine]) {
+    ui.vertical(|ui| {
+        ui.set_width(width.max(40.0));
+        egui::ScrollArea::vertical()
+            .id_salt(id)
+            .max_height(height.max(20.0))
+            .auto_shrink([false, true])
+            .show(ui, |ui| {
+                ui.spacing_mut().item_spacing.y = 1.0;
+                for (text, colour) in lines {
+                    match colour {
+                        Some(colour) => ui.colored_label(*colour, text),
+                        None => ui.label(text),
+                    };
+                }
+            });
+    });
+}
+
+/// The table: shots, pocketed balls, what it is doing.
+fn table_state_lines(state: &HudParam, status: &SimStatus) -> Vec<HudLine> {
+    let mut pocketed: Vec<u8> = state.pocketed.iter().map(|b| b.number).collect();
+    pocketed.sort_unstable();
+    let list = if pocketed.is_empty() {
+        "none".to_owned()
+    } else {
+        pocketed
+            .iter()
+            .map(|&n| {
+                if n == 0 {
+                    "cue".to_owned()
+                } else {
+                    n.to_string()
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let doing = if state.physics.paused {
+        "paused"
+    } else if status.at_rest {
+        "at rest: ready to shoot"
+    } else {
+        "balls moving"
+    };
+    vec![
+        (format!("shots: {}, pocketed: {list}", status.shots), None),
+        (doing.to_owned(), None),
+    ]
+}
+
+/// The solver and the frames, then the notes.
+fn solver_lines(state: &HudParam, status: &SimStatus) -> Vec<HudLine> {
+    // The frame number shows whether the window redraws at idle (it should not); the frame
+    // time is the last frame's, from its input to this one.
+    let fps = match state.rate.fps {
+        Some(fps) => format!("{fps:.1} fps"),
+        None if status.at_rest => "idle: draws only on change".to_owned(),
+        None => "measuring".to_owned(),
+    };
+    let mut lines = vec![
+        (
+            format!(
                 "frame {}: {:.1} ms, {fps}",
                 state.frames.0,
                 state.time.delta_secs_f64() * 1e3
-            ));
-            ui.label(format!(
+            ),
+            None,
+        ),
+        (
+            format!(
                 "simulated {:.3} s, {} events this shot, solver {:.3} ms/frame",
                 status.sim_time,
                 status.events_this_shot,
                 status.solver_seconds_last_frame * 1e3
-            ));
-            let mut pocketed: Vec<u8> = state.pocketed.iter().map(|b| b.number).collect();
-            pocketed.sort_unstable();
-            let list = if pocketed.is_empty() {
-                "none".to_owned()
-            } else {
-                pocketed
-                    .iter()
-                    .map(|n| {
-                        if *n == 0 {
-                            "cue".to_owned()
-                        } else {
-                            n.to_string()
-                        }
-                    })
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            };
-            ui.label(format!("shots: {}, pocketed: {list}", status.shots));
-            let state_text = if state.physics.paused {
-                "paused"
-            } else if status.at_rest {
-                "at rest: ready to shoot"
-            } else {
-                "balls moving"
-            };
-            ui.label(state_text);
-            if let Some(note) = &status.note {
-                ui.colored_label(WARNING, note);
-            }
-            if let Some(note) = &state.aim.note {
-                ui.colored_label(WARNING, format!("aim: {note}"));
-            }
-            if !state.report.notes.is_empty() {
-                for note in &state.report.notes {
-                    ui.colored_label(WARNING, note.to_string());
-                }
-                if ui.small_button("dismiss").clicked() {
-                    state.report.notes.clear();
-                }
-            }
-        });
-    Ok(())
+            ),
+            None,
+        ),
+    ];
+    if let Some(note) = &status.note {
+        lines.push((note.clone(), Some(WARNING)));
+    }
+    if let Some(note) = &state.aim.note {
+        lines.push((format!("aim: {note}"), Some(WARNING)));
+    }
+    for note in &state.report.notes {
+        lines.push((note.to_string(), Some(WARNING)));
+    }
+    lines
 }

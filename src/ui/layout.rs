@@ -8,8 +8,11 @@ pub const PANEL_WIDTH: f32 = 340.0;
 /// Gap between a floating window (HUD, timeline) and the edge of the 3D view.
 pub const WINDOW_MARGIN: f32 = 10.0;
 
-/// Width of the HUD at most (longer lines wrap).
-pub const HUD_WIDTH: f32 = 300.0;
+/// Height of the HUD strip along the top of the 3D view; the table's viewport starts below.
+pub const HUD_HEIGHT: f32 = 128.0;
+
+/// Width of each of the HUD's buttons, so they keep their places whatever their state.
+pub const HUD_BUTTON_WIDTH: f32 = 104.0;
 
 /// Width the replay timeline window asks for.
 pub const TIMELINE_WIDTH: f32 = 620.0;
@@ -34,3 +37,6 @@ pub const SUCCESS: Color32 = Color32::from_rgb(120, 220, 120);
 
 /// A mode note (replaying a recording).
 pub const INFO: Color32 = Color32::from_rgb(120, 190, 255);
+
+/// A line of the HUD and its colour (`None`: the text colour).
+pub type HudLine = (String, Option<Color32>);

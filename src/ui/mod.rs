@@ -36,13 +36,13 @@ use bevy_egui::{
     input::egui_wants_any_keyboard_input,
 };
 
-pub use layout::PANEL_WIDTH;
+pub use layout::{HUD_HEIGHT, PANEL_WIDTH};
 pub use settings::OpenSections;
 
 use crate::{
     input::InputSystems,
     mode::GameMode,
-    view::{SceneTarget, ViewInset},
+    view::{SceneTarget, ViewInset, idle::RepaintCauses},
 };
 
 /// Adds egui, registers the panels and windows, and keeps the game's input away from them.
@@ -95,8 +95,8 @@ pub fn plugin(app: &mut App) {
             EguiPrimaryContextPass,
             (
                 show_scene_image,
-                left_panel,
-                hud::hud,
+                // The HUD strip starts where the panel ends.
+                (left_panel, hud::hud).chain(),
                 game::game_windows.run_if(in_state(GameMode::Play)),
                 timeline::timeline_window.run_if(in_state(GameMode::Replay)),
             ),
@@ -237,11 +237,6 @@ fn whole_pixel_glyphs(mut contexts: EguiContexts, mut done: Local<bool>) -> Resu
     Ok(())
 }
 
-/// What made egui ask for the frame now running (its repaint causes, "file:line reason"),
-/// kept only while something reads it (`--count-idle-frames`, [`crate::idle`]).
-#[derive(Resource, Debug, Default, Clone, PartialEq, Eq)]
-pub struct RepaintCauses(pub String);
-
 /// egui's causes are those of its last pass, which asked for this frame.
 fn record_repaint_causes(mut contexts: EguiContexts, mut causes: ResMut<RepaintCauses>) -> Result {
     causes.0 = contexts
@@ -305,6 +300,7 @@ fn left_panel(
     mut state: settings::SettingsParam,
     mut recordings: recordings::RecordingsParam,
     mut inset: ResMut<ViewInset>,
+    mut read_error: Local<Option<String>>,
 ) -> Result {
     let ctx = contexts.ctx_mut()?.clone();
     // The panel sits in an egui Area, not in a bare root `Ui` on the background layer: egui
@@ -342,8 +338,11 @@ fn left_panel(
         })
         .inner;
     settings::rack_confirm_window(&ctx, &mut state);
+    settings::config_error_window(&ctx, &state, &mut read_error);
     // The 3D view takes the window right of the panel (src/view.rs).
-    inset.set_if_neq(ViewInset(panel_width));
+    if inset.left != panel_width {
+        inset.left = panel_width;
+    }
     Ok(())
 }
 

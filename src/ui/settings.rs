@@ -12,18 +12,19 @@ use billiards_physics::Rack;
 
 use super::layout::{BUTTON_WIDTH, TIP_PICKER_SIZE, WARNING};
 use crate::{
-    balls::{Ball, BallMotion, Pocketed},
-    camera::{CameraMode, OrbitCamera},
     config::{ConfigFile, reset_to_defaults},
-    geometry::TableSpec,
     settings::{
-        ClampReport, CushionChoice, GraphicsSettings, PREDICTIONS, ParamRange, PhysicsModel,
-        PhysicsSettings, ShotSettings, ViewSettings, apply_shot_edit, prediction_label,
+        BallFrictionChoice, ClampReport, CushionChoice, GraphicsSettings, PREDICTIONS, ParamRange,
+        PhysicsModel, PhysicsSettings, ShaftChoice, ShotSettings, TableSetup, ViewSettings,
+        apply_shot_edit, prediction_label, shown_degrees, table_choices, table_label,
     },
     sim::{
         RACKS, RackRequested, Referee, ShotRequested, SimStatus, Solver, StepRequested,
-        UndoRequested, move_ball_in_hand, rack_label,
+        UndoRequested, clock_seed, move_ball_in_hand, rack_label,
     },
+    table::balls::{Ball, BallMotion, Pocketed},
+    table::geometry::TableSpec,
+    view::camera::{CameraMode, OrbitCamera},
 };
 
 /// Open every section of the panel at start (`--open-sections`: screenshots, layout check).
@@ -54,6 +55,7 @@ pub struct SettingsParam<'w, 's> {
     shots: MessageWriter<'w, ShotRequested>,
     undo: MessageWriter<'w, UndoRequested>,
     spec: Res<'w, TableSpec>,
+    setup: ResMut<'w, TableSetup>,
     cue_ball: Query<'w, 's, (&'static Ball, &'static mut BallMotion), Without<Pocketed>>,
 }
 
@@ -70,16 +72,29 @@ pub fn sections(ui: &mut egui::Ui, state: &mut SettingsParam) {
 
 fn shot_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
     let mut next = *state.shot;
-    let mut degrees = next.angle.to_degrees();
+    let shown = shown_degrees(next.angle);
+    let mut degrees = shown;
     ui.add(
         egui::Slider::new(&mut degrees, 0.0..=360.0)
+            .update_while_editing(false)
             .text("angle")
             .suffix(" deg")
-            .max_decimals(2)
+            .fixed_decimals(2)
             .clamping(egui::SliderClamping::Never),
     );
-    next.angle = degrees.to_radians();
-    param_slider(ui, &mut next.power, ShotSettings::POWER);
+    // Only an edit moves the aim: the shown value is rounded.
+    if degrees != shown {
+        next.angle = degrees.to_radians();
+    }
+    // Power with two decimals, as the HUD, the hint and the replay show it.
+    ui.add(
+        egui::Slider::new(&mut next.power, ShotSettings::POWER.as_range())
+            .update_while_editing(false)
+            .text(ShotSettings::POWER.label)
+            .suffix(ShotSettings::POWER.unit)
+            .fixed_decimals(2)
+            .clamping(egui::SliderClamping::Never),
+    );
     // The tip offset only matters to the spin model.
     ui.add_enabled_ui(state.physics.model == PhysicsModel::Spin, |ui| {
         ui.horizontal(|ui| {
@@ -109,6 +124,7 @@ fn shot_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
         ui.label("ball in hand, along the head string:");
         ui.add(
             egui::Slider::new(&mut y, -limit..=limit)
+                .update_while_editing(false)
                 .suffix(" m")
                 .max_decimals(3),
         );
@@ -123,10 +139,10 @@ fn shot_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
     ui.horizontal(|ui| {
         let shoot = ui
             .add_enabled(
-                state.status.at_rest,
+                state.status.at_rest && !state.referee.rack_over,
                 egui::Button::new("Shoot (Space)").min_size(egui::vec2(BUTTON_WIDTH, 0.0)),
             )
-            .on_hover_text("when every ball rests");
+            .on_hover_text("when every ball rests (after a rack, start the next one first)");
         if shoot.clicked() {
             state.shots.write(ShotRequested::from_settings(&state.shot));
         }
@@ -182,7 +198,7 @@ fn play_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
                     if in_progress {
                         state.confirm.0 = Some(rack);
                     } else {
-                        state.racks.write(RackRequested(rack));
+                        state.racks.write(RackRequested::fresh(rack, clock_seed()));
                     }
                 }
                 if k % 2 == 1 {
@@ -190,6 +206,26 @@ fn play_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
                 }
             }
         });
+    // Free play only: a match's table is chosen in its new-game dialog. Changing it racks the
+    // same rack afresh on the new table.
+    let free_play = !state.referee.active;
+    ui.add_enabled_ui(free_play, |ui| {
+        ui.horizontal(|ui| {
+            ui.label("Table:");
+            let mut table = state.setup.table;
+            egui::ComboBox::from_id_salt("free-play-table")
+                .selected_text(table_label(table))
+                .width(230.0)
+                .show_ui(ui, |ui| {
+                    for choice in table_choices() {
+                        ui.selectable_value(&mut table, choice, table_label(choice));
+                    }
+                });
+            if table != state.setup.table {
+                state.setup.table = table;
+            }
+        });
+    });
 }
 
 fn view_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
@@ -205,6 +241,7 @@ fn view_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
         ui.label("follow each ball after the first contact for:");
         ui.add(
             egui::Slider::new(&mut state.view.aid_contacts, ViewSettings::AID_CONTACTS)
+                .update_while_editing(false)
                 .suffix(" contacts"),
         );
     });
@@ -293,7 +330,17 @@ fn physics_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
     // The spin model's constants: shown disabled under the paper's model, so rows stay.
     ui.add_enabled_ui(next.model == PhysicsModel::Spin, |ui| {
         param_slider(ui, &mut next.mu_spin, PhysicsSettings::MU_SPIN);
-        param_slider(ui, &mut next.mu_ball, PhysicsSettings::MU_BALL);
+        egui::ComboBox::from_label("ball friction")
+            .selected_text(next.ball_friction.label())
+            .show_ui(ui, |ui| {
+                for choice in BallFrictionChoice::ALL {
+                    ui.selectable_value(&mut next.ball_friction, choice, choice.label());
+                }
+            });
+        ui.add_enabled_ui(next.ball_friction == BallFrictionChoice::Constant, |ui| {
+            param_slider(ui, &mut next.mu_ball, PhysicsSettings::MU_BALL);
+        });
+        let before = next.cushion;
         egui::ComboBox::from_label("cushion")
             .selected_text(next.cushion.label())
             .show_ui(ui, |ui| {
@@ -301,7 +348,13 @@ fn physics_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
                     ui.selectable_value(&mut next.cushion, choice, choice.label());
                 }
             });
-        ui.add_enabled_ui(next.cushion == CushionChoice::Han2005, |ui| {
+        // The sliders are shared: a newly chosen model starts from its authors' fit.
+        if next.cushion != before
+            && let Some((e, mu)) = next.cushion.fitted()
+        {
+            (next.e_cushion, next.mu_cushion) = (e, mu);
+        }
+        ui.add_enabled_ui(next.cushion != CushionChoice::Reflect, |ui| {
             param_slider(ui, &mut next.mu_cushion, PhysicsSettings::MU_CUSHION);
             param_slider(
                 ui,
@@ -310,6 +363,13 @@ fn physics_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
             );
         });
         param_slider(ui, &mut next.cue_mass, PhysicsSettings::CUE_MASS);
+        egui::ComboBox::from_label("shaft (squirt)")
+            .selected_text(next.shaft.label())
+            .show_ui(ui, |ui| {
+                for choice in ShaftChoice::ALL {
+                    ui.selectable_value(&mut next.shaft, choice, choice.label());
+                }
+            });
     });
     ui.checkbox(&mut next.jaws, "rounded pocket jaws (from the next rack)");
     ui.separator();
@@ -325,7 +385,7 @@ fn physics_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
         );
         ui.horizontal(|ui| {
             ui.label("seed");
-            ui.add(egui::DragValue::new(&mut next.randomization.seed));
+            ui.add(egui::DragValue::new(&mut next.randomization.seed).update_while_editing(false));
         });
     });
     ui.separator();
@@ -341,6 +401,28 @@ fn physics_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
             }
         });
     apply_physics_edit(next, state);
+}
+
+/// A settings file that could not be read or written is said where it is seen, over the table,
+/// until the player has read it (the panel's "Settings file" section keeps the message).
+pub fn config_error_window(ctx: &egui::Context, state: &SettingsParam, read: &mut Option<String>) {
+    let Some(error) = &state.config.error else {
+        return;
+    };
+    if read.as_ref() == Some(error) {
+        return;
+    }
+    egui::Window::new("Settings file")
+        .collapsible(false)
+        .resizable(false)
+        .anchor(egui::Align2::CENTER_TOP, [0.0, 40.0])
+        .show(ctx, |ui| {
+            ui.set_max_width(420.0);
+            ui.colored_label(WARNING, error);
+            if ui.button("OK").clicked() {
+                *read = Some(error.clone());
+            }
+        });
 }
 
 /// The settings file (where it is, why it could not be read), the reset, and the list of
@@ -393,7 +475,7 @@ pub fn rack_confirm_window(ctx: &egui::Context, state: &mut SettingsParam) {
             ));
             ui.horizontal(|ui| {
                 if ui.button("Rack").clicked() {
-                    state.racks.write(RackRequested(rack));
+                    state.racks.write(RackRequested::fresh(rack, clock_seed()));
                     state.confirm.0 = None;
                 }
                 if ui.button("Cancel").clicked() {
@@ -468,6 +550,7 @@ fn section(ui: &mut egui::Ui, title: &str, open: bool, add_contents: impl FnOnce
 fn param_slider(ui: &mut egui::Ui, value: &mut f64, range: ParamRange) {
     ui.add(
         egui::Slider::new(value, range.as_range())
+            .update_while_editing(false)
             .text(range.label)
             .suffix(range.unit)
             .max_decimals(4)

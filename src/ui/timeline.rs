@@ -137,6 +137,7 @@ fn timeline(
         ui.separator();
         let mut speed = replay.speed;
         let slider = egui::Slider::new(&mut speed, MIN_SPEED..=MAX_SPEED)
+            .update_while_editing(false)
             .logarithmic(true)
             .text("speed")
             .suffix("x")
@@ -232,6 +233,8 @@ fn export_form(
     ui.horizontal(|ui| {
         ui.selectable_value(&mut form.format, ExportFormat::Gif, "GIF");
         ui.selectable_value(&mut form.format, ExportFormat::PngSequence, "PNG sequence");
+        ui.selectable_value(&mut form.format, ExportFormat::Video, "MP4 (ffmpeg)")
+            .on_hover_text("needs ffmpeg on the PATH; any frame rate");
         ui.separator();
         let current = match shot {
             Some(k) => format!("shot {k}"),
@@ -243,13 +246,22 @@ fn export_form(
     ui.horizontal(|ui| {
         ui.add(
             egui::DragValue::new(&mut form.fps)
+                .update_while_editing(false)
                 .range(1.0..=120.0)
                 .suffix(" fps"),
         );
         ui.separator();
-        ui.add(egui::DragValue::new(&mut form.width).range(16..=4096));
+        ui.add(
+            egui::DragValue::new(&mut form.width)
+                .update_while_editing(false)
+                .range(16..=4096),
+        );
         ui.label("x");
-        ui.add(egui::DragValue::new(&mut form.height).range(16..=4096));
+        ui.add(
+            egui::DragValue::new(&mut form.height)
+                .update_while_editing(false)
+                .range(16..=4096),
+        );
         ui.label("pixels");
     });
     let (scope_shot, _) = open.export_span(form.scope, replay.time);

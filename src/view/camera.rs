@@ -6,8 +6,8 @@
 use std::f32::consts::FRAC_PI_2;
 
 use crate::{
-    balls::{Ball, Pocketed},
     input::InputSystems,
+    table::balls::{Ball, Pocketed},
 };
 use bevy::{
     input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
@@ -74,7 +74,8 @@ impl Default for OrbitCamera {
             focus: Vec3::new(0.1, 0.0, 0.0),
             yaw: -1.25,
             pitch: -0.66,
-            distance: 3.2,
+            // Far enough that the near rail shows below the HUD strip, a 9-ft table too.
+            distance: 3.45,
             mode: CameraMode::Free,
         }
     }
@@ -93,7 +94,7 @@ impl OrbitCamera {
             focus: Vec3::ZERO,
             yaw: 0.0,
             pitch: Self::PITCH_MIN,
-            distance: 3.1,
+            distance: 3.5,
             mode: CameraMode::Top,
         }
     }

@@ -21,7 +21,12 @@ use bevy::{
     winit::{EventLoopProxyWrapper, WinitUserEvent},
 };
 
-use crate::{pipelines::PipelineProgress, ui::RepaintCauses};
+use crate::view::pipelines::PipelineProgress;
+
+/// What made egui ask for the frame now running (its repaint causes, "file:line reason"),
+/// written by the UI plugin only while this counter reads it (`--count-idle-frames`).
+#[derive(Resource, Debug, Default, Clone, PartialEq, Eq)]
+pub struct RepaintCauses(pub String);
 
 /// Counts the frames drawn in `seconds` of idle, prints them and exits.
 #[derive(Debug, Clone)]

@@ -9,6 +9,14 @@
 //! works the same on the image: Bevy resolves the camera's multisampled texture before it
 //! writes the target. Screenshots of the window include the image, drawn by the UI.
 
+pub mod camera;
+pub mod display;
+pub mod graphics;
+pub mod idle;
+pub mod lighting;
+pub mod pipelines;
+pub mod screenshot;
+
 use bevy::{
     camera::{ImageRenderTarget, RenderTarget, Viewport},
     gizmos::config::{DefaultGizmoConfigGroup, GizmoConfigStore},
@@ -18,7 +26,7 @@ use bevy::{
     window::PrimaryWindow,
 };
 
-use crate::{camera::TableCamera, settings::GraphicsSettings};
+use crate::{settings::GraphicsSettings, view::camera::TableCamera};
 
 /// Keeps the table camera's target and viewport fitted to the window and the render scale.
 pub fn plugin(app: &mut App) {
@@ -27,10 +35,16 @@ pub fn plugin(app: &mut App) {
         .add_systems(Update, fit_table_camera);
 }
 
-/// How much of the window, in logical pixels from its left edge, the UI's panel covers; the
-/// 3D view takes the rest. Written by the UI.
+/// How much of the window the UI covers, in logical pixels: the settings panel from the left
+/// edge, and the HUD strip from the top edge right of the panel. The 3D view takes the rest,
+/// so nothing of the UI lies over the table. Written by the UI.
 #[derive(Resource, Debug, Clone, Copy, Default, PartialEq)]
-pub struct ViewInset(pub f32);
+pub struct ViewInset {
+    /// The panel's width.
+    pub left: f32,
+    /// The HUD strip's height.
+    pub top: f32,
+}
 
 /// Where the table camera draws.
 #[derive(Resource, Debug, Clone, Default, PartialEq)]
@@ -55,14 +69,16 @@ pub fn scaled_size(window: UVec2, percent: u32) -> UVec2 {
 }
 
 /// The 3D view inside a target of `target` physical pixels stretched over a window of `window`
-/// physical pixels, right of the window's first `left` physical pixels.
-pub fn view_viewport(window: UVec2, target: UVec2, left: f32) -> Viewport {
+/// physical pixels, right of the window's first `left` and below its first `top` physical
+/// pixels.
+pub fn view_viewport(window: UVec2, target: UVec2, left: f32, top: f32) -> Viewport {
     let window = window.max(UVec2::ONE);
     let target = target.max(UVec2::ONE);
     let left = ((left * target.x as f32 / window.x as f32).round() as u32).min(target.x - 1);
+    let top = ((top * target.y as f32 / window.y as f32).round() as u32).min(target.y - 1);
     Viewport {
-        physical_position: UVec2::new(left, 0),
-        physical_size: UVec2::new(target.x - left, target.y),
+        physical_position: UVec2::new(left, top),
+        physical_size: UVec2::new(target.x - left, target.y - top),
         ..default()
     }
 }
@@ -138,7 +154,8 @@ fn fit_table_camera(
     if scene.size != size {
         scene.size = size;
     }
-    let viewport = view_viewport(window_size, size, inset.0 * window.scale_factor());
+    let scale = window.scale_factor();
+    let viewport = view_viewport(window_size, size, inset.left * scale, inset.top * scale);
     let unchanged = camera.viewport.as_ref().is_some_and(|current| {
         current.physical_position == viewport.physical_position
             && current.physical_size == viewport.physical_size
@@ -171,11 +188,11 @@ mod tests {
         for window_scale in [1.0, 2.0] {
             let logical = Vec2::new(1280.0, 720.0);
             let window = (logical * window_scale).as_uvec2();
-            let inset = 340.0;
-            let centre = Vec2::new((inset + logical.x) / 2.0, logical.y / 2.0);
+            let (inset, top) = (340.0, 120.0);
+            let centre = Vec2::new((inset + logical.x) / 2.0, (top + logical.y) / 2.0);
             let image = scaled_size(window, 50);
             assert_eq!(image, window / 2);
-            let viewport = view_viewport(window, image, inset * window_scale);
+            let viewport = view_viewport(window, image, inset * window_scale, top * window_scale);
             let view_centre =
                 viewport.physical_position.as_vec2() + viewport.physical_size.as_vec2() / 2.0;
             let mapped = cursor_in_target(centre, window_scale, window, image, 1.0);
@@ -194,8 +211,12 @@ mod tests {
         assert_eq!(scaled_size(UVec2::new(1281, 721), 75), UVec2::new(961, 541));
         assert_eq!(scaled_size(UVec2::new(1, 1), 50), UVec2::ONE);
         // A panel wider than the window leaves the view one pixel.
-        let viewport = view_viewport(UVec2::new(300, 200), UVec2::new(150, 100), 400.0);
+        let viewport = view_viewport(UVec2::new(300, 200), UVec2::new(150, 100), 400.0, 0.0);
         assert_eq!(viewport.physical_position.x, 149);
         assert_eq!(viewport.physical_size, UVec2::new(1, 100));
+        // A strip taller than the window too.
+        let viewport = view_viewport(UVec2::new(300, 200), UVec2::new(150, 100), 0.0, 300.0);
+        assert_eq!(viewport.physical_position, UVec2::new(0, 99));
+        assert_eq!(viewport.physical_size, UVec2::new(150, 1));
     }
 }

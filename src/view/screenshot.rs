@@ -1,7 +1,7 @@
 //! `--screenshot PATH`: wait until the scene has really been drawn, save it, exit.
 //!
 //! On a software renderer shader pipelines compile for seconds, and until they have, frames
-//! come out blank. Once every pipeline has been ready ([`crate::pipelines`]; and no new one has
+//! come out blank. Once every pipeline has been ready ([`crate::view::pipelines`]; and no new one has
 //! appeared) for the settle time and for [`SETTLE_FRAMES`] frames, the primary window is
 //! captured: the frame count, not the clock, is what a loaded machine cannot cut short. The process exits with status 0 once the PNG
 //! is written, 1 if it could not be, and 3 if the scene never became ready.
@@ -14,7 +14,7 @@ use bevy::{
     winit::WinitSettings,
 };
 
-use crate::pipelines::PipelineProgress;
+use crate::view::pipelines::PipelineProgress;
 
 /// Captures the primary window once the scene is drawn, then exits.
 #[derive(Debug, Clone)]

@@ -1,0 +1,421 @@
+//! The match flow: judging a finished shot, the player's commands, the turn's phase.
+
+use super::state::*;
+use crate::settings::TableSetup;
+use crate::sim::clock_seed;
+use billiards_rules::RackStyle;
+
+use bevy::prelude::*;
+use billiards_physics::Rack;
+use billiards_rules::{
+    Call, CallRule, CueBall, Game, GameLog, LoggedShot, Match, NextShot, Seat, summarise,
+};
+
+use crate::{
+    play::aim::AimPrediction,
+    recording::{RecordingsFolder, game_file},
+    settings::PhysicsSettings,
+    sim::{
+        LayoutRequested, RackRequested, Referee, ShotFinished, SimStatus, Solver, params_from,
+        respot_ball, table_for,
+    },
+    table::balls::BallMotion,
+    table::geometry::TableSpec,
+};
+
+/// The phase the game is in, from the rules, the flags and the table.
+fn phase(rules: &Rules, status: &SimStatus, dialog: bool) -> Turn {
+    if dialog {
+        return Turn::NewGame;
+    }
+    if !status.at_rest {
+        return Turn::ShotInPlay;
+    }
+    let Some(game) = &rules.game else {
+        return Turn::Aiming;
+    };
+    let next = game.next();
+    if game.rack().over.is_some() {
+        Turn::GameOver
+    } else if game.verdict_shown || !next.choices.is_empty() {
+        Turn::Verdict
+    } else if game.calling {
+        Turn::Calling
+    } else if in_hand(next).is_some() {
+        Turn::BallInHand
+    } else {
+        Turn::Aiming
+    }
+}
+
+fn in_hand(next: &NextShot) -> Option<CueBall> {
+    matches!(
+        next.cue_ball,
+        CueBall::InHandAnywhere | CueBall::InHandBehindHeadString
+    )
+    .then_some(next.cue_ball)
+}
+
+/// The rack of `game` from `seed`, asked of the simulation.
+fn rack_request(
+    game: Game,
+    (seed, style): (u64, RackStyle),
+    spec: &TableSpec,
+    settings: &PhysicsSettings,
+) -> LayoutRequested {
+    let table = table_for(spec, settings);
+    let params = params_from(settings);
+    LayoutRequested {
+        balls: game.rack_styled(&table, &params.ball, seed, style),
+        rack: match game {
+            Game::NineBall => Rack::NineBall,
+            Game::EightBall | Game::FreePlay => Rack::FifteenBall,
+        },
+        name: match game {
+            Game::NineBall => "9-ball",
+            Game::EightBall => "8-ball",
+            Game::FreePlay => "15-ball",
+        },
+    }
+}
+
+/// On a finished shot of a rules game: summarise, judge, log, prepare the table.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn judge_shot(
+    mut commands: Commands,
+    mut finished: MessageReader<ShotFinished>,
+    mut rules: ResMut<Rules>,
+    solver: Option<Res<Solver>>,
+    mut balls: Query<&mut BallMotion>,
+    mut status: ResMut<SimStatus>,
+    folder: Res<RecordingsFolder>,
+    mut layouts: MessageWriter<LayoutRequested>,
+    (spec, settings): (Res<TableSpec>, Res<PhysicsSettings>),
+) {
+    if finished.read().count() == 0 {
+        return;
+    }
+    let (Some(game), Some(solver)) = (rules.game.as_mut(), solver) else {
+        return;
+    };
+    let sim = solver.simulation();
+    let events = sim.history().events();
+    let Some(strike) = events
+        .iter()
+        .rposition(|e| matches!(e.kind, billiards_physics::EventKind::Strike { .. }))
+    else {
+        return;
+    };
+    let summary = summarise(&events[strike..], sim.numbers());
+    let call = std::mem::take(&mut game.call);
+    game.call_ball = None;
+    let verdict = match game.play.play(&summary, call) {
+        Ok(verdict) => verdict,
+        Err(error) => {
+            status.note = Some(format!("the rules refused the shot: {error}"));
+            return;
+        }
+    };
+    if !verdict.legal() {
+        let reason = verdict.reason();
+        let reason = reason.strip_prefix("foul: ").unwrap_or(&reason);
+        game.last_foul = Some(format!("{} ({})", reason, game.play.name(verdict.shooter)));
+    }
+    game.log.shots.push(LoggedShot {
+        choices: std::mem::take(&mut game.choices),
+        call,
+        verdict: verdict.clone(),
+    });
+    game.last = Some(verdict);
+    game.verdict_shown = true;
+    save_log(game, &solver, &folder, &mut status);
+    if game.rack().over.is_none() {
+        let next = game.next().clone();
+        prepare_table(
+            &mut commands,
+            game,
+            &next,
+            &solver,
+            &mut balls,
+            &mut status,
+            &mut layouts,
+            (&spec, &settings),
+        );
+    }
+}
+
+/// Writes the rack's log beside its recording (`NAME.game.json`).
+fn save_log(game: &GameInPlay, solver: &Solver, folder: &RecordingsFolder, status: &mut SimStatus) {
+    let Some(folder) = &folder.0 else { return };
+    let path = GameLog::path_beside(&game_file(folder, solver.started(), solver.name()));
+    let result = std::fs::create_dir_all(folder)
+        .map_err(|e| e.to_string())
+        .and_then(|()| serde_json::to_string_pretty(&game.log).map_err(|e| e.to_string()))
+        .and_then(|json| {
+            let temporary = path.with_extension("tmp");
+            std::fs::write(&temporary, json)
+                .and_then(|()| std::fs::rename(&temporary, &path))
+                .map_err(|e| e.to_string())
+        });
+    if let Err(error) = result {
+        warn!("game log not saved: {error}");
+        status.note = Some(format!("game log not saved: {error}"));
+    }
+}
+
+/// Puts the table as the next shot needs it: a new rack, balls spotted (WPA 1.4), the cue
+/// ball back on the table (on the head string, a legal spot for every kind of ball in hand).
+#[allow(clippy::too_many_arguments)]
+fn prepare_table(
+    commands: &mut Commands,
+    game: &mut GameInPlay,
+    next: &NextShot,
+    solver: &Solver,
+    balls: &mut Query<&mut BallMotion>,
+    status: &mut SimStatus,
+    layouts: &mut MessageWriter<LayoutRequested>,
+    (spec, settings): (&TableSpec, &PhysicsSettings),
+) {
+    if next.rerack {
+        game.seed = game.seed.wrapping_add(1);
+        game.log = GameLog::new(
+            game.play.game,
+            game.seed,
+            game.play.players.clone(),
+            game.rack().breaker,
+        );
+        let rack = (game.seed, game.rack_style);
+        layouts.write(rack_request(game.play.game, rack, spec, settings));
+        return;
+    }
+    let sim = solver.simulation();
+    for &number in &next.spot {
+        if let Some(id) = sim.numbers().iter().position(|&n| n == number) {
+            respot_ball(commands, solver, id, balls, status);
+        }
+    }
+    if let Some(cue) = solver.cue_ball()
+        && !sim.ball(cue).motion.on_table()
+    {
+        respot_ball(commands, solver, cue, balls, status);
+    }
+}
+
+/// The player's commands and new games.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn apply_commands(
+    mut commands: Commands,
+    mut turn_commands: MessageReader<TurnCommand>,
+    mut new_games: MessageReader<NewGameRequested>,
+    mut racks: MessageReader<RackRequested>,
+    mut rules: ResMut<Rules>,
+    mut dialog: ResMut<DialogOpen>,
+    solver: Option<Res<Solver>>,
+    mut balls: Query<&mut BallMotion>,
+    mut status: ResMut<SimStatus>,
+    mut layouts: MessageWriter<LayoutRequested>,
+    (mut spec, settings, mut setup, aim): (
+        ResMut<TableSpec>,
+        Res<PhysicsSettings>,
+        ResMut<TableSetup>,
+        Option<Res<AimPrediction>>,
+    ),
+) {
+    // A rack from the panel is free play.
+    if racks.read().count() > 0 {
+        rules.game = None;
+    }
+    for request in new_games.read() {
+        dialog.0 = false;
+        // The table first: the rack below is set on it, and the table's meshes follow.
+        setup.set_if_neq(request.setup);
+        spec.set_if_neq(TableSpec::of(request.setup.table));
+        if request.game == Game::FreePlay {
+            rules.game = None;
+            let table = table_for(&spec, &settings);
+            let rack = crate::sim::STARTING_RACK;
+            layouts.write(LayoutRequested {
+                balls: rack.layout(&table, &params_from(&settings).ball),
+                rack,
+                name: crate::sim::rack_slug(rack),
+            });
+            continue;
+        }
+        let play = Match::new(
+            request.game,
+            request.players.clone(),
+            request.race_to,
+            Seat::A,
+        );
+        let log = GameLog::new(request.game, request.seed, request.players.clone(), Seat::A);
+        let rack = (request.seed, request.setup.rack_style);
+        layouts.write(rack_request(request.game, rack, &spec, &settings));
+        rules.game = Some(GameInPlay {
+            play,
+            log,
+            seed: request.seed,
+            call: Call::None,
+            call_ball: None,
+            calling: false,
+            proposed: None,
+            last: None,
+            verdict_shown: false,
+            last_foul: None,
+            choices: Vec::new(),
+            seats: request.computer,
+            rack_style: request.setup.rack_style,
+        });
+    }
+    for &command in turn_commands.read() {
+        match command {
+            TurnCommand::OpenDialog => dialog.0 = true,
+            TurnCommand::CloseDialog => dialog.0 = false,
+            _ => {}
+        }
+        let Some(game) = rules.game.as_mut() else {
+            continue;
+        };
+        match command {
+            TurnCommand::OpenDialog | TurnCommand::CloseDialog => {}
+            TurnCommand::Continue => game.verdict_shown = false,
+            TurnCommand::Choose(choice) => match game.play.choose(choice) {
+                Ok(next) => {
+                    game.choices.push(choice);
+                    game.verdict_shown = false;
+                    if let Some(solver) = &solver {
+                        prepare_table(
+                            &mut commands,
+                            game,
+                            &next,
+                            solver,
+                            &mut balls,
+                            &mut status,
+                            &mut layouts,
+                            (&spec, &settings),
+                        );
+                    }
+                }
+                Err(error) => status.note = Some(error.to_string()),
+            },
+            TurnCommand::StartCalling if game.next().call == CallRule::NotUsed => {
+                status.note = Some("no call on this shot".to_owned());
+            }
+            TurnCommand::Call(Call::PushOut) if !game.next().push_out_allowed => {
+                status.note = Some("a push out only right after the break (WPA 2.4)".to_owned());
+            }
+            TurnCommand::StartCalling => {
+                game.calling = true;
+                // The call follows the aim: the ball the aiming aid sends into a pocket, and
+                // that pocket, proposed for the player to confirm or change.
+                game.proposed = aim.as_ref().and_then(|aim| proposed_call(game.next(), aim));
+                if let Some(Call::Ball { ball, .. }) = game.proposed {
+                    game.call_ball = Some(ball);
+                } else if game.call_ball.is_none() {
+                    game.call_ball = match game.next().call {
+                        CallRule::EightPocket => Some(8),
+                        _ => game.next().legal_first.first().copied(),
+                    };
+                }
+            }
+            TurnCommand::CallBall(ball) => game.call_ball = Some(ball),
+            TurnCommand::Call(call) => {
+                game.call = call;
+                game.calling = false;
+            }
+            TurnCommand::NextRack => {
+                if game.play.next_rack().is_ok() {
+                    game.seed = game.seed.wrapping_add(1);
+                    game.log = GameLog::new(
+                        game.play.game,
+                        game.seed,
+                        game.play.players.clone(),
+                        game.rack().breaker,
+                    );
+                    game.last = None;
+                    game.last_foul = None;
+                    game.verdict_shown = false;
+                    let rack = (game.seed, game.rack_style);
+                    layouts.write(rack_request(game.play.game, rack, &spec, &settings));
+                }
+            }
+        }
+    }
+}
+
+pub(super) fn start_game_at_launch(
+    start: Option<Res<StartGame>>,
+    mut new_games: MessageWriter<NewGameRequested>,
+    setup: Res<TableSetup>,
+) {
+    if let Some(start) = start {
+        new_games.write(NewGameRequested {
+            game: start.0,
+            players: ["Player 1".to_owned(), "Player 2".to_owned()],
+            race_to: 3,
+            seed: clock_seed(),
+            computer: [None, None],
+            setup: *setup,
+        });
+    }
+}
+
+/// Derives the turn, the cue ball in hand and the referee's word from the rules.
+pub(super) fn follow_rules(
+    rules: Res<Rules>,
+    dialog: Res<DialogOpen>,
+    mut status: ResMut<SimStatus>,
+    mut referee: ResMut<Referee>,
+    turn: Option<Res<State<Turn>>>,
+    mut next_turn: ResMut<NextState<Turn>>,
+) {
+    let wanted = phase(&rules, &status, dialog.0);
+    if turn.is_some_and(|turn| *turn.get() != wanted) {
+        next_turn.set(wanted);
+    }
+    let refuse_shot = match wanted {
+        Turn::NewGame => Some("finish the new-game dialog first"),
+        Turn::Verdict => Some("the verdict first: continue or choose"),
+        Turn::GameOver => Some("the rack is over"),
+        Turn::Calling => Some("click a pocket to call it first"),
+        Turn::Aiming | Turn::BallInHand => rules.game.as_ref().and_then(|game| {
+            (game.next().call == CallRule::EightPocket
+                && !matches!(game.call, Call::Ball { ball: 8, .. }))
+            .then_some("call a pocket for the 8 first")
+        }),
+        Turn::ShotInPlay => None,
+    }
+    .map(str::to_owned);
+    let wanted_referee = Referee {
+        active: rules.game.is_some(),
+        refuse_shot,
+        rack_over: wanted == Turn::GameOver,
+    };
+    referee.set_if_neq(wanted_referee);
+    if let Some(game) = &rules.game
+        && status.at_rest
+    {
+        let hand = in_hand(game.next()).filter(|_| game.rack().over.is_none());
+        if status.ball_in_hand != hand {
+            status.ball_in_hand = hand;
+        }
+    }
+}
+
+/// The call the aim proposes: the first callable ball (the 8 when it is on, else a legal
+/// first ball) whose drawn path ends in a pocket.
+fn proposed_call(next: &NextShot, aim: &AimPrediction) -> Option<Call> {
+    let callable = |n: u8| match next.call {
+        CallRule::EightPocket => n == 8,
+        CallRule::Optional => next.legal_first.contains(&n),
+        CallRule::NotUsed => false,
+    };
+    aim.after
+        .iter()
+        .filter(|path| path.number != 0 && callable(path.number))
+        .find_map(|path| {
+            path.pocket.map(|pocket| Call::Ball {
+                ball: path.number,
+                pocket,
+            })
+        })
+}

@@ -1,0 +1,75 @@
+//! The rules in the game: a match of 8-ball or 9-ball (`billiards-rules`), or free play, and
+//! the turn's phase as a Bevy sub-state of [`GameMode::Play`].
+//!
+//! One source of truth: the [`Rules`] resource (the match, the call, whether a verdict or the
+//! call dialog is up). Every frame, in [`SimSystems::Flow`]:
+//! 1. `judge_shot`: on [`ShotFinished`], the shot's events (from its strike on) are
+//!    summarised ([`billiards_rules::summarise`]) and judged ([`Match::play`]); the verdict is
+//!    logged ([`GameLog`], saved beside the autosaved recording) and the table prepared for
+//!    the next shot (balls spotted, the cue ball back on the table, a new rack);
+//! 2. `apply_commands`: the player's [`TurnCommand`]s and [`NewGameRequested`];
+//! 3. `follow_rules`: derives the [`Turn`] from the resource, the cue ball in hand
+//!    ([`SimStatus::ball_in_hand`]) from the next shot, and tells the simulation's
+//!    [`Referee`] whether a shot may be taken now.
+//!
+//! Free play has no match: the turn is [`Turn::Aiming`] or [`Turn::ShotInPlay`], and a
+//! scratch is respotted by the simulation as before.
+//!
+//! [`table_plugin`] adds what needs a window: the legal area of the cue ball in hand, the
+//! pockets while calling and the called pocket (gizmos), and the click on a pocket.
+
+mod flow;
+mod state;
+mod table_input;
+
+pub use state::*;
+pub use table_input::pocket_near;
+
+use flow::{apply_commands, follow_rules, judge_shot, start_game_at_launch};
+use table_input::{click_pocket, confirm_key, draw_rules, lock_aim};
+
+use bevy::prelude::*;
+
+use crate::{
+    input::{AimLocked, InputSystems},
+    sim::SimSystems,
+};
+
+/// Registers the rules, the turn's sub-state and its messages. Needs no window (headless
+/// tests add it beside the simulation).
+pub fn plugin(app: &mut App) {
+    app.add_sub_state::<Turn>()
+        .add_message::<NewGameRequested>()
+        .add_message::<TurnCommand>()
+        .init_resource::<Rules>()
+        .init_resource::<DialogOpen>()
+        .init_resource::<AimLocked>()
+        .add_systems(Startup, start_game_at_launch)
+        .add_systems(Update, lock_aim.before(InputSystems::Pointer))
+        .add_systems(
+            Update,
+            (judge_shot, apply_commands, follow_rules)
+                .chain()
+                .in_set(SimSystems::Flow)
+                .after(crate::sim::respot_after_scratch),
+        );
+}
+
+/// What needs a window: the pointer on the pockets while calling, the legal area of the cue
+/// ball in hand and the called pocket.
+pub fn table_plugin(app: &mut App) {
+    app.add_systems(
+        Update,
+        (
+            click_pocket
+                .in_set(InputSystems::Pointer)
+                .run_if(in_state(Turn::Calling))
+                .before(SimSystems::Flow),
+            confirm_key
+                .in_set(InputSystems::Keyboard)
+                .run_if(in_state(Turn::Verdict))
+                .before(SimSystems::Flow),
+            draw_rules.after(SimSystems::Commands),
+        ),
+    );
+}

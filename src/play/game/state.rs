@@ -1,0 +1,305 @@
+//! The rules' state in the game: the match in play, the turn, the player's commands.
+
+use crate::settings::TableSetup;
+use billiards_rules::RackStyle;
+
+use bevy::prelude::*;
+use billiards_ai::Level;
+use billiards_rules::{
+    Call, CallRule, Choice, CueBall, Game, GameLog, GameState, Group, Match, NextShot, Outcome,
+    Seat, Verdict,
+};
+
+use crate::mode::GameMode;
+
+/// The phase of the turn, while the live game is shown.
+#[derive(SubStates, Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[source(GameMode = GameMode::Play)]
+pub enum Turn {
+    /// The new-game dialog is open: game, players, race.
+    NewGame,
+    /// Aim and shoot (a call may be made first in 8-ball; the break is a shot too).
+    #[default]
+    Aiming,
+    /// The cue ball is in hand: drag it where the rules allow, then aim and shoot.
+    BallInHand,
+    /// Calling a pocket: click it on the table.
+    Calling,
+    /// The balls are moving.
+    ShotInPlay,
+    /// The last shot's verdict is shown; continue, or take one of the options offered.
+    Verdict,
+    /// The rack is over: next rack, or a new game once the match is won.
+    GameOver,
+}
+
+/// Starts a new game (the dialog's Start).
+#[derive(Message, Debug, Clone, PartialEq, Eq)]
+pub struct NewGameRequested {
+    /// The game; [`Game::FreePlay`] is the sandbox (no match).
+    pub game: Game,
+    /// The players' names.
+    pub players: [String; 2],
+    /// Racks needed to win the match.
+    pub race_to: u32,
+    /// The seed of the first rack's gaps (each later rack takes the next seed).
+    pub seed: u64,
+    /// Each seat's computer level; `None`: a human.
+    pub computer: [Option<Level>; 2],
+    /// The table and the rack style.
+    pub setup: TableSetup,
+}
+
+/// What the player does between shots.
+#[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TurnCommand {
+    /// Open the new-game dialog.
+    OpenDialog,
+    /// Close it without a new game.
+    CloseDialog,
+    /// The verdict has been read: on to the next shot.
+    Continue,
+    /// Take one of the options offered ([`NextShot::choices`]).
+    Choose(Choice),
+    /// Start calling a pocket (click it on the table).
+    StartCalling,
+    /// The ball to call (8-ball, an optional call).
+    CallBall(u8),
+    /// Make this call for the next shot (a pocket, a safety, a push out, or none).
+    Call(Call),
+    /// The rack is over: rack the next one of the match.
+    NextRack,
+}
+
+/// The rules side of the live game: `None` in free play.
+#[derive(Resource, Debug, Default)]
+pub struct Rules {
+    /// The match in play, if any.
+    pub game: Option<GameInPlay>,
+}
+
+/// A match in play and what the players did since the last shot.
+#[derive(Debug, Clone)]
+pub struct GameInPlay {
+    /// The match: players, race, score and the rack in play.
+    pub play: Match,
+    /// The rack's log (calls, choices, verdicts), saved beside its recording.
+    pub log: GameLog,
+    /// The seed of the rack in play.
+    pub seed: u64,
+    /// The call for the next shot.
+    pub call: Call,
+    /// The ball the player is calling (8-ball optional calls); the 8 when it is on.
+    pub call_ball: Option<u8>,
+    /// The call dialog is open.
+    pub calling: bool,
+    /// The call the aim proposed when the dialog opened, for the player to confirm.
+    pub proposed: Option<Call>,
+    /// The last verdict, and whether it is still shown (waiting for Continue).
+    pub last: Option<Verdict>,
+    /// The last verdict waits for the player.
+    pub verdict_shown: bool,
+    /// The last foul's reason, kept until a later foul.
+    pub last_foul: Option<String>,
+    /// Choices taken since the last shot (logged with the next one).
+    pub(super) choices: Vec<Choice>,
+    /// Each seat's computer level; `None`: a human.
+    pub seats: [Option<Level>; 2],
+    /// How this match's racks are set.
+    pub rack_style: RackStyle,
+}
+
+impl GameInPlay {
+    /// Who shoots next and what they may do with the cue ball: "Ann shoots next, with ball
+    /// in hand anywhere on the table".
+    pub fn next_text(&self) -> String {
+        let next = self.next();
+        let who = match self.computer(next.shooter) {
+            Some(_) => format!("{} (computer)", self.name(next.shooter)),
+            None => self.name(next.shooter).to_owned(),
+        };
+        let hand = match next.cue_ball {
+            CueBall::InHandAnywhere => ", with ball in hand anywhere on the table",
+            CueBall::InHandBehindHeadString => ", with ball in hand behind the head string",
+            CueBall::AsItLies | CueBall::Respot => " from where the cue ball lies",
+        };
+        format!("{who} shoots next{hand}")
+    }
+
+    /// What the next shot must respect.
+    pub fn next(&self) -> &NextShot {
+        self.play.next()
+    }
+
+    /// The rack in play.
+    pub fn rack(&self) -> &GameState {
+        &self.play.rack
+    }
+
+    /// The name of `seat`.
+    pub fn name(&self, seat: Seat) -> &str {
+        self.play.name(seat)
+    }
+
+    /// The computer's level at `seat`, `None` for a human.
+    pub fn computer(&self, seat: Seat) -> Option<Level> {
+        self.seats[seat.index()]
+    }
+
+    /// Which turn this is: the rack's seed, the shots and the choices so far.
+    pub fn turn_key(&self) -> (u64, usize, usize) {
+        (self.seed, self.log.shots.len(), self.choices.len())
+    }
+
+    /// The lines of the HUD for this game in phase `turn`: the match, whose turn and what
+    /// to do, the ball on, groups and balls left, fouls in a row, the last foul.
+    pub fn hud_lines(&self, turn: Turn) -> Vec<String> {
+        let play = &self.play;
+        let rack = self.rack();
+        let next = self.next();
+        let game = match play.game {
+            Game::NineBall => "9-ball",
+            Game::EightBall => "8-ball",
+            Game::FreePlay => "free play",
+        };
+        let mut lines = vec![format!(
+            "{game}, race to {}: {} {} - {} {}",
+            play.race_to,
+            play.name(Seat::A),
+            play.score[0],
+            play.score[1],
+            play.name(Seat::B),
+        )];
+        let shooter = self.name(next.shooter);
+        let doing = match turn {
+            Turn::NewGame => "new game: choose the game and the players".to_owned(),
+            // The next shot is the one in play until its verdict.
+            Turn::ShotInPlay => format!("{shooter} shot: balls moving"),
+            Turn::GameOver => match (rack.over, play.winner()) {
+                (Some((winner, reason)), Some(_)) => format!(
+                    "{} wins the rack and the match: {reason}",
+                    self.name(winner)
+                ),
+                (Some((winner, reason)), None) => {
+                    format!("{} wins the rack: {reason}", self.name(winner))
+                }
+                (None, _) => "the rack is over".to_owned(),
+            },
+            Turn::Verdict if !next.choices.is_empty() => {
+                format!("{shooter} to choose: {}", choices_text(&next.choices))
+            }
+            Turn::Verdict => format!("{shooter} to shoot next: continue"),
+            Turn::Calling => match next.call {
+                CallRule::EightPocket => format!("{shooter} calls the 8: click a pocket"),
+                _ => format!("{shooter} calls a ball and a pocket: click the pocket"),
+            },
+            // The computer's turn: no instructions meant for a human at the mouse (its plan
+            // follows on the next line of the HUD).
+            Turn::BallInHand | Turn::Aiming if let Some(level) = self.computer(next.shooter) => {
+                format!(
+                    "{shooter} (computer, {level}) to {}",
+                    if next.break_shot { "break" } else { "shoot" }
+                )
+            }
+            Turn::BallInHand => format!(
+                "{shooter} to {}: ball in hand {}, drag the cue ball, aim and shoot",
+                if next.break_shot { "break" } else { "shoot" },
+                match next.cue_ball {
+                    CueBall::InHandBehindHeadString => "behind the head string",
+                    _ => "anywhere",
+                }
+            ),
+            Turn::Aiming => format!(
+                "{shooter} to {}: aim and shoot",
+                if next.break_shot { "break" } else { "shoot" }
+            ),
+        };
+        lines.push(doing);
+        if rack.over.is_none() && !next.break_shot {
+            lines.push(format!("ball on: {}", ball_on_text(rack, next)));
+        }
+        if play.game == Game::EightBall {
+            lines.push(match rack.group(Seat::A) {
+                None => "open table".to_owned(),
+                Some(_) => [Seat::A, Seat::B]
+                    .map(|seat| {
+                        let group = rack.group(seat).unwrap_or(Group::Solids);
+                        let left = rack.on_table.iter().filter(|&&b| group.contains(b)).count();
+                        format!("{}: {} ({left} left)", self.name(seat), group.name())
+                    })
+                    .join(", "),
+            });
+        } else {
+            lines.push(format!("balls left: {}", rack.on_table.len()));
+        }
+        match self.call {
+            Call::None => {}
+            Call::PushOut => lines.push("call: push out".to_owned()),
+            Call::Safety => lines.push("call: safety".to_owned()),
+            Call::Ball { ball, pocket } => lines.push(format!(
+                "call: the {ball} in the {}",
+                billiards_rules::pocket_name(pocket)
+            )),
+        }
+        lines.push(format!(
+            "fouls in a row: {} {}, {} {}",
+            play.name(Seat::A),
+            rack.fouls[0],
+            play.name(Seat::B),
+            rack.fouls[1]
+        ));
+        if let Some(verdict) = &self.last {
+            lines.push(format!(
+                "last shot ({}): {}",
+                self.name(verdict.shooter),
+                verdict.reason()
+            ));
+        }
+        if let Some(foul) = &self.last_foul {
+            lines.push(format!("last foul: {foul}"));
+        }
+        lines
+    }
+}
+
+fn ball_on_text(rack: &GameState, next: &NextShot) -> String {
+    match (rack.game, next.legal_first.as_slice()) {
+        (_, []) => "none".to_owned(),
+        (_, [one]) => format!("the {one}"),
+        (Game::EightBall, _) if rack.group(next.shooter).is_none() => {
+            "any ball but the 8 (open table)".to_owned()
+        }
+        (Game::EightBall, _) => format!(
+            "the {}",
+            rack.group(next.shooter).map_or("group", Group::name)
+        ),
+        (_, many) => format!("any of {many:?}"),
+    }
+}
+
+fn choices_text(choices: &[Choice]) -> String {
+    choices
+        .iter()
+        .map(|&c| c.label())
+        .collect::<Vec<_>>()
+        .join(" or ")
+}
+
+/// The game to start at launch (`--game`), two players, race to 3.
+#[derive(Resource, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct StartGame(pub Game);
+
+/// Whether the new-game dialog is open.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct DialogOpen(pub bool);
+
+/// The outcome in a few words (the timeline, tests).
+pub fn outcome_text(play: &Match, outcome: Outcome) -> String {
+    match outcome {
+        Outcome::Continues => "continues".to_owned(),
+        Outcome::Passes => "the turn passes".to_owned(),
+        Outcome::GameOver { winner, reason } => {
+            format!("{} wins: {reason}", play.name(winner))
+        }
+    }
+}

@@ -1,0 +1,139 @@
+//! What needs a window: the click on a pocket, the aim lock, the confirm key, the gizmos.
+
+use super::state::*;
+
+use bevy::{math::DVec2, prelude::*};
+use billiards_physics::Pocket;
+use billiards_rules::{Call, CallRule, CueBall};
+
+use crate::{
+    input::AimLocked,
+    play::cue::PointerInput,
+    sim::SimStatus,
+    table::geometry::{TableSpec, to_world},
+};
+
+/// While calling: a click near a pocket calls it (with the ball chosen, the 8 when it is on).
+pub(super) fn click_pocket(
+    input: PointerInput,
+    spec: Res<TableSpec>,
+    rules: Res<Rules>,
+    mut turn_commands: MessageWriter<TurnCommand>,
+) {
+    let Some(game) = &rules.game else { return };
+    if !input.clicked() {
+        return;
+    }
+    let Some(point) = input.table_point(0.0) else {
+        return;
+    };
+    if let Some(pocket) = pocket_near(&spec, point) {
+        let ball = match game.next().call {
+            CallRule::EightPocket => 8,
+            _ => game
+                .call_ball
+                .or(game.next().legal_first.first().copied())
+                .unwrap_or(8),
+        };
+        turn_commands.write(TurnCommand::Call(Call::Ball { ball, pocket }));
+    }
+}
+
+/// The pocket whose hole is within a ball's reach of `point`, if any.
+pub fn pocket_near(spec: &TableSpec, point: DVec2) -> Option<Pocket> {
+    Pocket::ALL
+        .into_iter()
+        .map(|p| (p, spec.pocket(p).centre.distance(point)))
+        .filter(|&(p, d)| d < spec.pocket(p).radius + 3.0 * spec.ball_radius)
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(p, _)| p)
+}
+
+/// While a pocket is being called, a click on the table calls it and does not also aim; on
+/// the computer's turn the pointer does not aim either.
+pub(super) fn lock_aim(
+    turn: Option<Res<State<Turn>>>,
+    rules: Res<Rules>,
+    mut lock: ResMut<AimLocked>,
+) {
+    let calling = turn.is_some_and(|t| *t.get() == Turn::Calling);
+    let computer = rules
+        .game
+        .as_ref()
+        .is_some_and(|g| g.computer(g.next().shooter).is_some());
+    lock.set_if_neq(AimLocked(calling || computer));
+}
+
+/// Enter continues after a verdict with no options.
+pub(super) fn confirm_key(
+    keys: Res<ButtonInput<KeyCode>>,
+    rules: Res<Rules>,
+    mut turn_commands: MessageWriter<TurnCommand>,
+) {
+    if keys.just_pressed(KeyCode::Enter)
+        && rules
+            .game
+            .as_ref()
+            .is_some_and(|g| g.next().choices.is_empty())
+    {
+        turn_commands.write(TurnCommand::Continue);
+    }
+}
+
+/// The legal area of the cue ball in hand, the pockets while calling, the called pocket.
+pub(super) fn draw_rules(
+    rules: Res<Rules>,
+    status: Res<SimStatus>,
+    spec: Res<TableSpec>,
+    turn: Option<Res<State<Turn>>>,
+    mut gizmos: Gizmos,
+) {
+    let Some(game) = &rules.game else { return };
+    let Some(turn) = turn.map(|t| *t.get()) else {
+        return;
+    };
+    let lift = 0.003;
+    let at = |p: DVec2| to_world(p.extend(lift));
+    let flat = Quat::from_rotation_x(std::f32::consts::FRAC_PI_2);
+    if turn == Turn::BallInHand
+        && let Some(rule) = status.ball_in_hand
+    {
+        let h = spec.half_extents() - DVec2::splat(spec.ball_radius);
+        let right = match rule {
+            CueBall::InHandBehindHeadString => spec.head_spot().x,
+            _ => h.x,
+        };
+        let corners = [
+            DVec2::new(-h.x, -h.y),
+            DVec2::new(right, -h.y),
+            DVec2::new(right, h.y),
+            DVec2::new(-h.x, h.y),
+            DVec2::new(-h.x, -h.y),
+        ];
+        gizmos.linestrip(corners.map(at), Color::srgb(0.3, 0.9, 1.0));
+    }
+    if turn == Turn::Calling {
+        for pocket in Pocket::ALL {
+            let hole = spec.pocket(pocket);
+            gizmos
+                .circle(
+                    Isometry3d::new(at(hole.centre), flat),
+                    hole.radius as f32,
+                    Color::srgba(1.0, 1.0, 1.0, 0.6),
+                )
+                .resolution(32);
+        }
+    }
+    if let Call::Ball { pocket, .. } = game.call {
+        let hole = spec.pocket(pocket);
+        for k in [1.0, 1.15] {
+            gizmos
+                .circle(
+                    Isometry3d::new(at(hole.centre), flat),
+                    (hole.radius * k) as f32,
+                    Color::srgb(1.0, 0.85, 0.1),
+                )
+                .resolution(48);
+        }
+    }
+}

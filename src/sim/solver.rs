@@ -1,0 +1,179 @@
+//! The solver resource and the conversions between the solver and the ECS.
+
+use super::messages::*;
+use std::time::SystemTime;
+
+use bevy::{math::DVec2, prelude::*};
+use billiards_physics::{
+    self as physics, BallFriction, BallState, CushionModel, Model, Motion, PaperModel, Params,
+    Rack, Simulation, SpinModel, recording::Recorder,
+};
+
+use billiards_rules::CueBall;
+
+use crate::{
+    settings::{BallFrictionChoice, CushionChoice, PhysicsModel, PhysicsSettings},
+    table::balls::{BallMotion, MotionState},
+    table::geometry::TableSpec,
+};
+
+/// The table just before a strike: what an undo goes back to.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct BeforeShot {
+    pub(super) balls: Vec<BallState>,
+    pub(super) shot: ShotRequested,
+    pub(super) shots: u32,
+    pub(super) ball_in_hand: Option<CueBall>,
+}
+
+/// The solver and the entity of each of its balls. Every input goes through a [`Recorder`],
+/// so the game since the last rack is always an exact recording.
+#[derive(Resource, Debug)]
+pub struct Solver {
+    pub(super) rec: Recorder,
+    pub(super) entities: Vec<Entity>,
+    pub(super) rack: Rack,
+    /// What names the recording: the slug of the rack or of the game.
+    pub(super) name: &'static str,
+    pub(super) started: SystemTime,
+    /// The table before each shot since the rack, newest last (undo goes back one at a time).
+    pub(super) undo: Vec<BeforeShot>,
+}
+
+impl Solver {
+    /// The simulation, for reading.
+    pub fn simulation(&self) -> &Simulation {
+        self.rec.sim()
+    }
+
+    /// The recorder: the game since the last rack, inputs and history.
+    pub fn recorder(&self) -> &Recorder {
+        &self.rec
+    }
+
+    /// The rack this game started from.
+    pub fn rack(&self) -> Rack {
+        self.rack
+    }
+
+    /// The short name of this rack for file names: "9-ball", "8-ball", "15-ball".
+    pub fn name(&self) -> &'static str {
+        self.name
+    }
+
+    /// When this game was racked (wall clock; names its recording).
+    pub fn started(&self) -> SystemTime {
+        self.started
+    }
+
+    /// The entity of solver ball `id`.
+    pub fn entity(&self, id: usize) -> Option<Entity> {
+        self.entities.get(id).copied()
+    }
+
+    /// Shots that [`UndoRequested`] can take back, one at a time.
+    pub fn undoable_shots(&self) -> usize {
+        self.undo.len()
+    }
+
+    /// The solver index of the cue ball, if it is in the layout.
+    pub fn cue_ball(&self) -> Option<usize> {
+        self.simulation().numbers().iter().position(|&n| n == 0)
+    }
+}
+
+/// Radius of the rounded cushion ends at the pocket mouths (about the nose's own rounding).
+pub const JAW_RADIUS: f64 = 0.015;
+
+/// The solver's table for the table's dimensions and the player's settings.
+pub fn table_for(spec: &TableSpec, settings: &PhysicsSettings) -> physics::Table {
+    let table = spec.physics_table();
+    if settings.jaws {
+        table.with_jaws(JAW_RADIUS)
+    } else {
+        table
+    }
+}
+
+/// The solver's parameters for the player's settings.
+pub fn params_from(settings: &PhysicsSettings) -> Params {
+    let model = match settings.model {
+        PhysicsModel::Paper => Model::Paper(PaperModel {
+            mu_slide: settings.mu_slide,
+            mu_roll: settings.mu_roll,
+            slide_roll_speed: settings.slide_roll_speed,
+            e_ball: settings.e_ball,
+            e_cushion: settings.e_cushion,
+        }),
+        PhysicsModel::Spin => {
+            let cushion = match settings.cushion {
+                CushionChoice::Han2005 => CushionModel::Han2005 {
+                    e: settings.e_cushion,
+                    mu: settings.mu_cushion,
+                },
+                CushionChoice::Reflect => CushionModel::Reflect {
+                    e: settings.e_cushion,
+                },
+                CushionChoice::Mathavan2010 => CushionModel::Mathavan2010 {
+                    e: settings.e_cushion,
+                    mu: settings.mu_cushion,
+                },
+            };
+            Model::Spin(SpinModel {
+                mu_slide: settings.mu_slide,
+                mu_roll: settings.mu_roll,
+                mu_spin: settings.mu_spin,
+                e_ball: settings.e_ball,
+                mu_ball: settings.mu_ball,
+                cushion,
+                cushion_height: settings.cushion_height,
+                cue_mass: settings.cue_mass,
+                ball_friction: match settings.ball_friction {
+                    BallFrictionChoice::Constant => BallFriction::Constant,
+                    BallFrictionChoice::SpeedDependent => BallFriction::ALCIATORE,
+                },
+                end_mass: settings.shaft.end_mass(),
+                ..SpinModel::default()
+            })
+        }
+    };
+    Params {
+        model,
+        prediction: settings.prediction,
+        randomization: settings
+            .randomization
+            .enabled
+            .then(|| physics::Randomization {
+                spread: settings.randomization.spread_degrees.to_radians(),
+                seed: settings.randomization.seed,
+            }),
+        ..Params::default()
+    }
+}
+
+/// A solver vector as a Bevy one.
+pub fn to_dvec2(v: physics::Vec2) -> DVec2 {
+    DVec2::new(v.x, v.y)
+}
+
+pub(super) fn to_vec2(v: DVec2) -> physics::Vec2 {
+    physics::Vec2::new(v.x, v.y)
+}
+
+/// The component form of a solver ball state.
+pub fn ball_motion(state: &BallState) -> BallMotion {
+    BallMotion {
+        position: to_dvec2(state.position),
+        velocity: to_dvec2(state.velocity),
+        spin: {
+            let w = state.angular_velocity;
+            bevy::math::DVec3::new(w.x, w.y, w.z)
+        },
+        state: match state.motion {
+            Motion::Sliding => MotionState::Sliding,
+            Motion::Rolling => MotionState::Rolling,
+            // Spinning in place: the centre does not move, so nothing to roll.
+            Motion::Stationary | Motion::Spinning | Motion::Pocketed(_) => MotionState::Stationary,
+        },
+    }
+}
