@@ -36,6 +36,11 @@ pub enum Command {
     Export(ExportArgs),
     /// Whole racks between two computer players on all cores: win rates and figures.
     Tournament(crate::tournament::TournamentArgs),
+    /// The break study: breaks per game, table, rack, speed and cue position, judged by the
+    /// rules; sharded (`--shard K/M`, `--merge`).
+    Breaks(crate::breaks::BreaksArgs),
+    /// The physics soak: seeded random scenes with every event checked; sharded.
+    Soak(crate::soak::SoakArgs),
     /// Open the game on a recording (needs the game binary: `billiards replay FILE`).
     Replay {
         /// The recording.
@@ -301,6 +306,8 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Verify { file } => verify(&file),
         Command::Export(a) => export_cmd(a),
         Command::Tournament(a) => return crate::tournament::run(a),
+        Command::Breaks(a) => return crate::breaks::run(a),
+        Command::Soak(a) => return crate::soak::run(a),
         Command::Replay { file } => Err(format!(
             "{}: replay opens the game: run `billiards replay {}`",
             file.display(),
