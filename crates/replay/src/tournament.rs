@@ -13,6 +13,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rand::Rng;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeSet;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -104,8 +105,12 @@ impl Batch for Results {
         if have == want {
             return Ok(());
         }
-        let missing = want.iter().filter(|g| !have.contains(g)).count();
-        let foreign = have.iter().filter(|g| !want.contains(g)).count();
+        let (want_set, have_set): (BTreeSet<u64>, BTreeSet<u64>) = (
+            want.iter().copied().collect(),
+            have.iter().copied().collect(),
+        );
+        let missing = want_set.difference(&have_set).count();
+        let foreign = have.len() - have_set.intersection(&want_set).count();
         Err(format!(
             "{} of its {} games ({missing} missing, {foreign} not its own or repeated)",
             have.len(),
