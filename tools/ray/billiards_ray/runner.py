@@ -64,6 +64,9 @@ def find_cli(explicit: Optional[str] = None) -> str:
     if target:
         candidates.append(str(Path(target) / "release" / CLI_NAME))
     candidates.append(str(repo / "target" / "release" / CLI_NAME))
+    if explicit and os.path.isfile(explicit) and not os.access(explicit, os.X_OK):
+        # A binary brought by a job's working_dir may arrive without its executable bit.
+        os.chmod(explicit, os.stat(explicit).st_mode | 0o755)
     for c in candidates:
         if c and os.path.isfile(c) and os.access(c, os.X_OK):
             return os.path.abspath(c)
