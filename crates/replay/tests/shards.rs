@@ -206,3 +206,39 @@ fn the_fail_once_hook_fails_a_shard_once_then_lets_it_run() {
     assert!(out.exists());
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn the_study_heat_map_of_the_merge_is_one_process_s() {
+    let dir = temp("svg");
+    let args = ["--grid", "5x3", "--samples", "3"];
+    let svg = |name: &str| dir.join(name);
+    let o = bin()
+        .arg("study")
+        .args(args)
+        .arg("--svg")
+        .arg(svg("whole.svg"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{o:?}");
+    let shards: Vec<PathBuf> = (1..=2)
+        .map(|k| {
+            let p = dir.join(format!("{k}.json"));
+            run("study", &args, &["--shard", &format!("{k}/2")], &p);
+            p
+        })
+        .collect();
+    let o = bin()
+        .args(["study", "--merge"])
+        .args(&shards)
+        .arg("--svg")
+        .arg(svg("merged.svg"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{o:?}");
+    let whole = std::fs::read_to_string(svg("whole.svg")).unwrap();
+    assert_eq!(whole, std::fs::read_to_string(svg("merged.svg")).unwrap());
+    // The table, 15 cells, the ball, the scale's 11 steps.
+    assert!(whole.matches("<rect").count() >= 1 + 1 + 15 + 11, "{whole}");
+    assert!(whole.contains("P(the 1 into foot-left)"));
+    std::fs::remove_dir_all(dir).ok();
+}
