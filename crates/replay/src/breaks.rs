@@ -221,8 +221,9 @@ fn rows(a: &BreaksArgs) -> Result<Vec<(BreakSpec, RackStyle)>, String> {
     Ok(out)
 }
 
-/// Runs the breaks of `shard`, on all cores.
-pub fn study(a: &BreaksArgs, shard: Shard) -> Result<BreaksResult, String> {
+/// Runs the breaks of shard `part` (`None`: all of them), on all cores.
+pub fn study(a: &BreaksArgs, part: Option<Shard>) -> Result<BreaksResult, String> {
+    let shard = part.unwrap_or(Shard::WHOLE);
     let specs = rows(a)?;
     let p = params(a.pairwise, &a.set)?;
     let work: Vec<(usize, u64)> = (0..specs.len())
@@ -242,7 +243,7 @@ pub fn study(a: &BreaksArgs, shard: Shard) -> Result<BreaksResult, String> {
     }
     Ok(BreaksResult {
         command: BreaksResult::COMMAND.into(),
-        shard: shard.recorded(),
+        shard: part,
         breaks: a.breaks,
         seed: a.seed,
         set: a.set.clone(),
@@ -312,8 +313,7 @@ pub fn report(r: &BreaksResult) -> String {
 /// Runs `breaks`; returns the exit code (2: bad input or a refused merge, 1: a failure).
 pub fn run(a: BreaksArgs) -> ExitCode {
     let result = if a.merge.is_empty() {
-        let shard = a.shard.unwrap_or(Shard::WHOLE);
-        if let Err(e) = crate::shard::fail_once("breaks", shard) {
+        if let Err(e) = crate::shard::fail_once("breaks", a.shard) {
             eprintln!("error: {e}");
             return ExitCode::FAILURE;
         }
@@ -321,7 +321,7 @@ pub fn run(a: BreaksArgs) -> ExitCode {
             eprintln!("error: {e}");
             return ExitCode::from(2);
         }
-        match study(&a, shard) {
+        match study(&a, a.shard) {
             Ok(r) => r,
             Err(e) => {
                 eprintln!("error: {e}");

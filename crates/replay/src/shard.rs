@@ -45,11 +45,6 @@ impl Shard {
             (n - first).div_ceil(self.m)
         }
     }
-
-    /// The shard a run of `--shard` writes: `None` for the whole run.
-    pub fn recorded(self) -> Option<Shard> {
-        (self != Shard::WHOLE).then_some(self)
-    }
 }
 
 impl fmt::Display for Shard {
@@ -352,11 +347,12 @@ pub fn items(shard: Shard, n: u64) -> impl Iterator<Item = u64> {
 }
 
 /// A test hook for fault tolerance: with `BILLIARDS_FAIL_ONCE_DIR` set, the first run of
-/// each shard of `command` creates a marker file there and fails (exit status 3) before
-/// doing any work; the next run of that shard finds the marker and works. The Ray runner's
-/// tests use it to check that a failed shard is retried and the merge is unchanged.
-pub fn fail_once(command: &str, shard: Shard) -> Result<(), String> {
-    let Some(dir) = std::env::var_os("BILLIARDS_FAIL_ONCE_DIR") else {
+/// each shard (`--shard`) of `command` creates a marker file there and fails, with exit
+/// status 1, before doing any work; the next run of that shard finds the marker and works.
+/// The Ray runner's tests use it to check that a failed shard is retried and the merge
+/// unchanged.
+pub fn fail_once(command: &str, shard: Option<Shard>) -> Result<(), String> {
+    let (Some(dir), Some(shard)) = (std::env::var_os("BILLIARDS_FAIL_ONCE_DIR"), shard) else {
         return Ok(());
     };
     let marker = Path::new(&dir).join(format!("{command}-{}-of-{}", shard.k, shard.m));

@@ -150,8 +150,9 @@ impl Batch for SoakResult {
     }
 }
 
-/// Runs the scenes of `shard` on all cores.
-pub fn soak(scenes: u64, first_seed: u64, shard: Shard) -> SoakResult {
+/// Runs the scenes of shard `part` (`None`: all of them) on all cores.
+pub fn soak(scenes: u64, first_seed: u64, part: Option<Shard>) -> SoakResult {
+    let shard = part.unwrap_or(Shard::WHOLE);
     let runs: Vec<_> = crate::shard::items(shard, scenes)
         .collect::<Vec<_>>()
         .into_par_iter()
@@ -193,7 +194,7 @@ pub fn soak(scenes: u64, first_seed: u64, shard: Shard) -> SoakResult {
     }
     SoakResult {
         command: SoakResult::COMMAND.into(),
-        shard: shard.recorded(),
+        shard: part,
         scenes,
         first_seed,
         totals,
@@ -235,12 +236,11 @@ pub fn report(r: &SoakResult) -> String {
 /// Runs `soak`; returns the exit code.
 pub fn run(a: SoakArgs) -> ExitCode {
     let result = if a.merge.is_empty() {
-        let shard = a.shard.unwrap_or(Shard::WHOLE);
-        if let Err(e) = crate::shard::fail_once("soak", shard) {
+        if let Err(e) = crate::shard::fail_once("soak", a.shard) {
             eprintln!("error: {e}");
             return ExitCode::FAILURE;
         }
-        soak(a.scenes, a.first_seed, shard)
+        soak(a.scenes, a.first_seed, a.shard)
     } else {
         match crate::shard::merge::<SoakResult>(&a.merge) {
             Ok(r) => r,

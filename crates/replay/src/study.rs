@@ -350,8 +350,9 @@ impl Setup {
     }
 }
 
-/// Runs the cells of `shard`, on all cores.
-pub fn study(a: &StudyArgs, shard: Shard) -> Result<StudyResult, String> {
+/// Runs the cells of shard `part` (`None`: all of them), on all cores.
+pub fn study(a: &StudyArgs, part: Option<Shard>) -> Result<StudyResult, String> {
+    let shard = part.unwrap_or(Shard::WHOLE);
     let (table, params) = billiards_ai::play::table_and_params_on(a.table);
     let balls = if a.balls.is_empty() {
         vec![(1, 0.6, 0.3)]
@@ -398,7 +399,7 @@ pub fn study(a: &StudyArgs, shard: Shard) -> Result<StudyResult, String> {
         .collect();
     Ok(StudyResult {
         command: StudyResult::COMMAND.into(),
-        shard: shard.recorded(),
+        shard: part,
         table: a.table,
         balls,
         target,
@@ -560,12 +561,11 @@ pub fn heat_map(r: &StudyResult, path: &Path) -> Result<(), String> {
 /// Runs `study`; returns the exit code.
 pub fn run(a: StudyArgs) -> ExitCode {
     let result = if a.merge.is_empty() {
-        let shard = a.shard.unwrap_or(Shard::WHOLE);
-        if let Err(e) = crate::shard::fail_once("study", shard) {
+        if let Err(e) = crate::shard::fail_once("study", a.shard) {
             eprintln!("error: {e}");
             return ExitCode::FAILURE;
         }
-        match study(&a, shard) {
+        match study(&a, a.shard) {
             Ok(r) => r,
             Err(e) => {
                 eprintln!("error: {e}");

@@ -165,13 +165,12 @@ fn tournament(a: TournamentArgs) -> Result<(), Failure> {
             ));
         }
         let players = players(&a.players).map_err(Failure::Input)?;
-        let shard = a.shard.unwrap_or(Shard::WHOLE);
-        crate::shard::fail_once("tournament", shard).map_err(Failure::Run)?;
+        crate::shard::fail_once("tournament", a.shard).map_err(Failure::Run)?;
         let venue = Venue {
             table: a.table,
             rack: a.rack_style,
         };
-        play(venue, game, players, a.games, a.seed, shard).map_err(Failure::Run)?
+        play(venue, game, players, a.games, a.seed, a.shard).map_err(Failure::Run)?
     } else {
         crate::shard::merge::<Results>(&a.merge).map_err(|e| Failure::Input(e.to_string()))?
     };
@@ -182,15 +181,16 @@ fn tournament(a: TournamentArgs) -> Result<(), Failure> {
     Ok(())
 }
 
-/// Plays the games of `shard` on all cores, with a progress bar.
+/// Plays the games of shard `part` (`None`: all of them) on all cores, with a progress bar.
 fn play(
     venue: Venue,
     game: Game,
     players: [Player; 2],
     games: u64,
     seed: u64,
-    shard: Shard,
+    part: Option<Shard>,
 ) -> Result<Results, String> {
+    let shard = part.unwrap_or(Shard::WHOLE);
     let mine: Vec<u64> = crate::shard::items(shard, games).collect();
     let bar = ProgressBar::new(mine.len() as u64);
     bar.set_style(
@@ -215,7 +215,7 @@ fn play(
     bar.finish_and_clear();
     Ok(Results {
         command: tournament_command(),
-        shard: shard.recorded(),
+        shard: part,
         game,
         players,
         games,

@@ -242,3 +242,18 @@ fn the_study_heat_map_of_the_merge_is_one_process_s() {
     assert!(whole.contains("P(the 1 into foot-left)"));
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn one_shard_of_one_merges_to_the_whole_run() {
+    let dir = temp("one-of-one");
+    let (cmd, args) = COMMANDS[1];
+    let (whole, one, merged) = (dir.join("w.json"), dir.join("1.json"), dir.join("m.json"));
+    run(cmd, args, &[], &whole);
+    run(cmd, args, &["--shard", "1/1"], &one);
+    assert!(merge(cmd, &[&one], Some(merged.as_path())).status.success());
+    assert_eq!(
+        std::fs::read(&whole).unwrap(),
+        std::fs::read(&merged).unwrap()
+    );
+    std::fs::remove_dir_all(dir).ok();
+}
