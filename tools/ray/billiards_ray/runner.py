@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import argparse
 import hashlib
+import json
 import os
 import shutil
 import signal
@@ -230,6 +231,13 @@ def parser() -> argparse.ArgumentParser:
         help="ship the CLI to the workers through Ray's object store",
     )
     p.add_argument(
+        "--runtime-env",
+        help=(
+            "the tasks' Ray runtime_env as JSON, e.g. "
+            '\'{"working_dir": "s3://bucket/cli.zip"}\' with --worker-cli ./billiards-cli'
+        ),
+    )
+    p.add_argument(
         "--address",
         help="a Ray cluster to join (e.g. auto, ray://head:10001); default: a local Ray",
     )
@@ -259,6 +267,7 @@ def run(
     cli: Optional[str] = None,
     worker_cli: Optional[str] = None,
     ship: bool = False,
+    runtime_env: Optional[Dict[str, object]] = None,
     cpus_per_task: int = 1,
     max_retries: int = 3,
     work_dir: Optional[str] = None,
@@ -266,8 +275,9 @@ def run(
 ) -> Tuple[bytes, str]:
     """Runs ``command`` with ``shard_args`` as ``shards`` Ray tasks on the Ray this process
     is connected to (``ray.init`` first), merges them with the local CLI and returns the
-    merged JSON and the CLI's report. Raises RunError when a shard is out of retries or the
-    merge is refused."""
+    merged JSON and the CLI's report. ``runtime_env`` is the tasks' Ray runtime environment
+    (a zipped working_dir holding the CLI, environment variables...). Raises RunError when a
+    shard is out of retries or the merge is refused."""
     import ray
     from tqdm import tqdm
 
@@ -281,6 +291,8 @@ def run(
         "max_retries": max_retries,
         "retry_exceptions": True,
     }
+    if runtime_env:
+        options["runtime_env"] = runtime_env
     shipped = None
     if ship:
         # The binary goes into the object store once; each machine's first task writes it
@@ -353,6 +365,11 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     except RunError as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
+    try:
+        runtime_env = json.loads(a.runtime_env) if a.runtime_env else None
+    except json.JSONDecodeError as e:
+        print(f"error: --runtime-env: not JSON: {e}", file=sys.stderr)
+        return 2
     start = time.monotonic()
     if a.address:
         ray.init(address=a.address)
@@ -368,6 +385,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
             cli=a.cli,
             worker_cli=a.worker_cli,
             ship=a.ship,
+            runtime_env=runtime_env,
             cpus_per_task=a.cpus_per_task,
             max_retries=a.max_retries,
             work_dir=a.work_dir,

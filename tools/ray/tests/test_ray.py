@@ -117,6 +117,16 @@ def test_the_cli_shipped_in_the_runtime_env_runs_the_shards(tmp_path):
     assert merged == one_process("soak", SOAK, tmp_path)
 
 
+def test_the_tasks_runtime_env_reaches_the_cli(tmp_path):
+    # The fail-once hook set through the tasks' runtime_env, not the driver's environment.
+    marks = tmp_path / "failed"
+    marks.mkdir()
+    env = {"env_vars": {"BILLIARDS_FAIL_ONCE_DIR": str(marks)}}
+    merged = on_ray("soak", SOAK, tmp_path, runtime_env=env, max_retries=1)
+    assert len(list(marks.iterdir())) == 8
+    assert merged == one_process("soak", SOAK, tmp_path)
+
+
 def test_the_merge_refuses_a_truncated_shard_another_command_or_another_seed_range(tmp_path):
     on_ray("breaks", BREAKS, tmp_path)
     shards = sorted((tmp_path / "breaks-shards").glob("breaks-*-of-8.json"))
