@@ -188,11 +188,12 @@ def split_args(argv: Sequence[str]) -> Tuple[argparse.Namespace, List[str], List
                 mine.append(rest[i + 1])
                 i += 1
         elif name in MERGE_ONLY:
-            merge_args.append(tok)
-            if "=" not in tok:
+            if "=" in tok:
+                merge_args.extend(tok.split("=", 1))
+            else:
                 if i + 1 >= len(rest):
                     raise RunError(f"{tok} needs a value")
-                merge_args.append(rest[i + 1])
+                merge_args.extend([tok, rest[i + 1]])
                 i += 1
         elif name in ("--shard", "--merge"):
             raise RunError(f"{name}: the runner splits and merges; give --shards N")
@@ -337,17 +338,24 @@ def run(
                     raise RunError(
                         f"shard {k}/{shards} failed after {max_retries} retries: {e}"
                     ) from e
-                path = folder / f"{command}-{k}-of-{shards}.json"
-                path.write_bytes(data)
-                files.append(str(path))
+                name = f"{command}-{k}-of-{shards}.json"
+                (folder / name).write_bytes(data)
+                files.append(name)
                 bar.update(1)
     finally:
         bar.close()
-    merged = Path(out) if out else folder / f"{command}.json"
+    merged = (Path(out) if out else folder / f"{command}.json").resolve()
+    merge_extra = list(merge_args)
+    for i, arg in enumerate(merge_extra[:-1]):
+        if arg in MERGE_ONLY:
+            merge_extra[i + 1] = str(Path(merge_extra[i + 1]).resolve())
+    # The shard files by their names in the work folder, so that thousands of them fit on
+    # one command line.
     proc = subprocess.run(
-        [local_cli, command, "--merge", *sorted(files), "--out", str(merged), *merge_args],
+        [local_cli, command, "--merge", *sorted(files), "--out", str(merged), *merge_extra],
         capture_output=True,
         text=True,
+        cwd=folder,
     )
     if proc.returncode != 0:
         raise RunError(f"merge refused: {proc.stderr.strip()}")
