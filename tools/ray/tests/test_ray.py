@@ -156,3 +156,16 @@ def test_the_merge_refuses_a_truncated_shard_another_command_or_another_seed_ran
     r = merge(shards[:-1])
     assert r.returncode == 2 and "missing" in r.stderr
     assert merge(shards).returncode == 0
+
+
+def test_the_runners_options_are_split_from_the_clis():
+    from billiards_ray.runner import split_args
+
+    a, shard_args, merge_args = split_args(
+        ["study", "--samples", "5", "--shards=4", "--svg", "m.svg", "--tip", "-0.2:0", "--max-retries", "1"]
+    )
+    assert (a.command, a.shards, a.max_retries) == ("study", 4, 1)
+    assert shard_args == ["--samples", "5", "--tip", "-0.2:0"]
+    assert merge_args == ["--svg", "m.svg"]
+    with pytest.raises(RunError, match="--shard: the runner splits"):
+        split_args(["soak", "--shard", "1/2"])
