@@ -36,6 +36,14 @@ pub enum Command {
     Export(ExportArgs),
     /// Whole racks between two computer players on all cores: win rates and figures.
     Tournament(crate::tournament::TournamentArgs),
+    /// The break study: breaks per game, table, rack, speed and cue position, judged by the
+    /// rules; sharded (`--shard K/M`, `--merge`).
+    Breaks(crate::breaks::BreaksArgs),
+    /// The physics soak: seeded random scenes with every event checked; sharded.
+    Soak(crate::soak::SoakArgs),
+    /// The success probability of one shot from every cell of a grid of cue-ball places,
+    /// under a player's execution noise, with an SVG heat map; sharded.
+    Study(crate::study::StudyArgs),
     /// Open the game on a recording (needs the game binary: `billiards replay FILE`).
     Replay {
         /// The recording.
@@ -229,14 +237,14 @@ fn parse_shot(s: &str) -> Result<Shot, String> {
     Ok(shot)
 }
 
-fn parse_pocket(s: &str) -> Result<Pocket, String> {
+pub(crate) fn parse_pocket(s: &str) -> Result<Pocket, String> {
     Pocket::ALL
         .into_iter()
         .find(|&p| pocket_arg(p) == s)
         .ok_or_else(|| format!("{s:?}: expected one of head-left, head-right, side-left, side-right, foot-left, foot-right"))
 }
 
-fn pocket_arg(p: Pocket) -> &'static str {
+pub(crate) fn pocket_arg(p: Pocket) -> &'static str {
     match p {
         Pocket::HeadLeft => "head-left",
         Pocket::HeadRight => "head-right",
@@ -273,7 +281,7 @@ fn parse_choice(s: &str) -> Result<Choice, String> {
     }
 }
 
-fn parse_size(s: &str) -> Result<(u32, u32), String> {
+pub(crate) fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s.split_once(['x', 'X']).ok_or("expected WIDTHxHEIGHT")?;
     Ok((
         w.parse().map_err(|e| format!("width: {e}"))?,
@@ -304,6 +312,9 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Verify { file } => verify(&file),
         Command::Export(a) => export_cmd(a),
         Command::Tournament(a) => return crate::tournament::run(a),
+        Command::Breaks(a) => return crate::breaks::run(a),
+        Command::Soak(a) => return crate::soak::run(a),
+        Command::Study(a) => return crate::study::run(a),
         Command::Replay { file } => Err(format!(
             "{}: replay opens the game: run `billiards replay {}`",
             file.display(),

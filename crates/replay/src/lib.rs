@@ -1,9 +1,13 @@
-//! Headless tools for billiards recordings: the command line (`simulate`, `verify`, `export`,
-//! `tournament`),
+//! Headless tools for billiards recordings: the command line (`simulate`, `verify`, `export`;
+//! the batch commands `tournament`, `breaks`, `soak` and `study`, sharded by [`shard`]),
 //! a software top-view renderer and GIF/PNG export. No GPU, no Bevy: they run anywhere.
 
+pub mod breaks;
 pub mod cli;
 pub mod export;
 pub mod game;
 pub mod render;
+pub mod shard;
+pub mod soak;
+pub mod study;
 pub mod tournament;

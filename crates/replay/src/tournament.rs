@@ -1,8 +1,10 @@
 //! `tournament`: whole racks between two players, headless, on all cores; win rates, balls
 //! pocketed per inning, break-and-run rate, fouls and decision time. `--shard K/M` plays the
 //! K-th of M slices of the games (game `g` belongs to slice `g % M + 1`); `--merge` combines
-//! the JSON of the slices (`--out`) into one report.
+//! the JSON of the slices (`--out`) into one report, the same as one process's but for the
+//! decision times ([`crate::shard`]).
 
+use crate::shard::{Batch, Shard, parse_shard};
 use billiards_ai::Player;
 use billiards_ai::noise::stream;
 use billiards_ai::play::{RackRecord, Venue, play_rack_at};
@@ -11,6 +13,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rand::Rng;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeSet;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -31,7 +34,7 @@ pub struct TournamentArgs {
     pub seed: u64,
     /// Play only slice K of M (`K/M`, 1 <= K <= M).
     #[arg(long, value_parser = parse_shard, conflicts_with = "merge")]
-    pub shard: Option<(u64, u64)>,
+    pub shard: Option<Shard>,
     /// Combine these results files (written by `--out`) instead of playing.
     #[arg(long, num_args = 1..)]
     pub merge: Vec<PathBuf>,
@@ -49,6 +52,12 @@ pub struct TournamentArgs {
 /// A tournament's results (or one shard's).
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Results {
+    /// `"tournament"` (results written before other batch commands have none).
+    #[serde(default = "tournament_command")]
+    pub command: String,
+    /// The slice of the games played here; `None`: all of them.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shard: Option<Shard>,
     /// The game.
     pub game: Game,
     /// The players, A first.
@@ -64,17 +73,58 @@ pub struct Results {
     pub venue: Venue,
 }
 
-fn parse_shard(s: &str) -> Result<(u64, u64), String> {
-    let bad = || format!("{s:?}: expected K/M with 1 <= K <= M");
-    let (k, m) = s.split_once('/').ok_or_else(bad)?;
-    let (k, m): (u64, u64) = (
-        k.trim().parse().map_err(|_| bad())?,
-        m.trim().parse().map_err(|_| bad())?,
-    );
-    if k == 0 || m == 0 || k > m {
-        return Err(bad());
+fn tournament_command() -> String {
+    "tournament".into()
+}
+
+impl Batch for Results {
+    const COMMAND: &'static str = "tournament";
+
+    fn shard(&self) -> Option<Shard> {
+        self.shard
     }
-    Ok((k, m))
+
+    fn set_shard(&mut self, shard: Option<Shard>) {
+        self.shard = shard;
+    }
+
+    fn arguments(&self) -> serde_json::Value {
+        serde_json::json!({
+            "game": self.game,
+            "players": self.players,
+            "games": self.games,
+            "seed": self.seed,
+            "venue": self.venue,
+        })
+    }
+
+    fn check_items(&self) -> Result<(), String> {
+        let shard = self.shard.unwrap_or(Shard::WHOLE);
+        let want: Vec<u64> = crate::shard::items(shard, self.games).collect();
+        let have: Vec<u64> = self.racks.iter().map(|r| r.index).collect();
+        if have == want {
+            return Ok(());
+        }
+        let (want_set, have_set): (BTreeSet<u64>, BTreeSet<u64>) = (
+            want.iter().copied().collect(),
+            have.iter().copied().collect(),
+        );
+        let missing = want_set.difference(&have_set).count();
+        let foreign = have.len() - have_set.intersection(&want_set).count();
+        Err(format!(
+            "{} of its {} games ({missing} missing, {foreign} not its own or repeated)",
+            have.len(),
+            want.len()
+        ))
+    }
+
+    fn absorb(&mut self, other: Self) {
+        self.racks.extend(other.racks);
+    }
+
+    fn finish(&mut self) {
+        self.racks.sort_by_key(|r| r.index);
+    }
 }
 
 /// A user's mistake (exit status 2) or a failure while playing (1).
@@ -115,38 +165,33 @@ fn tournament(a: TournamentArgs) -> Result<(), Failure> {
             ));
         }
         let players = players(&a.players).map_err(Failure::Input)?;
-        let (k, m) = a.shard.unwrap_or((1, 1));
+        crate::shard::fail_once("tournament", a.shard).map_err(Failure::Run)?;
         let venue = Venue {
             table: a.table,
             rack: a.rack_style,
         };
-        play(venue, game, players, a.games, a.seed, k, m).map_err(Failure::Run)?
+        play(venue, game, players, a.games, a.seed, a.shard).map_err(Failure::Run)?
     } else {
-        merge(&a.merge).map_err(Failure::Input)?
+        crate::shard::merge::<Results>(&a.merge).map_err(|e| Failure::Input(e.to_string()))?
     };
     if let Some(path) = &a.out {
-        let json =
-            serde_json::to_string_pretty(&results).map_err(|e| Failure::Run(e.to_string()))?;
-        let tmp = path.with_extension("json.tmp");
-        std::fs::write(&tmp, json)
-            .and_then(|()| std::fs::rename(&tmp, path))
-            .map_err(|e| Failure::Run(format!("{}: {e}", path.display())))?;
+        crate::shard::write_json(&results, path).map_err(Failure::Run)?;
     }
     print!("{}", report(&results));
     Ok(())
 }
 
-/// Plays the games of slice `k` of `m` on all cores, with a progress bar.
+/// Plays the games of shard `part` (`None`: all of them) on all cores, with a progress bar.
 fn play(
     venue: Venue,
     game: Game,
     players: [Player; 2],
     games: u64,
     seed: u64,
-    k: u64,
-    m: u64,
+    part: Option<Shard>,
 ) -> Result<Results, String> {
-    let mine: Vec<u64> = (0..games).filter(|g| g % m == k - 1).collect();
+    let shard = part.unwrap_or(Shard::WHOLE);
+    let mine: Vec<u64> = crate::shard::items(shard, games).collect();
     let bar = ProgressBar::new(mine.len() as u64);
     bar.set_style(
         ProgressStyle::with_template("{bar:40} {pos}/{len} games {elapsed} (eta {eta})")
@@ -169,6 +214,8 @@ fn play(
         .collect::<Result<_, _>>()?;
     bar.finish_and_clear();
     Ok(Results {
+        command: tournament_command(),
+        shard: part,
         game,
         players,
         games,
@@ -176,42 +223,6 @@ fn play(
         racks,
         venue,
     })
-}
-
-/// The slices in `files`, as one set of results (the same tournament, each game once).
-fn merge(files: &[PathBuf]) -> Result<Results, String> {
-    let mut all: Option<Results> = None;
-    for f in files {
-        let text = std::fs::read_to_string(f).map_err(|e| format!("{}: {e}", f.display()))?;
-        let r: Results = serde_json::from_str(&text)
-            .map_err(|e| format!("{}: not tournament results: {e}", f.display()))?;
-        match &mut all {
-            None => all = Some(r),
-            Some(a) => {
-                if (a.game, a.players, a.games, a.seed, a.venue)
-                    != (r.game, r.players, r.games, r.seed, r.venue)
-                {
-                    return Err(format!(
-                        "{}: another tournament (game, players, games, seed or table differ)",
-                        f.display()
-                    ));
-                }
-                for rack in r.racks {
-                    if a.racks.iter().any(|x| x.index == rack.index) {
-                        return Err(format!(
-                            "{}: game {} is in two files",
-                            f.display(),
-                            rack.index
-                        ));
-                    }
-                    a.racks.push(rack);
-                }
-            }
-        }
-    }
-    let mut all = all.ok_or("--merge: no files")?;
-    all.racks.sort_by_key(|r| r.index);
-    Ok(all)
 }
 
 /// The report: per player, wins (with a 95 % interval), balls per inning, break-and-run

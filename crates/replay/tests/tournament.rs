@@ -100,5 +100,5 @@ fn two_shards_merged_are_the_whole_tournament() {
         .output()
         .unwrap();
     assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("in two files"));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("the seeds overlap"));
 }

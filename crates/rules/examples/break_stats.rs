@@ -30,31 +30,12 @@
 //! aimed at the centre of the head ball, centre ball, speed uniform in 10–12 m/s. Physics: the
 //! game's defaults (spin model, Han 2005 cushion, 15 mm jaws, cluster impacts).
 
-use billiards_physics::{
-    BallFriction, BallSetup, CushionModel, Model, Params, Shot, Simulation, SpinModel, Table,
-    TableChoice, TipOffset, Vec2, table::INCH,
-};
-use billiards_rules::{Call, Foul, Game, GameState, RackStyle, Seat, summarise};
-use rand::{Rng, SeedableRng};
+use billiards_physics::{Table, TableChoice, table::INCH};
+use billiards_rules::breaks::{BreakSpec, BreakStats, Cue, SETTABLE, one_break, params, wilson};
+use billiards_rules::{Game, RackStyle};
+use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::time::Instant;
-
-/// Where the cue ball starts.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Cue {
-    /// The break box.
-    Box,
-    /// Anywhere behind the head string.
-    Kitchen,
-    /// On the head string.
-    String,
-    /// On the head string within half a diamond (`W/8`) of a long cushion, either side: the
-    /// 9-ball side break (Alciatore, "How to Rack and Break 9-Ball Like a Pro").
-    Side,
-    /// On the head string at `f` times the largest distance from the long axis (0: the head
-    /// spot, 1: frozen to a long cushion), either side.
-    Across(f64),
-}
 
 #[derive(Clone, Debug)]
 struct Options {
@@ -141,18 +122,7 @@ fn options() -> Result<Options, String> {
                 }
                 o.speed = (a, b);
             }
-            "--cue" => {
-                o.cue = match value.as_str() {
-                    "box" => Cue::Box,
-                    "kitchen" => Cue::Kitchen,
-                    "string" => Cue::String,
-                    "side" => Cue::Side,
-                    v => match v.strip_prefix("y:").map(str::parse::<f64>) {
-                        Some(Ok(f)) if (0.0..=1.0).contains(&f) => Cue::Across(f),
-                        _ => return Err(bad(&"expected box, kitchen, string, side or y:F")),
-                    },
-                }
-            }
+            "--cue" => o.cue = value.parse().map_err(|e: String| bad(&e))?,
             "--set" => {
                 let (k, v) = value.split_once('=').ok_or(bad(&"expected NAME=VALUE"))?;
                 if !SETTABLE.contains(&k) {
@@ -174,20 +144,6 @@ fn options() -> Result<Options, String> {
     Ok(o)
 }
 
-/// Counts over one set of breaks.
-#[derive(Default)]
-struct Stats {
-    breaks: usize,
-    with_ball: usize,
-    balls: usize,
-    balls_sq: usize,
-    scratches: usize,
-    legal: usize,
-    success: usize,
-    money_ball: usize,
-    events: usize,
-}
-
 /// One set of breaks: a game on a table with a rack slack, the cue ball's place and the
 /// aim's error (radians).
 struct Setup {
@@ -199,156 +155,24 @@ struct Setup {
     aim_sd: f64,
 }
 
-/// The physical constants `--set` may change.
-const SETTABLE: [&str; 8] = [
-    "mu_slide",
-    "mu_roll",
-    "e_ball",
-    "mu_ball",
-    "e_cushion",
-    "mu_cushion",
-    "young",
-    "mu_ball_slip",
-];
-
-fn params(pairwise: bool, set: &[(String, f64)]) -> Params {
-    let mut model = SpinModel::default();
-    if pairwise {
-        model.cluster = None;
-    }
-    for (k, v) in set {
-        let v = *v;
-        match (k.as_str(), &mut model.cushion) {
-            ("mu_slide", _) => model.mu_slide = v,
-            ("mu_roll", _) => model.mu_roll = v,
-            ("e_ball", _) => model.e_ball = v,
-            ("mu_ball", _) => {
-                model.mu_ball = v;
-                model.ball_friction = BallFriction::Constant;
-            }
-            // 0: the constant mu_ball; otherwise Alciatore's fit scaled by v.
-            ("mu_ball_slip", _) => {
-                model.ball_friction = if v > 0.0 {
-                    let BallFriction::SpeedDependent { a, b, c } = BallFriction::ALCIATORE else {
-                        unreachable!("Alciatore's fit is speed-dependent")
-                    };
-                    BallFriction::SpeedDependent {
-                        a: a * v,
-                        b: b * v,
-                        c,
-                    }
-                } else {
-                    BallFriction::Constant
-                }
-            }
-            ("e_cushion", CushionModel::Han2005 { e, .. } | CushionModel::Reflect { e }) => *e = v,
-            ("mu_cushion", CushionModel::Han2005 { mu, .. }) => *mu = v,
-            ("young", _) => {
-                if let Some(h) = model.cluster.as_mut() {
-                    h.young = v;
-                }
-            }
-            _ => {}
-        }
-    }
-    let p = Params {
-        model: Model::Spin(model),
-        ..Params::default()
+fn run(o: &Options, s: &Setup) -> BreakStats {
+    let params = params(o.pairwise, &o.set).expect("--set values in the physical ranges");
+    let spec = BreakSpec {
+        game: s.game,
+        table: s.table,
+        gap: s.gap,
+        cue: s.cue,
+        speed: o.speed,
+        aim_sd: s.aim_sd,
+        tip_height: o.tip_height,
     };
-    p.validate().expect("--set values in the physical ranges");
-    p
-}
-
-/// The cue ball's start.
-fn cue_position(table: &Table, cue: Cue, r: f64, rng: &mut ChaCha8Rng) -> Vec2 {
-    let b = table.centre_bounds(r);
-    let string = table.head_spot().x;
-    match cue {
-        Cue::Box => Vec2::new(
-            rng.random_range(string - table.length / 8.0..=string),
-            rng.random_range(-table.width / 4.0..=table.width / 4.0),
-        ),
-        Cue::Kitchen => Vec2::new(
-            rng.random_range(-b.x..=string),
-            rng.random_range(-b.y..=b.y),
-        ),
-        Cue::String => Vec2::new(string, rng.random_range(-b.y..=b.y)),
-        Cue::Side => {
-            let y = rng.random_range(b.y - table.width / 8.0..=b.y);
-            Vec2::new(string, if rng.random::<bool>() { y } else { -y })
-        }
-        Cue::Across(f) => {
-            let y = f * b.y;
-            Vec2::new(string, if rng.random::<bool>() { y } else { -y })
-        }
-    }
-}
-
-fn run(o: &Options, s: &Setup) -> Stats {
-    let table = s.table.table().with_jaws(0.015);
-    let params = params(o.pairwise, &o.set);
-    let r = params.ball.radius;
+    // One stream for the whole row, as the published tables were made.
     let mut rng = ChaCha8Rng::seed_from_u64(o.seed);
-    let mut st = Stats::default();
+    let mut st = BreakStats::default();
     for _ in 0..o.breaks {
-        let seed = rng.random();
-        let mut balls: Vec<BallSetup> = match s.game {
-            Game::NineBall => {
-                billiards_rules::racks::nine_ball_spaced(&table, &params.ball, seed, s.gap)
-            }
-            _ => billiards_rules::racks::eight_ball_spaced(&table, &params.ball, seed, s.gap),
-        };
-        let cue = cue_position(&table, s.cue, r, &mut rng);
-        balls[0].position = cue;
-        let speed = rng.random_range(o.speed.0..=o.speed.1);
-        let mut aim = (balls[1].position - cue).angle();
-        if s.aim_sd > 0.0 {
-            // Box-Muller: one standard normal draw (none without the option, so the default
-            // runs keep their published numbers).
-            let (u1, u2): (f64, f64) = (rng.random(), rng.random());
-            let normal = (-2.0 * (1.0 - u1).ln()).sqrt() * (std::f64::consts::TAU * u2).cos();
-            aim += s.aim_sd * normal;
-        }
-        let mut sim = Simulation::new(table, params, &balls).expect("valid layout");
-        let shot = Shot {
-            tip: TipOffset {
-                side: 0.0,
-                height: o.tip_height,
-            },
-            ..Shot::new(aim, speed)
-        };
-        sim.strike(0, shot).expect("valid shot");
-        sim.run_to_rest().expect("comes to rest");
-        let summary = summarise(sim.history().events(), sim.numbers());
-        let verdict = GameState::new(s.game, Seat::A)
-            .play(&summary, Call::None)
-            .expect("a break is always judged");
-        let down = summary.pocketed_object_balls().count();
-        let illegal = verdict
-            .fouls
-            .iter()
-            .any(|f| matches!(f, Foul::IllegalBreak { .. }));
-        st.breaks += 1;
-        st.with_ball += usize::from(down > 0);
-        st.balls += down;
-        st.balls_sq += down * down;
-        st.scratches += usize::from(summary.scratch());
-        st.legal += usize::from(!illegal);
-        st.success += usize::from(down > 0 && verdict.legal());
-        let money = if s.game == Game::NineBall { 9 } else { 8 };
-        st.money_ball += usize::from(summary.pocket_of(money).is_some());
-        st.events += sim.history().events().len();
+        st.add(&one_break(&spec, &params, &mut rng).expect("a break is played"));
     }
     st
-}
-
-/// Wilson 95 % interval of `k` successes in `n`, in percent.
-fn wilson(k: usize, n: usize) -> (f64, f64) {
-    let (n, p, z) = (n.max(1) as f64, k as f64 / n.max(1) as f64, 1.96);
-    let d = 1.0 + z * z / n;
-    let c = (p + z * z / (2.0 * n)) / d;
-    let h = z * (p * (1.0 - p) / n + z * z / (4.0 * n * n)).sqrt() / d;
-    (100.0 * (c - h), 100.0 * (c + h))
 }
 
 fn header() {
@@ -365,8 +189,7 @@ fn row(o: &Options, s: &Setup) {
     let n = st.breaks.max(1) as f64;
     let pct = |k: usize| 100.0 * k as f64 / n;
     let (lo, hi) = wilson(st.with_ball, st.breaks);
-    let mean = st.balls as f64 / n;
-    let sd = (st.balls_sq as f64 / n - mean * mean).max(0.0).sqrt();
+    let (mean, half) = st.balls_per_break();
     println!(
         "| {} | {} | {} | {:.1} % ({lo:.1}–{hi:.1}) | {mean:.2} ± {:.2} | {:.1} % | {:.1} % | \
          {:.1} % | {:.1} % | {:.0} | {:.1} |",
@@ -378,7 +201,7 @@ fn row(o: &Options, s: &Setup) {
         s.table,
         s.label,
         pct(st.with_ball),
-        1.96 * sd / n.sqrt(),
+        half,
         pct(st.scratches),
         pct(st.legal),
         pct(st.success),

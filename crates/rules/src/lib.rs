@@ -12,8 +12,10 @@
 //! - [`hand`]: whether a ball-in-hand placement is allowed;
 //! - [`foul`]: fouls and the ends of games, with sentences a player can read;
 //! - [`race`]: a match, race to N racks;
-//! - [`log`]: the rules side of a recording (calls, choices, verdicts), kept beside it.
+//! - [`log`]: the rules side of a recording (calls, choices, verdicts), kept beside it;
+//! - [`breaks`]: one break judged by the rules and the counts over many (break statistics).
 
+pub mod breaks;
 pub mod eight_ball;
 pub mod foul;
 pub mod game;
