@@ -67,7 +67,12 @@ impl Noise {
             tip.side *= limit / offset;
             tip.height *= limit / offset;
         }
-        Shot { angle, speed, tip }
+        Shot {
+            angle,
+            speed,
+            tip,
+            ..shot
+        }
     }
 }
 
