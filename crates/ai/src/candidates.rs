@@ -436,6 +436,7 @@ pub fn expand(
                         angle: aim.angle,
                         speed: (aim.speed * k).min(8.0),
                         tip,
+                        elevation: 0.0,
                     },
                     call: call_for(aim.kind, eight_ball),
                     place,

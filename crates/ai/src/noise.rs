@@ -1,9 +1,9 @@
 //! Execution noise: FastFiz's `GaussianNoise(magnitude)`, independent Gaussian errors on the
 //! shot's parameters with, at magnitude 1, the standard deviations of the computer-pool
 //! tournaments (`../shared/reference/games.md`): tip offset side and height 0.5 mm each, aim
-//! angle 0.125 degrees, cue speed 0.075 m/s. FastFiz's fifth parameter, the cue elevation
-//! (theta, 0.1 degrees), is left out: our cue is always level (no masse, no jump), so there
-//! is nothing for it to perturb.
+//! angle 0.125 degrees, cue speed 0.075 m/s and cue elevation (FastFiz `theta`) 0.1 degrees.
+//! The elevation cannot go below level, so a level shot's error is clamped at 0: half the
+//! executed shots are level, the other half raised by `|N(0, 0.1 degrees)|`.
 //!
 //! Random numbers come from a ChaCha8 stream seeded by [`stream`] from the decision's seed and
 //! the indices of what is drawn (candidate, sample), never from which thread draws them: the
@@ -21,6 +21,8 @@ pub const SIGMA_HEIGHT: f64 = 0.5e-3;
 pub const SIGMA_PHI_DEG: f64 = 0.125;
 /// Standard deviation of the cue speed at magnitude 1, m/s (FastFiz `v`).
 pub const SIGMA_SPEED: f64 = 0.075;
+/// Standard deviation of the cue elevation at magnitude 1, degrees (FastFiz `theta`).
+pub const SIGMA_THETA_DEG: f64 = 0.1;
 
 /// Slowest shot the noise may leave (m/s): a shot is never turned into no shot.
 const MIN_SPEED: f64 = 0.05;
@@ -48,7 +50,9 @@ impl Noise {
 
     /// `shot` as executed: each parameter moved by its Gaussian error. The tip stays inside
     /// the miscue limit of `params` (a wild tip is pulled back radially to just inside it),
-    /// and the speed inside the range a cue can give.
+    /// the speed inside the range a cue can give, the elevation from level to
+    /// [`billiards_physics::limits::MAX_ELEVATION`]. The elevation is drawn last, so the other
+    /// parameters take the same draws as before it existed.
     pub fn apply(self, shot: Shot, params: &Params, rng: &mut ChaCha8Rng) -> Shot {
         if self.magnitude == 0.0 {
             return shot;
@@ -67,7 +71,14 @@ impl Noise {
             tip.side *= limit / offset;
             tip.height *= limit / offset;
         }
-        Shot { angle, speed, tip }
+        let elevation = (shot.elevation + m * SIGMA_THETA_DEG.to_radians() * gaussian(rng))
+            .clamp(0.0, billiards_physics::limits::MAX_ELEVATION);
+        Shot {
+            angle,
+            speed,
+            tip,
+            elevation,
+        }
     }
 }
 
@@ -134,6 +145,37 @@ mod tests {
         assert!((sd(sv) / SIGMA_SPEED - 1.0).abs() < 0.03);
         assert!((sd(ss) / SIGMA_SIDE - 1.0).abs() < 0.03);
         assert_eq!(Noise::NONE.apply(shot, &params, &mut stream(1, 2, 3)), shot);
+    }
+
+    #[test]
+    fn the_elevation_error_is_fastfizs_theta_clamped_at_level() {
+        let params = Params::default();
+        let n = 20_000;
+        // A raised cue: the full Gaussian, 0.1 degrees.
+        let raised = Shot {
+            elevation: 10f64.to_radians(),
+            ..Shot::new(0.3, 2.0)
+        };
+        let mut s2 = 0.0;
+        for k in 0..n {
+            let s = Noise::REFERENCE.apply(raised, &params, &mut stream(3, 4, k));
+            s2 += (s.elevation - raised.elevation).powi(2);
+        }
+        let sd = (s2 / n as f64).sqrt().to_degrees();
+        assert!((sd / SIGMA_THETA_DEG - 1.0).abs() < 0.03, "{sd}");
+        // A level cue: never below level; half the shots stay level, the rest |N| (rms over
+        // all of them sigma / sqrt 2).
+        let level = Shot::new(0.3, 2.0);
+        let (mut zero, mut s2) = (0, 0.0);
+        for k in 0..n {
+            let s = Noise::REFERENCE.apply(level, &params, &mut stream(3, 4, k));
+            assert!(s.elevation >= 0.0);
+            zero += usize::from(s.elevation == 0.0);
+            s2 += s.elevation.powi(2);
+        }
+        assert!((zero as f64 / n as f64 - 0.5).abs() < 0.02, "{zero}");
+        let rms = (s2 / n as f64).sqrt().to_degrees() * 2f64.sqrt();
+        assert!((rms / SIGMA_THETA_DEG - 1.0).abs() < 0.03, "{rms}");
     }
 
     #[test]

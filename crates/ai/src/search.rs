@@ -289,6 +289,7 @@ fn breaks(search: &Search, place_list: &[Option<Vec2>], budget: &Budget) -> Vec<
                         angle,
                         speed,
                         tip: TipOffset { side: 0.0, height },
+                        elevation: 0.0,
                     },
                     call: Call::None,
                     place: p,

@@ -1,6 +1,6 @@
 //! The benchmark program: `billiards-compare [--quick] [--out DIR]`; and
 //! `billiards-compare realism [--out DIR]`, the models against measurements (issue 24:
-//! `throw.svg`, `cushion.svg`, `squirt.svg` and the numbers of `docs/realism.md`, default `docs/realism`).
+//! `throw.svg`, `cushion.svg`, `squirt.svg`, `swerve.svg` and the numbers of `docs/realism.md`, default `docs/realism`).
 //!
 //! Runs every solver on every scene, prints one line per configuration, writes
 //! `results.csv` and `runtime_vs_error.svg` into `DIR` (default `target/compare`), and exits
@@ -98,7 +98,7 @@ fn realism(args: Vec<String>) -> ExitCode {
         return ExitCode::FAILURE;
     }
     println!(
-        "wrote {0}/throw.svg, {0}/cushion.svg and {0}/squirt.svg",
+        "wrote {0}/throw.svg, {0}/cushion.svg, {0}/squirt.svg and {0}/swerve.svg",
         out.display()
     );
     ExitCode::SUCCESS

@@ -70,7 +70,7 @@ fn the_solvers_throw_follows_tp_a14_within_0_15_degrees() {
 fn the_plots_are_written() {
     let dir = std::env::temp_dir().join(format!("realism-{}", std::process::id()));
     realism::draw(&dir).unwrap();
-    for name in ["throw.svg", "cushion.svg", "squirt.svg"] {
+    for name in ["throw.svg", "cushion.svg", "squirt.svg", "swerve.svg"] {
         let text = std::fs::read_to_string(dir.join(name)).unwrap();
         assert!(
             text.starts_with("<svg") && text.contains("polyline"),
@@ -91,4 +91,35 @@ fn squirt_at_the_miscue_limit_spans_the_quoted_1_to_3_degrees() {
         (standard - 2.77).abs() < 0.01 && (low - 1.48).abs() < 0.01,
         "{standard} {low}"
     );
+}
+
+/// docs/realism.md: a centre-height hit with side `b` on a cue raised `theta` leaves the slide
+/// heading `atan(b tan(theta))` towards the english (the slip's sideways part is
+/// `(5/2) v b sin(theta)`, 2/7 of the slip is lost while sliding, 5/7 of `v cos(theta)` kept),
+/// whatever the speed and the cloth's friction; 2.52, 5.20 and 8.21 degrees at half a tip.
+#[test]
+fn swerve_heading_is_atan_of_side_times_tan_elevation() {
+    for (deg, quoted) in [(0.0, 0.0), (10.0, 2.52), (20.0, 5.20), (30.0, 8.21)] {
+        for speed in [0.5, realism::SWERVE_SPEED, 6.0] {
+            let p = realism::swerve_path(
+                billiards_physics::SpinModel::default(),
+                deg,
+                realism::HALF_TIP,
+                speed,
+            )
+            .unwrap();
+            let want = -(realism::HALF_TIP * f64::to_radians(deg).tan())
+                .atan()
+                .to_degrees();
+            assert!(
+                (p.heading - want).abs() < 1e-9,
+                "{deg} {speed}: {}",
+                p.heading
+            );
+            assert!((-p.heading - quoted).abs() < 0.005, "{deg}: {}", p.heading);
+            // The ball curves to the right and ends to the right of where it began to roll.
+            let (_, y_end) = *p.points.last().unwrap();
+            assert_eq!(y_end < p.rolls_at.y, deg > 0.0, "{deg}");
+        }
+    }
 }

@@ -5,7 +5,7 @@ use crate::table::{Cushion, Pocket};
 use serde::{Deserialize, Serialize};
 
 /// A cue strike: direction and speed given to the cue ball (the paper's cue, 2.3).
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Shot {
     /// Direction, radians from +x (towards the foot) towards +y.
     pub angle: f64,
@@ -14,6 +14,30 @@ pub struct Shot {
     /// Where the tip strikes (spin model only).
     #[serde(default)]
     pub tip: crate::resolve::cue::TipOffset,
+    /// Elevation of the cue above the table, radians, from 0 (level) to
+    /// [`crate::limits::MAX_ELEVATION`] (spin model only; absent from old files: level).
+    #[serde(default, skip_serializing_if = "is_level")]
+    pub elevation: f64,
+}
+
+/// A level cue is written as before elevation existed, so level shots' files are unchanged.
+fn is_level(elevation: &f64) -> bool {
+    *elevation == 0.0
+}
+
+/// Prints `elevation` only when the cue is raised, so a level shot prints as before it
+/// existed (the fingerprint example hashes this text).
+impl std::fmt::Debug for Shot {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let mut s = f.debug_struct("Shot");
+        s.field("angle", &self.angle)
+            .field("speed", &self.speed)
+            .field("tip", &self.tip);
+        if self.elevation != 0.0 {
+            s.field("elevation", &self.elevation);
+        }
+        s.finish()
+    }
 }
 
 impl Shot {
@@ -23,6 +47,7 @@ impl Shot {
             angle,
             speed,
             tip: Default::default(),
+            elevation: 0.0,
         }
     }
 }

@@ -12,6 +12,7 @@
 //! | shot speed, a ball's speed | 0, or [`MIN_SPEED`] to [`MAX_SPEED`] m/s |
 //! | a ball's spin, as surface speed `\|w\| R` | 0, or [`MIN_SPEED`] to [`MAX_SURFACE_SPEED`] m/s |
 //! | shot angle, tip offset | finite (any angle; the tip also within the miscue limit) |
+//! | cue elevation | 0 to [`MAX_ELEVATION`] rad (30 degrees) |
 //! | positions | finite and on the table ([`crate::sim::PLACEMENT_TOLERANCE`]) |
 //! | the clock at an input, the end of an `advance` | at most [`MAX_TIME`] s |
 //! | parameters | [`crate::Params::validate`]; `max_events` at least 1 |
@@ -42,6 +43,12 @@ pub const MAX_SURFACE_SPEED: f64 = 2.5 * MAX_SPEED;
 /// breaks the 1e-9 m overlap invariant from a clock of 3e5 s (a 12 m/s break from 1e7 s).
 /// 1e4 s (2.8 hours of motion) keeps a factor 30 at the fastest speed.
 pub const MAX_TIME: f64 = 1e4;
+
+/// Highest cue elevation, radians (30 degrees): the strike gives the ball only its motion in
+/// the table plane (the slate takes the impulse's vertical part, see
+/// [`crate::resolve::cue::strike`]); a steeper cue would make the ball jump, which the solver
+/// does not model.
+pub const MAX_ELEVATION: f64 = std::f64::consts::FRAC_PI_6;
 
 /// An input outside the contract: what, its value, and what is accepted.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -114,12 +121,17 @@ fn check_finite(what: &'static str, value: f64, unit: &'static str) -> Result<()
     }
 }
 
-/// A shot's own values: a finite angle and tip, a speed of 0 or from [`MIN_SPEED`] to
-/// [`MAX_SPEED`]. (The tip's miscue limit depends on the model and is checked at the strike.)
+/// A shot's own values: a finite angle and tip, an elevation from 0 to [`MAX_ELEVATION`], a
+/// speed of 0 or from [`MIN_SPEED`] to [`MAX_SPEED`]. (The tip's miscue limit depends on the
+/// model and is checked at the strike.)
 pub fn check_shot(shot: &Shot) -> Result<(), LimitError> {
     check_finite("shot angle", shot.angle, "rad")?;
     check_finite("tip side", shot.tip.side, "R")?;
     check_finite("tip height", shot.tip.height, "R")?;
+    if !(0.0..=MAX_ELEVATION).contains(&shot.elevation) {
+        let expected = format!("from 0 to {MAX_ELEVATION} rad (level to 30 degrees)");
+        return Err(error("cue elevation", shot.elevation, "rad", expected));
+    }
     if shot.speed < 0.0 {
         return Err(error(
             "shot speed",
@@ -187,6 +199,23 @@ mod tests {
             f64::INFINITY,
         ] {
             assert!(check_shot(&Shot::new(0.0, bad)).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn elevations_from_level_to_30_degrees_pass_and_beyond_fail() {
+        let at = |elevation| {
+            check_shot(&Shot {
+                elevation,
+                ..Shot::new(0.0, 1.0)
+            })
+        };
+        for ok in [0.0, 0.1, 30f64.to_radians(), MAX_ELEVATION] {
+            assert_eq!(at(ok), Ok(()), "{ok}");
+        }
+        for bad in [next_up(MAX_ELEVATION), -1e-9, 0.6, f64::NAN, f64::INFINITY] {
+            let e = at(bad).unwrap_err();
+            assert_eq!(e.what, "cue elevation", "{bad}");
         }
     }
 

@@ -247,6 +247,7 @@ pub fn scenario(seed: u64) -> Scenario {
                     speed(&mut rng)
                 },
                 tip: tip(&mut rng),
+                elevation: 0.0,
             };
             ("break", balls, first)
         }
@@ -263,6 +264,7 @@ pub fn scenario(seed: u64) -> Scenario {
                 angle: rng.random_range(-std::f64::consts::PI..std::f64::consts::PI),
                 speed: speed(&mut rng),
                 tip: tip(&mut rng),
+                elevation: 0.0,
             };
             (if moving { "moving" } else { "shot" }, balls, first)
         }
@@ -273,6 +275,7 @@ pub fn scenario(seed: u64) -> Scenario {
             angle: rng.random_range(-std::f64::consts::PI..std::f64::consts::PI),
             speed: speed(&mut rng),
             tip: tip(&mut rng),
+            elevation: 0.0,
         });
     }
     let duration = (!has_friction(&params)).then_some(3.0);

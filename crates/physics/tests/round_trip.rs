@@ -69,6 +69,7 @@ fn every_state_the_solver_leaves_is_a_valid_start() {
             angle: seed as f64 * 0.7,
             speed: 4.0,
             tip: TipOffset::default(),
+            elevation: 0.0,
         };
         let mut monitor = Monitor::new(&fresh, Tolerances::default())
             .unwrap_or_else(|v| panic!("seed {seed}: rebuilt state breaks an invariant: {v}"));

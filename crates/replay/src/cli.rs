@@ -150,6 +150,11 @@ pub struct SimulateArgs {
     /// is 12); ANGLE_DEG any finite; SIDE and HEIGHT in ball radii, within the miscue limit.
     #[arg(long = "shot", value_parser = parse_shot)]
     pub shots: Vec<Shot>,
+    /// Cue elevation in degrees for every `--shot` and batch break, from 0 (level, the
+    /// default) to 30; with side english the cue ball swerves towards it (spin model). A
+    /// scene file's shots keep their own `elevation` (radians).
+    #[arg(long, value_parser = parse_elevation, default_value = "0")]
+    pub elevation: f64,
     /// Seed of the collision-normal randomization (off if absent).
     #[arg(long)]
     pub seed: Option<u64>,
@@ -218,6 +223,25 @@ fn parse_end_mass(s: &str) -> Result<f64, String> {
             "end mass {s:?}: a positive mass in kg below 1 (e.g. 0.008)"
         )),
     }
+}
+
+/// Degrees on the command line, radians in the shot.
+fn parse_elevation(s: &str) -> Result<f64, String> {
+    let degrees = s.trim().parse::<f64>().map_err(|e| format!("{s:?}: {e}"))?;
+    let shot = Shot {
+        elevation: degrees.to_radians(),
+        ..Shot::new(0.0, 0.0)
+    };
+    limits::check_shot(&shot).map_err(|_| format!("elevation {s:?}: from 0 to 30 degrees"))?;
+    Ok(shot.elevation)
+}
+
+/// The command line's shots, at the cue elevation of `--elevation`.
+fn command_line_shots(a: &SimulateArgs) -> impl Iterator<Item = Shot> + '_ {
+    a.shots.iter().map(|s| Shot {
+        elevation: a.elevation,
+        ..*s
+    })
 }
 
 fn parse_shot(s: &str) -> Result<Shot, String> {
@@ -351,7 +375,7 @@ pub(crate) fn setup(
             .shots
             .iter()
             .map(|s| s.shot)
-            .chain(a.shots.iter().copied())
+            .chain(command_line_shots(a))
             .collect();
         return Ok((scene.table, params, scene.balls(), shots));
     }
@@ -381,7 +405,7 @@ pub(crate) fn setup(
         table,
         params,
         rack.layout(&table, &params.ball),
-        a.shots.clone(),
+        command_line_shots(a).collect(),
     ))
 }
 
@@ -506,7 +530,10 @@ fn batch(
         .max(1);
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(a.seed.unwrap_or(0));
     let shots: Vec<Shot> = (0..n)
-        .map(|_| Shot::new(rng.random_range(-0.3..0.3), rng.random_range(4.0..11.0)))
+        .map(|_| Shot {
+            elevation: a.elevation,
+            ..Shot::new(rng.random_range(-0.3..0.3), rng.random_range(4.0..11.0))
+        })
         .collect();
     let bar = ProgressBar::new(n as u64);
     bar.set_style(

@@ -583,3 +583,44 @@ fn model_choices_reach_the_recording_and_need_the_spin_model() {
     assert!(!ok && err.contains("need the spin model"), "{err}");
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn elevation_reaches_every_shot_and_beyond_30_degrees_is_refused() {
+    let dir = temp("elevation");
+    let file = dir.join("swerve.json");
+    let (ok, _, err) = run(bin()
+        .args([
+            "simulate",
+            "--rack",
+            "nine-ball",
+            "--shot",
+            "1:3:0.3:0",
+            "--shot=-2:1",
+            "--elevation",
+            "20",
+            "--out",
+        ])
+        .arg(&file));
+    assert!(ok, "{err}");
+    let rec = Recording::load(&file).unwrap();
+    let strikes: Vec<Shot> = rec
+        .events
+        .iter()
+        .filter_map(|e| match e.kind {
+            EventKind::Strike { shot, .. } => Some(shot),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(strikes.len(), 2);
+    for s in &strikes {
+        assert_eq!(s.elevation, 20f64.to_radians());
+    }
+    let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
+    assert!(ok && stdout.contains("bit for bit"), "{stdout} {err}");
+    for bad in ["31", "-1", "x"] {
+        let flag = format!("--elevation={bad}");
+        let (ok, _, err) = run(bin().args(["simulate", "--shot", "0:1", &flag]));
+        assert!(!ok && err.contains("elevation"), "{bad}: {err}");
+    }
+    std::fs::remove_dir_all(dir).ok();
+}

@@ -1,4 +1,4 @@
-//! The realism plots, SVG only: `throw.svg`, `cushion.svg` and `squirt.svg`.
+//! The realism plots, SVG only: `throw.svg`, `cushion.svg`, `squirt.svg` and `swerve.svg`.
 
 use super::{CushionCurve, Spin, data, solver_throw, tp_a14_throw};
 use billiards_physics::{BallFriction, SpinModel};
@@ -47,6 +47,15 @@ struct Panel<'a> {
 }
 
 fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, p: Panel) -> Result<(), Box<dyn Error>> {
+    draw_panel_at(area, p, SeriesLabelPosition::UpperRight)
+}
+
+/// [`draw_panel`] with the legend at `legend`.
+fn draw_panel_at(
+    area: &DrawingArea<SVGBackend, Shift>,
+    p: Panel,
+    legend: SeriesLabelPosition,
+) -> Result<(), Box<dyn Error>> {
     let mut chart = ChartBuilder::on(area)
         .caption(p.title, ("sans-serif", 17))
         .margin(10)
@@ -82,7 +91,7 @@ fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, p: Panel) -> Result<(), Box
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font(("sans-serif", 12))
-        .position(SeriesLabelPosition::UpperRight)
+        .position(legend)
         .draw()?;
     Ok(())
 }
@@ -108,12 +117,70 @@ fn throw_curve(
     })
 }
 
-/// Draws `throw.svg`, `cushion.svg` and `squirt.svg` into `out`.
+/// Draws `throw.svg`, `cushion.svg`, `squirt.svg` and `swerve.svg` into `out`.
 pub fn draw(out: &Path) -> Result<(), Box<dyn Error>> {
     std::fs::create_dir_all(out)?;
     draw_throw(&out.join("throw.svg"))?;
     draw_cushion(&out.join("cushion.svg"))?;
     draw_squirt(&out.join("squirt.svg"))?;
+    draw_swerve(&out.join("swerve.svg"))?;
+    Ok(())
+}
+
+/// The cue ball's path (lateral offset in cm, exaggerated against the distance in m) for
+/// each elevation, without squirt and with a standard shaft's; a cross where it starts to
+/// roll (the curve ends there: the rest is straight).
+fn draw_swerve(path: &Path) -> Result<(), Box<dyn Error>> {
+    let root = SVGBackend::new(path, (1400, 550)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let panels = root.split_evenly((1, 2));
+    let shafts = [
+        ("no squirt (end_mass None, the default)", None),
+        ("standard shaft, 8 g (squirt)", Some(super::END_MASSES[0].1)),
+    ];
+    for (area, (name, end_mass)) in panels.iter().zip(shafts) {
+        let model = SpinModel {
+            end_mass,
+            ..SpinModel::default()
+        };
+        let mut curves = Vec::new();
+        let mut marks = Vec::new();
+        for (k, &deg) in super::SWERVE_ELEVATIONS.iter().enumerate() {
+            let p = super::swerve_path(model, deg, super::HALF_TIP, super::SWERVE_SPEED)?;
+            curves.push(Curve {
+                label: format!("elevation {deg:.0} deg"),
+                colour: COLOURS[k],
+                width: 2,
+                points: p
+                    .points
+                    .iter()
+                    .filter(|&&(x, _)| x <= 2.6)
+                    .map(|&(x, y)| (x, -y * 100.0))
+                    .collect(),
+            });
+            marks.push(Marks {
+                label: format!("starts rolling ({deg:.0} deg)"),
+                colour: COLOURS[k],
+                points: vec![(p.rolls_at.x, -p.rolls_at.y * 100.0)],
+            });
+        }
+        let title = format!(
+            "Swerve: half-tip right english, {} m/s, {name}",
+            super::SWERVE_SPEED
+        );
+        draw_panel_at(
+            area,
+            Panel {
+                title: &title,
+                x: ("distance along the cue line (m)", 0.0, 2.5),
+                y: ("to the right of the cue line (cm)", -8.0, 36.0),
+                curves,
+                marks,
+            },
+            SeriesLabelPosition::UpperLeft,
+        )?;
+    }
+    root.present()?;
     Ok(())
 }
 

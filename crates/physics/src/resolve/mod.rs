@@ -84,24 +84,30 @@ impl Laws {
 /// How the cue sets a ball moving.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum CueLaw {
-    /// The paper's cue: a velocity along the shot, no spin; the tip offset is ignored.
+    /// The paper's cue: a velocity along the shot, no spin; the tip offset and the cue's
+    /// elevation are ignored.
     Centre,
-    /// A level cue striking at the tip offset ([`cue::strike`]).
+    /// A cue striking at the tip offset, level or elevated ([`cue::strike`]).
     Tip(SpinModel),
 }
 
 impl CueLaw {
-    /// Velocity and spin of a ball of `ball` struck along unit direction `dir` at `speed`.
+    /// Velocity and spin of a ball of `ball` struck along unit direction `dir` at `speed`,
+    /// by a cue `elevation` radians above level.
     pub fn strike(
         self,
         ball: &BallSpec,
         dir: Vec2,
         speed: f64,
         tip: TipOffset,
+        elevation: f64,
     ) -> Result<(Vec2, Vec3), Miscue> {
         match self {
             CueLaw::Centre => Ok((dir * speed, Vec3::ZERO)),
-            CueLaw::Tip(m) => cue::strike(&m, ball.mass, ball.radius, dir, speed, tip),
+            CueLaw::Tip(m) => {
+                let cue = cue::Cue { dir, elevation };
+                cue::strike(&m, ball.mass, ball.radius, cue, speed, tip)
+            }
         }
     }
 }

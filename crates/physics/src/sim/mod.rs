@@ -283,13 +283,14 @@ impl Simulation {
     }
 
     /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
-    /// takes the tip offset (the paper's model has no spin and ignores it).
+    /// takes the tip offset and the cue's elevation (the paper's model has no spin and
+    /// ignores both).
     pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
         let state = self.ball_checked(id)?;
         setup::check_shot(id, self.numbers[id], &shot, self.time)?;
         let dir = Vec2::from_angle(shot.angle);
         let cue = Laws::of(&self.params.model).cue;
-        let (v, w) = cue.strike(&self.params.ball, dir, shot.speed, shot.tip)?;
+        let (v, w) = cue.strike(&self.params.ball, dir, shot.speed, shot.tip, shot.elevation)?;
         self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v, w);
         self.record(EventKind::Strike { ball: id, shot });
         self.inputs_done();

@@ -135,22 +135,38 @@ impl Setup {
     }
 
     pub(super) fn rate_fixed(&self, y: &State, gi: Grip, gc: Grip, fixed: [bool; 2]) -> State {
+        self.rate_and_normal(y, gi, gc, fixed).0
+    }
+
+    /// [`Self::rate_fixed`] and the table's normal `N` of the same friction.
+    pub(super) fn rate_and_normal(
+        &self,
+        y: &State,
+        gi: Grip,
+        gc: Grip,
+        fixed: [bool; 2],
+    ) -> (State, f64) {
         let (s, c) = (self.s, self.c);
-        let ([a, b, p, q], _) = self.friction_fixed(y, gi, gc, fixed);
+        let ([a, b, p, q], n) = self.friction_fixed(y, gi, gc, fixed);
         let k = 2.5 / self.r;
-        [
+        let d = [
             a + p,
             -c - b * s + q,
             k * (b + q),
             k * (a * s - p),
             -k * a * c,
             c * y[1],
-        ]
+        ];
+        (d, n)
     }
 
     /// Slip rates of the nose and the cloth.
     pub(super) fn slip_rates(&self, y: &State, gi: Grip, gc: Grip) -> ([f64; 2], [f64; 2]) {
-        let d = self.rate(y, gi, gc);
+        self.slip_rates_of(&self.rate(y, gi, gc))
+    }
+
+    /// Slip rates of the nose and the cloth from the state's rate `d`.
+    pub(super) fn slip_rates_of(&self, d: &State) -> ([f64; 2], [f64; 2]) {
         let (s, c, r) = (self.s, self.c, self.r);
         (
             [d[0] + r * (d[3] * s - d[4] * c), -d[1] * s + r * d[2]],
@@ -158,14 +174,20 @@ impl Setup {
         )
     }
 
-    /// One step; contacts marked `fixed` slide along their kept direction throughout (a
-    /// slip's own direction is lost near zero).
-    pub(super) fn rk4(&self, y: &State, h: f64, gi: Grip, gc: Grip, fixed: [bool; 2]) -> State {
+    /// One step from `y`, whose rate `k1` the caller has; contacts marked `fixed` slide along
+    /// their kept direction throughout (a slip's own direction is lost near zero).
+    pub(super) fn rk4(
+        &self,
+        y: &State,
+        k1: &State,
+        h: f64,
+        (gi, gc): (Grip, Grip),
+        fixed: [bool; 2],
+    ) -> State {
         let add =
             |y: &State, k: &State, f: f64| -> State { std::array::from_fn(|i| y[i] + f * k[i]) };
         let rate = |t: &State| self.rate_fixed(t, gi, gc, fixed);
-        let k1 = rate(y);
-        let k2 = rate(&add(y, &k1, 0.5 * h));
+        let k2 = rate(&add(y, k1, 0.5 * h));
         let k3 = rate(&add(y, &k2, 0.5 * h));
         let k4 = rate(&add(y, &k3, h));
         std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))

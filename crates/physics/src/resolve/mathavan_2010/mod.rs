@@ -87,6 +87,8 @@ struct Plan {
     u0: [[f64; 2]; 2],
     /// The events watched in this step.
     events: [Event; 3],
+    /// The rate at the step's start (Runge–Kutta's first stage, computed once a step).
+    d: State,
 }
 
 impl Impact {
@@ -210,14 +212,15 @@ impl Impact {
             Event::Restituted
         };
         let events = [phase, contact(true, gi), contact(false, gc)];
-        let d = setup.rate(&y, gi, gc);
-        let (ri, rc) = setup.slip_rates(&y, gi, gc);
+        // The rate here, with the grips' directions: also the first stage of every step tried
+        // from here (a contact held to its kept direction has that direction here).
+        let (d, nn) = setup.rate_and_normal(&y, gi, gc, [false; 2]);
+        let (ri, rc) = setup.slip_rates_of(&d);
         // Near zero slip the sliding direction turns fast: across the slip, friction relaxes
         // it at about 7/2 mu / |slip| per unit impulse, so a step stays below half of that
         // (explicit Runge–Kutta is stable below 2.8), and a slip growing from zero starts
         // with a step of 1e-6 of the nominal one. Steps never fall below 1e-6 of a nominal
         // one, where a slip's turning costs nothing measurable.
-        let (_, nn) = setup.friction(&y, gi, gc);
         let mut stiff = [f64::INFINITY; 2];
         for (k, (sl, grip, mu)) in [(si, gi, setup.mu_w), (sc, gc, setup.mu_s * nn)]
             .into_iter()
@@ -296,18 +299,21 @@ impl Impact {
             predicted,
             u0,
             events,
+            d,
         }
     }
 
-    /// One Runge–Kutta step of `h`, the slip it is meant to end on held to its direction.
-    fn step(&self, h: f64, predicted: Option<Event>) -> State {
+    /// One Runge–Kutta step of `h` from the plan's start, the slip it is meant to end on held
+    /// to its direction.
+    fn step(&self, plan: &Plan, h: f64, predicted: Option<Event>) -> State {
         let mut fixed = [false; 2];
         match predicted {
             Some(Event::SlipZero(true)) => fixed[0] = true,
             Some(Event::SlipZero(false)) => fixed[1] = true,
             _ => {}
         }
-        self.setup.rk4(&self.y, h, self.gi, self.gc, fixed)
+        self.setup
+            .rk4(&self.y, &plan.d, h, (self.gi, self.gc), fixed)
     }
 
     /// Whether a sliding slip turned by more than 0.5 rad from its start direction.
@@ -327,12 +333,12 @@ impl Impact {
     /// reaching it), then cut back to the earliest event inside it; returns that event.
     fn take(&self, plan: &Plan) -> (Option<Event>, State) {
         let (mut h, mut predicted) = (plan.h, plan.predicted);
-        let mut next = self.step(h, predicted);
+        let mut next = self.step(plan, h, predicted);
         let mut halvings = 0;
         while self.turned(&next, predicted, &plan.u0) && halvings < 60 {
             h *= 0.5;
             predicted = None;
-            next = self.step(h, predicted);
+            next = self.step(plan, h, predicted);
             halvings += 1;
         }
         let (mut hit, mut h_hit) = (None, h);
@@ -340,14 +346,14 @@ impl Impact {
             if let Event::SlipZero(_) = e {
                 continue; // met by the planned approach
             }
-            if let Some(at) = self.locate(e, h, predicted, &next, &plan.u0)
+            if let Some(at) = self.locate(e, plan, h, predicted, &next)
                 && (hit.is_none() || at < h_hit)
             {
                 (hit, h_hit) = (Some(e), at);
             }
         }
         if hit.is_some() && h_hit < h {
-            next = self.step(h_hit, predicted);
+            next = self.step(plan, h_hit, predicted);
         } else if let Some(Event::SlipZero(_)) = predicted {
             hit = predicted;
         }
@@ -359,11 +365,12 @@ impl Impact {
     fn locate(
         &self,
         e: Event,
+        plan: &Plan,
         h: f64,
         predicted: Option<Event>,
         next: &State,
-        u0: &[[f64; 2]; 2],
     ) -> Option<f64> {
+        let u0 = &plan.u0;
         let (g0, g1, tol) = (self.g(e, &self.y, u0), self.g(e, next, u0), self.tol_of(e));
         if g0 <= tol || g1 > tol {
             return None; // not approaching from above, or not reached in this step
@@ -378,7 +385,7 @@ impl Impact {
             if !(at > lo && at < hi) {
                 at = 0.5 * (lo + hi);
             }
-            let ga = self.g(e, &self.step(at, predicted), u0);
+            let ga = self.g(e, &self.step(plan, at, predicted), u0);
             if ga.abs() <= tol || hi - lo <= 1e-15 * self.span {
                 break;
             }
