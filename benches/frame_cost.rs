@@ -36,6 +36,7 @@ fn break_frames(rack: Rack, angle: f64, speed: f64) -> (Vec<f64>, Vec<f64>, usiz
         angle,
         speed,
         tip: TipOffset::default(),
+        elevation: 0.0,
     });
     let (mut solver, mut update) = (Vec::new(), Vec::new());
     for _ in 0..100_000 {

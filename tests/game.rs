@@ -57,6 +57,7 @@ fn shoot(app: &mut App, angle: f64, speed: f64) {
         angle,
         speed,
         tip: Default::default(),
+        elevation: 0.0,
     });
     // The strike (commands), the turn follows (flow), the state changes (transition).
     for _ in 0..3 {
@@ -186,6 +187,7 @@ fn play_rack_of_misses(app: &mut App, breaker: Seat) -> Seat {
             angle: 0.0,
             speed: 1.0,
             tip: Default::default(),
+            elevation: 0.0,
         });
         app.update();
         assert_eq!(turn(app), Turn::Verdict);

@@ -55,6 +55,7 @@ fn play_shot(app: &mut App, angle: f64, speed: f64) {
         angle,
         speed,
         tip: Default::default(),
+        elevation: 0.0,
     });
     for i in 0..20_000 {
         app.update();
@@ -192,6 +193,7 @@ fn a_saved_game_replays_exactly_at_any_time_and_closing_restores_the_live_game()
         angle: 0.0,
         speed: 3.0,
         tip: Default::default(),
+        elevation: 0.0,
     });
     app.update();
     assert!(app.world().resource::<Solver>().simulation().is_at_rest());
@@ -541,6 +543,7 @@ fn a_shot_struck_while_paused_is_saved_before_a_rack_replaces_the_game() {
         angle: 0.0,
         speed: 7.0,
         tip: Default::default(),
+        elevation: 0.0,
     });
     for _ in 0..3 {
         app.update();

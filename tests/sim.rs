@@ -60,8 +60,12 @@ fn shoot(app: &mut App, angle: f64, speed: f64) {
 }
 
 fn shoot_with_tip(app: &mut App, angle: f64, speed: f64, tip: TipOffset) {
-    app.world_mut()
-        .write_message(ShotRequested { angle, speed, tip });
+    app.world_mut().write_message(ShotRequested {
+        angle,
+        speed,
+        tip,
+        elevation: 0.0,
+    });
 }
 
 /// The duration of frame `i`.

@@ -247,6 +247,7 @@ fn play_computer_turn(
                     angle: shot.angle,
                     speed: shot.speed,
                     tip: shot.tip,
+                    elevation: shot.elevation,
                 });
                 computer.fired = Some((key, Instant::now()));
             }
@@ -282,6 +283,7 @@ fn show_plan(
     shot_settings.angle = plan.shot.angle.rem_euclid(std::f64::consts::TAU);
     shot_settings.power = plan.shot.speed;
     shot_settings.tip = plan.shot.tip;
+    shot_settings.elevation = plan.shot.elevation.to_degrees();
 }
 
 fn to_dvec(v: Vec2) -> DVec2 {

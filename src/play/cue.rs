@@ -119,7 +119,6 @@ fn spawn_cue(
     ));
 }
 
-/// The cue ball's table position, if it is on the table.
 /// After an undo the cue is lined up as for the shot taken back, so it can be retried or
 /// adjusted.
 fn retry_undone_shot(mut undone: MessageReader<ShotUndone>, mut shot: ResMut<ShotSettings>) {
@@ -128,10 +127,12 @@ fn retry_undone_shot(mut undone: MessageReader<ShotUndone>, mut shot: ResMut<Sho
             angle: last.angle,
             power: last.speed,
             tip: last.tip,
+            elevation: last.elevation.to_degrees(),
         });
     }
 }
 
+/// The cue ball's table position, if it is on the table.
 fn cue_ball_position(balls: &Query<(&Ball, &BallMotion), Without<Pocketed>>) -> Option<DVec2> {
     balls
         .iter()
@@ -340,7 +341,9 @@ fn place_cue(
         others,
         spec.ball_radius as f32,
         gap,
-    );
+    )
+    // The player's own elevation, or more when a ball is in the way.
+    .max(shot.elevation.to_radians() as f32);
     // From the tip toward the butt: backward along the aim, raised by the elevation.
     let back = (-aim * elevation.cos() + Vec3::Y * elevation.sin()).normalize();
     let centre = spec.ball_world_position(cue_ball);

@@ -58,6 +58,7 @@ mod tests {
     #[test]
     fn nan_is_replaced() {
         let mut shot = ShotSettings {
+            elevation: 0.0,
             angle: f64::NAN,
             power: f64::NAN,
             tip: TipOffset {
@@ -75,6 +76,7 @@ mod tests {
     #[test]
     fn a_tip_beyond_the_miscue_limit_is_pulled_back_along_its_direction() {
         let mut shot = ShotSettings {
+            elevation: 0.0,
             tip: TipOffset {
                 side: 0.4,
                 height: -0.4,
@@ -101,6 +103,7 @@ mod tests {
     #[test]
     fn angle_wraps_without_a_note() {
         let mut shot = ShotSettings {
+            elevation: 0.0,
             angle: -std::f64::consts::FRAC_PI_2,
             power: 1.0,
             tip: TipOffset::default(),

@@ -17,6 +17,9 @@ pub struct ShotSettings {
     /// Where the tip strikes, in ball radii from the centre (spin model; the paper's model
     /// ignores it): `side` right of centre, `height` above it.
     pub tip: TipOffset,
+    /// How far the cue's butt is raised, degrees (spin model): with side spin the cue ball
+    /// swerves, curving back towards the english as the cloth acts on it.
+    pub elevation: f64,
 }
 
 impl Default for ShotSettings {
@@ -26,6 +29,7 @@ impl Default for ShotSettings {
             angle: 0.0,
             power: 6.0,
             tip: TipOffset::default(),
+            elevation: 0.0,
         }
     }
 }
@@ -55,6 +59,7 @@ impl ShotSettings {
         Self::POWER.clamp(&mut self.power, &mut notes);
         Self::TIP_SIDE.clamp(&mut self.tip.side, &mut notes);
         Self::TIP_HEIGHT.clamp(&mut self.tip.height, &mut notes);
+        Self::ELEVATION.clamp(&mut self.elevation, &mut notes);
         // Beyond the miscue limit the tip would slip off: pull it back along its direction.
         let limit = Self::tip_limit();
         let offset = self.tip.side.hypot(self.tip.height);
@@ -92,6 +97,14 @@ impl ShotSettings {
         unit: " R",
     };
 
+    /// Cue elevation: level to the solver's limit (30 degrees, `limits::MAX_ELEVATION`).
+    pub const ELEVATION: ParamRange = ParamRange {
+        label: "cue elevation",
+        min: 0.0,
+        max: 30.0,
+        unit: " deg",
+    };
+
     /// The largest tip offset the solver accepts before calling a miscue, in radii.
     pub fn tip_limit() -> f64 {
         SpinModel::default().miscue_limit
@@ -103,6 +116,11 @@ impl ShotSettings {
             angle: self.angle,
             speed: self.power,
             tip: self.tip,
+            // 30 degrees in radians may round a hair above the solver's pi / 6.
+            elevation: self
+                .elevation
+                .to_radians()
+                .clamp(0.0, billiards_physics::limits::MAX_ELEVATION),
         }
     }
 

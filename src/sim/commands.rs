@@ -188,6 +188,7 @@ pub(super) fn strike_cue_ball(
         angle: request.angle,
         speed: request.speed,
         tip: request.tip,
+        elevation: request.elevation,
     };
     let before = BeforeShot {
         balls: solver.simulation().balls().collect(),

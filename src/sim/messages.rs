@@ -107,15 +107,19 @@ pub struct ShotRequested {
     pub speed: f64,
     /// Where the tip strikes (spin model).
     pub tip: physics::TipOffset,
+    /// How far the cue's butt is raised, radians (0 level; swerve with side spin).
+    pub elevation: f64,
 }
 
 impl ShotRequested {
     /// The request for the shot the settings describe.
     pub fn from_settings(shot: &crate::settings::ShotSettings) -> Self {
+        let shot = shot.shot();
         Self {
             angle: shot.angle,
-            speed: shot.power,
+            speed: shot.speed,
             tip: shot.tip,
+            elevation: shot.elevation,
         }
     }
 }

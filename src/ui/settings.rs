@@ -109,6 +109,8 @@ fn shot_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
         });
         param_slider(ui, &mut next.tip.side, ShotSettings::TIP_SIDE);
         param_slider(ui, &mut next.tip.height, ShotSettings::TIP_HEIGHT);
+        // Raised butt: with english the ball curves (swerve); the aiming aid draws the curve.
+        param_slider(ui, &mut next.elevation, ShotSettings::ELEVATION);
     });
     // Always there, disabled unless the cue ball is in hand after a free-play scratch, so the
     // rows below never move.

@@ -312,6 +312,7 @@ impl Setup {
                 angle: aim.angle,
                 speed: self.speed.unwrap_or(aim.speed),
                 tip: self.tip,
+                elevation: 0.0,
             },
             call: Call::None,
             place: None,
