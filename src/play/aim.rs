@@ -482,6 +482,31 @@ mod tests {
         assert!(p.after_of(1).unwrap().len() > SAMPLES_PER_PIECE);
     }
 
+    /// An elevated cue with right english: the drawn path curves right of the cue line
+    /// (swerve, the cue ball alone on the table), where a level cue's stays on it.
+    #[test]
+    fn an_elevated_cue_with_english_draws_a_curved_path() {
+        let balls = [resting(0, -0.8, 0.0)];
+        let params = Params {
+            model: billiards_physics::Model::Spin(Default::default()),
+            ..Params::default()
+        };
+        let shot = |elevation: f64| Shot {
+            tip: billiards_physics::TipOffset {
+                side: 0.3,
+                height: 0.0,
+            },
+            elevation: elevation.to_radians(),
+            ..Shot::new(0.0, 2.0)
+        };
+        let off_line = |p: &AimPrediction| p.path.iter().map(|q| q.y).fold(0.0, f64::min);
+        let level = predict(Table::wpa_8ft(), params, &balls, 0, shot(0.0), 2);
+        let raised = predict(Table::wpa_8ft(), params, &balls, 0, shot(20.0), 2);
+        assert!(off_line(&level).abs() < 1e-9, "{}", off_line(&level));
+        // Right english (+side) curves toward -y (right of a cue pointing +x).
+        assert!(off_line(&raised) < -0.01, "{}", off_line(&raised));
+    }
+
     /// Each ball's path ends at its N-th contact after the first: more contacts, longer paths.
     #[test]
     fn paths_end_after_the_chosen_number_of_contacts() {
