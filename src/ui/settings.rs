@@ -10,7 +10,7 @@ use bevy::prelude::*;
 use bevy_egui::egui::{self, Color32, RichText};
 use billiards_physics::Rack;
 
-use super::layout::{BUTTON_WIDTH, TIP_PICKER_SIZE, WARNING};
+use super::layout::{BUTTON_WIDTH, HUD_HEIGHT, PANEL_WIDTH, TIP_PICKER_SIZE, WARNING};
 use crate::{
     config::{ConfigFile, reset_to_defaults},
     settings::{
@@ -417,7 +417,12 @@ pub fn config_error_window(ctx: &egui::Context, state: &SettingsParam, read: &mu
     egui::Window::new("Settings file")
         .collapsible(false)
         .resizable(false)
-        .anchor(egui::Align2::CENTER_TOP, [0.0, 40.0])
+        // Over the table, below the HUD strip, centred on the view right of the panel.
+        .anchor(
+            egui::Align2::CENTER_TOP,
+            [PANEL_WIDTH / 2.0, HUD_HEIGHT + 12.0],
+        )
+        .order(egui::Order::Foreground)
         .show(ctx, |ui| {
             ui.set_max_width(420.0);
             ui.colored_label(WARNING, error);
