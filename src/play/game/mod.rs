@@ -1,16 +1,16 @@
 //! The rules in the game: a match of 8-ball or 9-ball (`billiards-rules`), or free play, and
-//! the turn's phase as a Bevy sub-state of [`GameMode::Play`].
+//! the turn's phase as a Bevy sub-state of [`GameMode::Play`](crate::mode::GameMode::Play).
 //!
 //! One source of truth: the [`Rules`] resource (the match, the call, whether a verdict or the
 //! call dialog is up). Every frame, in [`SimSystems::Flow`]:
-//! 1. `judge_shot`: on [`ShotFinished`], the shot's events (from its strike on) are
-//!    summarised ([`billiards_rules::summarise`]) and judged ([`Match::play`]); the verdict is
-//!    logged ([`GameLog`], saved beside the autosaved recording) and the table prepared for
+//! 1. `judge_shot`: on [`ShotFinished`](crate::sim::ShotFinished), the shot's events (from its strike on) are
+//!    summarised ([`billiards_rules::summarise`]) and judged ([`Match::play`](billiards_rules::Match::play)); the verdict is
+//!    logged ([`GameLog`](billiards_rules::GameLog), saved beside the autosaved recording) and the table prepared for
 //!    the next shot (balls spotted, the cue ball back on the table, a new rack);
 //! 2. `apply_commands`: the player's [`TurnCommand`]s and [`NewGameRequested`];
 //! 3. `follow_rules`: derives the [`Turn`] from the resource, the cue ball in hand
-//!    ([`SimStatus::ball_in_hand`]) from the next shot, and tells the simulation's
-//!    [`Referee`] whether a shot may be taken now.
+//!    ([`SimStatus::ball_in_hand`](crate::sim::SimStatus::ball_in_hand)) from the next shot, and tells the simulation's
+//!    [`Referee`](crate::sim::Referee) whether a shot may be taken now.
 //!
 //! Free play has no match: the turn is [`Turn::Aiming`] or [`Turn::ShotInPlay`], and a
 //! scratch is respotted by the simulation as before.
