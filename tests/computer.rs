@@ -128,3 +128,59 @@ fn a_hint_aims_the_humans_cue_at_the_computers_choice_and_the_pointer_is_locked_
     assert_eq!(turn(&app), Turn::BallInHand);
     let _ = std::fs::remove_dir_all(&folder);
 }
+
+/// Issue 28: the verdict on a human's shot stays until the human continues, when the computer
+/// shoots next: it does not flash by. It names what the computer may then do.
+#[test]
+fn a_verdict_before_the_computers_turn_waits_for_the_human() {
+    let folder = std::env::temp_dir().join(format!("billiards-verdict-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&folder);
+    let mut app = common::headless((game::plugin, computer::plugin));
+    app.insert_resource(RecordingsFolder(Some(folder.clone())));
+    app.insert_resource(ComputerPace(Duration::ZERO));
+    app.update();
+    app.world_mut().write_message(NewGameRequested {
+        game: Game::NineBall,
+        players: ["Ann".to_owned(), "Bob".to_owned()],
+        race_to: 1,
+        seed: 3,
+        computer: [None, Some(Level::Easy)],
+        setup: Default::default(),
+    });
+    common::update_until(&mut app, |app| turn(app) == Turn::BallInHand);
+    // Ann's break barely rolls: no ball reaches the rack, a foul (WPA 2.3), Bob to shoot.
+    app.world_mut()
+        .write_message(billiards::sim::ShotRequested {
+            angle: 0.0,
+            speed: 0.2,
+            tip: Default::default(),
+            elevation: 0.0,
+        });
+    common::update_until(&mut app, |app| turn(app) == Turn::Verdict);
+    let shots = |app: &App| {
+        let rules = app.world().resource::<Rules>();
+        rules.game.as_ref().unwrap().log.shots.len()
+    };
+    assert_eq!(shots(&app), 1);
+    let next = app
+        .world()
+        .resource::<Rules>()
+        .game
+        .as_ref()
+        .unwrap()
+        .next_text();
+    assert!(
+        next.starts_with("Bob (computer) shoots next, with ball in hand"),
+        "{next}"
+    );
+    // However many frames go by, the verdict stays and the computer does not shoot.
+    for _ in 0..300 {
+        app.update();
+    }
+    assert_eq!(turn(&app), Turn::Verdict);
+    assert_eq!(shots(&app), 1);
+    // Continue: the computer plays.
+    app.world_mut().write_message(game::TurnCommand::Continue);
+    common::update_until(&mut app, |app| shots(app) == 2);
+    let _ = std::fs::remove_dir_all(&folder);
+}

@@ -331,3 +331,47 @@ fn an_undo_puts_every_ball_back_and_the_recording_verifies_bit_for_bit() {
     assert_eq!(loaded, recording);
     assert!(matches!(loaded.verify(), Ok(Verdict::Reproduced { .. })));
 }
+
+/// Issue 28: a fresh rack from the panel differs from the last (its own seed), so the same
+/// break does not give the same result twice; the same seed racks alike; the standard rack is
+/// the same every time. A free-play table change replaces the table and racks on it.
+#[test]
+fn fresh_racks_differ_and_another_table_is_racked_on() {
+    let mut app = game(Rack::FifteenBall);
+    let layout = |app: &mut App, request: RackRequested| {
+        app.world_mut().write_message(request);
+        app.update();
+        let solver = app.world().resource::<Solver>();
+        solver
+            .simulation()
+            .balls()
+            .map(|b| b.position)
+            .collect::<Vec<_>>()
+    };
+    let standard = layout(&mut app, RackRequested::standard(Rack::FifteenBall));
+    assert_eq!(
+        standard,
+        layout(&mut app, RackRequested::standard(Rack::FifteenBall))
+    );
+    let one = layout(&mut app, RackRequested::fresh(Rack::FifteenBall, 1));
+    let two = layout(&mut app, RackRequested::fresh(Rack::FifteenBall, 2));
+    assert_ne!(one, two);
+    assert_ne!(one, standard);
+    assert_eq!(
+        one,
+        layout(&mut app, RackRequested::fresh(Rack::FifteenBall, 1))
+    );
+    // The 9-ft table from the panel: the table and the rack follow.
+    let nine_ft: billiards_physics::TableChoice = "9ft".parse().unwrap();
+    app.world_mut().resource_mut::<settings::TableSetup>().table = nine_ft;
+    app.update();
+    app.update();
+    assert_eq!(*app.world().resource::<TableSpec>(), TableSpec::of(nine_ft));
+    let table = app
+        .world()
+        .resource::<Solver>()
+        .simulation()
+        .table()
+        .clone();
+    assert_eq!(table.length, 100.0 * 0.0254);
+}
