@@ -367,11 +367,6 @@ fn fresh_racks_differ_and_another_table_is_racked_on() {
     app.update();
     app.update();
     assert_eq!(*app.world().resource::<TableSpec>(), TableSpec::of(nine_ft));
-    let table = app
-        .world()
-        .resource::<Solver>()
-        .simulation()
-        .table()
-        .clone();
+    let table = *app.world().resource::<Solver>().simulation().table();
     assert_eq!(table.length, 100.0 * 0.0254);
 }
