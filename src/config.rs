@@ -1,6 +1,6 @@
-//! Settings kept between runs: the physics, view and graphics settings and the table in a JSON file in the
-//! platform's config directory (`$XDG_CONFIG_HOME/billiards/settings.json`, else
-//! `~/.config/billiards/settings.json`; `~/Library/Application Support/billiards` on macOS,
+//! Settings kept between runs: the physics, view and graphics settings and the table, in a
+//! JSON file in the platform's config directory (`$XDG_CONFIG_HOME/billiards/settings.json`,
+//! else `~/.config/billiards/settings.json`; `~/Library/Application Support/billiards` on macOS,
 //! `%APPDATA%\billiards` on Windows).
 //!
 //! Read once at start; written (atomically: a temporary file, then a rename) whenever what it

@@ -165,7 +165,7 @@ fn play_computer_turn(
     if *turn.get() == Turn::Verdict && next.choices.is_empty() {
         // A human at the table reads the verdict (a foul of theirs, ball in hand) and says
         // when: it stays until they continue. Between two computers it goes on after a moment.
-        if game.seats.iter().any(Option::is_none) {
+        if game.has_human() {
             computer.doing = Some(format!("{} waits for you to continue", game.name(seat)));
             return;
         }
@@ -243,12 +243,7 @@ fn play_computer_turn(
             Decision::Shoot(plan) => {
                 let shot =
                     plan.executed(level.execution_noise(), solver.simulation().params(), seed);
-                shots.write(ShotRequested {
-                    angle: shot.angle,
-                    speed: shot.speed,
-                    tip: shot.tip,
-                    elevation: shot.elevation,
-                });
+                shots.write(ShotRequested::from(shot));
                 computer.fired = Some((key, Instant::now()));
             }
         },

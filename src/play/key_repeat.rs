@@ -14,8 +14,9 @@ use bevy::prelude::*;
 /// delay: a tap is shorter).
 pub const REPEAT_DELAY: f64 = 0.35;
 
-/// When each held key went down, on the real clock (seconds since start).
-#[derive(Resource, Debug, Default, Clone, PartialEq)]
+/// When each held key went down, on the real clock (seconds since start); the cue's keys keep
+/// one as a system-local.
+#[derive(Debug, Default, Clone, PartialEq)]
 pub struct HeldKeys {
     since: HashMap<KeyCode, f64>,
 }

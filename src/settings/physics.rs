@@ -1,10 +1,10 @@
 //! The physical parameters the player can edit, and the model choices.
 
-use super::range::{ClampNote, ParamRange};
-
 use bevy::prelude::*;
 use billiards_physics::{Prediction, SpinModel};
 use serde::{Deserialize, Serialize};
+
+use super::range::{ClampNote, ParamRange};
 
 /// The cushion model of the spin model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]

@@ -1,10 +1,11 @@
 //! The next shot as the player set it up: direction, power, tip.
 
-use super::range::{ClampNote, ClampReport, ParamRange};
 use std::f64::consts::TAU;
 
 use bevy::prelude::*;
 use billiards_physics::{SpinModel, TipOffset};
+
+use super::range::{ClampNote, ClampReport, ParamRange};
 
 /// The shot the player is lining up.
 #[derive(Resource, Debug, Clone, Copy, PartialEq)]

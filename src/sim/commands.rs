@@ -1,15 +1,14 @@
 //! Requests that take effect from the next step: rack, settings, edited balls, the shot.
 
-use super::{messages::*, solver::*};
-use crate::settings::TableSetup;
-use billiards_rules::Game;
 use std::time::SystemTime;
 
 use bevy::{prelude::*, window::RequestRedraw};
-use billiards_physics::{self as physics, Rack, Shot, recording::Recorder};
+use billiards_physics::{self as physics, Rack, recording::Recorder};
+use billiards_rules::Game;
 
+use super::{messages::*, solver::*};
 use crate::{
-    settings::PhysicsSettings,
+    settings::{PhysicsSettings, TableSetup},
     table::balls::{Ball, BallMotion},
     table::geometry::TableSpec,
 };
@@ -184,12 +183,7 @@ pub(super) fn strike_cue_ball(
         status.note = Some("there is no cue ball in this layout".to_owned());
         return;
     };
-    let shot = Shot {
-        angle: request.angle,
-        speed: request.speed,
-        tip: request.tip,
-        elevation: request.elevation,
-    };
+    let shot = request.shot();
     let before = BeforeShot {
         balls: solver.simulation().balls().collect(),
         shot: request,

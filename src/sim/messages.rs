@@ -114,7 +114,22 @@ pub struct ShotRequested {
 impl ShotRequested {
     /// The request for the shot the settings describe.
     pub fn from_settings(shot: &crate::settings::ShotSettings) -> Self {
-        let shot = shot.shot();
+        shot.shot().into()
+    }
+
+    /// The solver's shot.
+    pub fn shot(&self) -> physics::Shot {
+        physics::Shot {
+            angle: self.angle,
+            speed: self.speed,
+            tip: self.tip,
+            elevation: self.elevation,
+        }
+    }
+}
+
+impl From<physics::Shot> for ShotRequested {
+    fn from(shot: physics::Shot) -> Self {
         Self {
             angle: shot.angle,
             speed: shot.speed,

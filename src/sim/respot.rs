@@ -1,11 +1,10 @@
 //! Balls put back on the table: respots after a scratch, the cue ball in hand.
 
-use super::{messages::*, solver::*};
-
 use bevy::{math::DVec2, prelude::*};
 
 use billiards_rules::{CueBall, PlacementError};
 
+use super::{messages::*, solver::*};
 use crate::{
     table::balls::{BallMotion, MotionState, Pocketed},
     table::geometry::TableSpec,

@@ -1,6 +1,5 @@
 //! The solver resource and the conversions between the solver and the ECS.
 
-use super::messages::*;
 use std::time::SystemTime;
 
 use bevy::{math::DVec2, prelude::*};
@@ -11,6 +10,7 @@ use billiards_physics::{
 
 use billiards_rules::CueBall;
 
+use super::messages::*;
 use crate::{
     settings::{BallFrictionChoice, CushionChoice, PhysicsModel, PhysicsSettings},
     table::balls::{BallMotion, MotionState},
@@ -69,6 +69,11 @@ impl Solver {
     /// The entity of solver ball `id`.
     pub fn entity(&self, id: usize) -> Option<Entity> {
         self.entities.get(id).copied()
+    }
+
+    /// Whether anything has happened since the rack (a new rack or game then asks first).
+    pub fn in_progress(&self) -> bool {
+        !self.simulation().history().events().is_empty()
     }
 
     /// Shots that [`UndoRequested`] can take back, one at a time.

@@ -1,11 +1,11 @@
 //! The solver step: the frame's virtual time, the writeback, the event messages.
 
-use super::{messages::*, solver::*};
 use std::{ops::Range, time::Instant};
 
 use bevy::{prelude::*, window::RequestRedraw};
 use billiards_physics::{EventKind, Motion};
 
+use super::{messages::*, solver::*};
 use crate::{
     settings::PhysicsSettings,
     table::balls::{BallMotion, Pocketed},

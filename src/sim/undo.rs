@@ -1,10 +1,9 @@
 //! Undo: the table goes back to where it rested before the last strike.
 
-use super::{messages::*, solver::*};
-
 use bevy::{prelude::*, window::RequestRedraw};
 use billiards_physics::{self as physics, BallState, Simulation, recording::Recorder};
 
+use super::{messages::*, solver::*};
 use crate::{
     table::balls::{BallMotion, Pocketed},
     table::geometry::TableSpec,

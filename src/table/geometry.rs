@@ -7,7 +7,7 @@
 
 use bevy::math::{DVec2, DVec3, Vec3};
 use bevy::prelude::Resource;
-use billiards_physics::{PocketCut, TableChoice, TableSize};
+use billiards_physics::TableChoice;
 
 /// One inch in metres: equipment specifications are in inches, everything else is SI.
 pub const INCH: f64 = 0.0254;
@@ -132,14 +132,6 @@ impl TableSpec {
             side_mouth: table.side_mouth,
             ..Self::wpa_eight_foot()
         }
-    }
-
-    /// The choice this table was made from, if it is one of them.
-    pub fn choice(&self) -> Option<TableChoice> {
-        TableSize::ALL
-            .into_iter()
-            .flat_map(|size| PocketCut::ALL.map(|pockets| TableChoice { size, pockets }))
-            .find(|&c| Self::of(c) == *self)
     }
 
     /// Half the playing-surface length and width.

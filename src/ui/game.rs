@@ -214,9 +214,7 @@ pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result 
                 } else if next.choices.is_empty() {
                     ui.label(game.next_text());
                     // Between two computers the verdict goes on by itself.
-                    if game.seats.iter().any(Option::is_none)
-                        && ui.button("Continue (Enter)").clicked()
-                    {
+                    if game.has_human() && ui.button("Continue (Enter)").clicked() {
                         state.commands.write(TurnCommand::Continue);
                     }
                 } else {
@@ -356,10 +354,7 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
         });
     }
     // A game with shots in it ends only when the player says so (as the rack buttons ask).
-    let in_progress = state
-        .solver
-        .as_ref()
-        .is_some_and(|s| !s.simulation().history().events().is_empty());
+    let in_progress = state.solver.as_ref().is_some_and(|s| s.in_progress());
     if form.confirm {
         ui.colored_label(
             WARNING,

@@ -87,14 +87,7 @@ fn shot_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
         next.angle = degrees.to_radians();
     }
     // Power with two decimals, as the HUD, the hint and the replay show it.
-    ui.add(
-        egui::Slider::new(&mut next.power, ShotSettings::POWER.as_range())
-            .update_while_editing(false)
-            .text(ShotSettings::POWER.label)
-            .suffix(ShotSettings::POWER.unit)
-            .fixed_decimals(2)
-            .clamping(egui::SliderClamping::Never),
-    );
+    ui.add(range_slider(&mut next.power, ShotSettings::POWER).fixed_decimals(2));
     // The tip offset only matters to the spin model.
     ui.add_enabled_ui(state.physics.model == PhysicsModel::Spin, |ui| {
         ui.horizontal(|ui| {
@@ -185,10 +178,7 @@ fn play_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
     apply_physics_edit(next, state);
     ui.add_space(6.0);
     ui.label("New rack (asks first when a game is in progress):");
-    let in_progress = state
-        .solver
-        .as_ref()
-        .is_some_and(|s| !s.simulation().history().events().is_empty());
+    let in_progress = state.solver.as_ref().is_some_and(|s| s.in_progress());
     egui::Grid::new("racks")
         .num_columns(2)
         .spacing([8.0, 4.0])
@@ -555,14 +545,17 @@ fn section(ui: &mut egui::Ui, title: &str, open: bool, add_contents: impl FnOnce
 /// A slider with an editable number. Typing a value outside the physical range is allowed
 /// here so that the clamp can be reported rather than silently swallowed.
 fn param_slider(ui: &mut egui::Ui, value: &mut f64, range: ParamRange) {
-    ui.add(
-        egui::Slider::new(value, range.as_range())
-            .update_while_editing(false)
-            .text(range.label)
-            .suffix(range.unit)
-            .max_decimals(4)
-            .clamping(egui::SliderClamping::Never),
-    );
+    ui.add(range_slider(value, range).max_decimals(4));
+}
+
+/// A slider over a physical range: typed values apply when the edit is committed, and a value
+/// beyond the range is not clamped here but by the settings, which say so.
+fn range_slider(value: &mut f64, range: ParamRange) -> egui::Slider<'_> {
+    egui::Slider::new(value, range.as_range())
+        .update_while_editing(false)
+        .text(range.label)
+        .suffix(range.unit)
+        .clamping(egui::SliderClamping::Never)
 }
 
 fn apply_physics_edit(mut next: PhysicsSettings, state: &mut SettingsParam) {

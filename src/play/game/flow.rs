@@ -1,23 +1,19 @@
 //! The match flow: judging a finished shot, the player's commands, the turn's phase.
 
-use super::state::*;
-use crate::settings::TableSetup;
-use crate::sim::clock_seed;
-use billiards_rules::RackStyle;
-
 use bevy::prelude::*;
 use billiards_physics::Rack;
 use billiards_rules::{
-    Call, CallRule, CueBall, Game, GameLog, LoggedShot, Match, NextShot, Seat, summarise,
+    Call, CallRule, CueBall, Game, GameLog, LoggedShot, Match, NextShot, RackStyle, Seat, summarise,
 };
 
+use super::state::*;
 use crate::{
     play::aim::AimPrediction,
     recording::{RecordingsFolder, game_file},
-    settings::PhysicsSettings,
+    settings::{PhysicsSettings, TableSetup},
     sim::{
-        LayoutRequested, RackRequested, Referee, ShotFinished, SimStatus, Solver, params_from,
-        respot_ball, table_for,
+        LayoutRequested, RackRequested, Referee, ShotFinished, SimStatus, Solver, clock_seed,
+        params_from, respot_ball, table_for,
     },
     table::balls::BallMotion,
     table::geometry::TableSpec,

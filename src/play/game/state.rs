@@ -1,16 +1,13 @@
 //! The rules' state in the game: the match in play, the turn, the player's commands.
 
-use crate::settings::TableSetup;
-use billiards_rules::RackStyle;
-
 use bevy::prelude::*;
 use billiards_ai::Level;
 use billiards_rules::{
     Call, CallRule, Choice, CueBall, Game, GameLog, GameState, Group, Match, NextShot, Outcome,
-    Seat, Verdict,
+    RackStyle, Seat, Verdict,
 };
 
-use crate::mode::GameMode;
+use crate::{mode::GameMode, settings::TableSetup};
 
 /// The phase of the turn, while the live game is shown.
 #[derive(SubStates, Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
@@ -110,6 +107,11 @@ pub struct GameInPlay {
 }
 
 impl GameInPlay {
+    /// Whether a human plays in this match (a verdict then waits for them to continue).
+    pub fn has_human(&self) -> bool {
+        self.seats.iter().any(Option::is_none)
+    }
+
     /// Who shoots next and what they may do with the cue ball: "Ann shoots next, with ball
     /// in hand anywhere on the table".
     pub fn next_text(&self) -> String {

@@ -1,11 +1,10 @@
 //! What needs a window: the click on a pocket, the aim lock, the confirm key, the gizmos.
 
-use super::state::*;
-
 use bevy::{math::DVec2, prelude::*};
 use billiards_physics::Pocket;
 use billiards_rules::{Call, CallRule, CueBall};
 
+use super::state::*;
 use crate::{
     input::AimLocked,
     play::cue::PointerInput,
