@@ -9,10 +9,11 @@ use std::{path::Path, time::Duration};
 use bevy::prelude::*;
 use billiards::{
     input::AimLocked,
-    play::computer::{self, Computer, ComputerPace, HintRequested},
+    play::computer::{self, Computer, ComputerPace, Hint, HintRequested},
     play::game::{self, NewGameRequested, Rules, Turn},
     recording::{Autosave, RecordingsFolder},
     settings::ShotSettings,
+    view::camera::OrbitCamera,
 };
 use billiards_ai::Level;
 use billiards_physics::recording::{Recording, Verdict};
@@ -70,7 +71,7 @@ fn two_computers_play_a_rack_of_nine_ball_to_its_end() {
         if matches!(turn(&app), Turn::Aiming | Turn::BallInHand) {
             assert_eq!(*app.world().resource::<AimLocked>(), AimLocked(true));
             let rules = app.world().resource::<Rules>();
-            let line = &rules.game.as_ref().unwrap().hud_lines(turn(&app))[1];
+            let line = &rules.game.as_ref().unwrap().hud_lines(turn(&app), &[])[1];
             assert!(line.contains("(computer, easy) to "), "{line}");
             assert!(!line.contains("aim and shoot"), "{line}");
         }
@@ -116,9 +117,10 @@ fn a_hint_aims_the_humans_cue_at_the_computers_choice_and_the_pointer_is_locked_
             .resource::<Computer>()
             .hint
             .as_ref()
-            .is_some_and(|(_, text)| text != "hint: thinking...")
+            .is_some_and(|(_, hint)| *hint != Hint::Thinking)
     });
-    let (_, text) = app.world().resource::<Computer>().hint.clone().unwrap();
+    let (_, hint) = app.world().resource::<Computer>().hint.clone().unwrap();
+    let text = hint.text(&OrbitCamera::default());
     assert!(text.starts_with("hint: the break"), "{text}");
     // The hint is shown as the aim: the break speed and direction, not the settings before.
     let after = *app.world().resource::<ShotSettings>();

@@ -175,7 +175,7 @@ fn play_rack_of_misses(app: &mut App, breaker: Seat) -> Seat {
         let verdict = rules(app).last.clone().unwrap();
         if let Outcome::GameOver { winner, reason } = verdict.outcome {
             assert_eq!(turn(app), Turn::GameOver);
-            let lines = rules(app).hud_lines(Turn::GameOver).join("\n");
+            let lines = rules(app).hud_lines(Turn::GameOver, &[]).join("\n");
             assert!(lines.contains("wins the rack"), "{lines}");
             if reason == WinReason::ThreeFouls {
                 assert_eq!(winner, verdict.shooter.other());
@@ -220,7 +220,7 @@ fn play_rack_of_misses(app: &mut App, breaker: Seat) -> Seat {
         let verdict = rules(app).last.clone().unwrap();
         assert_eq!(verdict.shooter, shooter);
         assert!(verdict.fouls.contains(&Foul::NoBallHit), "{:?}", verdict);
-        let lines = rules(app).hud_lines(turn(app)).join("\n");
+        let lines = rules(app).hud_lines(turn(app), &[]).join("\n");
         assert!(
             lines.contains("last foul: the cue ball hit no ball"),
             "{lines}"
@@ -245,9 +245,14 @@ fn a_nine_ball_match_is_played_through_the_turns_to_its_winner() {
     let folder = std::env::temp_dir().join(format!("billiards-game-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&folder);
     let mut app = start(&folder, Game::NineBall, 2);
-    let lines = rules(&app).hud_lines(turn(&app));
+    let lines = rules(&app).hud_lines(turn(&app), &[]);
     assert_eq!(lines[0], "9-ball, race to 2: Ann 0 - 0 Bob");
     assert!(lines[1].starts_with("Ann to break: ball in hand behind the head string"));
+    assert!(lines.contains(&"balls left: 9".to_owned()), "{lines:?}");
+    // Balls the shot in play has dropped are counted off at once, before the verdict
+    // updates the rack (issue 28, item 10: "balls left" stayed stale while balls moved).
+    let moving = rules(&app).hud_lines(Turn::ShotInPlay, &[3, 7]);
+    assert!(moving.contains(&"balls left: 7".to_owned()), "{moving:?}");
     let mut breaker = Seat::A;
     let mut racks = 0;
     loop {
@@ -281,7 +286,7 @@ fn a_nine_ball_match_is_played_through_the_turns_to_its_winner() {
         if let Some(champion) = play.winner() {
             assert_eq!(champion, winner);
             assert_eq!(play.score[champion.index()], 2);
-            let lines = rules(&app).hud_lines(Turn::GameOver).join("\n");
+            let lines = rules(&app).hud_lines(Turn::GameOver, &[]).join("\n");
             assert!(lines.contains("wins the rack and the match"), "{lines}");
             break;
         }
@@ -310,7 +315,7 @@ fn a_nine_ball_match_is_played_through_the_turns_to_its_winner() {
 fn eight_ball_needs_a_call_on_the_eight_and_the_dialog_pauses_the_turn() {
     let folder = std::env::temp_dir().join(format!("billiards-game8-{}", std::process::id()));
     let mut app = start(&folder, Game::EightBall, 1);
-    let lines = rules(&app).hud_lines(turn(&app));
+    let lines = rules(&app).hud_lines(turn(&app), &[]);
     assert_eq!(lines[0], "8-ball, race to 1: Ann 0 - 0 Bob");
     assert!(lines.iter().any(|l| l == "open table"), "{lines:?}");
     // The new-game dialog stops the turn; closing it gives the turn back.
@@ -349,7 +354,7 @@ fn eight_ball_needs_a_call_on_the_eight_and_the_dialog_pauses_the_turn() {
     assert!(matches!(turn(&app), Turn::Aiming | Turn::BallInHand));
     assert_eq!(*app.world().resource::<AimLocked>(), AimLocked(false));
     assert_eq!(rules(&app).call, call);
-    let lines = rules(&app).hud_lines(turn(&app)).join("\n");
+    let lines = rules(&app).hud_lines(turn(&app), &[]).join("\n");
     assert!(lines.contains("call: the "), "{lines}");
     let _ = std::fs::remove_dir_all(&folder);
 }

@@ -186,7 +186,9 @@ fn recorded_break() -> PathBuf {
 /// Every text of the UI fits (item 5 of issue 15), read from egui's own layout by
 /// `--check-layout`: none elided, none cut at the side of its panel or window, none off the
 /// screen; at 1280x720 and 1920x1080, in free play with every panel section open, in a match
-/// in a replay (the timeline window) and after a recording failed to open (the error).
+/// in a replay (the timeline strip) and after a recording failed to open (the error). And the
+/// HUD's buttons keep their places in all four (issue 28, item 1: a click aimed at Hint opened
+/// the New game dialog when the buttons moved between states).
 #[test]
 fn every_text_fits_at_both_sizes() {
     if !can_render() {
@@ -207,6 +209,7 @@ fn every_text_fits_at_both_sizes() {
     ];
     let mut failures = Vec::new();
     for size in [(1280, 720), (1920, 1080)] {
+        let mut first_places: Option<Vec<String>> = None;
         for state in states {
             let report = temp_file("layout.txt");
             let shot = temp_file("layout.png");
@@ -229,11 +232,18 @@ fn every_text_fits_at_both_sizes() {
                 .and_then(|n| n.parse().ok())
                 .expect("the report starts with a count");
             assert!(checked > 40, "too few texts seen: {text}");
-            failures.extend(
-                text.lines()
-                    .skip(1)
-                    .map(|l| format!("{size:?} {state:?}: {l}")),
-            );
+            let (places, problems): (Vec<&str>, Vec<&str>) =
+                text.lines().skip(1).partition(|l| l.starts_with("place: "));
+            failures.extend(problems.iter().map(|l| format!("{size:?} {state:?}: {l}")));
+            let places: Vec<String> = places.iter().map(|l| l.to_string()).collect();
+            assert_eq!(places.len(), 5, "the HUD's five buttons: {places:?}");
+            match &first_places {
+                None => first_places = Some(places),
+                Some(first) => assert_eq!(
+                    &places, first,
+                    "{size:?} {state:?}: the HUD's buttons moved"
+                ),
+            }
         }
     }
     let _ = std::fs::remove_file(&recording);

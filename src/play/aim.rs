@@ -215,7 +215,18 @@ fn follow(sim: &mut Simulation, first: billiards_physics::Event, contacts: u32) 
             _ => break,
         }
         let Some(event) = sim.step_event() else { break };
-        for id in event.kind.balls() {
+        // Which of the event's balls were on a drawn path until now: only a collision with
+        // one of those starts a new path (a ball set moving by motion the aid does not draw,
+        // past a path's last contact, is not drawn either).
+        let open = |id: usize| traces[id].as_ref().is_some_and(|t| t.until.is_none());
+        let starts = match event.kind {
+            EventKind::BallBall { a, b } => [open(b), open(a)],
+            _ => [false, false],
+        };
+        for (k, id) in event.kind.balls().enumerate() {
+            if traces[id].is_none() && !starts[k] {
+                continue;
+            }
             let trace = traces[id].get_or_insert_with(|| Trace {
                 // A resting ball set moving by a ball being traced: its path starts here.
                 from: event.time,
@@ -527,5 +538,41 @@ mod tests {
         let (a, b) = (length(&one, 1), length(&three, 1));
         assert!(b > a + 1.0, "{a} m after one contact, {b} m after three");
         assert_eq!(length(&one, 0), length(&three, 0));
+    }
+
+    /// A ball hit after a drawn path has ended (here: the object ball's path ends at its first
+    /// cushion, then it rolls on into the 2) is not drawn: the aid would show a ball set moving
+    /// by nothing it shows (issue 28, item 10).
+    #[test]
+    fn a_ball_hit_past_the_end_of_a_drawn_path_is_not_drawn() {
+        let params = Params::default();
+        let shot = Shot::new(0.0, 3.0);
+        let two = [resting(0, -0.5, 0.05), resting(1, 0.3, 0.0)];
+        let free = predict(Table::wpa_8ft(), params, &two, 0, shot, 3);
+        let cushion = *predict(Table::wpa_8ft(), params, &two, 0, shot, 1)
+            .after_of(1)
+            .unwrap()
+            .last()
+            .unwrap();
+        // A point of the object ball's free path 0.3 m past its first cushion.
+        let path = free.after_of(1).unwrap();
+        let at = path.iter().position(|p| *p == cushion).unwrap();
+        let mut run = 0.0;
+        let beyond = path[at..]
+            .windows(2)
+            .find(|w| {
+                run += w[0].distance(w[1]);
+                run > 0.3
+            })
+            .unwrap()[1];
+        let three = [two[0], two[1], resting(2, beyond.x, beyond.y)];
+        let open = predict(Table::wpa_8ft(), params, &three, 0, shot, 2);
+        assert!(open.after_of(2).is_some(), "the 2 is hit on a drawn path");
+        let ended = predict(Table::wpa_8ft(), params, &three, 0, shot, 1);
+        assert!(ended.after_of(1).is_some());
+        assert!(
+            ended.after_of(2).is_none(),
+            "the 2 is hit after the 1's drawn path ended"
+        );
     }
 }

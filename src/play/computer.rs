@@ -21,6 +21,7 @@ use crate::{
     sim::{ShotRequested, SimStatus, SimSystems, Solver, place_ball_in_hand},
     table::balls::{Ball, BallMotion, Pocketed},
     table::geometry::TableSpec,
+    view::camera::{CameraMode, OrbitCamera},
 };
 
 /// How long the computer shows its aim (or its choice) before it acts; tests set zero.
@@ -48,12 +49,35 @@ pub struct Computer {
     /// A hint being searched.
     hint_task: Option<Task>,
     /// The last hint, for the HUD (with the turn it was for).
-    pub hint: Option<(TurnKey, String)>,
+    pub hint: Option<(TurnKey, Hint)>,
     /// What the computer is doing, for the HUD.
     pub doing: Option<String>,
     /// The turn whose shot was just sent, and when: not decided again while the strike takes
     /// effect (a refused shot is decided again after a few seconds).
     fired: Option<(TurnKey, Instant)>,
+}
+
+/// The hint as the HUD shows it. The decision is kept, not its words: its cushions are named
+/// as the view shows them when it is drawn ([`cushion_name`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Hint {
+    /// The search runs.
+    Thinking,
+    /// The computer's choice for the human.
+    Decided(Decision),
+    /// No hint: why.
+    Failed(String),
+}
+
+impl Hint {
+    /// The hint's line in the HUD, cushions named as `view` shows them.
+    pub fn text(&self, view: &OrbitCamera) -> String {
+        match self {
+            Hint::Thinking => "hint: thinking...".to_owned(),
+            Hint::Decided(decision) => format!("hint: {}", describe(decision, view)),
+            Hint::Failed(error) => format!("hint: none ({error})"),
+        }
+    }
 }
 
 /// Which turn of which rack a decision is for: a decision for another turn is dropped.
@@ -92,6 +116,8 @@ impl Task {
 pub fn plugin(app: &mut App) {
     app.init_resource::<Computer>()
         .init_resource::<ComputerPace>()
+        // Its words name cushions as the view shows them (the camera's plugin inits it too).
+        .init_resource::<OrbitCamera>()
         .add_message::<HintRequested>()
         .add_systems(
             Update,
@@ -136,6 +162,7 @@ fn play_computer_turn(
     mut turn_commands: MessageWriter<TurnCommand>,
     mut shots: MessageWriter<ShotRequested>,
     mut redraw: MessageWriter<RequestRedraw>,
+    view: Res<OrbitCamera>,
 ) {
     let (Some(game), Some(turn), Some(solver)) = (&rules.game, turn, solver) else {
         computer.turn = None;
@@ -214,7 +241,8 @@ fn play_computer_turn(
                             turn_commands.write(TurnCommand::Call(plan.call));
                         }
                     }
-                    computer.doing = Some(format!("{name} ({level}): {}", describe(&decision)));
+                    computer.doing =
+                        Some(format!("{name} ({level}): {}", describe(&decision, &view)));
                     computer.turn = Some(Task::Showing {
                         key,
                         seed,
@@ -305,7 +333,7 @@ fn give_hint(
     };
     let key = game.turn_key();
     if asked && status.at_rest && computer.hint_task.is_none() {
-        computer.hint = Some((key, "hint: thinking...".to_owned()));
+        computer.hint = Some((key, Hint::Thinking));
         computer.hint_task = Some(think(game.rack().clone(), &solver, HINT_LEVEL, key));
     }
     let finished = matches!(
@@ -330,7 +358,7 @@ fn give_hint(
         computer.hint = None;
         return;
     }
-    let text = match outcome(handle) {
+    let hint = match outcome(handle) {
         Ok(decision) => {
             if let Decision::Shoot(plan) = &decision {
                 show_plan(
@@ -347,21 +375,21 @@ fn give_hint(
                     calls.write(TurnCommand::Call(plan.call));
                 }
             }
-            format!("hint: {}", describe(&decision))
+            Hint::Decided(decision)
         }
-        Err(error) => format!("hint: none ({error})"),
+        Err(error) => Hint::Failed(error.to_string()),
     };
-    computer.hint = Some((key, text));
+    computer.hint = Some((key, hint));
 }
 
-/// The decision in words, with its success probability.
-pub fn describe(decision: &Decision) -> String {
+/// The decision in words, with its success probability; cushions named as `view` shows them.
+pub fn describe(decision: &Decision, view: &OrbitCamera) -> String {
     match decision {
         Decision::Choose { choice, estimate } => {
             format!("{} ({:.0} %)", choice.label(), 100.0 * estimate)
         }
         Decision::Shoot(plan) => {
-            let what = kind_text(plan.kind);
+            let what = kind_text(plan.kind, view);
             let call = match plan.call {
                 Call::Ball { .. } | Call::None => String::new(),
                 other => other.text().map_or(String::new(), |c| format!(", {c}")),
@@ -375,13 +403,36 @@ pub fn describe(decision: &Decision) -> String {
     }
 }
 
-fn kind_text(kind: ShotKind) -> String {
-    let cushion = |c: Cushion| match c {
-        Cushion::Head => "head",
-        Cushion::Foot => "foot",
-        Cushion::Left => "left",
-        Cushion::Right => "right",
+/// A cushion's name as `view` shows it. The short ones keep the players' "head" and "foot";
+/// a long one is named by where it lies on the screen: "left" or "right", and "far" or
+/// "near" (in the top view "top" or "bottom"). The rules' "left" (seen from the head end)
+/// read as the top rail in the top view (issue 28, item 10).
+pub fn cushion_name(cushion: Cushion, view: &OrbitCamera) -> &'static str {
+    let outward = match cushion {
+        Cushion::Head => return "head",
+        Cushion::Foot => return "foot",
+        Cushion::Left => Vec2::new(0.0, 1.0),
+        Cushion::Right => Vec2::new(0.0, -1.0),
     };
+    // The camera's forward and right on the table, in the solver's axes (yaw 0 looks along
+    // the solver's +y, with its +x to the right).
+    let yaw = f64::from(view.yaw);
+    let forward = Vec2::new(-yaw.sin(), yaw.cos());
+    let right = Vec2::new(yaw.cos(), yaw.sin());
+    let (ahead, aside) = (outward.dot(forward), outward.dot(right));
+    let top = view.mode == CameraMode::Top;
+    match (aside.abs() >= ahead.abs(), aside > 0.0, ahead > 0.0, top) {
+        (true, true, _, _) => "right",
+        (true, false, _, _) => "left",
+        (false, _, true, true) => "top",
+        (false, _, true, false) => "far",
+        (false, _, false, true) => "bottom",
+        (false, _, false, false) => "near",
+    }
+}
+
+fn kind_text(kind: ShotKind, view: &OrbitCamera) -> String {
+    let cushion = |c: Cushion| cushion_name(c, view);
     match kind {
         ShotKind::Break => "the break".to_owned(),
         ShotKind::Pot { ball, pocket } => format!("the {ball} in the {}", pocket_name(pocket)),
@@ -413,5 +464,37 @@ fn kind_text(kind: ShotKind) -> String {
         ),
         ShotKind::Safety { ball } => format!("a safety on the {ball}"),
         ShotKind::PushOut => "a push out".to_owned(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The long cushions are named as the screen shows them: from the default view behind the
+    /// head rail the rules' left cushion is on the left; in the top view (head rail on the
+    /// left) it is the top one; seen from the foot end, sides swap.
+    #[test]
+    fn long_cushions_are_named_as_the_view_shows_them() {
+        let behind_head = OrbitCamera::default();
+        assert_eq!(cushion_name(Cushion::Left, &behind_head), "left");
+        assert_eq!(cushion_name(Cushion::Right, &behind_head), "right");
+        assert_eq!(cushion_name(Cushion::Head, &behind_head), "head");
+        let top = OrbitCamera::top_view();
+        assert_eq!(cushion_name(Cushion::Left, &top), "top");
+        assert_eq!(cushion_name(Cushion::Right, &top), "bottom");
+        assert_eq!(cushion_name(Cushion::Foot, &top), "foot");
+        let behind_foot = OrbitCamera {
+            yaw: behind_head.yaw + std::f32::consts::PI,
+            ..behind_head
+        };
+        assert_eq!(cushion_name(Cushion::Left, &behind_foot), "right");
+        // Looking across the table from the right long cushion, the left one is far.
+        let across = OrbitCamera {
+            yaw: 0.0,
+            ..behind_head
+        };
+        assert_eq!(cushion_name(Cushion::Left, &across), "far");
+        assert_eq!(cushion_name(Cushion::Right, &across), "near");
     }
 }

@@ -18,7 +18,11 @@ use crate::{
     view::camera::{CameraSystems, TableCamera},
 };
 use bevy::{
-    input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
+    input::{
+        ButtonState,
+        keyboard::KeyboardInput,
+        mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
+    },
     math::DVec2,
     prelude::*,
     window::{PrimaryWindow, RequestRedraw},
@@ -271,6 +275,7 @@ fn aim_with_mouse(
 #[allow(clippy::too_many_arguments)]
 fn cue_keys(
     keys: Res<ButtonInput<KeyCode>>,
+    mut typed: MessageReader<KeyboardInput>,
     time: Res<Time<Real>>,
     status: Res<SimStatus>,
     mut held: Local<HeldKeys>,
@@ -279,6 +284,13 @@ fn cue_keys(
     mut shots: MessageWriter<ShotRequested>,
     mut redraw: MessageWriter<RequestRedraw>,
 ) {
+    // Every press of this frame (several taps can fall in one slow frame), read even when
+    // unused so none is applied late.
+    let presses: Vec<KeyCode> = typed
+        .read()
+        .filter(|k| k.state == ButtonState::Pressed && !k.repeat)
+        .map(|k| k.key_code)
+        .collect();
     if !status.at_rest {
         *held = HeldKeys::default();
         return;
@@ -290,7 +302,8 @@ fn cue_keys(
     let turn: (f64, f64) = if fine { (0.1, 2.0) } else { (1.0, 30.0) };
     let turn = (turn.0.to_radians(), turn.1.to_radians());
     let mut motion = |key: KeyCode, rates: (f64, f64)| {
-        let state = (keys.just_pressed(key), keys.pressed(key));
+        let taps = presses.iter().filter(|&&k| k == key).count() as u32;
+        let state = (taps, keys.pressed(key));
         held.motion(key, state, frame, rates)
     };
     let mut next = *shot;

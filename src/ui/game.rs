@@ -13,6 +13,7 @@ use crate::{
     play::game::{NewGameRequested, Rules, Turn, TurnCommand},
     settings::{TableSetup, rack_style_label, table_choices, table_label},
     sim::{Solver, clock_seed},
+    view::camera::OrbitCamera,
 };
 
 /// What the new-game dialog holds between frames.
@@ -75,7 +76,17 @@ pub struct GameParam<'w> {
     hints: MessageWriter<'w, HintRequested>,
     setup: Res<'w, TableSetup>,
     solver: Option<Res<'w, Solver>>,
+    view: Res<'w, OrbitCamera>,
 }
+
+/// The HUD's buttons' labels, in their order (the layout check finds them by these).
+pub const HUD_BUTTONS: [&str; 5] = [
+    "New game...",
+    "Hint",
+    "Call a pocket",
+    "Clear the call",
+    "Push out",
+];
 
 /// The HUD's buttons, one row, each always in its place: disabled when it does not apply
 /// (free play, the computer's turn, a replay), never moved or hidden.
@@ -91,20 +102,23 @@ pub fn hud_buttons(ui: &mut egui::Ui, state: &mut GameParam) {
     ui.horizontal(|ui| {
         let new_game = ui.add_enabled(
             turn.is_some_and(|t| t != Turn::NewGame),
-            egui::Button::new("New game...").min_size(size),
+            egui::Button::new(HUD_BUTTONS[0]).min_size(size),
         );
         if new_game.clicked() {
             state.commands.write(TurnCommand::OpenDialog);
         }
         let hint = ui
-            .add_enabled(human_to_shoot, egui::Button::new("Hint").min_size(size))
+            .add_enabled(
+                human_to_shoot,
+                egui::Button::new(HUD_BUTTONS[1]).min_size(size),
+            )
             .on_hover_text("the computer's choice for you, shown as your aim (and its call)");
         if hint.clicked() {
             state.hints.write(HintRequested);
         }
         let can_call = human_to_shoot && next.is_some_and(|n| n.call != CallRule::NotUsed);
         if ui
-            .add_enabled(can_call, egui::Button::new("Call a pocket").min_size(size))
+            .add_enabled(can_call, egui::Button::new(HUD_BUTTONS[2]).min_size(size))
             .on_hover_text("8-ball: the ball and pocket, proposed from your aim")
             .clicked()
         {
@@ -114,7 +128,7 @@ pub fn hud_buttons(ui: &mut egui::Ui, state: &mut GameParam) {
         if ui
             .add_enabled(
                 human_to_shoot && called,
-                egui::Button::new("Clear the call").min_size(size),
+                egui::Button::new(HUD_BUTTONS[3]).min_size(size),
             )
             .clicked()
         {
@@ -124,7 +138,7 @@ pub fn hud_buttons(ui: &mut egui::Ui, state: &mut GameParam) {
             && next.is_some_and(|n| n.push_out_allowed)
             && game.is_some_and(|g| g.call != Call::PushOut);
         if ui
-            .add_enabled(push_out, egui::Button::new("Push out").min_size(size))
+            .add_enabled(push_out, egui::Button::new(HUD_BUTTONS[4]).min_size(size))
             .on_hover_text("9-ball, right after the break: declare a push out (WPA 2.4)")
             .clicked()
         {
@@ -144,7 +158,18 @@ pub fn hud_lines(state: &GameParam) -> (Vec<HudLine>, Vec<HudLine>) {
     };
     let mut first = Vec::new();
     let mut second = Vec::new();
-    for (k, line) in game.hud_lines(turn).into_iter().enumerate() {
+    // Balls the shot in play has dropped so far: "balls left" counts them off at once.
+    let dropped: Vec<u8> = match (&state.solver, turn) {
+        (Some(solver), Turn::ShotInPlay) => {
+            let sim = solver.simulation();
+            (0..sim.ball_count())
+                .filter(|&id| !sim.ball(id).motion.on_table())
+                .map(|id| sim.numbers()[id])
+                .collect()
+        }
+        _ => Vec::new(),
+    };
+    for (k, line) in game.hud_lines(turn, &dropped).into_iter().enumerate() {
         let colour = if k == 1 {
             Some(INFO)
         } else if line.starts_with("last foul") {
@@ -164,7 +189,7 @@ pub fn hud_lines(state: &GameParam) -> (Vec<HudLine>, Vec<HudLine>) {
     if let Some((key, hint)) = &state.computer.hint
         && *key == game.turn_key()
     {
-        first.push((hint.clone(), Some(INFO)));
+        first.push((hint.text(&state.view), Some(INFO)));
     }
     (first, second)
 }

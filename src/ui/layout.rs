@@ -5,17 +5,14 @@ use bevy_egui::egui::Color32;
 /// Width of the settings panel on the left, in logical pixels. The 3D view takes the rest.
 pub const PANEL_WIDTH: f32 = 340.0;
 
-/// Gap between a floating window (HUD, timeline) and the edge of the 3D view.
-pub const WINDOW_MARGIN: f32 = 10.0;
-
 /// Height of the HUD strip along the top of the 3D view; the table's viewport starts below.
 pub const HUD_HEIGHT: f32 = 128.0;
 
 /// Width of each of the HUD's buttons, so they keep their places whatever their state.
 pub const HUD_BUTTON_WIDTH: f32 = 104.0;
 
-/// Width the replay timeline window asks for.
-pub const TIMELINE_WIDTH: f32 = 620.0;
+/// Height of the replay timeline strip along the bottom; the table's viewport ends above it.
+pub const TIMELINE_HEIGHT: f32 = 176.0;
 
 /// Height of the list of recordings before it scrolls.
 pub const RECORDINGS_LIST_HEIGHT: f32 = 140.0;

@@ -1,9 +1,12 @@
 //! A check of the UI's text, read from egui's own layout (`--check-layout PATH`, used by the
 //! render test): every text drawn must be whole, on screen and not cut by its clip rectangle
-//! at the sides. Problems (or none) are written to the file after every egui pass.
+//! at the sides. Problems (or none) are written to the file after every egui pass, then the
+//! place of each HUD button's label (`place: LABEL at X,Y`), which must not move between
+//! states (issue 28, item 1).
 
 use std::path::PathBuf;
 
+use super::game::HUD_BUTTONS;
 use bevy::prelude::*;
 use bevy_egui::{
     EguiFullOutput, EguiPostUpdateSet, PrimaryEguiContext,
@@ -65,17 +68,19 @@ fn check_text(
     let screen = context.get_mut().viewport_rect();
     let mut texts = 0;
     let mut problems = Vec::new();
+    let mut places = Vec::new();
     fn visit(
         shape: &Shape,
         clip: Rect,
         screen: Rect,
         texts: &mut usize,
         problems: &mut Vec<String>,
+        places: &mut Vec<String>,
     ) {
         match shape {
             Shape::Vec(shapes) => {
                 for shape in shapes {
-                    visit(shape, clip, screen, texts, problems);
+                    visit(shape, clip, screen, texts, problems, places);
                 }
             }
             Shape::Text(text) if text.angle == 0.0 && !text.galley.is_empty() => {
@@ -85,16 +90,30 @@ fn check_text(
                 if let Some(problem) = text_problem(words, rect, clip, text.galley.elided, screen) {
                     problems.push(problem);
                 }
+                if HUD_BUTTONS.contains(&words) {
+                    places.push(format!(
+                        "place: {words} at {:.0},{:.0}",
+                        rect.min.x, rect.min.y
+                    ));
+                }
             }
             _ => {}
         }
     }
     for ClippedShape { clip_rect, shape } in &output.shapes {
-        visit(shape, *clip_rect, screen, &mut texts, &mut problems);
+        visit(
+            shape,
+            *clip_rect,
+            screen,
+            &mut texts,
+            &mut problems,
+            &mut places,
+        );
     }
     let mut out = format!("texts checked: {texts}\n");
-    for problem in problems {
-        out.push_str(&problem);
+    places.sort();
+    for line in problems.into_iter().chain(places) {
+        out.push_str(&line);
         out.push('\n');
     }
     if let Err(error) = std::fs::write(&report.0, out) {

@@ -5,7 +5,7 @@
 //! - [`layout`]: shared sizes and colours;
 //! - [`settings`]: the panel's shot, physics, simulation and view sections;
 //! - [`recordings`]: the Recordings section (open a recording);
-//! - [`timeline`]: the replay timeline window and its Export form;
+//! - [`timeline`]: the replay timeline strip and the Export form;
 //! - [`hud`]: the HUD in the top-right corner;
 //! - [`game`]: the match's HUD lines, the new-game dialog, the verdict, the call, the end of
 //!   a rack.
@@ -95,10 +95,9 @@ pub fn plugin(app: &mut App) {
             EguiPrimaryContextPass,
             (
                 show_scene_image,
-                // The HUD strip starts where the panel ends.
-                (left_panel, hud::hud).chain(),
+                // The HUD and timeline strips start where the panel ends.
+                (left_panel, (hud::hud, timeline::timeline_strip)).chain(),
                 game::game_windows.run_if(in_state(GameMode::Play)),
-                timeline::timeline_window.run_if(in_state(GameMode::Replay)),
             ),
         );
 }

@@ -9,7 +9,7 @@ use bevy_egui::egui::{self, RichText};
 
 use super::{
     layout::{PATH_FIELD_WIDTH, RECORDINGS_LIST_HEIGHT, WARNING},
-    timeline::export_status,
+    timeline::{ExportForm, export_section, export_status},
 };
 use crate::{
     recording::{Autosave, RecordingsFolder, list_recordings},
@@ -35,6 +35,7 @@ pub struct RecordingsParam<'w> {
     folder: Res<'w, RecordingsFolder>,
     autosave: Option<Res<'w, Autosave>>,
     commands: MessageWriter<'w, ReplayCommand>,
+    export: ResMut<'w, ExportForm>,
 }
 
 /// Most recordings listed in the panel at once (the newest).
@@ -55,6 +56,7 @@ fn recordings(ui: &mut egui::Ui, param: &mut RecordingsParam) {
         folder,
         autosave,
         commands,
+        export,
     } = param;
     let saved_since = autosave
         .as_ref()
@@ -115,5 +117,11 @@ fn recordings(ui: &mut egui::Ui, param: &mut RecordingsParam) {
             commands.write(ReplayCommand::Close);
         }
     }
-    export_status(ui, replay);
+    // The open replay's Export form, whose last line is the export's progress; with the
+    // replay closed, only how the last export went.
+    if replay.open.is_some() {
+        export_section(ui, replay, export, commands);
+    } else {
+        export_status(ui, replay);
+    }
 }

@@ -114,7 +114,12 @@ fn shot_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
         .iter_mut()
         .find(|(b, _)| b.number == 0)
         .map(|(_, m)| m);
-    let mut y = cue.as_ref().map_or(0.0, |m| m.position.y);
+    // Greyed out, it shows the head spot's 0 rather than the moving cue ball's y, which
+    // changed under the pointer while nothing could be done with it.
+    let mut y = cue
+        .as_ref()
+        .filter(|_| in_hand)
+        .map_or(0.0, |m| m.position.y);
     ui.add_enabled_ui(in_hand && cue.is_some(), |ui| {
         ui.label("ball in hand, along the head string:");
         ui.add(
@@ -567,4 +572,84 @@ fn apply_physics_edit(mut next: PhysicsSettings, state: &mut SettingsParam) {
         state.report.notes = notes;
     }
     *state.physics = next;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use egui::{Event, Key, Modifiers, PointerButton, Pos2, RawInput, Rect, Shape, vec2};
+
+    /// One egui pass showing the sliding-friction slider over `value`, with `events`; returns
+    /// where the value's text was drawn.
+    fn pass(ctx: &egui::Context, events: Vec<Event>, value: &mut f64) -> Option<Rect> {
+        let input = RawInput {
+            events,
+            screen_rect: Some(Rect::from_min_size(Pos2::ZERO, vec2(600.0, 200.0))),
+            ..Default::default()
+        };
+        let output = ctx.run_ui(input, |ui| {
+            param_slider(ui, value, PhysicsSettings::MU_SLIDE);
+        });
+        fn find(shape: &Shape) -> Option<Rect> {
+            match shape {
+                Shape::Vec(shapes) => shapes.iter().find_map(find),
+                Shape::Text(text) if text.galley.text().parse::<f64>().is_ok() => {
+                    Some(text.galley.rect.translate(text.pos.to_vec2()))
+                }
+                _ => None,
+            }
+        }
+        output.shapes.iter().find_map(|s| find(&s.shape))
+    }
+
+    fn click(at: Pos2) -> Vec<Event> {
+        [true, false]
+            .map(|pressed| Event::PointerButton {
+                pos: at,
+                button: PointerButton::Primary,
+                pressed,
+                modifiers: Modifiers::NONE,
+            })
+            .into()
+    }
+
+    /// A typed value applies when the edit is committed (issue 28, item 3: typing "0.2" into
+    /// sliding friction gave 0.15, the "0" clamped on its keystroke); one beyond the range is
+    /// passed on unclamped, for the settings to clamp and say so.
+    #[test]
+    fn a_typed_value_applies_on_enter_not_per_keystroke() {
+        let ctx = egui::Context::default();
+        let mut value = 0.3;
+        let text = pass(&ctx, Vec::new(), &mut value).expect("the value is drawn");
+        let mut events = vec![Event::PointerMoved(text.center())];
+        events.extend(click(text.center()));
+        pass(&ctx, events, &mut value);
+        assert!(
+            ctx.memory(|m| m.focused().is_some()),
+            "a click edits the value"
+        );
+        for typed in ["0", ".", "2"] {
+            pass(&ctx, vec![Event::Text(typed.to_owned())], &mut value);
+            assert_eq!(value, 0.3, "nothing applies while typing ({typed:?})");
+        }
+        let enter = Event::Key {
+            key: Key::Enter,
+            physical_key: None,
+            pressed: true,
+            repeat: false,
+            modifiers: Modifiers::NONE,
+        };
+        pass(&ctx, vec![enter.clone()], &mut value);
+        assert_eq!(value, 0.2, "Enter commits the typed value");
+        // Beyond the range: the slider does not clamp it (the settings do, with a note).
+        let text = pass(&ctx, Vec::new(), &mut value).unwrap();
+        let mut events = vec![Event::PointerMoved(text.center())];
+        events.extend(click(text.center()));
+        pass(&ctx, events, &mut value);
+        for typed in ["0", ".", "0", "5"] {
+            pass(&ctx, vec![Event::Text(typed.to_owned())], &mut value);
+        }
+        pass(&ctx, vec![enter], &mut value);
+        assert_eq!(value, 0.05);
+    }
 }

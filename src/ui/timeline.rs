@@ -1,6 +1,8 @@
-//! The replay timeline, anchored at the bottom of the 3D view while a recording is open:
-//! transport buttons, speed, a scrub bar, the event under the replay time, Verify, Close and
-//! the Export form. It only reads [`Replay`] and writes [`ReplayCommand`]s.
+//! The replay timeline, a strip along the bottom of the window right of the panel while a
+//! recording is open (the table's viewport ends above it, [`ViewInset::bottom`], so it covers
+//! nothing of the table): transport buttons, speed, Verify, Close, a scrub bar, the event
+//! under the replay time and the verdicts. The Export form is in the panel's Recordings
+//! section ([`export_section`]). It only reads [`Replay`] and writes [`ReplayCommand`]s.
 
 use std::path::PathBuf;
 
@@ -10,10 +12,13 @@ use bevy_egui::{
     egui::{self, RichText},
 };
 
-use super::layout::{PANEL_WIDTH, SUCCESS, TIMELINE_WIDTH, WARNING, WINDOW_MARGIN};
-use crate::replay::{
-    ExportFormat, ExportRequest, ExportScope, MAX_SPEED, MIN_SPEED, OpenRecording, Replay,
-    ReplayCommand,
+use super::layout::{SUCCESS, TIMELINE_HEIGHT, WARNING};
+use crate::{
+    replay::{
+        ExportFormat, ExportRequest, ExportScope, MAX_SPEED, MIN_SPEED, OpenRecording, Replay,
+        ReplayCommand,
+    },
+    view::ViewInset,
 };
 
 /// What the Export form edits between frames.
@@ -70,27 +75,44 @@ fn export_status_or(ui: &mut egui::Ui, replay: &Replay, idle: Option<&str>) {
     }
 }
 
-/// The timeline, anchored at the bottom of the 3D view.
-pub fn timeline_window(
+/// The timeline strip along the bottom of the window, right of the panel, while a recording
+/// is open; the table's view ends above it. Without one it takes no room.
+pub fn timeline_strip(
     mut contexts: EguiContexts,
     replay: Res<Replay>,
-    mut form: ResMut<ExportForm>,
     mut commands: MessageWriter<ReplayCommand>,
+    mut inset: ResMut<ViewInset>,
 ) -> Result {
+    let height = if replay.open.is_some() {
+        TIMELINE_HEIGHT
+    } else {
+        0.0
+    };
+    if inset.bottom != height {
+        inset.bottom = height;
+    }
     let Some(open) = &replay.open else {
         return Ok(());
     };
     let ctx = contexts.ctx_mut()?.clone();
-    egui::Window::new(format!("Replay: {}", open.file_name()))
-        .id(egui::Id::new("replay timeline"))
-        .anchor(
-            egui::Align2::CENTER_BOTTOM,
-            [PANEL_WIDTH / 2.0, -WINDOW_MARGIN],
-        )
-        .resizable(false)
-        .default_width(TIMELINE_WIDTH)
-        .show(&ctx, |ui| {
-            timeline(ui, &replay, open, &mut form, &mut commands);
+    let screen = ctx.viewport_rect();
+    let left = inset.left;
+    let size = egui::vec2((screen.width() - left).max(1.0), TIMELINE_HEIGHT);
+    egui::Area::new(egui::Id::new("replay timeline"))
+        .order(egui::Order::Middle)
+        .fixed_pos(egui::pos2(
+            screen.min.x + left,
+            screen.max.y - TIMELINE_HEIGHT,
+        ))
+        .movable(false)
+        .constrain(false)
+        .show(&ctx, |area| {
+            egui::Frame::side_top_panel(&ctx.global_style()).show(area, |ui| {
+                let inner = size - egui::vec2(16.0, 12.0);
+                ui.set_min_size(inner);
+                ui.set_max_size(inner);
+                timeline(ui, &replay, open, &mut commands);
+            });
         });
     Ok(())
 }
@@ -99,10 +121,27 @@ fn timeline(
     ui: &mut egui::Ui,
     replay: &Replay,
     open: &OpenRecording,
-    form: &mut ExportForm,
     commands: &mut MessageWriter<ReplayCommand>,
 ) {
     let t = replay.time;
+    ui.horizontal(|ui| {
+        ui.label(RichText::new(format!("Replay: {}", open.file_name())).strong());
+        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+            if ui.button("Close replay").on_hover_text("Esc").clicked() {
+                commands.write(ReplayCommand::Close);
+            }
+            if replay.verifying.is_some() {
+                ui.spinner();
+            }
+            if ui
+                .add_enabled(replay.verifying.is_none(), egui::Button::new("Verify"))
+                .on_hover_text("re-simulate the inputs and compare every event bit for bit")
+                .clicked()
+            {
+                commands.write(ReplayCommand::Verify);
+            }
+        });
+    });
     ui.horizontal(|ui| {
         let buttons = [
             (
@@ -175,25 +214,7 @@ fn timeline(
     if let Some(line) = open.game_line(t) {
         ui.label(RichText::new(line).strong());
     }
-    ui.horizontal(|ui| {
-        if ui
-            .add_enabled(replay.verifying.is_none(), egui::Button::new("Verify"))
-            .on_hover_text("re-simulate the inputs and compare every event bit for bit")
-            .clicked()
-        {
-            commands.write(ReplayCommand::Verify);
-        }
-        if replay.verifying.is_some() {
-            ui.spinner();
-        }
-        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-            if ui.button("Close replay").on_hover_text("Esc").clicked() {
-                commands.write(ReplayCommand::Close);
-            }
-        });
-    });
-    // The verdict on a line of its own, wrapped: beside the buttons it ran under "Close
-    // replay". The line is always there, so the window does not change size under the pointer.
+    // The verdicts on lines of their own, always there, so nothing moves under the pointer.
     if replay.verifying.is_some() {
         ui.label("re-simulating…");
     } else if let Some(verdict) = &replay.verdict {
@@ -217,8 +238,21 @@ fn timeline(
             None => ui.label(RichText::new("verdicts not re-judged yet").weak()),
         };
     }
+}
+
+/// The Export form of the open replay, in the panel's Recordings section: format and scope,
+/// frame rate and size, the file, Export or Cancel, and how the last export went.
+pub fn export_section(
+    ui: &mut egui::Ui,
+    replay: &Replay,
+    form: &mut ExportForm,
+    commands: &mut MessageWriter<ReplayCommand>,
+) {
+    let Some(open) = &replay.open else {
+        return;
+    };
     egui::CollapsingHeader::new("Export")
-        .default_open(false)
+        .default_open(true)
         .show(ui, |ui| export_form(ui, replay, open, form, commands));
 }
 
@@ -235,7 +269,8 @@ fn export_form(
         ui.selectable_value(&mut form.format, ExportFormat::PngSequence, "PNG sequence");
         ui.selectable_value(&mut form.format, ExportFormat::Video, "MP4 (ffmpeg)")
             .on_hover_text("needs ffmpeg on the PATH; any frame rate");
-        ui.separator();
+    });
+    ui.horizontal(|ui| {
         let current = match shot {
             Some(k) => format!("shot {k}"),
             None => "current shot".to_owned(),
@@ -270,10 +305,17 @@ fn export_form(
         ui.label("to");
         ui.add(
             egui::TextEdit::singleline(&mut form.export_path)
-                .hint_text(default.display().to_string())
+                .hint_text("beside the recording")
                 .desired_width(f32::INFINITY),
         );
     });
+    // The default file on a wrapped line of its own: as the field's hint it was cut off in
+    // the panel.
+    if form.export_path.trim().is_empty() {
+        let name = default.file_name().unwrap_or_default().to_string_lossy();
+        ui.add(egui::Label::new(RichText::new(format!("default: {name}")).weak()).wrap())
+            .on_hover_text(default.display().to_string());
+    }
     let running = replay.export.is_some();
     if running {
         if ui

@@ -154,8 +154,10 @@ impl GameInPlay {
     }
 
     /// The lines of the HUD for this game in phase `turn`: the match, whose turn and what
-    /// to do, the ball on, groups and balls left, fouls in a row, the last foul.
-    pub fn hud_lines(&self, turn: Turn) -> Vec<String> {
+    /// to do, the ball on, groups and balls left, fouls in a row, the last foul. `dropped`:
+    /// the balls the shot in play has pocketed so far, counted off the balls left at once
+    /// (the rack's own list changes only with the verdict).
+    pub fn hud_lines(&self, turn: Turn, dropped: &[u8]) -> Vec<String> {
         let play = &self.play;
         let rack = self.rack();
         let next = self.next();
@@ -226,13 +228,18 @@ impl GameInPlay {
                 Some(_) => [Seat::A, Seat::B]
                     .map(|seat| {
                         let group = rack.group(seat).unwrap_or(Group::Solids);
-                        let left = rack.on_table.iter().filter(|&&b| group.contains(b)).count();
+                        let left = rack
+                            .on_table
+                            .iter()
+                            .filter(|&&b| group.contains(b) && !dropped.contains(&b))
+                            .count();
                         format!("{}: {} ({left} left)", self.name(seat), group.name())
                     })
                     .join(", "),
             });
         } else {
-            lines.push(format!("balls left: {}", rack.on_table.len()));
+            let left = rack.on_table.iter().filter(|b| !dropped.contains(b));
+            lines.push(format!("balls left: {}", left.count()));
         }
         match self.call {
             Call::None => {}
