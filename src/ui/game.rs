@@ -362,10 +362,20 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
             ui.horizontal(|ui| {
                 ui.label(format!("Player {}:", k + 1));
                 ui.add(egui::TextEdit::singleline(name).desired_width(140.0));
-                ui.selectable_value(seat, None, "human");
-                for level in Level::ALL {
-                    ui.selectable_value(seat, Some(level), format!("computer {level}"));
-                }
+                // A list, not a row of choices: every level fits, however many there are.
+                let label = |seat: Option<Level>| match seat {
+                    None => "human".to_owned(),
+                    Some(level) => format!("computer, {level}"),
+                };
+                egui::ComboBox::from_id_salt(("seat", k))
+                    .selected_text(label(*seat))
+                    .width(160.0)
+                    .show_ui(ui, |ui| {
+                        ui.selectable_value(seat, None, label(None));
+                        for level in Level::ALL {
+                            ui.selectable_value(seat, Some(level), label(Some(level)));
+                        }
+                    });
             });
         }
         ui.horizontal(|ui| {
