@@ -88,16 +88,27 @@ pub const HUD_BUTTONS: [&str; 5] = [
     "Push out",
 ];
 
+/// Whether a human is to shoot in the match in play (aiming, or with the ball in hand).
+pub fn human_to_shoot(state: &GameParam) -> bool {
+    let turn = state.turn.as_ref().map(|t| *t.get());
+    state.rules.game.as_ref().is_some_and(|game| {
+        game.computer(game.next().shooter).is_none()
+            && matches!(turn, Some(Turn::Aiming | Turn::BallInHand))
+    })
+}
+
+/// Whether the table is in free play (no match in play).
+pub fn free_play(state: &GameParam) -> bool {
+    state.rules.game.is_none()
+}
+
 /// The HUD's buttons, one row, each always in its place: disabled when it does not apply
 /// (free play, the computer's turn, a replay), never moved or hidden.
 pub fn hud_buttons(ui: &mut egui::Ui, state: &mut GameParam) {
     let turn = state.turn.as_ref().map(|t| *t.get());
     let game = state.rules.game.as_ref();
     let next = game.map(|g| g.next());
-    let human_to_shoot = game.zip(next).is_some_and(|(game, next)| {
-        game.computer(next.shooter).is_none()
-            && matches!(turn, Some(Turn::Aiming | Turn::BallInHand))
-    });
+    let human_to_shoot = human_to_shoot(state);
     let size = egui::vec2(HUD_BUTTON_WIDTH, 0.0);
     ui.horizontal(|ui| {
         let new_game = ui.add_enabled(

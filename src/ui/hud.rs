@@ -16,7 +16,7 @@ use crate::{
     settings::{ClampReport, PhysicsSettings},
     sim::SimStatus,
     table::balls::{Ball, Pocketed},
-    view::{ViewInset, graphics::FrameRate},
+    view::{ViewInset, graphics::FrameRate, pipelines::PipelineProgress},
 };
 
 /// What the HUD shows.
@@ -31,6 +31,7 @@ pub struct HudParam<'w, 's> {
     rate: Res<'w, FrameRate>,
     aim: Res<'w, AimPrediction>,
     report: ResMut<'w, ClampReport>,
+    pipelines: Option<Res<'w, PipelineProgress>>,
 }
 
 /// The HUD strip along the top of the 3D view.
@@ -55,12 +56,20 @@ pub fn hud(
                 let inner = size - egui::vec2(16.0, 12.0);
                 ui.set_min_size(inner);
                 ui.set_max_size(inner);
-                let (match_lines, table_lines) = if *state.mode.get() == GameMode::Replay {
+                let replay = *state.mode.get() == GameMode::Replay;
+                let (mut match_lines, table_lines) = if replay {
                     let replay = "replaying a recording: the live game below waits";
                     (vec![(replay.to_owned(), Some(INFO))], Vec::new())
                 } else {
                     super::game::hud_lines(&game)
                 };
+                if let Some(line) = loading_line(state.pipelines.as_deref()) {
+                    match_lines.insert(0, (line, Some(WARNING)));
+                }
+                let may_shoot = super::game::human_to_shoot(&game) || super::game::free_play(&game);
+                if may_shoot && !replay {
+                    match_lines.push((HOW_TO_SHOOT.to_owned(), None));
+                }
                 // The buttons first, always in the same places.
                 super::game::hud_buttons(ui, &mut game);
                 let height = ui.available_height();
@@ -110,6 +119,23 @@ fn column(ui: &mut egui::Ui, id: &str, width: f32, height: f32, lines: &[HudLine
                 }
             });
     });
+}
+
+/// How to aim and shoot, in the HUD whenever a human may: a newcomer should not have to find
+/// the Controls section at the bottom of the panel (issue 28, item 8).
+const HOW_TO_SHOOT: &str =
+    "aim: drag on the table or Left/Right; power: Up/Down or Shift+wheel; shoot: Space";
+
+/// While the renderer still compiles its shaders (seconds on a software renderer) the table
+/// is drawn unlit: say so, with the progress.
+fn loading_line(progress: Option<&PipelineProgress>) -> Option<String> {
+    let (total, waiting) = progress?.counts();
+    (total == 0 || waiting > 0).then(|| {
+        format!(
+            "preparing the renderer: {} of {total} shaders ready (the table looks unlit until then)",
+            total - waiting
+        )
+    })
 }
 
 /// The table: shots, pocketed balls, what it is doing.
