@@ -9,7 +9,7 @@
 use bevy::{diagnostic::FrameCount, prelude::*};
 use bevy_egui::{EguiContexts, egui};
 
-use super::layout::{HUD_HEIGHT, HudLine, INFO, WARNING};
+use super::layout::{Edge, HUD_HEIGHT, HudLine, INFO, WARNING, strip};
 use crate::{
     mode::GameMode,
     play::aim::AimPrediction,
@@ -43,58 +43,46 @@ pub fn hud(
 ) -> Result {
     let ctx = contexts.ctx_mut()?.clone();
     let status = state.status.clone();
-    let screen = ctx.viewport_rect();
-    let left = inset.left;
-    let size = egui::vec2((screen.width() - left).max(1.0), HUD_HEIGHT);
-    egui::Area::new(egui::Id::new("hud"))
-        .order(egui::Order::Middle)
-        .fixed_pos(egui::pos2(screen.min.x + left, screen.min.y))
-        .movable(false)
-        .constrain(false)
-        .show(&ctx, |area| {
-            egui::Frame::side_top_panel(&ctx.global_style()).show(area, |ui| {
-                let inner = size - egui::vec2(16.0, 12.0);
-                ui.set_min_size(inner);
-                ui.set_max_size(inner);
-                let replay = *state.mode.get() == GameMode::Replay;
-                let (mut match_lines, table_lines) = if replay {
-                    let replay = "replaying a recording: the live game below waits";
-                    (vec![(replay.to_owned(), Some(INFO))], Vec::new())
-                } else {
-                    super::game::hud_lines(&game)
-                };
-                if let Some(line) = loading_line(state.pipelines.as_deref()) {
-                    match_lines.insert(0, (line, Some(WARNING)));
+    let place = (inset.left, Edge::Top, HUD_HEIGHT);
+    strip(&ctx, "hud", place, |ui| {
+        let replay = *state.mode.get() == GameMode::Replay;
+        let (mut match_lines, table_lines) = if replay {
+            let replay = "replaying a recording: the live game below waits";
+            (vec![(replay.to_owned(), Some(INFO))], Vec::new())
+        } else {
+            super::game::hud_lines(&game)
+        };
+        if let Some(line) = loading_line(state.pipelines.as_deref()) {
+            match_lines.insert(0, (line, Some(WARNING)));
+        }
+        let may_shoot = super::game::human_to_shoot(&game) || super::game::free_play(&game);
+        if may_shoot && !replay {
+            match_lines.push((HOW_TO_SHOOT.to_owned(), None));
+        }
+        // The buttons first, always in the same places.
+        super::game::hud_buttons(ui, &mut game);
+        let height = ui.available_height();
+        let width = ui.available_width();
+        let widths = [0.36 * width, 0.30 * width];
+        ui.horizontal_top(|ui| {
+            column(ui, "hud-match", widths[0], height, &match_lines);
+            ui.separator();
+            let mut table = table_lines;
+            table.extend(table_state_lines(&state, &status));
+            column(ui, "hud-table", widths[1], height, &table);
+            ui.separator();
+            let solver = solver_lines(&state, &status);
+            // The rest of the strip, whatever the separators took.
+            let rest = ui.available_width();
+            ui.vertical(|ui| {
+                ui.set_width(rest.max(40.0));
+                column(ui, "hud-solver", rest, height - 20.0, &solver);
+                if !state.report.notes.is_empty() && ui.small_button("dismiss").clicked() {
+                    state.report.notes.clear();
                 }
-                let may_shoot = super::game::human_to_shoot(&game) || super::game::free_play(&game);
-                if may_shoot && !replay {
-                    match_lines.push((HOW_TO_SHOOT.to_owned(), None));
-                }
-                // The buttons first, always in the same places.
-                super::game::hud_buttons(ui, &mut game);
-                let height = ui.available_height();
-                let width = ui.available_width();
-                let widths = [0.36 * width, 0.30 * width];
-                ui.horizontal_top(|ui| {
-                    column(ui, "hud-match", widths[0], height, &match_lines);
-                    ui.separator();
-                    let mut table = table_lines;
-                    table.extend(table_state_lines(&state, &status));
-                    column(ui, "hud-table", widths[1], height, &table);
-                    ui.separator();
-                    let solver = solver_lines(&state, &status);
-                    // The rest of the strip, whatever the separators took.
-                    let rest = ui.available_width();
-                    ui.vertical(|ui| {
-                        ui.set_width(rest.max(40.0));
-                        column(ui, "hud-solver", rest, height - 20.0, &solver);
-                        if !state.report.notes.is_empty() && ui.small_button("dismiss").clicked() {
-                            state.report.notes.clear();
-                        }
-                    });
-                });
             });
         });
+    });
     if inset.top != HUD_HEIGHT {
         inset.top = HUD_HEIGHT;
     }

@@ -1,6 +1,45 @@
 //! Sizes and colours shared by the game's panels and windows, so they line up and agree.
 
-use bevy_egui::egui::Color32;
+use bevy_egui::egui::{self, Color32};
+
+/// Where a strip of the window goes, right of the panel: along the top or the bottom edge.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Edge {
+    /// The HUD.
+    Top,
+    /// The replay timeline.
+    Bottom,
+}
+
+/// A strip `height` high along `edge` of the window, right of the panel's `left`, framed like
+/// a panel: it neither moves nor grows with what it holds (the table's viewport leaves it
+/// free, [`crate::view::ViewInset`]).
+pub fn strip(
+    ctx: &egui::Context,
+    id: &str,
+    (left, edge, height): (f32, Edge, f32),
+    add: impl FnOnce(&mut egui::Ui),
+) {
+    let screen = ctx.viewport_rect();
+    let size = egui::vec2((screen.width() - left).max(1.0), height);
+    let top = match edge {
+        Edge::Top => screen.min.y,
+        Edge::Bottom => screen.max.y - height,
+    };
+    egui::Area::new(egui::Id::new(id))
+        .order(egui::Order::Middle)
+        .fixed_pos(egui::pos2(screen.min.x + left, top))
+        .movable(false)
+        .constrain(false)
+        .show(ctx, |area| {
+            egui::Frame::side_top_panel(&ctx.global_style()).show(area, |ui| {
+                let inner = size - egui::vec2(16.0, 12.0);
+                ui.set_min_size(inner);
+                ui.set_max_size(inner);
+                add(ui);
+            });
+        });
+}
 
 /// Width of the settings panel on the left, in logical pixels. The 3D view takes the rest.
 pub const PANEL_WIDTH: f32 = 340.0;

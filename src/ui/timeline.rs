@@ -12,7 +12,7 @@ use bevy_egui::{
     egui::{self, RichText},
 };
 
-use super::layout::{SUCCESS, TIMELINE_HEIGHT, WARNING};
+use super::layout::{Edge, SUCCESS, TIMELINE_HEIGHT, WARNING, strip};
 use crate::{
     replay::{
         ExportFormat, ExportRequest, ExportScope, MAX_SPEED, MIN_SPEED, OpenRecording, Replay,
@@ -95,25 +95,10 @@ pub fn timeline_strip(
         return Ok(());
     };
     let ctx = contexts.ctx_mut()?.clone();
-    let screen = ctx.viewport_rect();
-    let left = inset.left;
-    let size = egui::vec2((screen.width() - left).max(1.0), TIMELINE_HEIGHT);
-    egui::Area::new(egui::Id::new("replay timeline"))
-        .order(egui::Order::Middle)
-        .fixed_pos(egui::pos2(
-            screen.min.x + left,
-            screen.max.y - TIMELINE_HEIGHT,
-        ))
-        .movable(false)
-        .constrain(false)
-        .show(&ctx, |area| {
-            egui::Frame::side_top_panel(&ctx.global_style()).show(area, |ui| {
-                let inner = size - egui::vec2(16.0, 12.0);
-                ui.set_min_size(inner);
-                ui.set_max_size(inner);
-                timeline(ui, &replay, open, &mut commands);
-            });
-        });
+    let place = (inset.left, Edge::Bottom, TIMELINE_HEIGHT);
+    strip(&ctx, "replay timeline", place, |ui| {
+        timeline(ui, &replay, open, &mut commands);
+    });
     Ok(())
 }
 
