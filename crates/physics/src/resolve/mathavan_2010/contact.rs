@@ -85,20 +85,17 @@ impl Setup {
     ) -> ([f64; 4], f64) {
         let (s, c) = (self.s, self.c);
         let (si, sc) = self.slips(y);
-        let kept = |g: Grip| match g {
-            Grip::Slide(d) => d,
+        // Both contacts' inverse lengths side by side (the two square roots and divisions
+        // are most of an evaluation's time); a length within `zero` is not used.
+        let l2 = [si[0] * si[0] + si[1] * si[1], sc[0] * sc[0] + sc[1] * sc[1]];
+        let inv = [1.0 / l2[0].sqrt(), 1.0 / l2[1].sqrt()];
+        let z2 = self.zero * self.zero;
+        let along = |g: Grip, sl: [f64; 2], k: usize| match g {
+            Grip::Slide(d) if fixed[k] || l2[k] <= z2 => d,
+            Grip::Slide(_) => [sl[0] * inv[k], sl[1] * inv[k]],
             Grip::Stick => [0.0, 0.0],
         };
-        let ui = if fixed[0] {
-            kept(gi)
-        } else {
-            self.direction(si, gi)
-        };
-        let uc = if fixed[1] {
-            kept(gc)
-        } else {
-            self.direction(sc, gc)
-        };
+        let (ui, uc) = (along(gi, si, 0), along(gc, sc, 1));
         let normal = |b: f64| (s - c * b).max(0.0);
         // The slip rates are d(slip)/dP = g + K f with g = (0, s c | 0, -c) and
         // K = [[7/2, 1 - 5s/2], [1 - 5s/2, 7/2]] on (a, p), [[s^2 + 5/2, 5/2 - s], [5/2 - s, 7/2]]
@@ -227,7 +224,12 @@ impl Setup {
         }
         let mut u = boundary;
         for _ in 0..30 {
-            u = unit(pick(u), u);
+            let next = unit(pick(u), u);
+            let moved = (next[0] - u[0]).abs() + (next[1] - u[1]).abs();
+            u = next;
+            if moved <= 1e-13 {
+                break; // converged (a fixed point reached, the usual case in a few steps)
+            }
         }
         let r = pick(u);
         if r[0] * u[0] + r[1] * u[1] > 0.0 {

@@ -42,79 +42,64 @@ const D5: f64 = 701980252875.0 / 199316789632.0;
 const D6: f64 = -1453857185.0 / 822651844.0;
 const D7: f64 = 69997945.0 / 29380423.0;
 
-fn add(y: &State, terms: &[(f64, &State)]) -> State {
-    std::array::from_fn(|i| y[i] + terms.iter().map(|(c, k)| c * k[i]).sum::<f64>())
-}
-
 /// One step taken: the state at its end, the rate there (the next step's first stage), the
-/// local error estimate, and the continuous extension over the step.
+/// local error estimate, and what the continuous extension over the step needs.
 pub(super) struct Step {
     pub(super) y: State,
     pub(super) k7: State,
     pub(super) err: State,
-    dense: [State; 5],
+    y0: State,
+    h: f64,
+    k: [State; 5],
 }
 
 impl Step {
-    /// The state at fraction `theta` of the step (4th order; exact at 0 and 1).
+    /// The state at fraction `theta` of the step (4th order; exact at 0 and 1), from the
+    /// stages kept (computed here: most steps never need it).
     pub(super) fn at(&self, theta: f64) -> State {
-        let [r1, r2, r3, r4, r5] = &self.dense;
+        let (y, y1, h, k7) = (&self.y0, &self.y, self.h, &self.k7);
+        let [k1, k3, k4, k5, k6] = &self.k;
         let t1 = 1.0 - theta;
         std::array::from_fn(|i| {
-            r1[i] + theta * (r2[i] + t1 * (r3[i] + theta * (r4[i] + t1 * r5[i])))
+            let r2 = y1[i] - y[i];
+            let r3 = h * k1[i] - r2;
+            let r4 = r2 - h * k7[i] - r3;
+            let r5 =
+                h * (D1 * k1[i] + D3 * k3[i] + D4 * k4[i] + D5 * k5[i] + D6 * k6[i] + D7 * k7[i]);
+            y[i] + theta * (r2 + t1 * (r3 + theta * (r4 + t1 * r5)))
         })
     }
 }
 
 /// One step of `h` from `y`, whose rate `k1` the caller has.
 pub(super) fn step(y: &State, k1: &State, h: f64, rate: impl Fn(&State) -> State) -> Step {
-    let k2 = rate(&add(y, &[(h * A21, k1)]));
-    let k3 = rate(&add(y, &[(h * A31, k1), (h * A32, &k2)]));
-    let k4 = rate(&add(y, &[(h * A41, k1), (h * A42, &k2), (h * A43, &k3)]));
-    let k5 = rate(&add(
-        y,
-        &[
-            (h * A51, k1),
-            (h * A52, &k2),
-            (h * A53, &k3),
-            (h * A54, &k4),
-        ],
-    ));
-    let k6 = rate(&add(
-        y,
-        &[
-            (h * A61, k1),
-            (h * A62, &k2),
-            (h * A63, &k3),
-            (h * A64, &k4),
-            (h * A65, &k5),
-        ],
-    ));
-    let y1 = add(
-        y,
-        &[
-            (h * B1, k1),
-            (h * B3, &k3),
-            (h * B4, &k4),
-            (h * B5, &k5),
-            (h * B6, &k6),
-        ],
-    );
+    let k2 = rate(&std::array::from_fn(|i| y[i] + h * A21 * k1[i]));
+    let k3 = rate(&std::array::from_fn(|i| {
+        y[i] + h * (A31 * k1[i] + A32 * k2[i])
+    }));
+    let k4 = rate(&std::array::from_fn(|i| {
+        y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i])
+    }));
+    let k5 = rate(&std::array::from_fn(|i| {
+        y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i])
+    }));
+    let k6 = rate(&std::array::from_fn(|i| {
+        y[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i])
+    }));
+    let y1: State = std::array::from_fn(|i| {
+        y[i] + h * (B1 * k1[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] + B6 * k6[i])
+    });
     let k7 = rate(&y1);
     let err = std::array::from_fn(|i| {
         h * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i])
-    });
-    let r2: State = std::array::from_fn(|i| y1[i] - y[i]);
-    let r3: State = std::array::from_fn(|i| h * k1[i] - r2[i]);
-    let r4: State = std::array::from_fn(|i| r2[i] - h * k7[i] - r3[i]);
-    let r5: State = std::array::from_fn(|i| {
-        h * (D1 * k1[i] + D3 * k3[i] + D4 * k4[i] + D5 * k5[i] + D6 * k6[i] + D7 * k7[i])
     });
     Step {
         y: y1,
         k7,
         err,
-        dense: [*y, r2, r3, r4, r5],
+        y0: *y,
+        h,
+        k: [*k1, k3, k4, k5, k6],
     }
 }
 
