@@ -4,20 +4,33 @@
 //! rounds, each variant's fastest round reported.
 //!
 //! ```sh
-//! cargo run --release -p billiards-physics --example realism_cost -- [BREAKS]
+//! cargo run --release -p billiards-physics --example realism_cost -- [BREAKS] [--only NAME]
 //! ```
+//!
+//! `--only han|reflection|mathavan|alciatore` runs that variant alone, for an instruction
+//! count that a loaded machine cannot disturb (`valgrind --tool=callgrind`: run 5 and 55
+//! breaks, the difference over 50 is one break's count).
 
 use billiards_physics::*;
 use std::time::Instant;
 
 fn main() {
-    let n: usize = match std::env::args().nth(1).map(|s| s.parse()) {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let only = args
+        .iter()
+        .position(|a| a == "--only")
+        .map(|i| args.get(i + 1).cloned().unwrap_or_default());
+    let usage = || -> ! {
+        eprintln!(
+            "usage: realism_cost [BREAKS] [--only han|reflection|mathavan|alciatore], \
+             BREAKS a positive integer"
+        );
+        std::process::exit(2);
+    };
+    let n: usize = match args.first().filter(|a| *a != "--only").map(|s| s.parse()) {
         None => 300,
         Some(Ok(n)) if n > 0 => n,
-        Some(_) => {
-            eprintln!("usage: realism_cost [BREAKS], BREAKS a positive integer");
-            std::process::exit(2);
-        }
+        Some(_) => usage(),
     };
     let base = SpinModel::default();
     let variants = [
@@ -44,6 +57,14 @@ fn main() {
             },
         ),
     ];
+    let keys = ["han", "reflection", "mathavan", "alciatore"];
+    let chosen: Vec<usize> = match &only {
+        None => (0..variants.len()).collect(),
+        Some(name) => match keys.iter().position(|k| k == name) {
+            Some(k) => vec![k],
+            None => usage(),
+        },
+    };
     let table = Table::wpa_8ft();
     let sims: Vec<Simulation> = variants
         .iter()
@@ -68,6 +89,9 @@ fn main() {
     let mut counts = vec![(0, 0); sims.len()];
     for _ in 0..ROUNDS {
         for (k, sim) in sims.iter().enumerate() {
+            if !chosen.contains(&k) {
+                continue;
+            }
             let start = Instant::now();
             let (mut events, mut cushions) = (0, 0);
             for _ in 0..per_round {
@@ -87,10 +111,13 @@ fn main() {
         }
     }
     for (k, (name, _)) in variants.iter().enumerate() {
+        if !chosen.contains(&k) {
+            continue;
+        }
         let (us, (events, cushions)) = (best[k], counts[k]);
         println!(
             "{name:<38} {us:>8.1} us per break ({:.2}x), {:>5.0} ns per event, {events} events and {cushions} cushion contacts a break",
-            us / best[0],
+            us / if best[0].is_finite() { best[0] } else { us },
             us * 1e3 / events as f64,
         );
     }

@@ -17,15 +17,20 @@ pub(super) struct Setup {
     pub(super) r: f64,
     pub(super) mu_w: f64,
     pub(super) mu_s: f64,
-    /// Slips below this (m/s) count as zero.
+    /// Slips below this (m/s) count as zero in the events.
     pub(super) tol: f64,
+    /// Slips below this (m/s) have no direction of their own: a sliding contact's friction
+    /// keeps its grip's (the integration's tolerance, at least `tol`).
+    pub(super) zero: f64,
 }
 
 /// State: `vx, vy, wx, wy, wz, W` (W: the normal force's work per unit mass).
 pub(super) type State = [f64; 6];
 
+/// The length of `v` (no guard against overflow: slips are far from it, and this is
+/// several times faster than `f64::hypot`).
 pub(super) fn hypot(v: [f64; 2]) -> f64 {
-    v[0].hypot(v[1])
+    (v[0] * v[0] + v[1] * v[1]).sqrt()
 }
 
 pub(super) fn unit(v: [f64; 2], fallback: [f64; 2]) -> [f64; 2] {
@@ -47,10 +52,19 @@ impl Setup {
         )
     }
 
+    /// The sliding direction of `slip` under `grip`: its own, or the grip's while the slip is
+    /// within `zero` (one square root: this runs in every rate evaluation).
     pub(super) fn direction(&self, slip: [f64; 2], grip: Grip) -> [f64; 2] {
         match grip {
-            Grip::Slide(d) if hypot(slip) <= self.tol => d,
-            Grip::Slide(d) => unit(slip, d),
+            Grip::Slide(d) => {
+                let l2 = slip[0] * slip[0] + slip[1] * slip[1];
+                if l2 <= self.zero * self.zero {
+                    d
+                } else {
+                    let inv = 1.0 / l2.sqrt();
+                    [slip[0] * inv, slip[1] * inv]
+                }
+            }
             Grip::Stick => [0.0, 0.0],
         }
     }
@@ -71,20 +85,17 @@ impl Setup {
     ) -> ([f64; 4], f64) {
         let (s, c) = (self.s, self.c);
         let (si, sc) = self.slips(y);
-        let kept = |g: Grip| match g {
-            Grip::Slide(d) => d,
+        // Both contacts' inverse lengths side by side (the two square roots and divisions
+        // are most of an evaluation's time); a length within `zero` is not used.
+        let l2 = [si[0] * si[0] + si[1] * si[1], sc[0] * sc[0] + sc[1] * sc[1]];
+        let inv = [1.0 / l2[0].sqrt(), 1.0 / l2[1].sqrt()];
+        let z2 = self.zero * self.zero;
+        let along = |g: Grip, sl: [f64; 2], k: usize| match g {
+            Grip::Slide(d) if fixed[k] || l2[k] <= z2 => d,
+            Grip::Slide(_) => [sl[0] * inv[k], sl[1] * inv[k]],
             Grip::Stick => [0.0, 0.0],
         };
-        let ui = if fixed[0] {
-            kept(gi)
-        } else {
-            self.direction(si, gi)
-        };
-        let uc = if fixed[1] {
-            kept(gc)
-        } else {
-            self.direction(sc, gc)
-        };
+        let (ui, uc) = (along(gi, si, 0), along(gc, sc, 1));
         let normal = |b: f64| (s - c * b).max(0.0);
         // The slip rates are d(slip)/dP = g + K f with g = (0, s c | 0, -c) and
         // K = [[7/2, 1 - 5s/2], [1 - 5s/2, 7/2]] on (a, p), [[s^2 + 5/2, 5/2 - s], [5/2 - s, 7/2]]
@@ -174,23 +185,12 @@ impl Setup {
         )
     }
 
-    /// One step from `y`, whose rate `k1` the caller has; contacts marked `fixed` slide along
-    /// their kept direction throughout (a slip's own direction is lost near zero).
-    pub(super) fn rk4(
-        &self,
-        y: &State,
-        k1: &State,
-        h: f64,
-        (gi, gc): (Grip, Grip),
-        fixed: [bool; 2],
-    ) -> State {
-        let add =
-            |y: &State, k: &State, f: f64| -> State { std::array::from_fn(|i| y[i] + f * k[i]) };
-        let rate = |t: &State| self.rate_fixed(t, gi, gc, fixed);
-        let k2 = rate(&add(y, k1, 0.5 * h));
-        let k3 = rate(&add(y, &k2, 0.5 * h));
-        let k4 = rate(&add(y, &k3, h));
-        std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
+    /// The table's normal `N = sin theta - b cos theta` of the friction behind rate `d`
+    /// (from `dvy/dP = -cos - b sin + q` and `dwx/dP = 5/(2R) (b + q)`).
+    pub(super) fn normal_of(&self, d: &State) -> f64 {
+        let (s, c) = (self.s, self.c);
+        let b = (d[2] * self.r / 2.5 - d[1] - c) / (1.0 + s);
+        (s - c * b).max(0.0)
     }
 
     /// The grip of the nose (`nose`) or cloth contact whose slip is zero: stuck if the cone
@@ -224,7 +224,12 @@ impl Setup {
         }
         let mut u = boundary;
         for _ in 0..30 {
-            u = unit(pick(u), u);
+            let next = unit(pick(u), u);
+            let moved = (next[0] - u[0]).abs() + (next[1] - u[1]).abs();
+            u = next;
+            if moved <= 1e-13 {
+                break; // converged (a fixed point reached, the usual case in a few steps)
+            }
         }
         let r = pick(u);
         if r[0] * u[0] + r[1] * u[1] > 0.0 {

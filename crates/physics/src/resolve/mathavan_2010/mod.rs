@@ -22,31 +22,33 @@
 //! Compression ends at `vy = 0` with work `Wc = int cos vy dP`; restitution ends when the work
 //! has fallen to `(1 - e^2) Wc` (eq. 16).
 //!
-//! Integrator: classical 4th-order Runge–Kutta in `P`. A step is at most 8/[`STEPS`] of the
-//! expected impulse and turns no sliding direction by more than 2/[`STEPS`] rad (with fixed
-//! directions the rates are constant, so only turning costs accuracy), unless that would make
-//! it shorter than 1/100 of a nominal step; it is cut short by a
-//! Newton estimate so that it ends on every event (a slip reaching zero, the end of
-//! compression, the end of restitution), stick ends are found by regula falsi, and near a
-//! zero slip, where friction turns the slip's direction at 7/2 mu / |slip|, steps stay below
-//! half of that. Against 100 times finer steps (`steps` x 100) the result differs by at most
-//! 1.8e-6 of the incoming speed over 38 test shots (a test pins 1e-5); it agrees with the
-//! paper's own explicit Euler scheme at 200,000 steps within 2e-4.
+//! Integrator: the embedded Runge–Kutta pair 5(4) of Dormand & Prince in `P` (`dopri.rs`),
+//! each step's local error held to [`Accuracy::tol`] of the incoming speed (the error control
+//! of Hairer, Nørsett & Wanner, section II.4). Between events the rates change only as the
+//! sliding directions turn, so where they do not turn a step spans the whole phase. Events
+//! (compression ends, restitution ends, a stuck contact lets go) are found on the pair's
+//! dense output. Near a zero slip the direction turns at 7/2 mu / |slip| per unit impulse:
+//! steps stay within the explicit method's stability there (`limits.rs`), a slip heading for
+//! zero is met by one step along its direction once what that neglects is within the
+//! tolerance, and a slip within the tolerance of zero keeps its grip's direction. Against a
+//! reference with 100 times smaller steps the result differs by at most 4.4e-6 of the
+//! incoming speed over 38 test shots (a test pins 1e-5) and 6.9e-6 over the 18 cushion
+//! impacts of a 9-ball break (`examples/mathavan_probe.rs`); it agrees with the paper's own
+//! explicit Euler scheme at 200,000 steps within 2e-4.
 //! pooltool's `mathavan_2010` (explicit Euler, fixed `delta_p`, the same equations) is the
 //! comparison implementation.
 
 mod contact;
+mod dopri;
+mod limits;
 #[cfg(test)]
 mod tests;
 
 use crate::math::{Vec2, Vec3};
 use contact::{Event, Grip, Setup, State, hypot, unit};
 
-/// Nominal Runge–Kutta steps per impact (more are taken at events and near zero slip).
-pub const STEPS: usize = 64;
-
 /// Most steps one impact may take before the result is given up for Han's impulse.
-const MAX_STEPS: usize = 200_000;
+const MAX_STEPS: usize = 100_000;
 
 /// The constants of the model.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -60,6 +62,38 @@ pub struct Mathavan2010 {
     /// Height of the nose above the cloth, metres (the paper: 7R/5).
     pub height: f64,
 }
+
+/// How closely an impact is integrated.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Accuracy {
+    /// Largest local error of a step, relative to the incoming speed `|v| + R |w|` (on the
+    /// velocities and the spins' surface speeds `R w`).
+    pub tol: f64,
+    /// Longest step, as a fraction of the expected impulse `(1 + e) v_y / cos theta`.
+    pub max_step: f64,
+}
+
+impl Accuracy {
+    /// The game's: 1e-6 a step, steps as long as the error allows.
+    pub const DEFAULT: Self = Self {
+        tol: 1e-6,
+        max_step: 1.0,
+    };
+}
+
+/// What an integration cost.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Steps kept.
+    pub steps: usize,
+    /// Steps tried and thrown away (too large an error, or a slip turned past zero).
+    pub rejected: usize,
+    /// Evaluations of the rates.
+    pub evaluations: usize,
+    /// The longest step kept, as a fraction of the expected impulse.
+    pub longest: f64,
+}
+
 /// One impact being integrated: the state in the cushion's frame (X along it, Y into it),
 /// the grips of the two contacts and the phase.
 struct Impact {
@@ -72,27 +106,37 @@ struct Impact {
     /// Tolerance of the work, set relative to the compression's.
     tol_w: f64,
     e: f64,
-    h_nominal: f64,
-    /// Largest turn of a sliding direction in one step, radians (2 / steps).
-    turn: f64,
+    /// The expected impulse (the span of a frictionless impact).
     span: f64,
+    /// Absolute tolerance on velocities (m/s) and the longest step.
+    atol: f64,
+    max_h: f64,
+    /// The incoming speed `|v| + R |w|`.
+    scale: f64,
+    /// The step the error control proposes next (infinite before the first).
+    h: f64,
+    /// The rate at `y` for the current grips, if known (the last step's last stage).
+    d: Option<State>,
+    stats: Stats,
 }
 
 /// The step planned from the current state.
 struct Plan {
     h: f64,
-    /// The event the step is meant to end on.
+    /// The zero slip the step is meant to end on (its contact held to its direction).
     predicted: Option<Event>,
     /// The contacts' sliding directions at the step's start.
     u0: [[f64; 2]; 2],
-    /// The events watched in this step.
-    events: [Event; 3],
-    /// The rate at the step's start (Runge–Kutta's first stage, computed once a step).
+    /// The events located inside a step (a slip's zero is met by the plan instead).
+    events: [Option<Event>; 3],
+    /// The rate at the step's start (the first stage).
     d: State,
+    /// The step planned before a zero slip shortened it, should that step fail.
+    h_free: f64,
 }
 
 impl Impact {
-    fn new(y: State, m: &Mathavan2010, radius: f64, scale: f64, steps: usize) -> Self {
+    fn new(y: State, m: &Mathavan2010, radius: f64, scale: f64, acc: Accuracy) -> Self {
         let s = (m.height / radius - 1.0).clamp(-1.0, 1.0);
         let c = (1.0 - s * s).sqrt();
         let setup = Setup {
@@ -102,6 +146,7 @@ impl Impact {
             mu_w: m.mu_cushion,
             mu_s: m.mu_table,
             tol: 1e-12 * scale,
+            zero: (acc.tol * scale).max(1e-12 * scale),
         };
         let span = (1.0 + m.e) * y[1] / c.max(1e-3);
         // Grips at the start: a contact without slip sticks or picks its direction.
@@ -116,6 +161,7 @@ impl Impact {
                 gc = setup.grip_at_zero(&y, false, gi);
             }
         }
+        let max_h = span * acc.max_step.clamp(1e-9, 1.0);
         Self {
             setup,
             y,
@@ -124,9 +170,13 @@ impl Impact {
             target: None,
             tol_w: 0.0,
             e: m.e,
-            h_nominal: span / steps.max(1) as f64,
-            turn: 2.0 / steps.max(1) as f64,
             span,
+            atol: acc.tol.max(1e-15) * scale,
+            max_h,
+            scale: scale.max(f64::MIN_POSITIVE),
+            h: f64::INFINITY,
+            d: None,
+            stats: Stats::default(),
         }
     }
 
@@ -137,14 +187,14 @@ impl Impact {
     }
 
     /// Runs to the end of restitution; `None` past the step cap.
-    fn run(mut self) -> Option<State> {
+    fn run(mut self) -> Option<(State, Stats)> {
         for _ in 0..MAX_STEPS {
             // Phase ends reached on the way to another event.
             if self.target.is_none() && self.y[1] <= self.setup.tol {
                 self.compressed();
             }
             if self.target.is_some_and(|wf| self.y[5] - wf <= self.tol_w) {
-                return Some(self.y);
+                return Some((self.y, self.stats));
             }
             let plan = self.plan();
             let (hit, next) = self.take(&plan);
@@ -184,14 +234,20 @@ impl Impact {
         }
     }
 
-    /// The grips made consistent and the next step planned: nominal, shortened by Newton's
-    /// estimate of each approaching event and by the stiffness near a zero slip.
+    /// The grips made consistent and the next step planned: the error control's proposal,
+    /// shortened before a slip's zero and by the stiffness near one, or ending on the zero.
     fn plan(&mut self) -> Plan {
         let setup = self.setup;
         let y = self.y;
         if self.gi == Grip::Stick || self.gc == Grip::Stick {
-            (self.gi, self.gc) = setup.settle(&y, self.gi, self.gc);
+            let settled = setup.settle(&y, self.gi, self.gc);
+            if settled != (self.gi, self.gc) {
+                (self.gi, self.gc) = settled;
+                self.d = None;
+            }
         }
+        self.snap_zero_slips();
+        let y = self.y;
         let (si, sc) = setup.slips(&y);
         // Sliding directions at the step's start (a slip's own direction, or the one kept).
         let u0 = [setup.direction(si, self.gi), setup.direction(sc, self.gc)];
@@ -201,101 +257,39 @@ impl Impact {
         if let Grip::Slide(_) = self.gc {
             self.gc = Grip::Slide(u0[1]);
         }
-        let (gi, gc, h_nominal) = (self.gi, self.gc, self.h_nominal);
-        let contact = |nose: bool, grip: Grip| match grip {
-            Grip::Slide(_) => Event::SlipZero(nose),
-            Grip::Stick => Event::LetsGo(nose),
-        };
+        let (gi, gc) = (self.gi, self.gc);
         let phase = if self.target.is_none() {
             Event::Compressed
         } else {
             Event::Restituted
         };
-        let events = [phase, contact(true, gi), contact(false, gc)];
-        // The rate here, with the grips' directions: also the first stage of every step tried
-        // from here (a contact held to its kept direction has that direction here).
-        let (d, nn) = setup.rate_and_normal(&y, gi, gc, [false; 2]);
+        let lets_go = |nose: bool, grip: Grip| (grip == Grip::Stick).then_some(Event::LetsGo(nose));
+        let events = [Some(phase), lets_go(true, gi), lets_go(false, gc)];
+        // The rate here, with the grips' directions (a contact held to its kept direction
+        // has that direction here): the first stage of every step tried from here.
+        let d = match self.d {
+            Some(d) => d,
+            None => {
+                self.stats.evaluations += 1;
+                setup.rate(&y, gi, gc)
+            }
+        };
         let (ri, rc) = setup.slip_rates_of(&d);
-        // Near zero slip the sliding direction turns fast: across the slip, friction relaxes
-        // it at about 7/2 mu / |slip| per unit impulse, so a step stays below half of that
-        // (explicit Runge–Kutta is stable below 2.8), and a slip growing from zero starts
-        // with a step of 1e-6 of the nominal one. Steps never fall below 1e-6 of a nominal
-        // one, where a slip's turning costs nothing measurable.
-        let mut stiff = [f64::INFINITY; 2];
-        for (k, (sl, grip, mu)) in [(si, gi, setup.mu_w), (sc, gc, setup.mu_s * nn)]
-            .into_iter()
-            .enumerate()
-        {
-            if let Grip::Slide(_) = grip {
-                stiff[k] = if hypot(sl) > setup.tol {
-                    (0.5 * hypot(sl) / (3.5 * mu).max(f64::MIN_POSITIVE)).max(1e-6 * h_nominal)
-                } else {
-                    1e-6 * h_nominal
-                };
-            }
-        }
-        // Newton's estimate of the step to each approaching event. A slip is approached in
-        // steps of 0.9 of it while it may still turn (a slip that cannot stick curves past
-        // zero), and met in one last step along its start direction (exempt from its own
-        // stiffness limit) once that is 1e-3 of a nominal step away.
-        let (mut h_events, mut predicted, mut finals) = (f64::INFINITY, None, [None; 2]);
-        for &e in &events {
-            let (value, rate) = match e {
-                Event::Compressed => (y[1], d[1]),
-                Event::Restituted => (self.g(e, &y, &u0), d[5]),
-                Event::SlipZero(nose) => {
-                    let (r, u) = if nose { (ri, u0[0]) } else { (rc, u0[1]) };
-                    (self.g(e, &y, &u0), r[0] * u[0] + r[1] * u[1])
-                }
-                Event::LetsGo(_) => continue,
-            };
-            if value <= self.tol_of(e) || rate >= 0.0 {
-                continue;
-            }
-            let reach = value / -rate;
-            match e {
-                Event::SlipZero(nose) if reach <= 1e-3 * h_nominal => {
-                    finals[usize::from(!nose)] = Some((nose, reach));
-                }
-                Event::SlipZero(_) => h_events = h_events.min(0.9 * reach),
-                _ if reach < h_events => {
-                    h_events = reach;
-                    predicted = Some(e);
-                }
-                _ => {}
-            }
-        }
-        // Between events the rates change only as the sliding directions turn (with fixed
-        // directions they are constant and a step of any length is exact), so a step may be
-        // 8 nominal ones long as long as no slip turns by more than 2 / steps rad in it.
-        // Never below 1/100 of a nominal step: near zero slip the stiffness limit governs.
-        let mut h_max = 8.0 * h_nominal;
-        for (sl, r, grip) in [(si, ri, gi), (sc, rc, gc)] {
-            let size = hypot(sl);
-            if matches!(grip, Grip::Slide(_)) && size > setup.tol {
-                let u = [sl[0] / size, sl[1] / size];
-                let along = r[0] * u[0] + r[1] * u[1];
-                let across = hypot([r[0] - along * u[0], r[1] - along * u[1]]);
-                if across > 0.0 {
-                    h_max = h_max.min((self.turn * size / across).max(1e-2 * h_nominal));
-                }
-            }
-        }
-        let mut h = h_max.min(h_events);
-        if h < h_events || stiff[0].min(stiff[1]) < h {
-            predicted = None;
-        }
-        h = h.min(stiff[0]).min(stiff[1]);
-        for (nose, reach) in finals.into_iter().flatten() {
-            let cap = h_max.min(h_events).min(stiff[usize::from(nose)]);
-            let best = matches!(predicted, Some(Event::SlipZero(_))).then_some(h);
-            if reach < cap && best.is_none_or(|b| reach < b) {
+        let nn = setup.normal_of(&d);
+        let (mut h, finals) = self.limits([si, sc], [ri, rc], nn, u0);
+        let h_free = h;
+        let mut predicted = None;
+        for (k, reach) in finals.into_iter().enumerate() {
+            if let Some(reach) = reach
+                && predicted.is_none_or(|_| reach < h)
+            {
                 h = reach;
-                predicted = Some(Event::SlipZero(nose));
+                predicted = Some(Event::SlipZero(k == 0));
             }
         }
         Plan {
             h,
+            h_free,
             predicted,
             u0,
             events,
@@ -303,90 +297,121 @@ impl Impact {
         }
     }
 
-    /// One Runge–Kutta step of `h` from the plan's start, the slip it is meant to end on held
-    /// to its direction.
-    fn step(&self, plan: &Plan, h: f64, predicted: Option<Event>) -> State {
-        let mut fixed = [false; 2];
-        match predicted {
-            Some(Event::SlipZero(true)) => fixed[0] = true,
-            Some(Event::SlipZero(false)) => fixed[1] = true,
-            _ => {}
-        }
-        self.setup
-            .rk4(&self.y, &plan.d, h, (self.gi, self.gc), fixed)
-    }
-
-    /// Whether a sliding slip turned by more than 0.5 rad from its start direction.
-    fn turned(&self, t: &State, predicted: Option<Event>, u0: &[[f64; 2]; 2]) -> bool {
+    /// Whether a sliding slip (above zero) turned by more than 0.5 rad from its start
+    /// direction: it passed close by zero inside the step.
+    fn turned(&self, t: &State, predicted: Option<Event>, plan: &Plan) -> bool {
         let (a, b) = self.setup.slips(t);
-        [(a, self.gi, u0[0], true), (b, self.gc, u0[1], false)]
+        [(a, self.gi, 0), (b, self.gc, 1)]
             .iter()
-            .any(|&(sl, g, u, nose)| {
+            .any(|&(sl, g, k)| {
+                let u = plan.u0[k];
+                let size = hypot(sl);
                 matches!(g, Grip::Slide(_))
-                    && predicted != Some(Event::SlipZero(nose))
-                    && hypot(sl) > self.setup.tol
-                    && (sl[0] * u[0] + sl[1] * u[1]) < 0.8776 * hypot(sl)
+                    && predicted != Some(Event::SlipZero(k == 0))
+                    && size > self.setup.zero
+                    && (sl[0] * u[0] + sl[1] * u[1]) < 0.8776 * size
             })
     }
 
-    /// Takes the planned step, halved while a slip turns fast (passing close by zero without
-    /// reaching it), then cut back to the earliest event inside it; returns that event.
-    fn take(&self, plan: &Plan) -> (Option<Event>, State) {
+    /// The local error estimate relative to the tolerance (1: at the tolerance).
+    fn error(&self, err: &State) -> f64 {
+        let r = self.setup.r;
+        let v = err[0].abs().max(err[1].abs());
+        let w = r * err[2].abs().max(err[3].abs()).max(err[4].abs());
+        // The work is about speed x speed: its error over the speed.
+        let work = err[5].abs() / self.scale;
+        v.max(w).max(work) / self.atol
+    }
+
+    /// Takes the planned step, shortened while its error is above the tolerance or a slip
+    /// turns past its zero, then cut back to the earliest event inside it (located on the
+    /// step's dense output); returns that event.
+    fn take(&mut self, plan: &Plan) -> (Option<Event>, State) {
         let (mut h, mut predicted) = (plan.h, plan.predicted);
-        let mut next = self.step(plan, h, predicted);
-        let mut halvings = 0;
-        while self.turned(&next, predicted, &plan.u0) && halvings < 60 {
-            h *= 0.5;
+        let setup = self.setup;
+        let (gi, gc) = (self.gi, self.gc);
+        let floor = 1e-12 * self.span;
+        let mut rejected = false;
+        let step = loop {
+            let mut fixed = [false; 2];
+            if let Some(Event::SlipZero(nose)) = predicted {
+                fixed[usize::from(!nose)] = true;
+            }
+            let st = dopri::step(&self.y, &plan.d, h, |t| setup.rate_fixed(t, gi, gc, fixed));
+            self.stats.evaluations += 6;
+            let err = self.error(&st.err);
+            let turned = self.turned(&st.y, predicted, plan);
+            if (err <= 1.0 && !turned) || h <= floor {
+                self.stats.steps += 1;
+                self.stats.longest = self.stats.longest.max(h / self.span);
+                if predicted.is_none() {
+                    // Step size control (Hairer et al., section II.4): the next step from this
+                    // one's error, err^(-1/4) (two square roots; the pair's 1/5 would need a
+                    // pow, and the steeper error near a zero slip prefers the smaller
+                    // exponent), within a factor 0.2 to 5, no larger right after a rejection.
+                    let fac = (0.9 / err.max(1e-12).sqrt().sqrt()).clamp(0.2, 5.0);
+                    self.h = if rejected { h * fac.min(1.0) } else { h * fac };
+                }
+                break (st, fixed);
+            }
+            self.stats.rejected += 1;
+            rejected = true;
+            if predicted.is_some() {
+                h = plan.h_free;
+            } else {
+                h *= if turned {
+                    0.5
+                } else {
+                    (0.9 / err.sqrt().sqrt()).clamp(0.1, 0.5)
+                };
+            }
             predicted = None;
-            next = self.step(plan, h, predicted);
-            halvings += 1;
-        }
-        let (mut hit, mut h_hit) = (None, h);
-        for &e in &plan.events {
-            if let Event::SlipZero(_) = e {
-                continue; // met by the planned approach
-            }
-            if let Some(at) = self.locate(e, plan, h, predicted, &next)
-                && (hit.is_none() || at < h_hit)
+        };
+        let (st, fixed) = step;
+        let (mut hit, mut theta) = (None, 1.0);
+        // A step meant to end on a zero slip finds it like the other events: its rate along
+        // the held direction need not stay constant (the other contact turns).
+        let aimed = predicted.filter(|e| matches!(e, Event::SlipZero(_)));
+        for e in plan.events.into_iter().chain([aimed]).flatten() {
+            if let Some(at) = self.locate(e, plan, &st)
+                && (hit.is_none() || at < theta)
             {
-                (hit, h_hit) = (Some(e), at);
+                (hit, theta) = (Some(e), at);
             }
         }
-        if hit.is_some() && h_hit < h {
-            next = self.step(plan, h_hit, predicted);
-        } else if let Some(Event::SlipZero(_)) = predicted {
-            hit = predicted;
-        }
+        // At an event inside the step, the state from the dense output (4th order, within
+        // the step's tolerance: a step to it would cost six more evaluations).
+        let next = if hit.is_some() && theta < 1.0 {
+            st.at(theta)
+        } else {
+            st.y
+        };
+        // The last stage is the next step's first unless an event changes the rates.
+        self.d = (hit.is_none() && fixed == [false; 2]).then_some(st.k7);
         (hit, next)
     }
 
-    /// Where in a step of `h` ending at `next` event `e` happens, if it does: its function
-    /// changed sign, located by the Illinois variant of regula falsi on the step length.
-    fn locate(
-        &self,
-        e: Event,
-        plan: &Plan,
-        h: f64,
-        predicted: Option<Event>,
-        next: &State,
-    ) -> Option<f64> {
+    /// Where in a step event `e` happens, as a fraction of the step, if it does: its
+    /// function changed sign, located by the Illinois variant of regula falsi on the step's
+    /// dense output.
+    fn locate(&self, e: Event, plan: &Plan, st: &dopri::Step) -> Option<f64> {
         let u0 = &plan.u0;
-        let (g0, g1, tol) = (self.g(e, &self.y, u0), self.g(e, next, u0), self.tol_of(e));
+        let (g0, g1, tol) = (self.g(e, &self.y, u0), self.g(e, &st.y, u0), self.tol_of(e));
         if g0 <= tol || g1 > tol {
             return None; // not approaching from above, or not reached in this step
         }
         if g1 >= -tol {
-            return Some(h);
+            return Some(1.0);
         }
-        let (mut lo, mut glo, mut hi, mut ghi) = (0.0, g0, h, g1);
-        let (mut side, mut at) = (0, h);
+        let (mut lo, mut glo, mut hi, mut ghi) = (0.0, g0, 1.0, g1);
+        let (mut side, mut at) = (0, 1.0);
         for _ in 0..100 {
             at = (lo * ghi - hi * glo) / (ghi - glo);
             if !(at > lo && at < hi) {
                 at = 0.5 * (lo + hi);
             }
-            let ga = self.g(e, &self.step(plan, at, predicted), u0);
-            if ga.abs() <= tol || hi - lo <= 1e-15 * self.span {
+            let ga = self.g(e, &st.at(at), u0);
+            if ga.abs() <= tol || hi - lo <= 1e-15 {
                 break;
             }
             if ga > 0.0 {
@@ -440,16 +465,16 @@ impl Impact {
 }
 
 /// Velocity and spin after a cushion impact by [`Mathavan2010`], with unit inward normal `n`,
-/// integrated with `steps` nominal Runge–Kutta steps (use [`STEPS`]). Returns `None` if the
-/// ball is not moving into the cushion or the integration did not finish within its step cap.
-pub fn mathavan_2010_steps(
+/// integrated to `acc`, and what that cost. Returns `None` if the ball is not moving into the
+/// cushion or the integration did not finish within its step cap.
+pub fn mathavan_2010_with(
     v: Vec2,
     w: Vec3,
     n: Vec2,
     m: &Mathavan2010,
     radius: f64,
-    steps: usize,
-) -> Option<(Vec2, Vec3)> {
+    acc: Accuracy,
+) -> Option<(Vec2, Vec3, Stats)> {
     let ey = -n;
     let ex = -ey.perp();
     let y: State = [
@@ -464,15 +489,16 @@ pub fn mathavan_2010_steps(
         return None;
     }
     let scale = v.length() + radius * w.length();
-    let y = Impact::new(y, m, radius, scale, steps).run()?;
+    let (y, stats) = Impact::new(y, m, radius, scale, acc).run()?;
     Some((
         ex * y[0] + ey * y[1].min(0.0),
         (ex * y[2] + ey * y[3]).extend() + Vec3::new(0.0, 0.0, y[4]),
+        stats,
     ))
 }
 
-/// [`mathavan_2010_steps`] with [`STEPS`]; if the integration does not finish within its step
-/// cap (never seen), Han's impulse with the same constants answers instead.
+/// [`mathavan_2010_with`] at [`Accuracy::DEFAULT`]; if the integration does not finish within
+/// its step cap (never seen), Han's impulse with the same constants answers instead.
 pub fn mathavan_2010(
     v: Vec2,
     w: Vec3,
@@ -483,6 +509,7 @@ pub fn mathavan_2010(
     if v.dot(n) >= 0.0 {
         return None;
     }
-    mathavan_2010_steps(v, w, n, m, radius, STEPS)
+    mathavan_2010_with(v, w, n, m, radius, Accuracy::DEFAULT)
+        .map(|(v, w, _)| (v, w))
         .or_else(|| super::han_2005(v, w, n, m.e, m.mu_cushion, radius, m.height))
 }
