@@ -9,17 +9,18 @@
 //! reached while `s` still grows, at `τ1 = 2 s1 / (|dv| + sqrt(|dv|² + 2 α s1))`: two square
 //! roots instead of isolating the quartic's roots between its critical points
 //! (Leckie & Greenspan 2006, section 3, the event times as polynomial roots; here the
-//! polynomial factors).
+//! polynomial factors, because the paper's motion of section 3.3, and a rolling or
+//! centre-struck sliding ball in the spin model, decelerates along its own velocity).
 //!
 //! What the general search would answer is kept to well under 1e-12 s: a part `π` of `da`
 //! across `u` (rounding) changes `f` by at most `E = |π| τ² |dp| + π² τ⁴/4`, and rounding in
 //! `f` by `N`; before `τ1`, `g(s(τ)) >= ṡ_min (s2 - s1) (τ1 - τ)`, so any earlier root of the
 //! computed `f` lies within `(E + N) / (ṡ_min (s2 - s1))` of `τ1`. The closed form answers only
-//! when that is below [`AGREEMENT`], far from the horizon, and when `f` itself changes sign
-//! within 16 ulps of `τ1` (after one Newton step on `f`, which rounding in `f` may need):
-//! the answer is then a float where `f` is not positive, as the general search's is. A
-//! grazing path, a ball stopping at the contact, or a contact at the horizon is left to the
-//! general search.
+//! when that is below [`AGREEMENT`] and far from the horizon; the root is then settled on
+//! `f` itself as the general search's bracket is (one Newton step on `f`, then the first
+//! float where `f` is not positive after one where it is, within 16 ulps), so a contact is
+//! never reported before it is reached. A grazing path, a ball stopping at the contact, or a
+//! contact at the horizon is left to the general search.
 
 use crate::math::Vec2;
 use crate::poly::{Poly, root_bound};
