@@ -1,8 +1,10 @@
-//! Re-prediction left for later: [`Simulation::step_event`] hands out an event before its
-//! balls' next events are predicted, and the simulation predicts them when it goes on. A
-//! caller that stops reading events there (the computer's lean search stops each sample
-//! once its verdict is known) saves that prediction; one that goes on gets every event
-//! exactly as before.
+//! Re-prediction left for later: with the history off, [`Simulation::step_event`] hands out
+//! an event before its balls' next events are predicted, and the simulation predicts them
+//! when it goes on. A caller that stops reading events there (the computer's lean search
+//! stops each sample once its verdict is known) saves that prediction; one that goes on gets
+//! every event exactly as before. With the history on (the game, replays, the checks) the
+//! predictions are made at once, so [`Simulation::next_event_time`] between steps (the
+//! game's aim preview) stays as cheap as it was.
 
 use super::Simulation;
 use super::predict::Scene;
@@ -54,8 +56,9 @@ impl Simulation {
 mod tests {
     use crate::{Params, Rack, Shot, Simulation, Table};
 
-    /// Stepping event by event, reading the next event's time between steps, gives the same
-    /// events to the bit as running to rest, and the time read is the next event's.
+    /// Stepping event by event, with the history off (predictions deferred) or on, reading
+    /// the next event's time between steps, gives the same events to the bit as running to
+    /// rest, and the time read is the next event's; a copy taken mid-way runs on the same.
     #[test]
     fn deferred_predictions_change_no_event() {
         let table = Table::wpa_8ft().with_jaws(0.015);
@@ -63,22 +66,30 @@ mod tests {
         let balls = Rack::FifteenBall.layout(&table, &params.ball);
         let mut whole = Simulation::new(table, params, &balls).unwrap();
         whole.strike(0, Shot::new(0.02, 8.0)).unwrap();
-        let mut stepped = whole.clone();
+        let start = whole.clone();
         whole.run_to_rest().unwrap();
-        let mut events = Vec::new();
-        while let Some(t) = stepped.next_event_time() {
-            let e = stepped.step_event().unwrap();
-            assert_eq!(e.time, t);
-            events.push(e);
-            // A copy taken between steps goes on the same way.
-            if events.len() == 20 {
-                let mut copy = stepped.clone();
-                copy.run_to_rest().unwrap();
-                assert_eq!(copy.history().events(), whole.history().events());
-            }
-        }
-        assert!(events.len() > 50, "{}", events.len());
         // The whole run's history starts with the strike.
-        assert_eq!(events, whole.history().events()[1..]);
+        let want = &whole.history().events()[1..];
+        for history in [false, true] {
+            let mut stepped = start.clone();
+            stepped.set_record_history(history);
+            let mut events = Vec::new();
+            while let Some(t) = stepped.next_event_time() {
+                let e = stepped.step_event().unwrap();
+                assert_eq!(e.time, t);
+                events.push(e);
+                assert_eq!(stepped.stale.is_some(), !history);
+                if events.len() == 20 {
+                    let mut copy = stepped.clone();
+                    copy.set_record_history(true);
+                    copy.run_to_rest().unwrap();
+                    // Its history starts now (off before) or holds the events so far (on).
+                    let got = copy.history().events();
+                    assert_eq!(got[got.len() + 20 - want.len()..], want[20..]);
+                }
+            }
+            assert!(events.len() > 50, "{}", events.len());
+            assert_eq!(events, want);
+        }
     }
 }

@@ -70,7 +70,7 @@ pub struct Simulation {
     burst: Vec<Event>,
     burst_next: usize,
     /// Whether the event being processed leaves its balls' re-prediction for later
-    /// (`stale`): set while [`Simulation::step_event`] processes one.
+    /// (`stale`): set while [`Simulation::step_event`] processes one with the history off.
     defer: bool,
     /// The balls of the last event handed out by [`Simulation::step_event`], not yet
     /// re-predicted: a caller that stops reading events there (the computer's lean search,
@@ -259,9 +259,11 @@ impl Simulation {
     /// A cluster impact records several events at one instant: they are handed out one a
     /// call, the first when the impact is processed.
     ///
-    /// The balls of the event handed out are re-predicted when the simulation goes on (the
-    /// next call, or any other entry point), so a caller that stops reading there does not
-    /// pay for it; the events are the same either way.
+    /// With the history off (a search's lean mode), the balls of the event handed out are
+    /// re-predicted when the simulation goes on (the next call, or any other entry point), so
+    /// a caller that stops reading there does not pay for it; the events are the same either
+    /// way ([`Simulation::next_event_time`] then predicts them on a copy, so a loop that asks
+    /// it between steps should keep the history on).
     pub fn step_event(&mut self) -> Option<Event> {
         if let Some(&e) = self.burst.get(self.burst_next) {
             self.burst_next += 1;
@@ -269,8 +271,9 @@ impl Simulation {
         }
         self.flush();
         let before = self.event_count;
-        // Grid crossings are internal: keep going until a physical event is processed.
-        self.defer = true;
+        // Grid crossings are internal: keep going until a physical event is processed. In the
+        // lean mode (no history) the event's balls are re-predicted on the next call.
+        self.defer = !self.record_history;
         while self.event_count == before {
             let Some(p) = self.predictions.next() else {
                 self.defer = false;
