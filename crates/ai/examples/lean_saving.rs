@@ -1,11 +1,13 @@
 //! What the lean mode saves: the hard level's candidates on the bench's 9-ball mid-game
 //! layout, sampled in one mode (`lean` or `full`), on one thread; prints simulations, events
-//! and time. Under callgrind the instruction counts of the two modes compare without the
-//! noise of a shared machine:
+//! and time. `yardstick` runs as many of the issue's yardstick shots instead (the bench's:
+//! the resting layout cloned, a random shot run to rest with the history on). Under
+//! callgrind the instruction counts of the modes compare without the noise of a shared
+//! machine:
 //!
 //! ```sh
 //! cargo build --release -p billiards-ai --example lean_saving
-//! for m in full lean; do RAYON_NUM_THREADS=1 valgrind --tool=callgrind \
+//! for m in full lean yardstick; do RAYON_NUM_THREADS=1 valgrind --tool=callgrind \
 //!     --callgrind-out-file=/tmp/cg.$m target/release/examples/lean_saving $m 4; done
 //! ```
 
@@ -13,12 +15,13 @@ use billiards_ai::candidates::{combo_aims, direct_aims, expand, rail_aims, safet
 use billiards_ai::evaluate::{Mode, Search};
 use billiards_ai::play::table_and_params;
 use billiards_ai::{Layout, Level};
-use billiards_physics::{BallSetup, Simulation, Vec2};
+use billiards_physics::{BallSetup, Shot, Simulation, Vec2};
 use billiards_rules::{CueBall, Game, GameState, Seat};
 use std::time::Instant;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    let yard = args.first().is_some_and(|m| m == "yardstick");
     let mode = match args.first().map(String::as_str) {
         Some("full") => Mode::Full,
         _ => Mode::Lean,
@@ -49,6 +52,9 @@ fn main() {
     aims.extend(combo_aims(&layout, &[2], &[3, 5, 6, 8, 9]));
     let mut cands = expand(&aims, budget.speeds, budget.tips, false, None);
     cands.extend(safeties(&layout, &[2], budget.safeties, None));
+    if yard {
+        return yardstick(&base, cands.len() * samples as usize);
+    }
     let search = Search {
         state: &state,
         base,
@@ -67,5 +73,35 @@ fn main() {
         events as f64 / n as f64,
         secs,
         n as f64 / secs
+    );
+}
+
+/// `shots` of the bench's yardstick, on this thread: the same stream of random shots.
+fn yardstick(base: &Simulation, shots: usize) {
+    let mut x: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut uniform = || {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        (x >> 11) as f64 / (1u64 << 53) as f64
+    };
+    // As the bench's table: built with its history on.
+    let mut on = base.clone();
+    on.set_record_history(true);
+    let mut events = 0;
+    let start = Instant::now();
+    for _ in 0..shots {
+        let mut s = on.clone();
+        s.set_record_history(true);
+        let shot = Shot::new(uniform() * std::f64::consts::TAU, 0.1 + 7.9 * uniform());
+        s.strike(0, shot).expect("a shot in the contract");
+        s.run_to_rest().expect("comes to rest");
+        events += s.history().events().len();
+    }
+    let secs = start.elapsed().as_secs_f64();
+    println!(
+        "yardstick: {shots} shots, {events} events ({:.2} a shot), {secs:.3} s, {:.0} a second",
+        events as f64 / shots as f64,
+        shots as f64 / secs
     );
 }

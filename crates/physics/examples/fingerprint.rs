@@ -6,6 +6,7 @@
 //! cargo run --release -p billiards-physics --example fingerprint -- 2000 0   # N FIRST
 //! cargo run --release -p billiards-physics --example fingerprint -- 2000 0 --pairwise
 //! cargo run --release -p billiards-physics --example fingerprint -- 2000 0 --no-near
+//! cargo run --release -p billiards-physics --example fingerprint -- 2000 0 --dump=/tmp/ev
 //! ```
 //!
 //! `--pairwise` turns the cluster impacts off (`SpinModel::cluster = None`: every contact
@@ -14,9 +15,13 @@
 //! their pairwise run, conservatively: at every event instant, any touching pair approaching
 //! faster than `CLUSTER_MIN_SPEED` with a third ball within its reach), twice: pairwise and
 //! with cluster impacts; the two hashes are equal when those scenes keep every event.
+//! `--dump=PATH` also writes every event of the soak scenes to PATH, a line each (seed,
+//! index, time, kind, the positions after it, bit-exact), so that two solvers' runs can be
+//! compared event by event (where a last-bit change first shows, and how it grows).
 
 use billiards_physics::soak::scenario;
 use billiards_physics::*;
+use std::io::Write;
 
 struct Fnv(u64);
 
@@ -190,6 +195,10 @@ fn main() {
         return;
     }
     let pairwise_only = flag("--pairwise");
+    let mut dump = flags
+        .iter()
+        .find_map(|f| f.strip_prefix("--dump="))
+        .map(|path| std::io::BufWriter::new(std::fs::File::create(path).expect("dump file")));
     let mut h = Fnv(0xcbf2_9ce4_8422_2325);
     let (mut events, mut impacts) = (0usize, 0usize);
     for seed in first..first + n {
@@ -198,8 +207,14 @@ fn main() {
         } else {
             run(seed, |p| p, None)
         };
-        for e in sim.history().events() {
+        for (k, e) in sim.history().events().iter().enumerate() {
             h.event(e);
+            if let Some(out) = &mut dump {
+                let p = e.states_after().map(|(_, s)| (s.position.x, s.position.y));
+                let p: Vec<_> = p.map(|(x, y)| format!("{x:e} {y:e}")).collect();
+                let kind = format!("{:?}", e.kind).replace(' ', "");
+                writeln!(out, "{seed} {k} {:e} {kind} {}", e.time, p.join(" ")).expect("dump");
+            }
         }
         events += sim.history().events().len();
         impacts += sim.cluster_impacts();

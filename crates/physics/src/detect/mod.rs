@@ -5,6 +5,7 @@ mod ball_ball;
 mod ball_cushion;
 mod ball_jaw;
 pub(crate) mod cull;
+mod straight;
 
 pub use ball_ball::{ball_ball, ball_ball_kept, segments_apart};
 pub use ball_cushion::{ball_cushion, ball_line, cushion_contact, line_contact};

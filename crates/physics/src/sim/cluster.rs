@@ -57,6 +57,20 @@ impl Simulation {
         let t = self.time;
         let r2 = 2.0 * self.params.ball.radius;
         let near = r2 + reach;
+        // Most contacts have no third ball within reach: the search below would find the
+        // pair alone. The same test, before anything is allocated.
+        let position = |id: BallId| {
+            let s = &self.segments[id];
+            s.state.motion.on_table().then(|| s.position_at(t))
+        };
+        let (pa, pb) = (position(a)?, position(b)?);
+        let within = |d: Vec2| d.x.abs() < near && d.y.abs() < near && d.length() < near;
+        let third = (0..self.segments.len()).any(|j| {
+            j != a && j != b && position(j).is_some_and(|q| within(q - pa) || within(q - pb))
+        });
+        if !third {
+            return None;
+        }
         let positions: Vec<Option<Vec2>> = self
             .segments
             .iter()

@@ -17,6 +17,7 @@ use predict::{Bodies, Predictions, Scene, StrategyChoice};
 
 mod cell_lists;
 mod cluster;
+mod deferred;
 mod pair_table;
 mod path_box;
 mod pending;
@@ -68,6 +69,14 @@ pub struct Simulation {
     /// how many of them [`Simulation::step_event`] has handed out.
     burst: Vec<Event>,
     burst_next: usize,
+    /// Whether the event being processed leaves its balls' re-prediction for later
+    /// (`stale`): set while [`Simulation::step_event`] processes one with the history off.
+    defer: bool,
+    /// The balls of the last event handed out by [`Simulation::step_event`], not yet
+    /// re-predicted: a caller that stops reading events there (the computer's lean search,
+    /// once its verdict is known) never pays for their next events. Every other entry point
+    /// re-predicts them first (`deferred.rs`).
+    stale: Option<(BallId, Option<BallId>)>,
 }
 
 clone_reusing!(Simulation {
@@ -86,6 +95,8 @@ clone_reusing!(Simulation {
     impacts,
     burst,
     burst_next,
+    defer,
+    stale,
 });
 
 impl Simulation {
@@ -127,6 +138,8 @@ impl Simulation {
             impacts: 0,
             burst: Vec::new(),
             burst_next: 0,
+            defer: false,
+            stale: None,
         };
         sim.predict_all();
         Ok(sim)
@@ -216,7 +229,10 @@ impl Simulation {
 
     /// Time of the next event, if any.
     pub fn next_event_time(&self) -> Option<f64> {
-        self.predictions.next().map(|p| p.time)
+        match self.stale {
+            None => self.predictions.next().map(|p| p.time),
+            Some(_) => self.next_event_time_stale(),
+        }
     }
 
     /// The paper's `Progress(T)`: processes every event up to `time + dt` in time order, then
@@ -242,17 +258,30 @@ impl Simulation {
     /// Advances exactly to the next event and processes it (and only it); `None` at rest.
     /// A cluster impact records several events at one instant: they are handed out one a
     /// call, the first when the impact is processed.
+    ///
+    /// With the history off (a search's lean mode), the balls of the event handed out are
+    /// re-predicted when the simulation goes on (the next call, or any other entry point), so
+    /// a caller that stops reading there does not pay for it; the events are the same either
+    /// way ([`Simulation::next_event_time`] then predicts them on a copy, so a loop that asks
+    /// it between steps should keep the history on).
     pub fn step_event(&mut self) -> Option<Event> {
         if let Some(&e) = self.burst.get(self.burst_next) {
             self.burst_next += 1;
             return Some(e);
         }
+        self.flush();
         let before = self.event_count;
-        // Grid crossings are internal: keep going until a physical event is processed.
+        // Grid crossings are internal: keep going until a physical event is processed. In the
+        // lean mode (no history) the event's balls are re-predicted on the next call.
+        self.defer = !self.record_history;
         while self.event_count == before {
-            let p = self.predictions.next()?;
+            let Some(p) = self.predictions.next() else {
+                self.defer = false;
+                return None;
+            };
             self.process(p);
         }
+        self.defer = false;
         self.burst_next = 1;
         self.burst.first().copied()
     }
@@ -265,6 +294,7 @@ impl Simulation {
     /// The event loop: processes the next event while it is due by `t`, at most
     /// `params.max_events` of them.
     fn process_until(&mut self, t: f64) -> Result<Advance, SimError> {
+        self.flush();
         let first = self.event_count;
         let mut count = 0;
         while let Some(p) = self.predictions.next().filter(|p| p.time <= t) {
@@ -286,6 +316,7 @@ impl Simulation {
     /// takes the tip offset and the cue's elevation (the paper's model has no spin and
     /// ignores both).
     pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
+        self.flush();
         let state = self.ball_checked(id)?;
         setup::check_shot(id, self.numbers[id], &shot, self.time)?;
         let dir = Vec2::from_angle(shot.angle);
@@ -310,6 +341,7 @@ impl Simulation {
         if id >= self.segments.len() {
             return Err(SetupError::NoSuchBall(id));
         }
+        self.flush();
         let r = self.params.ball.radius;
         let ball = BallSetup {
             number: self.numbers[id],
@@ -336,6 +368,7 @@ impl Simulation {
     /// new ones. The ball size cannot change mid-game.
     pub fn set_params(&mut self, params: Params) -> Result<(), SetupError> {
         params.validate()?;
+        self.flush();
         if params.ball != self.params.ball {
             return Err(SetupError::Param(ParamError {
                 name: "ball",
@@ -408,7 +441,7 @@ impl Simulation {
         self.segments[id] = motion::after_transition(&self.params, &self.segments[id]);
         let to = self.segments[id].state.motion;
         self.record(EventKind::Transition { ball: id, from, to });
-        self.repredict([id]);
+        self.repredict_event(id, None);
     }
 
     /// Ball `id` drops into `pocket`.
@@ -417,7 +450,7 @@ impl Simulation {
         let s = self.segments[id].state_at(t);
         self.segments[id] = Segment::at_rest(t, s.position, Motion::Pocketed(pocket));
         self.record(EventKind::Pocketed { ball: id, pocket });
-        self.repredict([id]);
+        self.repredict_event(id, None);
     }
 
     /// Ball `id` reaches `cushion`'s line: in a mouth of the paper's table it drops, anywhere
@@ -436,7 +469,7 @@ impl Simulation {
         let depth = -(self.bodies.cushion_limit(cushion) + normal.dot(s.position));
         self.fixed_body(id, &s, FixedBody::Cushion(cushion), normal, depth);
         self.record(EventKind::Cushion { ball: id, cushion });
-        self.repredict([id]);
+        self.repredict_event(id, None);
     }
 
     /// Ball `id` meets jaw `k`.
@@ -449,7 +482,7 @@ impl Simulation {
         self.fixed_body(id, &s, FixedBody::Jaw(k), normal, depth);
         let pocket = jaw.pocket;
         self.record(EventKind::Jaw { ball: id, pocket });
-        self.repredict([id]);
+        self.repredict_event(id, None);
     }
 
     /// Ball `id`, in state `s` now, touches `body` of unit normal `normal` (towards the
@@ -508,7 +541,7 @@ impl Simulation {
         self.segments[b] =
             motion::segment_from(params, t, sb.position, nb.velocity, nb.angular_velocity);
         self.record(EventKind::BallBall { a, b });
-        self.repredict([a, b]);
+        self.repredict_event(a, Some(b));
     }
 
     fn record(&mut self, kind: EventKind) {
