@@ -53,6 +53,7 @@ pub mod recording;
 pub mod resolve;
 pub mod scene;
 pub mod sim;
+pub mod snooker;
 pub mod soak;
 pub mod table;
 
@@ -68,7 +69,8 @@ pub use params::{
 pub use racks::Rack;
 pub use resolve::cue::{Miscue, TipOffset};
 pub use sim::{Advance, BallSetup, SetupError, SimError, Simulation};
+pub use snooker::SnookerMarks;
 pub use table::{
-    Cushion, Jaw, Opening, Pocket, PocketCut, PocketShape, Table, TableChoice, TableError,
-    TableSize,
+    Cushion, Jaw, Opening, Pocket, PocketCut, PocketShape, SNOOKER_JAW_RADIUS, Table, TableChoice,
+    TableError, TableSize,
 };

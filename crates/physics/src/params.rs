@@ -14,6 +14,17 @@ pub struct BallSpec {
     pub mass: f64,
 }
 
+impl BallSpec {
+    /// The snooker ball: 52.5 mm (WPBSA Official Rules, November 2019, 1.2), 142 g
+    /// ([`crate::snooker::SNOOKER_BALL_MASS`]: 1.2 fixes no mass).
+    pub fn snooker() -> Self {
+        Self {
+            radius: 0.5 * crate::snooker::SNOOKER_BALL_DIAMETER,
+            mass: crate::snooker::SNOOKER_BALL_MASS,
+        }
+    }
+}
+
 impl Default for BallSpec {
     fn default() -> Self {
         Self {
@@ -286,6 +297,16 @@ pub struct Params {
     /// Most events one `advance` or `run_to_rest` call may process before it reports
     /// [`crate::SimError::EventCap`] instead of spinning.
     pub max_events: usize,
+}
+
+impl Params {
+    /// The default physics with the snooker ball ([`BallSpec::snooker`]).
+    pub fn snooker() -> Self {
+        Self {
+            ball: BallSpec::snooker(),
+            ..Self::default()
+        }
+    }
 }
 
 impl Default for Params {

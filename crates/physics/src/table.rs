@@ -6,6 +6,11 @@ use serde::{Deserialize, Serialize};
 /// Metres per inch; inches appear only where the WPA specifies them.
 pub const INCH: f64 = 0.0254;
 
+/// Radius of the rounded cushion ends of [`Table::snooker_12ft`], metres: 1 in, the
+/// knuckle of a snooker cushion being broader than a pool jaw's 15 mm. With the 4 1/8 in
+/// middle mouths a 52.5 mm ball can still reach the opening line between the jaws.
+pub const SNOOKER_JAW_RADIUS: f64 = INCH;
+
 /// One of the four cushions. The head end is at `-x` (where the cue ball starts), the foot
 /// at `+x`; left is `+y` looking from head to foot.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -302,6 +307,25 @@ impl Table {
             corner_mouth: 4.5 * INCH,
             side_mouth: 5.0 * INCH,
             pockets: PocketShape::Mouth,
+        }
+    }
+
+    /// The 12-ft snooker table: WPBSA Official Rules (November 2019) 1.1(a), playing area
+    /// 3569 x 1778 mm, with rounded jaws at the pocket mouths.
+    ///
+    /// 1.1(c)(ii) makes the pocket openings those of the WPBSA templates, which are not
+    /// published. The mouths taken are the figures tables cut for snooker are commonly given:
+    /// corners 3.5 in (88.9 mm) and middles 4 1/8 in (104.8 mm) between the cushion noses,
+    /// with the cushions ending in jaws of [`SNOOKER_JAW_RADIUS`].
+    pub fn snooker_12ft() -> Self {
+        Self {
+            length: crate::snooker::SNOOKER_LENGTH,
+            width: crate::snooker::SNOOKER_WIDTH,
+            corner_mouth: 3.5 * INCH,
+            side_mouth: 4.125 * INCH,
+            pockets: PocketShape::Jaws {
+                radius: SNOOKER_JAW_RADIUS,
+            },
         }
     }
 
