@@ -27,6 +27,7 @@ pub mod racks;
 pub mod respot;
 pub mod shot;
 pub mod shots;
+pub mod snooker;
 
 pub use foul::{BallOn, Foul, Group, WinReason, pocket_name};
 pub use game::{

@@ -1,0 +1,357 @@
+//! Judging one stroke of a frame (WPBSA 3.3 mode of play, 3.10 penalties, 3.12 free ball,
+//! 3.14 foul and a miss, 3.3(d) the re-spotted black, 2.1 the end of the frame).
+
+use super::balls::{BLACK, PINK, WHITE, is_colour, is_red, name, value};
+use super::frame::{Frame, Snapshot, SnookerError};
+use super::geometry::{clear_path, respot_all, snookered};
+use super::verdict::{BallOn, Choice, Foul, FrameEnd, NextShot, Verdict};
+use crate::game::Seat;
+use crate::shot::ShotSummary;
+use billiards_physics::Vec2;
+
+/// One stroke as played: its summary, the colour nominated, and the balls on the table
+/// before the strike and at rest after it (pocketed balls absent; positions as the caller's
+/// recording has them).
+#[derive(Clone, Copy, Debug)]
+pub struct Stroke<'a> {
+    /// What the stroke did.
+    pub summary: &'a ShotSummary,
+    /// The colour nominated after a red (2.12, 3.3(b)), or the free ball (3.12).
+    pub nominated: Option<u8>,
+    /// Every ball on the table at the strike (the cue ball included).
+    pub before: &'a [(u8, Vec2)],
+    /// Every ball on the table at rest.
+    pub after: &'a [(u8, Vec2)],
+}
+
+fn cue_of(layout: &[(u8, Vec2)]) -> Option<Vec2> {
+    layout.iter().find(|&&(n, _)| n == WHITE).map(|&(_, p)| p)
+}
+
+fn objects(layout: &[(u8, Vec2)]) -> Vec<(u8, Vec2)> {
+    layout
+        .iter()
+        .copied()
+        .filter(|&(n, _)| n != WHITE)
+        .collect()
+}
+
+impl Frame {
+    /// Judges a stroke and moves the frame on (the ball on, the break, the scores, the next
+    /// striker); the verdict says which colours to spot and where.
+    pub fn play(&mut self, stroke: Stroke<'_>) -> Result<Verdict, SnookerError> {
+        if self.end.is_some() {
+            return Err(SnookerError::Over);
+        }
+        if !self.next.choices.is_empty() {
+            return Err(SnookerError::ChoicePending(self.next.choices.clone()));
+        }
+        let s = stroke.summary;
+        for n in s
+            .first_contact
+            .iter()
+            .chain(s.pocketed.iter().map(|(n, _)| n))
+        {
+            self.check_ball(*n)?;
+        }
+        let cue_before = cue_of(stroke.before).ok_or(SnookerError::NoCueBall)?;
+        let striker = self.next.striker;
+        let opponent = striker.other();
+        let base_on = self.ball_on();
+        let ordinary = self.balls_on(base_on);
+        // 3.12: a free ball is a nominated ball that is not on, after a foul left a snooker.
+        let free = stroke
+            .nominated
+            .filter(|n| self.next.free_ball && !ordinary.contains(n));
+        if let Some(n) = stroke.nominated {
+            let allowed = if free.is_some() {
+                n != WHITE && self.on_table.contains(&n)
+            } else {
+                is_colour(n) && self.on_table.contains(&n)
+            };
+            if !allowed {
+                return Err(SnookerError::BadNomination(n));
+            }
+        }
+        let (on, on_value, legal) = match base_on {
+            BallOn::Red => (BallOn::Red, 1, ordinary.clone()),
+            BallOn::Colour { .. } => {
+                // 2.12: an obvious colour (the one hit first) counts as nominated.
+                let n = stroke
+                    .nominated
+                    .or(s.first_contact.filter(|&c| is_colour(c)));
+                let v = n.and_then(value).unwrap_or(0);
+                (BallOn::Colour { nominated: n }, v, n.into_iter().collect())
+            }
+            BallOn::Next { colour } => (base_on, value(colour).unwrap_or(0), vec![colour]),
+        };
+        let mut legal = legal;
+        legal.extend(free);
+        let potted: Vec<u8> = s.pocketed_object_balls().collect();
+
+        let mut fouls = Vec::new();
+        match s.first_contact {
+            None => fouls.push(Foul::NoBallHit),
+            Some(hit) if !legal.contains(&hit) => fouls.push(Foul::WrongBallFirst { hit, on }),
+            Some(_) => {}
+        }
+        for &b in &potted {
+            if !legal.contains(&b) {
+                fouls.push(Foul::PottedNotOn { ball: b });
+            }
+        }
+        if s.scratch() {
+            fouls.push(Foul::InOff);
+        }
+        let scored = fouls.is_empty() && !potted.is_empty();
+        if let Some(f) = free
+            && fouls.is_empty()
+            && !scored
+            && !(self.on_table.iter().all(|&n| n == PINK || n == BLACK))
+            && let Some(cue) = cue_of(stroke.after)
+        {
+            // 3.12: the free ball may not snooker the opponent on the ball(s) he will be on.
+            let after = objects(stroke.after);
+            let next_on = self.balls_on(self.ball_on());
+            let without: Vec<(u8, Vec2)> = after.iter().copied().filter(|&(n, _)| n != f).collect();
+            if snookered(cue, &next_on, &after, self.radius)
+                && !snookered(cue, &next_on, &without, self.radius)
+            {
+                fouls.push(Foul::SnookeredByFreeBall { free_ball: f });
+            }
+        }
+        let before_table = self.on_table.clone();
+        let before_after_red = self.after_red;
+        let before_next = self.next.clone();
+        let points_before = self.scores;
+
+        // Balls potted leave the table; colours come back as the rules say.
+        self.on_table.retain(|n| !potted.contains(n));
+        let mut to_spot: Vec<u8> = potted.iter().copied().filter(|&n| is_colour(n)).collect();
+        if fouls.is_empty()
+            && let BallOn::Next { colour } = on
+        {
+            // 3.3(c): the colour on, potted in order, stays down.
+            to_spot.retain(|&c| c != colour);
+        }
+        if self.respotted_black {
+            to_spot.clear();
+        }
+        let mut rest = stroke.after.to_vec();
+        rest.retain(|&(n, _)| !potted.contains(&n));
+        let spots = respot_all(&to_spot, &self.marks, &self.table, self.radius, &rest)?;
+        self.on_table.extend(to_spot.iter().copied());
+        self.on_table.sort_unstable();
+        rest.extend(spots.iter().copied());
+
+        let mut verdict = Verdict {
+            striker,
+            on,
+            free_ball: free,
+            fouls: fouls.clone(),
+            points: 0,
+            penalty: 0,
+            miss: false,
+            spots,
+            scores: self.scores,
+            end: None,
+            next: None,
+            text: String::new(),
+        };
+        let (striker_name, opp_name) = (
+            self.name(striker).to_owned(),
+            self.name(opponent).to_owned(),
+        );
+        if !fouls.is_empty() {
+            // 3.10: the value of the ball on, or of the ball hit first, or of a ball potted
+            // wrongly, whichever is highest, at least 4; 7 for playing at a red after a red.
+            let mut penalty = on_value.max(4);
+            for f in &fouls {
+                let v = match *f {
+                    Foul::WrongBallFirst { hit, .. } => {
+                        if is_red(hit) && matches!(on, BallOn::Colour { .. }) {
+                            7
+                        } else {
+                            value(hit).unwrap_or(0)
+                        }
+                    }
+                    Foul::PottedNotOn { ball } => value(ball).unwrap_or(0),
+                    _ => 0,
+                };
+                penalty = penalty.max(v);
+            }
+            self.scores[opponent.index()] += penalty;
+            verdict.penalty = penalty;
+            let failed_contact = fouls
+                .iter()
+                .any(|f| matches!(f, Foul::NoBallHit | Foul::WrongBallFirst { .. }));
+            // 3.14: a miss when a ball on could be reached in a straight line, unless either
+            // player needed snookers before or after the stroke.
+            let needed_before = {
+                let mut f = self.clone();
+                f.scores = points_before;
+                f.on_table = before_table.clone();
+                f.after_red = before_after_red;
+                f.snookers_required(Seat::A) + f.snookers_required(Seat::B) > 0
+            };
+            self.after_red = false;
+            let needed_after =
+                self.snookers_required(Seat::A) + self.snookers_required(Seat::B) > 0;
+            let reachable = !legal.is_empty()
+                && clear_path(cue_before, &legal, &objects(stroke.before), self.radius);
+            verdict.miss = failed_contact && reachable && !needed_before && !needed_after;
+            self.current_break = 0;
+            let black_alone = before_table == [BLACK];
+            if self.respotted_black || black_alone {
+                self.finish(opponent, black_alone, &mut verdict);
+            } else {
+                self.before_foul = Some(Snapshot {
+                    layout: stroke.before.to_vec(),
+                    on_table: before_table,
+                    after_red: before_after_red,
+                    next: NextShot {
+                        choices: Vec::new(),
+                        ..before_next
+                    },
+                });
+                let in_hand = s.scratch();
+                let next_on = self.ball_on();
+                let free_ball = !in_hand
+                    && cue_of(&rest).is_some_and(|c| {
+                        snookered(c, &self.balls_on(next_on), &objects(&rest), self.radius)
+                    });
+                let mut choices = vec![Choice::PlayOn, Choice::PutBack];
+                if verdict.miss {
+                    choices.push(Choice::Replace);
+                }
+                self.next = NextShot {
+                    striker: opponent,
+                    on: next_on,
+                    in_hand,
+                    free_ball,
+                    choices,
+                };
+            }
+            let list: Vec<String> = fouls.iter().map(ToString::to_string).collect();
+            verdict.text = format!(
+                "{}: {}: {} points to {}",
+                if verdict.miss {
+                    "foul and a miss"
+                } else {
+                    "foul"
+                },
+                list.join("; "),
+                penalty,
+                opp_name
+            );
+        } else {
+            let points = match on {
+                BallOn::Red => potted.len() as u32,
+                BallOn::Colour { nominated } => nominated
+                    .filter(|c| potted.contains(c))
+                    .and_then(value)
+                    .unwrap_or(0),
+                BallOn::Next { .. } => {
+                    if potted.is_empty() {
+                        0
+                    } else {
+                        on_value
+                    }
+                }
+            };
+            verdict.points = points;
+            self.scores[striker.index()] += points;
+            let ended_colours = self.on_table.is_empty();
+            if points > 0 {
+                self.current_break += points;
+                let best = &mut self.highest_break[striker.index()];
+                *best = (*best).max(self.current_break);
+                self.after_red = on == BallOn::Red;
+                verdict.text = format!(
+                    "{striker_name} pots {}: {points} point{}, break {}",
+                    describe(&potted),
+                    if points == 1 { "" } else { "s" },
+                    self.current_break
+                );
+            } else {
+                self.after_red = false;
+                self.current_break = 0;
+                verdict.text = format!("{striker_name} pots nothing: {opp_name} to play");
+            }
+            if ended_colours || (self.respotted_black && points > 0) {
+                self.finish(striker, true, &mut verdict);
+            } else {
+                self.next = NextShot {
+                    striker: if points > 0 { striker } else { opponent },
+                    on: self.ball_on(),
+                    in_hand: false,
+                    free_ball: false,
+                    choices: Vec::new(),
+                };
+            }
+        }
+        verdict.scores = self.scores;
+        verdict.next = self.end.is_none().then(|| self.next.clone());
+        if let Some((w, how)) = verdict.end {
+            verdict.text += &format!(
+                "; {} wins the frame {} ({}-{})",
+                self.name(w),
+                how,
+                self.scores[0],
+                self.scores[1]
+            );
+        } else if self.next.choices.contains(&Choice::BlackFirst(Seat::A)) {
+            verdict.text += &format!(
+                "; level at {}-{}: the black is re-spotted",
+                self.scores[0], self.scores[1]
+            );
+        }
+        Ok(verdict)
+    }
+
+    /// The frame's last stroke: decided on points (2.1(c)), by the re-spotted black, or a tie
+    /// that re-spots the black (3.3(d)). `by` takes the frame if the black decides it.
+    fn finish(&mut self, by: Seat, on_points: bool, verdict: &mut Verdict) {
+        let [a, b] = self.scores;
+        if self.respotted_black {
+            self.end = Some((by, FrameEnd::RespottedBlack));
+        } else if on_points && a != b {
+            let w = if a > b { Seat::A } else { Seat::B };
+            self.end = Some((w, FrameEnd::Points));
+        } else {
+            // 3.3(d): a tie: the black is spotted, the cue ball in hand, the players' toss
+            // decides who plays first.
+            self.respotted_black = true;
+            self.on_table = vec![BLACK];
+            self.after_red = false;
+            self.current_break = 0;
+            verdict.spots = vec![(BLACK, self.marks.black)];
+            self.next = NextShot {
+                striker: by,
+                on: BallOn::Next { colour: BLACK },
+                in_hand: true,
+                free_ball: false,
+                choices: vec![Choice::BlackFirst(Seat::A), Choice::BlackFirst(Seat::B)],
+            };
+        }
+        verdict.end = self.end;
+    }
+}
+
+/// "the red", "2 reds", "the blue", "a red and the pink".
+fn describe(potted: &[u8]) -> String {
+    let reds = potted.iter().filter(|&&n| is_red(n)).count();
+    let mut parts = Vec::new();
+    match reds {
+        0 => {}
+        1 => parts.push("a red".to_owned()),
+        n => parts.push(format!("{n} reds")),
+    }
+    parts.extend(
+        potted
+            .iter()
+            .filter(|&&n| !is_red(n))
+            .map(|&n| format!("the {}", name(n))),
+    );
+    parts.join(" and ")
+}
