@@ -526,9 +526,8 @@ fn rule_3_12_putting_the_offender_back_withdraws_the_free_ball() {
         before: &l,
         after: &l,
     });
-    // Without a free ball, the blue is no nomination with a red on.
-    assert!(err.is_ok());
-    assert!(!err.unwrap().fair());
+    // Without a free ball the blue cannot be nominated with a red on.
+    assert_eq!(err.unwrap_err(), SnookerError::BadNomination(BLUE));
 }
 
 #[test]

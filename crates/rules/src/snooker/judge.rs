@@ -64,11 +64,12 @@ impl Frame {
             .nominated
             .filter(|n| self.next.free_ball && !ordinary.contains(n));
         if let Some(n) = stroke.nominated {
-            let allowed = if free.is_some() {
-                n != WHITE && self.on_table.contains(&n)
-            } else {
-                is_colour(n) && self.on_table.contains(&n)
-            };
+            // 2.12: a colour after a red; 3.12: any ball as a free ball; the ball on itself.
+            let allowed = self.on_table.contains(&n)
+                && match base_on {
+                    BallOn::Colour { .. } => is_colour(n),
+                    _ => free.is_some() || ordinary.contains(&n),
+                };
             if !allowed {
                 return Err(SnookerError::BadNomination(n));
             }
