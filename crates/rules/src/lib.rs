@@ -13,7 +13,8 @@
 //! - [`foul`]: fouls and the ends of games, with sentences a player can read;
 //! - [`race`]: a match, race to N racks;
 //! - [`log`]: the rules side of a recording (calls, choices, verdicts), kept beside it;
-//! - [`breaks`]: one break judged by the rules and the counts over many (break statistics).
+//! - [`breaks`]: one break judged by the rules and the counts over many (break statistics);
+//! - [`snooker`]: snooker frames and matches under the WPBSA rules, an API of its own.
 
 pub mod breaks;
 pub mod eight_ball;

@@ -1,102 +1,15 @@
-//! Snooker rules, WPBSA Official Rules (revised November 2019): each test is named after the
-//! rule (section.rule) it pins. Strokes are hand-made summaries with the caller's layouts.
+//! Snooker rules, WPBSA Official Rules (revised November 2019): the strokes of a frame (3.3,
+//! 3.10, 3.12, 3.14). Each test is named after the rule it pins; strokes are hand-made
+//! summaries with the caller's layouts.
 
-use billiards_physics::snooker::{default_cue_position, layout};
-use billiards_physics::{BallSpec, Pocket, SnookerMarks, Table, Vec2};
+mod snooker_common;
+
+use billiards_physics::Vec2;
 use billiards_rules::Seat;
 use billiards_rules::ShotSummary;
 use billiards_rules::snooker::balls::*;
-use billiards_rules::snooker::geometry::{clear_path, respot, respot_all, snookered};
-use billiards_rules::snooker::{
-    BallOn, Choice, Foul, Frame, FrameEnd, SnookerError, SnookerMatch, Stroke, Verdict,
-};
-
-const R: f64 = 0.02625;
-
-fn frame() -> Frame {
-    let names = ["Ann".to_owned(), "Bob".to_owned()];
-    Frame::new(names, Table::snooker_12ft(), &BallSpec::snooker(), Seat::A).unwrap()
-}
-
-fn marks() -> SnookerMarks {
-    SnookerMarks::of(&Table::snooker_12ft()).unwrap()
-}
-
-/// The starting positions of the balls now on the table (and the cue ball).
-fn lay(f: &Frame) -> Vec<(u8, Vec2)> {
-    let t = Table::snooker_12ft();
-    layout(&t, &BallSpec::snooker(), default_cue_position(&marks()))
-        .unwrap()
-        .into_iter()
-        .filter(|b| b.number == WHITE || f.on_table.contains(&b.number))
-        .map(|b| (b.number, b.position))
-        .collect()
-}
-
-fn summary(first: Option<u8>, potted: &[u8]) -> ShotSummary {
-    ShotSummary {
-        first_contact: first,
-        pocketed: potted.iter().map(|&n| (n, Pocket::FootLeft)).collect(),
-        ..ShotSummary::default()
-    }
-}
-
-/// Plays a stroke on the start layout: the balls do not move, the potted ones drop.
-fn play(f: &mut Frame, first: Option<u8>, potted: &[u8], nominated: Option<u8>) -> Verdict {
-    let before = lay(f);
-    play_on(f, &before, first, potted, nominated)
-}
-
-fn play_on(
-    f: &mut Frame,
-    before: &[(u8, Vec2)],
-    first: Option<u8>,
-    potted: &[u8],
-    nominated: Option<u8>,
-) -> Verdict {
-    let s = summary(first, potted);
-    let after: Vec<(u8, Vec2)> = before
-        .iter()
-        .copied()
-        .filter(|(n, _)| !potted.contains(n))
-        .collect();
-    f.play(Stroke {
-        summary: &s,
-        nominated,
-        before,
-        after: &after,
-    })
-    .unwrap()
-}
-
-/// A frame with only the colours from `from` on.
-fn colours_from(from: u8) -> Frame {
-    let mut f = frame();
-    f.on_table = (from..=BLACK).collect();
-    f.next.on = f.ball_on();
-    f.next.in_hand = false;
-    f
-}
-
-/// A layout hiding the only red (1) behind the blue from a cue ball on the centre line.
-fn hidden_red() -> Vec<(u8, Vec2)> {
-    let m = marks();
-    let mut l = vec![(WHITE, Vec2::new(-0.8, 0.0)), (1, Vec2::new(0.3, 0.0))];
-    l.extend(COLOURS.iter().map(|&c| (c, m.spot(c).unwrap())));
-    l
-}
-
-#[test]
-fn rule_3_1_values_red_1_yellow_2_to_black_7() {
-    assert_eq!(value(1), Some(1));
-    assert_eq!(value(15), Some(1));
-    let vals: Vec<u32> = COLOURS.iter().map(|&c| value(c).unwrap()).collect();
-    assert_eq!(vals, vec![2, 3, 4, 5, 6, 7]);
-    assert_eq!(value(WHITE), None);
-    assert_eq!(value(22), None);
-    assert_eq!(next_colour(YELLOW), Some(GREEN));
-    assert_eq!(next_colour(BLACK), None);
-}
+use billiards_rules::snooker::{BallOn, Choice, Foul, Frame, SnookerError, Stroke};
+use snooker_common::*;
 
 #[test]
 fn rule_3_3_a_a_frame_starts_with_a_red_on_from_the_d_and_147_on_the_table() {
@@ -334,114 +247,6 @@ fn rule_3_10_colours_potted_on_a_foul_are_respotted_even_in_the_colours() {
     assert_eq!(f.next.on, BallOn::Next { colour: YELLOW });
 }
 
-#[test]
-fn rule_3_6_a_colour_goes_back_on_its_own_spot_when_free() {
-    let m = marks();
-    let t = Table::snooker_12ft();
-    assert_eq!(
-        respot(PINK, &m, &t, R, &[(WHITE, Vec2::new(0.0, 0.5))]).unwrap(),
-        m.pink
-    );
-}
-
-#[test]
-fn rule_3_6_an_occupied_own_spot_sends_it_to_the_highest_free_spot() {
-    let m = marks();
-    let t = Table::snooker_12ft();
-    // The cue ball sits on the pink spot.
-    let balls = [(WHITE, m.pink + Vec2::new(0.01, 0.0))];
-    assert_eq!(respot(PINK, &m, &t, R, &balls).unwrap(), m.black);
-    // Black spot taken too: the blue's.
-    let balls = [balls[0], (1, m.black)];
-    assert_eq!(respot(PINK, &m, &t, R, &balls).unwrap(), m.blue);
-}
-
-#[test]
-fn rule_3_6_all_spots_taken_it_goes_towards_the_top_cushion() {
-    let m = marks();
-    let t = Table::snooker_12ft();
-    let mut balls: Vec<(u8, Vec2)> = COLOURS
-        .iter()
-        .filter(|&&c| c != PINK)
-        .map(|&c| (c, m.spot(c).unwrap()))
-        .collect();
-    balls.push((WHITE, m.pink));
-    let p = respot(PINK, &m, &t, R, &balls).unwrap();
-    assert_eq!(p.y, m.pink.y);
-    assert!(p.x > m.pink.x);
-    assert!(
-        (p.x - m.pink.x - 2.0 * R).abs() < 1e-4,
-        "as near as possible: {p:?}"
-    );
-}
-
-#[test]
-fn rule_3_6_no_room_towards_the_top_it_goes_towards_the_bottom() {
-    let m = marks();
-    let t = Table::snooker_12ft();
-    let hx = t.length / 2.0;
-    // Every spot taken and a line of reds from the black to the top cushion.
-    let mut balls: Vec<(u8, Vec2)> = COLOURS
-        .iter()
-        .filter(|&&c| c != BLACK)
-        .map(|&c| (c, m.spot(c).unwrap()))
-        .collect();
-    let mut x = m.black.x;
-    let mut n = 1;
-    while x < hx - R {
-        balls.push((n, Vec2::new(x, 0.0)));
-        x += 2.0 * R;
-        n += 1;
-    }
-    let p = respot(BLACK, &m, &t, R, &balls).unwrap();
-    assert!(p.x < m.black.x, "{p:?}");
-    assert!((m.black.x - p.x - 2.0 * R).abs() < 1e-4, "{p:?}");
-}
-
-#[test]
-fn rule_3_6_several_colours_the_highest_value_first() {
-    let m = marks();
-    let t = Table::snooker_12ft();
-    // The black spot and the pink spot are both covered; black and pink to spot.
-    let balls = [(1, m.black), (2, m.pink)];
-    let spots = respot_all(&[PINK, BLACK], &m, &t, R, &balls).unwrap();
-    assert_eq!(
-        spots[0],
-        (BLACK, m.blue),
-        "the black takes the highest free spot"
-    );
-    assert_eq!(spots[1], (PINK, m.brown), "then the pink the next one");
-    assert!(respot(3, &m, &t, R, &[]).is_err(), "reds are never spotted");
-}
-
-#[test]
-fn rule_2_16_not_snookered_when_both_edges_of_a_ball_on_are_clear() {
-    let l = hidden_red();
-    let objs: Vec<_> = l.iter().copied().filter(|&(n, _)| n != WHITE).collect();
-    assert!(!snookered(Vec2::new(-0.8, 0.4), &[1], &objs, R));
-    assert!(clear_path(Vec2::new(-0.8, 0.4), &[1], &objs, R));
-}
-
-#[test]
-fn rule_2_16_snookered_when_a_ball_not_on_hides_the_ball_on() {
-    let l = hidden_red();
-    let objs: Vec<_> = l.iter().copied().filter(|&(n, _)| n != WHITE).collect();
-    assert!(snookered(Vec2::new(-0.8, 0.0), &[1], &objs, R));
-    assert!(!clear_path(Vec2::new(-0.8, 0.0), &[1], &objs, R));
-    // Once the blue is the ball on itself it is no obstacle.
-    assert!(!snookered(Vec2::new(-0.8, 0.0), &[BLUE], &objs, R));
-}
-
-#[test]
-fn rule_2_16_one_edge_hidden_is_a_snooker_but_leaves_a_path() {
-    let l = hidden_red();
-    let objs: Vec<_> = l.iter().copied().filter(|&(n, _)| n != WHITE).collect();
-    // Off the line by less than two radii: the blue hides one edge of the red only.
-    let cue = Vec2::new(-0.8, 0.06);
-    assert!(snookered(cue, &[1], &objs, R));
-    assert!(clear_path(cue, &[1], &objs, R));
-}
-
 /// Ann fouls (no ball hit) leaving Bob's cue ball behind the blue; one red left.
 fn free_ball_frame() -> Frame {
     let mut f = frame();
@@ -499,6 +304,27 @@ fn rule_3_12_hitting_another_ball_than_the_free_ball_first_is_a_foul() {
     let v = play_on(&mut f, &l, Some(PINK), &[], Some(BLUE));
     assert_eq!(v.fouls.len(), 1);
     assert_eq!(v.penalty, 6);
+}
+
+#[test]
+fn rule_3_12_a_red_hit_before_the_nominated_free_ball_is_a_foul() {
+    let mut f = free_ball_frame();
+    f.choose(Choice::PlayOn).unwrap();
+    let l = hidden_red();
+    let v = play_on(&mut f, &l, Some(1), &[1], Some(BLUE));
+    assert_eq!(
+        v.fouls,
+        vec![Foul::WrongBallFirst {
+            hit: 1,
+            on: BallOn::Red
+        }]
+    );
+    assert_eq!(v.points, 0);
+    // Without nominating a free ball, the red is simply on.
+    let mut g = free_ball_frame();
+    g.choose(Choice::PlayOn).unwrap();
+    let v = play_on(&mut g, &l, Some(1), &[1], None);
+    assert!(v.fair() && v.points == 1);
 }
 
 #[test]
@@ -586,124 +412,6 @@ fn rule_3_14_an_in_off_alone_is_no_miss() {
 }
 
 #[test]
-fn rule_2_1_c_the_last_black_ends_the_frame_on_points() {
-    let mut f = colours_from(BLACK);
-    f.scores = [50, 40];
-    let v = play(&mut f, Some(BLACK), &[BLACK], None);
-    assert_eq!(v.end, Some((Seat::A, FrameEnd::Points)));
-    assert_eq!(f.scores, [57, 40]);
-    assert!(v.next.is_none());
-    assert!(
-        v.text.ends_with("Ann wins the frame on points (57-40)"),
-        "{}",
-        v.text
-    );
-    assert_eq!(
-        f.play(Stroke {
-            summary: &summary(None, &[]),
-            nominated: None,
-            before: &lay(&f),
-            after: &[]
-        })
-        .unwrap_err(),
-        SnookerError::Over
-    );
-}
-
-#[test]
-fn rule_2_1_c_a_foul_on_the_last_black_ends_the_frame() {
-    let mut f = colours_from(BLACK);
-    f.scores = [44, 40];
-    let v = play(&mut f, None, &[], None);
-    assert_eq!(v.penalty, 7);
-    assert_eq!(v.end, Some((Seat::B, FrameEnd::Points)), "47 to 44");
-}
-
-#[test]
-fn rule_3_3_d_a_tie_re_spots_the_black_and_the_toss_decides_who_plays() {
-    let mut f = colours_from(BLACK);
-    f.scores = [40, 47];
-    let v = play(&mut f, Some(BLACK), &[BLACK], None);
-    assert_eq!(v.end, None);
-    assert_eq!(f.scores, [47, 47]);
-    assert_eq!(v.spots, vec![(BLACK, marks().black)]);
-    assert!(
-        v.text.contains("level at 47-47: the black is re-spotted"),
-        "{}",
-        v.text
-    );
-    assert!(f.next.in_hand);
-    let c = f.choose(Choice::BlackFirst(Seat::B)).unwrap();
-    assert_eq!(c.next.striker, Seat::B);
-    // A safety, then Ann pots it.
-    play(&mut f, Some(BLACK), &[], None);
-    let v = play(&mut f, Some(BLACK), &[BLACK], None);
-    assert_eq!(v.end, Some((Seat::A, FrameEnd::RespottedBlack)));
-}
-
-#[test]
-fn rule_3_3_d_a_foul_on_the_re_spotted_black_loses_the_frame() {
-    let mut f = colours_from(BLACK);
-    f.scores = [40, 47];
-    play(&mut f, Some(BLACK), &[BLACK], None);
-    f.choose(Choice::BlackFirst(Seat::A)).unwrap();
-    let v = play(&mut f, Some(BLACK), &[WHITE], None);
-    assert_eq!(v.end, Some((Seat::B, FrameEnd::RespottedBlack)));
-    assert_eq!(f.scores, [47, 54]);
-}
-
-#[test]
-fn rule_2_1_a_only_the_striker_concedes_during_his_turn() {
-    let mut f = frame();
-    assert_eq!(f.concede(Seat::B).unwrap_err(), SnookerError::NotTheStriker);
-    assert_eq!(f.concede(Seat::A).unwrap(), (Seat::B, FrameEnd::Conceded));
-    assert_eq!(f.winner(), Some(Seat::B));
-    assert_eq!(f.concede(Seat::A).unwrap_err(), SnookerError::Over);
-}
-
-#[test]
-fn rule_2_1_b_a_claim_needs_the_black_alone_and_more_than_7_ahead() {
-    let mut f = colours_from(BLACK);
-    f.scores = [47, 40];
-    assert_eq!(f.claim(Seat::A).unwrap_err(), SnookerError::CannotClaim);
-    f.scores = [48, 40];
-    assert_eq!(f.claim(Seat::A).unwrap(), (Seat::A, FrameEnd::Claimed));
-    let mut g = colours_from(PINK);
-    g.scores = [80, 0];
-    assert_eq!(g.claim(Seat::A).unwrap_err(), SnookerError::CannotClaim);
-}
-
-#[test]
-fn snookers_required_counts_4_point_fouls_beyond_the_points_left() {
-    let mut f = colours_from(PINK);
-    assert_eq!(f.points_remaining(), 13);
-    f.scores = [0, 13];
-    assert_eq!(f.snookers_required(Seat::A), 0, "a tie is still possible");
-    f.scores = [0, 14];
-    assert_eq!(f.snookers_required(Seat::A), 1);
-    f.scores = [0, 22];
-    assert_eq!(f.snookers_required(Seat::A), 3);
-    assert_eq!(f.snookers_required(Seat::B), 0);
-}
-
-#[test]
-fn rule_2_3_a_match_is_the_best_of_an_odd_number_of_frames_alternating_breaks() {
-    assert_eq!(
-        SnookerMatch::new(4, Seat::A).unwrap_err(),
-        SnookerError::BestOf(4)
-    );
-    let mut m = SnookerMatch::new(5, Seat::A).unwrap();
-    assert_eq!(m.to_win(), 3);
-    assert_eq!(m.next_breaker(), Seat::A);
-    assert_eq!(m.record(Seat::B).unwrap(), None);
-    assert_eq!(m.next_breaker(), Seat::B);
-    m.record(Seat::B).unwrap();
-    m.record(Seat::A).unwrap();
-    assert_eq!(m.record(Seat::B).unwrap(), Some(Seat::B));
-    assert!(m.record(Seat::A).is_err());
-}
-
-#[test]
 fn bad_input_is_an_error_not_a_panic() {
     let mut f = frame();
     let l = lay(&f);
@@ -742,24 +450,4 @@ fn bad_input_is_an_error_not_a_panic() {
     });
     assert_eq!(e.unwrap_err(), SnookerError::NoCueBall);
     assert!(f.choose(Choice::Replace).is_err());
-}
-
-#[test]
-fn a_maximum_147_scores_every_red_with_the_black_then_the_colours() {
-    let mut f = frame();
-    for red in 1..=15 {
-        let v = play(&mut f, Some(red), &[red], None);
-        assert!(v.fair());
-        let v = play(&mut f, Some(BLACK), &[BLACK], Some(BLACK));
-        assert_eq!(v.spots.len(), 1);
-    }
-    let mut last = None;
-    for c in COLOURS {
-        last = Some(play(&mut f, Some(c), &[c], None));
-    }
-    let v = last.unwrap();
-    assert_eq!(f.scores, [147, 0]);
-    assert_eq!(f.highest_break, [147, 0]);
-    assert_eq!(v.end, Some((Seat::A, FrameEnd::Points)));
-    assert_eq!(f.points_remaining(), 0);
 }

@@ -88,12 +88,18 @@ impl Frame {
         };
         let mut legal = legal;
         legal.extend(free);
+        // 3.12: with a free ball nominated, it must be hit first (the summary has one first
+        // contact, so a simultaneous hit with the ball on is not seen).
+        let first_ok: Vec<u8> = match free {
+            Some(f) => vec![f],
+            None => legal.clone(),
+        };
         let potted: Vec<u8> = s.pocketed_object_balls().collect();
 
         let mut fouls = Vec::new();
         match s.first_contact {
             None => fouls.push(Foul::NoBallHit),
-            Some(hit) if !legal.contains(&hit) => fouls.push(Foul::WrongBallFirst { hit, on }),
+            Some(hit) if !first_ok.contains(&hit) => fouls.push(Foul::WrongBallFirst { hit, on }),
             Some(_) => {}
         }
         for &b in &potted {
@@ -198,8 +204,8 @@ impl Frame {
             self.after_red = false;
             let needed_after =
                 self.snookers_required(Seat::A) + self.snookers_required(Seat::B) > 0;
-            let reachable = !legal.is_empty()
-                && clear_path(cue_before, &legal, &objects(stroke.before), self.radius);
+            let reachable = !first_ok.is_empty()
+                && clear_path(cue_before, &first_ok, &objects(stroke.before), self.radius);
             verdict.miss = failed_contact && reachable && !needed_before && !needed_after;
             self.current_break = 0;
             let black_alone = before_table == [BLACK];
