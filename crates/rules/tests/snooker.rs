@@ -451,3 +451,56 @@ fn bad_input_is_an_error_not_a_panic() {
     assert_eq!(e.unwrap_err(), SnookerError::NoCueBall);
     assert!(f.choose(Choice::Replace).is_err());
 }
+
+#[test]
+fn rule_3_14_three_misses_in_a_row_with_a_full_view_lose_the_frame() {
+    let mut f = frame();
+    f.next.in_hand = false;
+    // The cue ball in full view of the last red.
+    let m = billiards_physics::SnookerMarks::of(&billiards_physics::Table::snooker_12ft()).unwrap();
+    f.on_table = std::iter::once(1).chain(COLOURS).collect();
+    let mut l = vec![(WHITE, Vec2::new(0.0, 0.5)), (1, Vec2::new(0.5, 0.5))];
+    l.extend(COLOURS.iter().map(|&c| (c, m.spot(c).unwrap())));
+    for k in 1..=3 {
+        let v = play_on(&mut f, &l, None, &[], None);
+        assert!(v.miss, "miss {k}");
+        if k < 3 {
+            assert_eq!(v.end, None);
+            f.choose(Choice::Replace).unwrap();
+        } else {
+            assert_eq!(
+                v.end,
+                Some((Seat::B, billiards_rules::snooker::FrameEnd::ThreeMisses))
+            );
+            assert!(
+                v.text.contains("Bob wins the frame after three misses"),
+                "{}",
+                v.text
+            );
+        }
+    }
+    // Playing on instead of replacing ends the count.
+    let mut g = frame();
+    g.next.in_hand = false;
+    g.on_table = f.on_table.clone();
+    for _ in 0..4 {
+        let v = play_on(&mut g, &l, None, &[], None);
+        assert!(v.miss && v.end.is_none());
+        g.choose(Choice::PlayOn).unwrap();
+    }
+}
+
+#[test]
+fn rule_3_4_the_cue_ball_in_hand_is_played_from_the_d() {
+    let mut f = frame();
+    let s = summary(Some(1), &[]);
+    let mut l = lay(&f);
+    l[0].1 = Vec2::new(0.0, 0.5);
+    let e = f.play(Stroke {
+        summary: &s,
+        nominated: None,
+        before: &l,
+        after: &l,
+    });
+    assert!(matches!(e.unwrap_err(), SnookerError::NotInD(..)));
+}

@@ -32,6 +32,9 @@ pub enum SnookerError {
     /// The layout before the stroke has no cue ball.
     #[error("the layout before the stroke has no cue ball")]
     NoCueBall,
+    /// 3.4: the cue ball in hand must be played from the D.
+    #[error("the cue ball in hand is at ({0:.3}, {1:.3}), outside the D")]
+    NotInD(f64, f64),
     /// The table cannot carry the snooker marks.
     #[error("{0}")]
     Table(String),
@@ -100,6 +103,10 @@ pub struct Frame {
     pub respotted_black: bool,
     /// The state before the last foul (3.14).
     pub before_foul: Option<Snapshot>,
+    /// 3.14: misses in a row by the striker with a full view of a ball on (the third
+    /// awards the frame to the opponent).
+    #[serde(default)]
+    pub full_view_misses: u8,
 }
 
 impl Frame {
@@ -131,6 +138,7 @@ impl Frame {
             end: None,
             respotted_black: false,
             before_foul: None,
+            full_view_misses: 0,
         })
     }
 
@@ -209,8 +217,12 @@ impl Frame {
         }
         let mut layout = None;
         match choice {
-            Choice::PlayOn => self.next.choices.clear(),
+            Choice::PlayOn => {
+                self.full_view_misses = 0;
+                self.next.choices.clear();
+            }
             Choice::PutBack => {
+                self.full_view_misses = 0;
                 // 3.10(c): the offender plays again; the free ball call is withdrawn.
                 self.next.striker = self.next.striker.other();
                 self.next.free_ball = false;

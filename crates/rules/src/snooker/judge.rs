@@ -55,6 +55,9 @@ impl Frame {
             self.check_ball(*n)?;
         }
         let cue_before = cue_of(stroke.before).ok_or(SnookerError::NoCueBall)?;
+        if self.next.in_hand && !self.marks.in_d(cue_before) {
+            return Err(SnookerError::NotInD(cue_before.x, cue_before.y));
+        }
         let striker = self.next.striker;
         let opponent = striker.other();
         let base_on = self.ball_on();
@@ -207,9 +210,19 @@ impl Frame {
             let reachable = !first_ok.is_empty()
                 && clear_path(cue_before, &first_ok, &objects(stroke.before), self.radius);
             verdict.miss = failed_contact && reachable && !needed_before && !needed_after;
+            // 3.14: a miss with both edges of a ball on in view counts towards three.
+            let full_view = !snookered(cue_before, &first_ok, &objects(stroke.before), self.radius);
+            self.full_view_misses = if verdict.miss && full_view {
+                self.full_view_misses + 1
+            } else {
+                0
+            };
             self.current_break = 0;
             let black_alone = before_table == [BLACK];
-            if self.respotted_black || black_alone {
+            if self.full_view_misses >= 3 {
+                self.end = Some((opponent, FrameEnd::ThreeMisses));
+                verdict.end = self.end;
+            } else if self.respotted_black || black_alone {
                 self.finish(opponent, black_alone, &mut verdict);
             } else {
                 self.before_foul = Some(Snapshot {
@@ -267,6 +280,7 @@ impl Frame {
                 }
             };
             verdict.points = points;
+            self.full_view_misses = 0;
             self.scores[striker.index()] += points;
             let ended_colours = self.on_table.is_empty();
             if points > 0 {

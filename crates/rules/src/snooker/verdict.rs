@@ -126,6 +126,8 @@ pub enum FrameEnd {
     Claimed,
     /// 3.3(d): the first score or foul on the re-spotted black after a tie.
     RespottedBlack,
+    /// 3.14: the loser missed three times in a row with a full view of a ball on.
+    ThreeMisses,
 }
 
 impl fmt::Display for FrameEnd {
@@ -135,6 +137,7 @@ impl fmt::Display for FrameEnd {
             FrameEnd::Conceded => "conceded",
             FrameEnd::Claimed => "claimed with only the black left",
             FrameEnd::RespottedBlack => "on the re-spotted black",
+            FrameEnd::ThreeMisses => "after three misses in a row with a full view of the ball on",
         })
     }
 }
