@@ -145,3 +145,36 @@ fn a_maximum_147_scores_every_red_with_the_black_then_the_colours() {
     assert_eq!(v.end, Some((Seat::A, FrameEnd::Points)));
     assert_eq!(f.points_remaining(), 0);
 }
+
+#[test]
+fn a_frame_is_a_plain_value_saved_and_restored_exactly() {
+    let mut f = frame();
+    play(&mut f, Some(1), &[1], None);
+    play(&mut f, Some(YELLOW), &[], Some(BLACK));
+    let text = serde_json::to_string(&f).unwrap();
+    let back: billiards_rules::snooker::Frame = serde_json::from_str(&text).unwrap();
+    assert_eq!(back, f);
+    assert!(
+        back.before_foul.is_some(),
+        "the layout for a replace is kept"
+    );
+}
+
+#[test]
+fn a_frame_refuses_a_table_or_ball_it_cannot_use() {
+    use billiards_physics::{BallSpec, Table};
+    let names = ["Ann".to_owned(), "Bob".to_owned()];
+    let short = Table {
+        length: 1.0,
+        ..Table::snooker_12ft()
+    };
+    let e =
+        billiards_rules::snooker::Frame::new(names.clone(), short, &BallSpec::snooker(), Seat::A);
+    assert!(matches!(e.unwrap_err(), SnookerError::Table(_)));
+    let nan = BallSpec {
+        radius: f64::NAN,
+        ..BallSpec::snooker()
+    };
+    let e = billiards_rules::snooker::Frame::new(names, Table::snooker_12ft(), &nan, Seat::A);
+    assert!(matches!(e.unwrap_err(), SnookerError::Table(_)));
+}

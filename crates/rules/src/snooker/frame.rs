@@ -118,6 +118,12 @@ impl Frame {
         breaker: Seat,
     ) -> Result<Self, SnookerError> {
         let marks = SnookerMarks::of(&table).map_err(SnookerError::Table)?;
+        if !(ball.radius.is_finite() && ball.radius > 0.0 && 4.0 * ball.radius < table.width) {
+            return Err(SnookerError::Table(format!(
+                "a ball of radius {} m does not fit the table",
+                ball.radius
+            )));
+        }
         Ok(Self {
             players,
             table,
