@@ -28,9 +28,13 @@ use crate::{Decision, decide_planned};
 use rand::Rng;
 use rayon::prelude::*;
 
-/// The stream index of the seeds of the next-shot searches, candidate `i` at `STREAMS + i`
-/// (far from the candidates' own streams and [`crate::Plan::executed`]'s `u64::MAX`).
-const STREAMS: u64 = 1 << 62;
+/// The stream of the outcomes' draws: common to every shot (common random numbers: shots
+/// that differ a little meet the same execution errors, so the second ply compares their
+/// positions, not their luck), far from the candidates' own streams and
+/// [`crate::Plan::executed`]'s `u64::MAX`.
+const OUTCOMES: u64 = 1 << 62;
+/// The stream of the seeds of the next-shot searches, draw `k` at `(seed, STREAMS, k)`.
+const STREAMS: u64 = (1 << 62) + 1;
 
 /// Candidates valued two plies deep and the work it took.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -43,7 +47,7 @@ pub struct Valued {
     pub events: usize,
 }
 
-/// One searched outcome: (second-ply value - one-ply value), simulations, events.
+/// One outcome: (second-ply value - one-ply value), simulations, events.
 type Correction = (f64, usize, usize);
 
 /// The two-ply values of candidates `order` (indices into `cands` and `stats`), by
@@ -62,7 +66,7 @@ pub fn value(
         .collect();
     let corrections: Vec<Correction> = jobs
         .par_iter()
-        .map(|&(i, k)| correction(search, &cands[i], i as u64, k, two))
+        .map(|&(i, k)| correction(search, &cands[i], k, two))
         .collect();
     let mut out = Valued::default();
     for (n, &i) in order.iter().enumerate() {
@@ -75,10 +79,10 @@ pub fn value(
     out
 }
 
-/// Draw `k` of candidate `cand` (stream `index`): its second-ply value minus its one-ply
+/// Draw `k` of the outcomes' stream struck as `cand`: its second-ply value minus its one-ply
 /// value, and the work it took.
-fn correction(search: &Search, cand: &Candidate, index: u64, k: u64, two: TwoPly) -> Correction {
-    let Some((mut table, summary, events)) = search.outcome(cand, index, k) else {
+fn correction(search: &Search, cand: &Candidate, k: u64, two: TwoPly) -> Correction {
+    let Some((mut table, summary, events)) = search.outcome(cand, OUTCOMES, k) else {
         return (0.0, 1, 0);
     };
     let me = search.state.next.shooter;
@@ -98,7 +102,7 @@ fn correction(search: &Search, cand: &Candidate, index: u64, k: u64, two: TwoPly
         return (0.0, 1, events);
     }
     after.next.spot.clear();
-    let seed = stream(search.seed, STREAMS + index, k).random();
+    let seed = stream(search.seed, STREAMS, k).random();
     let reply = Budget {
         second: None,
         ..two.reply.clone()
