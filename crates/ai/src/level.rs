@@ -19,8 +19,8 @@ pub enum Level {
     Hard,
     /// The reference noise; hard's search with a larger second ply (up to 5 s a decision).
     Expert,
-    /// No execution noise (for analysis); the whole search, planned under half the reference
-    /// noise so that it still prefers shots with room for error.
+    /// No execution noise (for analysis); hard's search (both plies), planned under half the
+    /// reference noise so that it still prefers shots with room for error.
     Perfect,
 }
 
