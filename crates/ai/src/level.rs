@@ -120,9 +120,9 @@ const HARD_REPLY: Budget = Budget {
     second: None,
 };
 
-/// Hard's second ply: the best 4 shots, 16 outcomes each (4 outcomes left the choice to the
-/// noise of the second-ply values: 49 % of 80 games against the one-ply baseline, 16 won
-/// 57.5 % of 200; 8 shots instead of 4 changed nothing, crates/ai/README.md).
+/// Hard's second ply: the best 4 shots, 16 outcomes each (against the one-ply baseline, 4
+/// outcomes won 49 % of 80 dev games, 16 won 57.5 % of 200; 8 shots or 32 outcomes did no
+/// better: crates/ai/README.md).
 const HARD_SECOND: TwoPly = TwoPly {
     finalists: 4,
     outcomes: 16,
