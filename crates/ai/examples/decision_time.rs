@@ -3,6 +3,7 @@
 //!
 //! ```sh
 //! cargo run --release -p billiards-ai --example decision_time -- hard 20
+//! cargo run --release -p billiards-ai --example decision_time -- expert 10
 //! ```
 
 use billiards_ai::play::table_and_params;

@@ -258,6 +258,33 @@ impl Search<'_> {
         Some((summary, layout, events))
     }
 
+    /// Draw `k` of candidate `index` run to rest (no early stop: the next shot is searched
+    /// from where every ball stops): the table at rest, its summary and the events it took.
+    /// `None` when the cue ball cannot be placed, the strike is refused or the run takes
+    /// more than [`MAX_BREAK_EVENTS`].
+    pub(crate) fn outcome(
+        &self,
+        cand: &Candidate,
+        index: u64,
+        k: u64,
+    ) -> Option<(Simulation, ShotSummary, usize)> {
+        let mut sim = self.start(cand)?;
+        sim.set_record_history(false);
+        let mut rng = stream(self.seed, index, k);
+        let shot = self.noise.apply(cand.shot, sim.params(), &mut rng);
+        let first = sim.event_count();
+        sim.strike(self.cue, shot).ok()?;
+        let mut summary = ShotSummary::default();
+        while let Some(e) = sim.step_event() {
+            summary.record(&e.kind, sim.numbers());
+            if sim.event_count() - first > MAX_BREAK_EVENTS {
+                return None;
+            }
+        }
+        let events = sim.event_count() - first;
+        Some((sim, summary, events))
+    }
+
     /// One noisy sample of candidate `index` (draw `k`), scored, run in the scratch
     /// simulation `sim` (reset from the base first, its buffers reused).
     pub fn sample(&self, cand: &Candidate, index: u64, k: u64, sim: &mut Simulation) -> Stats {
@@ -289,7 +316,7 @@ impl Search<'_> {
 
     /// The value of `verdict` for `me` with the balls left in `layout` (the cue ball off the
     /// table: `None`), and whether it was a legal pot (or a win).
-    fn score(
+    pub(crate) fn score(
         &self,
         verdict: &Verdict,
         layout: Option<&Layout>,

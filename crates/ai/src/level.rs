@@ -14,10 +14,13 @@ pub enum Level {
     Easy,
     /// Twice the reference noise; pots, banks and combinations, a short refinement.
     Medium,
-    /// The reference noise (FastFiz magnitude 1); the whole search.
+    /// The reference noise (FastFiz magnitude 1); the whole one-ply search, then the best
+    /// few shots valued two plies deep by a small search of the next shot ([`TwoPly`]).
     Hard,
-    /// No execution noise (for analysis); the whole search, planned under half the reference
-    /// noise so that it still prefers shots with room for error.
+    /// The reference noise; hard's search with a larger second ply (up to 5 s a decision).
+    Expert,
+    /// No execution noise (for analysis); hard's search (both plies), planned under half the
+    /// reference noise so that it still prefers shots with room for error.
     Perfect,
 }
 
@@ -43,6 +46,21 @@ pub struct Budget {
     pub correct_aim: bool,
     /// Safety candidates per legal ball.
     pub safeties: usize,
+    /// The second ply: `None` values positions analytically (one ply).
+    pub second: Option<TwoPly>,
+}
+
+/// The second ply (crate::twoply): after the rounds of [`Budget`], the `finalists` best
+/// shots each have `outcomes` of their noisy runs (their first draws) valued by a search of
+/// the shot that follows, from the side of whoever plays it, with the budget `reply`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TwoPly {
+    /// Shots valued two plies deep (the best by their one-ply value).
+    pub finalists: usize,
+    /// Noisy outcomes of each searched for the next shot.
+    pub outcomes: usize,
+    /// The budget of each search of the next shot (its own `second` is ignored).
+    pub reply: &'static Budget,
 }
 
 const STUN: TipOffset = TipOffset {
@@ -70,9 +88,79 @@ const RIGHT: TipOffset = TipOffset {
     height: 0.0,
 };
 
+/// The whole one-ply search: every candidate sampled 12 times, the best 48 32 more, the best
+/// 12 of those 128 more.
+const ONE_PLY: Budget = Budget {
+    samples: 12,
+    rounds: &[(48, 32), (12, 128)],
+    aims: 14,
+    speeds: &[0.8, 1.0, 1.5, 2.4],
+    tips: &[STUN, FOLLOW, DRAW, DEEP_DRAW, LEFT, RIGHT],
+    banks_kicks_combos: true,
+    placements: 6,
+    correct_aim: true,
+    safeties: 9,
+    second: None,
+};
+
+/// Hard's search of the next shot: the straight and cut pots of the four best aims, three
+/// speeds and three tips, 4 samples each, the best four 32 more (the value read from the
+/// search is its best mean: few finalists with many samples keep its noise and its upward
+/// bias small); no throw correction.
+const HARD_REPLY: Budget = Budget {
+    samples: 4,
+    rounds: &[(4, 32)],
+    aims: 4,
+    speeds: &[1.0, 1.5, 2.4],
+    tips: &[STUN, FOLLOW, DRAW],
+    banks_kicks_combos: false,
+    placements: 2,
+    correct_aim: false,
+    safeties: 3,
+    second: None,
+};
+
+/// Hard's second ply: the best 4 shots, 16 outcomes each (against the one-ply baseline, 4
+/// outcomes won 49 % of 80 dev games, 16 won 57.5 % of 200; 8 shots or 32 outcomes did no
+/// better: crates/ai/README.md).
+const HARD_SECOND: TwoPly = TwoPly {
+    finalists: 4,
+    outcomes: 16,
+    reply: &HARD_REPLY,
+};
+
+/// Expert's search of the next shot: banks, kicks and combinations too (the opponent's
+/// reply to a safety is often one), five aims in three speeds and five tips, 4 samples
+/// each, the best six 16 more, the best three of those 48 more.
+const EXPERT_REPLY: Budget = Budget {
+    samples: 4,
+    rounds: &[(6, 16), (3, 48)],
+    aims: 5,
+    speeds: &[1.0, 1.5, 2.4],
+    tips: &[STUN, FOLLOW, DRAW, LEFT, RIGHT],
+    banks_kicks_combos: true,
+    placements: 3,
+    correct_aim: true,
+    safeties: 5,
+    second: None,
+};
+
+/// Expert's second ply: the best 6 shots, 16 outcomes each.
+const EXPERT_SECOND: TwoPly = TwoPly {
+    finalists: 6,
+    outcomes: 16,
+    reply: &EXPERT_REPLY,
+};
+
 impl Level {
-    /// Every level, weakest first.
-    pub const ALL: [Level; 4] = [Level::Easy, Level::Medium, Level::Hard, Level::Perfect];
+    /// Every level, weakest first (perfect, without noise in its hand, last).
+    pub const ALL: [Level; 5] = [
+        Level::Easy,
+        Level::Medium,
+        Level::Hard,
+        Level::Expert,
+        Level::Perfect,
+    ];
 
     /// The noise on the shots this level plays.
     pub fn execution_noise(self) -> Noise {
@@ -80,7 +168,7 @@ impl Level {
             magnitude: match self {
                 Level::Easy => 3.0,
                 Level::Medium => 2.0,
-                Level::Hard => 1.0,
+                Level::Hard | Level::Expert => 1.0,
                 Level::Perfect => 0.0,
             },
         }
@@ -107,6 +195,7 @@ impl Level {
                 placements: 3,
                 correct_aim: false,
                 safeties: 3,
+                second: None,
             },
             Level::Medium => Budget {
                 samples: 12,
@@ -118,19 +207,23 @@ impl Level {
                 placements: 4,
                 correct_aim: true,
                 safeties: 5,
+                second: None,
             },
             Level::Hard | Level::Perfect => Budget {
-                samples: 12,
-                rounds: &[(48, 32), (12, 128)],
-                aims: 14,
-                speeds: &[0.8, 1.0, 1.5, 2.4],
-                tips: &[STUN, FOLLOW, DRAW, DEEP_DRAW, LEFT, RIGHT],
-                banks_kicks_combos: true,
-                placements: 6,
-                correct_aim: true,
-                safeties: 9,
+                second: Some(HARD_SECOND),
+                ..ONE_PLY
+            },
+            Level::Expert => Budget {
+                second: Some(EXPERT_SECOND),
+                ..ONE_PLY
             },
         }
+    }
+
+    /// The one-ply search hard played before the second ply (the baseline
+    /// [`crate::Player::OnePly`] plays it with hard's noise).
+    pub fn one_ply() -> Budget {
+        ONE_PLY
     }
 
     /// The level's name, as the command line spells it.
@@ -139,6 +232,7 @@ impl Level {
             Level::Easy => "easy",
             Level::Medium => "medium",
             Level::Hard => "hard",
+            Level::Expert => "expert",
             Level::Perfect => "perfect",
         }
     }
@@ -152,7 +246,7 @@ impl fmt::Display for Level {
 
 /// A name that is not a level.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("unknown level {0:?}: expected easy, medium, hard or perfect")]
+#[error("unknown level {0:?}: expected easy, medium, hard, expert or perfect")]
 pub struct UnknownLevel(pub String);
 
 impl FromStr for Level {

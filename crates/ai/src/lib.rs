@@ -12,6 +12,8 @@
 //!   judged by the rules, the best few refined with more samples; safeties (and push outs)
 //!   when nothing scores;
 //! - [`placement`]: ball in hand, by the same search from the best few places;
+//! - [`twoply`]: the best few shots valued two plies deep, by a search of the next shot
+//!   from their noisy outcomes;
 //! - [`level`]: skill levels (noise and budget); [`greedy`]: a baseline without simulation.
 //!
 //! The same seed gives the same decision on any number of threads: every random draw comes
@@ -34,12 +36,13 @@ pub mod play;
 pub mod position;
 pub mod quiet;
 mod search;
+pub mod twoply;
 
 pub use candidates::{Candidate, Layout, ShotKind};
 pub use evaluate::{Mode, Stats};
-pub use level::{Budget, Level, UnknownLevel};
+pub use level::{Budget, Level, TwoPly, UnknownLevel};
 pub use noise::Noise;
-pub use search::{decide, decide_with};
+pub use search::{decide, decide_planned, decide_with};
 
 use billiards_physics::{Params, Shot, Simulation, Vec2};
 use billiards_rules::{Call, Choice, GameState, NextShot};
@@ -128,7 +131,7 @@ pub(crate) fn ready<'a>(state: &'a GameState, sim: &Simulation) -> Result<&'a Ne
     Ok(&state.next)
 }
 
-/// A player: the computer at a level, or the greedy baseline.
+/// A player: the computer at a level, or a baseline: greedy, or the one-ply search.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Player {
@@ -136,6 +139,10 @@ pub enum Player {
     Computer(Level),
     /// [`greedy`]: the ghost-ball player without simulation.
     Greedy,
+    /// Hard as it played before the second ply: the whole one-ply search
+    /// ([`Level::one_ply`]) with hard's noise; the baseline the two-ply levels are measured
+    /// against.
+    OnePly,
 }
 
 impl Player {
@@ -149,15 +156,19 @@ impl Player {
         match self {
             Player::Computer(level) => decide(state, sim, level, seed),
             Player::Greedy => greedy::decide(state, sim),
+            Player::OnePly => {
+                let noise = Level::Hard.planning_noise();
+                decide_planned(state, sim, noise, &Level::one_ply(), seed, Mode::Lean)
+            }
         }
     }
 
-    /// The noise on its shots: the greedy player's hand is the reference one, as hard's, so
-    /// the two differ in their choices only.
+    /// The noise on its shots: the baselines' hand is the reference one, as hard's, so they
+    /// differ from hard in their choices only.
     pub fn execution_noise(self) -> Noise {
         match self {
             Player::Computer(level) => level.execution_noise(),
-            Player::Greedy => Noise::REFERENCE,
+            Player::Greedy | Player::OnePly => Noise::REFERENCE,
         }
     }
 }
@@ -167,13 +178,14 @@ impl fmt::Display for Player {
         match self {
             Player::Computer(level) => level.fmt(f),
             Player::Greedy => f.write_str("greedy"),
+            Player::OnePly => f.write_str("one-ply"),
         }
     }
 }
 
 /// A name that is not a player.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("unknown player {0:?}: expected easy, medium, hard, perfect or greedy")]
+#[error("unknown player {0:?}: expected easy, medium, hard, expert, perfect, greedy or one-ply")]
 pub struct UnknownPlayer(pub String);
 
 impl FromStr for Player {
@@ -182,6 +194,7 @@ impl FromStr for Player {
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         match s {
             "greedy" => Ok(Player::Greedy),
+            "one-ply" => Ok(Player::OnePly),
             _ => s
                 .parse()
                 .map(Player::Computer)

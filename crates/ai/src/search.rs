@@ -5,7 +5,8 @@ use crate::candidates::{
     Candidate, Layout, ShotKind, combo_aims, direct_aims, expand, rail_aims, safeties,
 };
 use crate::evaluate::{Mode, Run, Search, Stats};
-use crate::level::{Budget, Level};
+use crate::level::{Budget, Level, TwoPly};
+use crate::noise::Noise;
 use crate::placement::places;
 use crate::position::{aim_probability, best_success};
 use crate::{AiError, Decision, Plan, ready};
@@ -38,9 +39,29 @@ pub fn decide_with(
     seed: u64,
     mode: Mode,
 ) -> Result<Decision, AiError> {
+    decide_planned(
+        state,
+        sim,
+        level.planning_noise(),
+        &level.budget(),
+        seed,
+        mode,
+    )
+}
+
+/// [`decide_with`] planned under `noise` with `budget` instead of a level's (the one-ply
+/// baseline, [`crate::Player::OnePly`], and the second ply's searches of the next shot).
+pub fn decide_planned(
+    state: &GameState,
+    sim: &Simulation,
+    noise: Noise,
+    budget: &Budget,
+    seed: u64,
+    mode: Mode,
+) -> Result<Decision, AiError> {
     let next = ready(state, sim)?;
     if !next.choices.is_empty() {
-        let (choice, estimate) = choose(state, sim, level, seed, mode);
+        let (choice, estimate) = choose(state, sim, noise, budget, seed, mode);
         return Ok(Decision::Choose { choice, estimate });
     }
     let cue = sim
@@ -61,11 +82,11 @@ pub fn decide_with(
         state,
         base,
         cue,
-        noise: level.planning_noise(),
+        noise,
         seed,
         mode,
     };
-    let budget = level.budget();
+    let budget = budget.clone();
     let place_list: Vec<Option<Vec2>> = if in_hand {
         let found = if next.break_shot {
             break_places(sim, cue, next.cue_ball)
@@ -125,8 +146,12 @@ pub fn decide_with(
     for &(k, m) in budget.rounds {
         pool.refine(&search, k, m);
     }
+    if let Some(two) = budget.second.filter(|_| !next.break_shot) {
+        pool.second_ply(&search, two);
+    }
     let best = pool.best().ok_or(AiError::NoBall)?;
     let (c, s) = (pool.cands[best], pool.stats[best]);
+    let value = pool.value(best);
     Ok(Decision::Shoot(Plan {
         shot: c.shot,
         place: c.place,
@@ -134,7 +159,7 @@ pub fn decide_with(
         kind: c.kind,
         success: s.pot_rate(),
         foul: s.fouls as f64 / s.n.max(1) as f64,
-        value: s.mean(),
+        value,
         samples: s.n,
         simulations: pool.simulations,
         events: pool.events,
@@ -150,6 +175,8 @@ struct Pool {
     events: usize,
     /// The candidates of the last refinement round (empty: none yet).
     finalists: Vec<usize>,
+    /// The candidates valued two plies deep and their values (empty: one ply).
+    two: Vec<(usize, f64)>,
 }
 
 impl Pool {
@@ -188,6 +215,32 @@ impl Pool {
         self.finalists = order;
     }
 
+    /// Values the best finalists two plies deep ([`crate::twoply`]); they become the only
+    /// candidates [`Pool::best`] chooses from.
+    fn second_ply(&mut self, search: &Search, two: TwoPly) {
+        let pool: Vec<usize> = if self.finalists.is_empty() {
+            (0..self.cands.len()).collect()
+        } else {
+            self.finalists.clone()
+        };
+        let mut order = pool;
+        let mean = |i: usize| self.stats[i].mean();
+        order.sort_by(|&a, &b| mean(b).total_cmp(&mean(a)).then(a.cmp(&b)));
+        order.truncate(two.finalists);
+        let valued = crate::twoply::value(search, &self.cands, &self.stats, &order, two);
+        self.simulations += valued.simulations;
+        self.events += valued.events;
+        self.two = valued.values;
+    }
+
+    /// The value of candidate `i`: two plies deep when it was so valued, else its mean.
+    fn value(&self, i: usize) -> f64 {
+        self.two
+            .iter()
+            .find(|v| v.0 == i)
+            .map_or(self.stats[i].mean(), |v| v.1)
+    }
+
     fn count(&mut self, stats: &[Stats]) {
         self.simulations += stats.iter().map(|s| s.n).sum::<usize>();
         self.events += stats.iter().map(|s| s.events).sum::<usize>();
@@ -196,6 +249,14 @@ impl Pool {
     /// The candidate of the best mean value among the finalists of the last round (all
     /// candidates when there was none; ties: the first).
     fn best(&self) -> Option<usize> {
+        if !self.two.is_empty() {
+            return self
+                .two
+                .iter()
+                .copied()
+                .reduce(|a, b| if b.1 > a.1 { b } else { a })
+                .map(|v| v.0);
+        }
         let all: Vec<usize> = (0..self.cands.len()).collect();
         let pool = if self.finalists.is_empty() {
             &all
@@ -347,7 +408,8 @@ const BREAK_VALUE: f64 = 0.1;
 fn choose(
     state: &GameState,
     sim: &Simulation,
-    level: Level,
+    noise: Noise,
+    budget: &Budget,
     seed: u64,
     mode: Mode,
 ) -> (Choice, f64) {
@@ -368,7 +430,7 @@ fn choose(
             }
             after.next.spot.clear();
             let salt = seed.wrapping_add(0x9e37_79b9 * (k as u64 + 1));
-            match decide_with(&after, &table, level, salt, mode) {
+            match decide_planned(&after, &table, noise, budget, salt, mode) {
                 Ok(Decision::Shoot(plan)) => (sign * plan.value, plan.success),
                 _ => continue,
             }
@@ -379,17 +441,17 @@ fn choose(
     }
     match best {
         Some((_, choice, estimate)) => (choice, estimate),
-        None => analytic_choice(state, sim, level),
+        None => analytic_choice(state, sim, noise),
     }
 }
 
 /// A choice the rules offer: the analytic best chance from the table as it lies decides
 /// whether to shoot it (after a push out or an illegal 8-ball break; spot the 8 after it
 /// dropped on the break) or to hand it back / re-rack.
-fn analytic_choice(state: &GameState, sim: &Simulation, level: Level) -> (Choice, f64) {
+fn analytic_choice(state: &GameState, sim: &Simulation, noise: Noise) -> (Choice, f64) {
     let next = &state.next;
     let p = match Layout::of(sim, None) {
-        Some(layout) => best_success(&layout, &next.legal_first, level.planning_noise()),
+        Some(layout) => best_success(&layout, &next.legal_first, noise),
         // The cue ball went down (a scratch on the break): ball in hand behind the line.
         None => 0.6,
     };

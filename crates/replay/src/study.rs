@@ -46,7 +46,7 @@ pub struct StudyArgs {
     #[arg(long, value_parser = crate::cli::parse_pocket, default_value = "foot-left")]
     pub pocket: Pocket,
     /// The player whose execution noise the shot is struck with: easy, medium, hard,
-    /// perfect or greedy.
+    /// expert, perfect, greedy or one-ply.
     #[arg(long, default_value = "hard")]
     pub player: Player,
     /// Cue speed in m/s (default: the computer's speed for the shot from each cell).

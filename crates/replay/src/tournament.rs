@@ -23,7 +23,8 @@ pub struct TournamentArgs {
     /// The game: nine-ball or eight-ball.
     #[arg(long, value_enum, default_value = "nine-ball")]
     pub game: crate::cli::GameArg,
-    /// The two players, `A,B`: easy, medium, hard, perfect or greedy. A breaks the even games.
+    /// The two players, `A,B`: easy, medium, hard, expert, perfect, greedy or one-ply. A
+    /// breaks the even games.
     #[arg(long, default_value = "hard,easy")]
     pub players: String,
     /// Games in the whole tournament (every shard counts the same).
