@@ -408,12 +408,12 @@ pub fn describe(decision: &Decision, view: &OrbitCamera) -> String {
 /// "near" (in the top view "top" or "bottom"). The rules' "left" (seen from the head end)
 /// read as the top rail in the top view (issue 28, item 10).
 pub fn cushion_name(cushion: Cushion, view: &OrbitCamera) -> &'static str {
-    let outward = match cushion {
+    match cushion {
         Cushion::Head => return "head",
         Cushion::Foot => return "foot",
-        Cushion::Left => Vec2::new(0.0, 1.0),
-        Cushion::Right => Vec2::new(0.0, -1.0),
-    };
+        Cushion::Left | Cushion::Right => {}
+    }
+    let outward = -cushion.inward_normal();
     // The camera's forward and right on the table, in the solver's axes (yaw 0 looks along
     // the solver's +y, with its +x to the right).
     let yaw = f64::from(view.yaw);

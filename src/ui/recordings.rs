@@ -119,9 +119,8 @@ fn recordings(ui: &mut egui::Ui, param: &mut RecordingsParam) {
     }
     // The open replay's Export form, whose last line is the export's progress; with the
     // replay closed, only how the last export went.
-    if replay.open.is_some() {
-        export_section(ui, replay, export, commands);
-    } else {
-        export_status(ui, replay);
+    match &replay.open {
+        Some(open) => export_section(ui, replay, open, export, commands),
+        None => export_status(ui, replay),
     }
 }

@@ -230,12 +230,10 @@ fn timeline(
 pub fn export_section(
     ui: &mut egui::Ui,
     replay: &Replay,
+    open: &OpenRecording,
     form: &mut ExportForm,
     commands: &mut MessageWriter<ReplayCommand>,
 ) {
-    let Some(open) = &replay.open else {
-        return;
-    };
     egui::CollapsingHeader::new("Export")
         .default_open(true)
         .show(ui, |ui| export_form(ui, replay, open, form, commands));

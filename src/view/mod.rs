@@ -49,6 +49,17 @@ pub struct ViewInset {
     pub bottom: f32,
 }
 
+impl ViewInset {
+    /// Every edge times `scale` (logical to physical pixels).
+    pub fn scaled(self, scale: f32) -> Self {
+        Self {
+            left: self.left * scale,
+            top: self.top * scale,
+            bottom: self.bottom * scale,
+        }
+    }
+}
+
 /// Where the table camera draws.
 #[derive(Resource, Debug, Clone, Default, PartialEq)]
 pub struct SceneTarget {
@@ -72,15 +83,18 @@ pub fn scaled_size(window: UVec2, percent: u32) -> UVec2 {
 }
 
 /// The 3D view inside a target of `target` physical pixels stretched over a window of `window`
-/// physical pixels, right of the window's first `left`, below its first `top` and above its
-/// last `bottom` physical pixels (at least one pixel each way).
-pub fn view_viewport(window: UVec2, target: UVec2, left: f32, top: f32, bottom: f32) -> Viewport {
+/// physical pixels, clear of what `inset` covers (here in the window's physical pixels); at
+/// least one pixel each way.
+pub fn view_viewport(window: UVec2, target: UVec2, inset: ViewInset) -> Viewport {
     let window = window.max(UVec2::ONE);
     let target = target.max(UVec2::ONE);
-    let left = ((left * target.x as f32 / window.x as f32).round() as u32).min(target.x - 1);
-    let top = ((top * target.y as f32 / window.y as f32).round() as u32).min(target.y - 1);
-    let bottom =
-        ((bottom * target.y as f32 / window.y as f32).round() as u32).min(target.y - top - 1);
+    let (sx, sy) = (
+        target.x as f32 / window.x as f32,
+        target.y as f32 / window.y as f32,
+    );
+    let left = ((inset.left * sx).round() as u32).min(target.x - 1);
+    let top = ((inset.top * sy).round() as u32).min(target.y - 1);
+    let bottom = ((inset.bottom * sy).round() as u32).min(target.y - top - 1);
     Viewport {
         physical_position: UVec2::new(left, top),
         physical_size: UVec2::new(target.x - left, target.y - top - bottom),
@@ -160,13 +174,7 @@ fn fit_table_camera(
         scene.size = size;
     }
     let scale = window.scale_factor();
-    let viewport = view_viewport(
-        window_size,
-        size,
-        inset.left * scale,
-        inset.top * scale,
-        inset.bottom * scale,
-    );
+    let viewport = view_viewport(window_size, size, inset.scaled(scale));
     let unchanged = camera.viewport.as_ref().is_some_and(|current| {
         current.physical_position == viewport.physical_position
             && current.physical_size == viewport.physical_size
@@ -192,6 +200,10 @@ fn fit_table_camera(
 mod tests {
     use super::*;
 
+    fn inset(left: f32, top: f32, bottom: f32) -> ViewInset {
+        ViewInset { left, top, bottom }
+    }
+
     /// At 50 % of a 1280x720 window with the panel's 340 px on the left, the pointer at the
     /// centre of the 3D view is at the centre of the image's viewport; at 100 % nothing moves.
     #[test]
@@ -203,8 +215,12 @@ mod tests {
             let centre = Vec2::new((inset + logical.x) / 2.0, (top + logical.y) / 2.0);
             let image = scaled_size(window, 50);
             assert_eq!(image, window / 2);
-            let viewport =
-                view_viewport(window, image, inset * window_scale, top * window_scale, 0.0);
+            let covered = super::ViewInset {
+                left: inset,
+                top,
+                bottom: 0.0,
+            };
+            let viewport = view_viewport(window, image, covered.scaled(window_scale));
             let view_centre =
                 viewport.physical_position.as_vec2() + viewport.physical_size.as_vec2() / 2.0;
             let mapped = cursor_in_target(centre, window_scale, window, image, 1.0);
@@ -223,20 +239,26 @@ mod tests {
         assert_eq!(scaled_size(UVec2::new(1281, 721), 75), UVec2::new(961, 541));
         assert_eq!(scaled_size(UVec2::new(1, 1), 50), UVec2::ONE);
         // A panel wider than the window leaves the view one pixel.
-        let viewport = view_viewport(UVec2::new(300, 200), UVec2::new(150, 100), 400.0, 0.0, 0.0);
+        let viewport = view_viewport(
+            UVec2::new(300, 200),
+            UVec2::new(150, 100),
+            inset(400.0, 0.0, 0.0),
+        );
         assert_eq!(viewport.physical_position.x, 149);
         assert_eq!(viewport.physical_size, UVec2::new(1, 100));
         // A strip taller than the window too.
-        let viewport = view_viewport(UVec2::new(300, 200), UVec2::new(150, 100), 0.0, 300.0, 0.0);
+        let viewport = view_viewport(
+            UVec2::new(300, 200),
+            UVec2::new(150, 100),
+            inset(0.0, 300.0, 0.0),
+        );
         assert_eq!(viewport.physical_position, UVec2::new(0, 99));
         assert_eq!(viewport.physical_size, UVec2::new(150, 1));
         // Strips at the top and the bottom that meet leave one pixel between them.
         let viewport = view_viewport(
             UVec2::new(300, 200),
             UVec2::new(150, 100),
-            0.0,
-            120.0,
-            120.0,
+            inset(0.0, 120.0, 120.0),
         );
         assert_eq!(viewport.physical_position, UVec2::new(0, 60));
         assert_eq!(viewport.physical_size, UVec2::new(150, 1));
@@ -247,7 +269,7 @@ mod tests {
     #[test]
     fn a_bottom_strip_shortens_the_view_from_below() {
         let window = UVec2::new(1280, 720);
-        let viewport = view_viewport(window, window, 340.0, 128.0, 170.0);
+        let viewport = view_viewport(window, window, inset(340.0, 128.0, 170.0));
         assert_eq!(viewport.physical_position, UVec2::new(340, 128));
         assert_eq!(viewport.physical_size, UVec2::new(940, 720 - 128 - 170));
     }

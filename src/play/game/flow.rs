@@ -52,6 +52,23 @@ fn in_hand(next: &NextShot) -> Option<CueBall> {
     .then_some(next.cue_ball)
 }
 
+/// A new rack of the match (a re-rack or the next one): its own seed, a fresh log, and its
+/// layout to ask of the simulation.
+fn new_rack(
+    game: &mut GameInPlay,
+    spec: &TableSpec,
+    settings: &PhysicsSettings,
+) -> LayoutRequested {
+    game.seed = game.seed.wrapping_add(1);
+    game.log = GameLog::new(
+        game.play.game,
+        game.seed,
+        game.play.players.clone(),
+        game.rack().breaker,
+    );
+    rack_request(game.play.game, (game.seed, game.rack_style), spec, settings)
+}
+
 /// The rack of `game` from `seed`, asked of the simulation.
 fn rack_request(
     game: Game,
@@ -173,15 +190,7 @@ fn prepare_table(
     (spec, settings): (&TableSpec, &PhysicsSettings),
 ) {
     if next.rerack {
-        game.seed = game.seed.wrapping_add(1);
-        game.log = GameLog::new(
-            game.play.game,
-            game.seed,
-            game.play.players.clone(),
-            game.rack().breaker,
-        );
-        let rack = (game.seed, game.rack_style);
-        layouts.write(rack_request(game.play.game, rack, spec, settings));
+        layouts.write(new_rack(game, spec, settings));
         return;
     }
     let sim = solver.simulation();
@@ -320,18 +329,10 @@ pub(super) fn apply_commands(
             }
             TurnCommand::NextRack => {
                 if game.play.next_rack().is_ok() {
-                    game.seed = game.seed.wrapping_add(1);
-                    game.log = GameLog::new(
-                        game.play.game,
-                        game.seed,
-                        game.play.players.clone(),
-                        game.rack().breaker,
-                    );
                     game.last = None;
                     game.last_foul = None;
                     game.verdict_shown = false;
-                    let rack = (game.seed, game.rack_style);
-                    layouts.write(rack_request(game.play.game, rack, &spec, &settings));
+                    layouts.write(new_rack(game, &spec, &settings));
                 }
             }
         }
