@@ -12,13 +12,13 @@ use std::{
 use bevy::{math::DVec2, prelude::*, window::RequestRedraw};
 use billiards_ai::{AiError, Decision, Level, Plan, ShotKind};
 use billiards_physics::{Cushion, Vec2};
-use billiards_rules::{Call, CueBall, GameState, pocket_name};
+use billiards_rules::{Call, GameState, pocket_name};
 
 use crate::{
     mode::GameMode,
     play::game::{Rules, Turn, TurnCommand},
     settings::ShotSettings,
-    sim::{ShotRequested, SimStatus, SimSystems, Solver, place_ball_in_hand},
+    sim::{HandRule, ShotRequested, SimStatus, SimSystems, Solver, place_ball_in_hand},
     table::balls::{Ball, BallMotion, Pocketed},
     table::geometry::TableSpec,
     view::camera::{CameraMode, OrbitCamera},
@@ -233,7 +233,7 @@ fn play_computer_turn(
                             plan,
                             &solver,
                             &spec,
-                            next.cue_ball,
+                            HandRule::of(next.cue_ball),
                             &mut shot_settings,
                             &mut cue_ball,
                         );
@@ -293,11 +293,12 @@ fn show_plan(
     plan: &Plan,
     solver: &Solver,
     spec: &TableSpec,
-    rule: CueBall,
+    rule: Option<HandRule>,
     shot_settings: &mut ShotSettings,
     cue_ball: &mut Query<(&Ball, &mut BallMotion), Without<Pocketed>>,
 ) {
     if let Some(at) = plan.place
+        && let Some(rule) = rule
         && let Some((_, mut motion)) = cue_ball.iter_mut().find(|(b, _)| b.number == 0)
         && let Err(error) = place_ball_in_hand(solver, spec, &mut motion, to_dvec(at), rule)
     {
@@ -365,7 +366,7 @@ fn give_hint(
                     plan,
                     &solver,
                     &spec,
-                    game.next().cue_ball,
+                    HandRule::of(game.next().cue_ball),
                     &mut shot_settings,
                     &mut cue_ball,
                 );

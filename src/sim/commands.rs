@@ -45,9 +45,17 @@ pub(super) fn rack_balls(
     let rack_request = requests.read().last().copied();
     let layout_request = layouts.read().last().cloned();
     let table = table_for(&spec, &settings);
-    let params = params_from(&settings);
+    let params = params_for(&spec, &settings);
     let (layout, rack) = match (layout_request, rack_request) {
         (Some(LayoutRequested { balls, rack, name }), _) => (balls, (rack, name)),
+        // Free play on the snooker table (after a frame): the 22 snooker balls.
+        (None, Some(_)) if spec.is_snooker() => match snooker_layout(&table, &params.ball) {
+            Ok(balls) => (balls, (Rack::FifteenBall, "snooker")),
+            Err(error) => {
+                status.note = Some(format!("cannot rack: {error}"));
+                return;
+            }
+        },
         (None, Some(RackRequested { rack, seed })) => {
             let game = match rack {
                 Rack::FifteenBall => Some(Game::EightBall),
@@ -105,14 +113,24 @@ pub(super) fn rack_balls(
     };
 }
 
+/// The 22 balls of a snooker frame (WPBSA 3.2), the cue ball in the D.
+pub fn snooker_layout(
+    table: &physics::Table,
+    ball: &physics::BallSpec,
+) -> Result<Vec<physics::BallSetup>, String> {
+    let marks = physics::SnookerMarks::of(table)?;
+    physics::snooker::layout(table, ball, physics::snooker::default_cue_position(&marks))
+}
+
 /// A settings change reaches the solver: moving balls continue under the new parameters.
 pub(super) fn apply_physics_settings(
     settings: Res<PhysicsSettings>,
+    spec: Res<TableSpec>,
     solver: Option<ResMut<Solver>>,
     mut status: ResMut<SimStatus>,
 ) {
     let Some(mut solver) = solver else { return };
-    let params = params_from(&settings);
+    let params = params_for(&spec, &settings);
     // Compare with what the solver has rather than trusting change detection alone: the
     // clock settings (pause, time scale) change the resource too but not the physics.
     if !settings.is_changed() || *solver.simulation().params() == params {

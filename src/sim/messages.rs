@@ -238,7 +238,32 @@ pub struct SimStatus {
     /// A message for the player about the simulation's state, if any.
     pub note: Option<String>,
     /// Until the next shot, the cue ball is in hand: after a free-play scratch
-    /// ([`CueBall::Respot`]: it slides along the head string), or under the rules behind the
-    /// head string or anywhere.
-    pub ball_in_hand: Option<CueBall>,
+    /// ([`HandRule::Respot`]: it slides along the head string), or under the rules behind the
+    /// head string, anywhere, or in the D.
+    pub ball_in_hand: Option<HandRule>,
+}
+
+/// Where the cue ball in hand may go.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HandRule {
+    /// Free play after a scratch: along the head string.
+    Respot,
+    /// Anywhere on the table (WPA 1.5).
+    Anywhere,
+    /// Behind the head string (WPA 2.3, 3.3).
+    BehindHeadString,
+    /// In the D (snooker, WPBSA 3.4).
+    InD,
+}
+
+impl HandRule {
+    /// The pool rules' cue ball as a placement rule (`None`: not in hand).
+    pub fn of(cue: CueBall) -> Option<Self> {
+        match cue {
+            CueBall::AsItLies => None,
+            CueBall::Respot => Some(Self::Respot),
+            CueBall::InHandAnywhere => Some(Self::Anywhere),
+            CueBall::InHandBehindHeadString => Some(Self::BehindHeadString),
+        }
+    }
 }

@@ -4,6 +4,30 @@ use bevy::{math::DVec2, prelude::*};
 
 use billiards_rules::{CueBall, PlacementError};
 
+/// Why the cue ball in hand cannot go there.
+#[derive(Debug, Clone, PartialEq)]
+pub enum HandError {
+    /// The pool rules refuse it (off the table, on a ball, in front of the head string).
+    Rules(PlacementError),
+    /// Snooker: outside the D (WPBSA 3.4).
+    OutsideD,
+}
+
+impl std::fmt::Display for HandError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            HandError::Rules(error) => error.fmt(f),
+            HandError::OutsideD => f.write_str("the cue ball in hand must be in the D (WPBSA 3.4)"),
+        }
+    }
+}
+
+impl From<PlacementError> for HandError {
+    fn from(error: PlacementError) -> Self {
+        HandError::Rules(error)
+    }
+}
+
 use super::{messages::*, solver::*};
 use crate::{
     table::balls::{BallMotion, MotionState, Pocketed},
@@ -33,7 +57,7 @@ pub fn respot_after_scratch(
              the slider moves it along the string)"
                 .to_owned(),
         );
-        status.ball_in_hand = Some(CueBall::Respot);
+        status.ball_in_hand = Some(HandRule::Respot);
     }
 }
 
@@ -82,12 +106,24 @@ pub fn place_ball_in_hand(
     spec: &TableSpec,
     motion: &mut BallMotion,
     at: DVec2,
-    rule: CueBall,
-) -> Result<(), PlacementError> {
-    if rule == CueBall::Respot {
-        move_ball_in_hand(spec, motion, at.y);
-        return Ok(());
-    }
+    rule: HandRule,
+) -> Result<(), HandError> {
+    let rule = match rule {
+        HandRule::Respot => {
+            move_ball_in_hand(spec, motion, at.y);
+            return Ok(());
+        }
+        HandRule::Anywhere => CueBall::InHandAnywhere,
+        HandRule::BehindHeadString => CueBall::InHandBehindHeadString,
+        HandRule::InD => {
+            let marks = billiards_physics::SnookerMarks::of(solver.simulation().table())
+                .map_err(|_| HandError::OutsideD)?;
+            if !marks.in_d(to_vec2(at)) {
+                return Err(HandError::OutsideD);
+            }
+            CueBall::InHandAnywhere
+        }
+    };
     let cue = solver.cue_ball().ok_or(PlacementError::NotInHand)?;
     billiards_rules::check_placement(solver.simulation(), cue, to_vec2(at), rule)?;
     if motion.position != at {

@@ -8,8 +8,6 @@ use billiards_physics::{
     Rack, Simulation, SpinModel, recording::Recorder,
 };
 
-use billiards_rules::CueBall;
-
 use super::messages::*;
 use crate::{
     settings::{BallFrictionChoice, CushionChoice, PhysicsModel, PhysicsSettings},
@@ -23,7 +21,7 @@ pub(super) struct BeforeShot {
     pub(super) balls: Vec<BallState>,
     pub(super) shot: ShotRequested,
     pub(super) shots: u32,
-    pub(super) ball_in_hand: Option<CueBall>,
+    pub(super) ball_in_hand: Option<HandRule>,
 }
 
 /// The solver and the entity of each of its balls. Every input goes through a [`Recorder`],
@@ -93,15 +91,16 @@ pub const JAW_RADIUS: f64 = 0.015;
 /// The solver's table for the table's dimensions and the player's settings.
 pub fn table_for(spec: &TableSpec, settings: &PhysicsSettings) -> physics::Table {
     let table = spec.physics_table();
-    if settings.jaws {
+    // The snooker table's rounded knuckles are part of the table, not a setting.
+    if settings.jaws && !spec.is_snooker() {
         table.with_jaws(JAW_RADIUS)
     } else {
         table
     }
 }
 
-/// The solver's parameters for the player's settings.
-pub fn params_from(settings: &PhysicsSettings) -> Params {
+/// The solver's parameters for the player's settings and the table's balls.
+pub fn params_for(spec: &TableSpec, settings: &PhysicsSettings) -> Params {
     let model = match settings.model {
         PhysicsModel::Paper => Model::Paper(PaperModel {
             mu_slide: settings.mu_slide,
@@ -152,6 +151,7 @@ pub fn params_from(settings: &PhysicsSettings) -> Params {
                 spread: settings.randomization.spread_degrees.to_radians(),
                 seed: settings.randomization.seed,
             }),
+        ball: spec.ball(),
         ..Params::default()
     }
 }

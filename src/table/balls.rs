@@ -128,24 +128,58 @@ pub fn ball_colour(number: u8) -> Color {
     }
 }
 
-/// The mesh shared by every ball and one material per number.
+/// The snooker balls' colours (WPBSA 1.2: fifteen reds, six colours, the white), by the
+/// solver's numbers ([`billiards_physics::snooker`]): 0 white, 1-15 red, 16 yellow,
+/// 17 green, 18 brown, 19 blue, 20 pink, 21 black.
+pub fn snooker_colour(number: u8) -> Color {
+    match number {
+        0 => Color::srgb(0.96, 0.95, 0.90),
+        1..=15 => Color::srgb(0.72, 0.03, 0.04),
+        16 => Color::srgb(0.98, 0.85, 0.08),
+        17 => Color::srgb(0.02, 0.42, 0.16),
+        18 => Color::srgb(0.40, 0.20, 0.08),
+        19 => Color::srgb(0.05, 0.20, 0.75),
+        20 => Color::srgb(0.98, 0.50, 0.62),
+        _ => Color::srgb(0.03, 0.03, 0.03),
+    }
+}
+
+/// The meshes (pool and snooker sizes) and one material per number of each set.
 #[derive(Resource, Debug)]
 struct BallAssets {
     mesh: Handle<Mesh>,
     materials: Vec<Handle<StandardMaterial>>,
+    snooker_mesh: Handle<Mesh>,
+    snooker_materials: Vec<Handle<StandardMaterial>>,
 }
+
+/// Largest snooker ball number (the black).
+const SNOOKER_MAX: u8 = 21;
 
 /// Largest ball number with its own texture.
 const MAX_NUMBER: u8 = 15;
 
 fn create_ball_assets(
     mut commands: Commands,
-    spec: Res<TableSpec>,
     mut meshes: ResMut<Assets<Mesh>>,
     mut materials: ResMut<Assets<StandardMaterial>>,
     mut images: ResMut<Assets<Image>>,
 ) {
-    let mesh = meshes.add(Sphere::new(spec.ball_radius as f32).mesh().uv(48, 24));
+    let pool = TableSpec::default();
+    let mesh = meshes.add(Sphere::new(pool.ball_radius as f32).mesh().uv(48, 24));
+    let snooker_radius = billiards_physics::BallSpec::snooker().radius;
+    let snooker_mesh = meshes.add(Sphere::new(snooker_radius as f32).mesh().uv(48, 24));
+    // Snooker balls carry no numbers: one plain colour each.
+    let snooker_materials = (0..=SNOOKER_MAX)
+        .map(|number| {
+            materials.add(StandardMaterial {
+                base_color: snooker_colour(number),
+                perceptual_roughness: 0.12,
+                reflectance: 0.5,
+                ..default()
+            })
+        })
+        .collect();
     let materials = (0..=MAX_NUMBER)
         .map(|number| {
             let texture = images.add(ball_texture(number));
@@ -158,7 +192,12 @@ fn create_ball_assets(
             })
         })
         .collect();
-    commands.insert_resource(BallAssets { mesh, materials });
+    commands.insert_resource(BallAssets {
+        mesh,
+        materials,
+        snooker_mesh,
+        snooker_materials,
+    });
 }
 
 /// Gives newly spawned balls their mesh and material, and turns them so that their number
@@ -166,17 +205,24 @@ fn create_ball_assets(
 fn attach_visuals(
     mut commands: Commands,
     assets: Option<Res<BallAssets>>,
+    spec: Res<TableSpec>,
     balls: Query<(Entity, &Ball, &mut Transform), Added<Ball>>,
 ) {
     let Some(assets) = assets else { return };
     for (entity, ball, mut transform) in balls {
-        let material = assets.materials[usize::from(ball.number.min(MAX_NUMBER))].clone();
+        let (mesh, material) = if spec.is_snooker() {
+            let n = usize::from(ball.number.min(SNOOKER_MAX));
+            (&assets.snooker_mesh, &assets.snooker_materials[n])
+        } else {
+            let n = usize::from(ball.number.min(MAX_NUMBER));
+            (&assets.mesh, &assets.materials[n])
+        };
         // Local +Y (number) up, local +Z (top of the digits) toward the foot rail, so the
         // numbers read upright from the head end where the player stands.
         transform.rotation = Quat::from_mat3(&Mat3::from_cols(Vec3::NEG_Z, Vec3::Y, Vec3::X));
         commands
             .entity(entity)
-            .insert((Mesh3d(assets.mesh.clone()), MeshMaterial3d(material)));
+            .insert((Mesh3d(mesh.clone()), MeshMaterial3d(material.clone())));
     }
 }
 

@@ -25,6 +25,17 @@ pub enum Rail {
     Foot,
 }
 
+/// The game the table and its balls are made for: it decides the balls' look, the cloth's
+/// marks and the pockets' jaws.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
+pub enum TableKind {
+    /// A pool table with pool balls (head string, foot spot).
+    #[default]
+    Pool,
+    /// The 12-ft snooker table with 52.5 mm balls (baulk line, D, spots; WPBSA 1.1).
+    Snooker,
+}
+
 /// The two kinds of pocket, which differ in mouth width and jaw angle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PocketKind {
@@ -73,6 +84,10 @@ pub struct TableSpec {
     pub width: f64,
     /// Ball radius (diameter 2.25 in).
     pub ball_radius: f64,
+    /// Ball mass (5.5 oz).
+    pub ball_mass: f64,
+    /// Pool or snooker.
+    pub kind: TableKind,
     /// Corner pocket mouth, between the cushion noses (4.5 in).
     pub corner_mouth: f64,
     /// Side pocket mouth, between the cushion noses (5 in).
@@ -105,6 +120,8 @@ impl TableSpec {
             length: 92.0 * INCH,
             width: 46.0 * INCH,
             ball_radius: ball_diameter / 2.0,
+            ball_mass: billiards_physics::BallSpec::default().mass,
+            kind: TableKind::Pool,
             corner_mouth: 4.5 * INCH,
             side_mouth: 5.0 * INCH,
             cushion_nose_height: 0.635 * ball_diameter,
@@ -122,16 +139,53 @@ impl TableSpec {
         Self::fitting(&choice.table())
     }
 
+    /// The 12-ft snooker table ([`billiards_physics::Table::snooker_12ft`]) with 52.5 mm
+    /// balls ([`billiards_physics::BallSpec::snooker`]).
+    pub fn snooker() -> Self {
+        Self::fitting(&billiards_physics::Table::snooker_12ft())
+    }
+
     /// The table drawn for a solver's table (a recording's): its playing surface and pocket
-    /// mouths, with regulation rails.
+    /// mouths, with regulation rails. A table of the snooker size is a snooker table, with
+    /// snooker balls (a recording stores the table, not the game).
     pub fn fitting(table: &billiards_physics::Table) -> Self {
+        let snooker = table.length == billiards_physics::snooker::SNOOKER_LENGTH
+            && table.width == billiards_physics::snooker::SNOOKER_WIDTH;
+        let pool = Self::wpa_eight_foot();
+        let ball = if snooker {
+            billiards_physics::BallSpec::snooker()
+        } else {
+            billiards_physics::BallSpec::default()
+        };
         Self {
             length: table.length,
             width: table.width,
             corner_mouth: table.corner_mouth,
             side_mouth: table.side_mouth,
-            ..Self::wpa_eight_foot()
+            ball_radius: ball.radius,
+            ball_mass: ball.mass,
+            kind: if snooker {
+                TableKind::Snooker
+            } else {
+                TableKind::Pool
+            },
+            // The cushion nose at 63.5 % of the ball's diameter, as on the pool table.
+            cushion_nose_height: pool.cushion_nose_height * ball.radius / pool.ball_radius,
+            ..pool
         }
+    }
+
+    /// The balls' size and mass.
+    pub fn ball(&self) -> billiards_physics::BallSpec {
+        billiards_physics::BallSpec {
+            radius: self.ball_radius,
+            mass: self.ball_mass,
+        }
+    }
+
+    /// Whether this is the snooker table.
+    pub fn is_snooker(&self) -> bool {
+        self.kind == TableKind::Snooker
     }
 
     /// Half the playing-surface length and width.
@@ -294,6 +348,9 @@ impl TableSpec {
 
     /// The solver's table with these dimensions.
     pub fn physics_table(&self) -> billiards_physics::Table {
+        if self.is_snooker() {
+            return billiards_physics::Table::snooker_12ft();
+        }
         billiards_physics::Table {
             length: self.length,
             width: self.width,

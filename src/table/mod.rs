@@ -120,6 +120,23 @@ fn spawn_table(
         ));
     }
 
+    if spec.is_snooker() {
+        let chalk = materials.add(StandardMaterial {
+            base_color: Color::srgb(0.85, 0.88, 0.85),
+            perceptual_roughness: 0.95,
+            ..default()
+        });
+        for (name, mark) in snooker_marks(&spec) {
+            commands.spawn((
+                TablePart,
+                Name::new(name),
+                Mesh3d(meshes.add(mark)),
+                MeshMaterial3d(chalk.clone()),
+                NotShadowCaster,
+            ));
+        }
+    }
+
     // Four legs under the corners, and the floor.
     let outer = spec.outer_half_extents();
     let leg_height = (CLOTH_HEIGHT - APRON_DEPTH) as f32;
@@ -149,4 +166,92 @@ fn spawn_table(
         })),
         Transform::from_xyz(0.0, -CLOTH_HEIGHT as f32, 0.0),
     ));
+}
+
+/// Width of the chalked lines of a snooker table.
+const LINE_WIDTH: f64 = 0.004;
+/// Radius of the spots.
+const SPOT_RADIUS: f64 = 0.006;
+/// Height of the marks above the cloth (drawn over it, not into it).
+const MARK_LIFT: f64 = 4e-4;
+
+/// The marks of the snooker cloth (WPBSA 1.1(d)-(f)): the baulk-line, the D and the six
+/// spots, as flat meshes just above the cloth.
+fn snooker_marks(spec: &TableSpec) -> Vec<(&'static str, Mesh)> {
+    let Ok(marks) = billiards_physics::SnookerMarks::of(&spec.physics_table()) else {
+        return Vec::new();
+    };
+    let at = |p: billiards_physics::Vec2| bevy::math::DVec2::new(p.x, p.y);
+    let hy = spec.width / 2.0;
+    let baulk = [
+        bevy::math::DVec2::new(marks.baulk_x, -hy),
+        bevy::math::DVec2::new(marks.baulk_x, hy),
+    ];
+    // The D: the half circle behind the baulk-line, centred on the brown spot.
+    let d: Vec<_> = (0..=48)
+        .map(|k| {
+            let a = std::f64::consts::FRAC_PI_2 + std::f64::consts::PI * f64::from(k) / 48.0;
+            at(marks.brown) + marks.d_radius * bevy::math::DVec2::from_angle(a)
+        })
+        .collect();
+    let mut out = vec![
+        ("Baulk-line", flat_strip(&baulk, LINE_WIDTH)),
+        ("The D", flat_strip(&d, LINE_WIDTH)),
+    ];
+    for spot in [
+        marks.yellow,
+        marks.green,
+        marks.brown,
+        marks.blue,
+        marks.pink,
+        marks.black,
+    ] {
+        out.push(("Spot", flat_disc(at(spot), SPOT_RADIUS)));
+    }
+    out
+}
+
+/// A flat band of `width` along the polyline `points` (table plane), as a triangle list.
+fn flat_strip(points: &[bevy::math::DVec2], width: f64) -> Mesh {
+    let mut positions = Vec::new();
+    for (k, &p) in points.iter().enumerate() {
+        let prev = points[k.saturating_sub(1)];
+        let next = points[(k + 1).min(points.len() - 1)];
+        let side = (next - prev).normalize_or_zero().perp() * (width / 2.0);
+        for q in [p + side, p - side] {
+            positions.push(to_world(q.extend(MARK_LIFT)).to_array());
+        }
+    }
+    let mut indices = Vec::new();
+    for k in 0..points.len().saturating_sub(1) as u32 {
+        let (a, b, c, d) = (2 * k, 2 * k + 1, 2 * k + 2, 2 * k + 3);
+        // Both windings: the band is seen from above whichever way the polyline runs.
+        indices.extend([a, b, c, b, d, c, a, c, b, b, c, d]);
+    }
+    flat_mesh(positions, indices)
+}
+
+/// A flat disc of `radius` at `centre` (table plane).
+fn flat_disc(centre: bevy::math::DVec2, radius: f64) -> Mesh {
+    let mut positions = vec![to_world(centre.extend(MARK_LIFT)).to_array()];
+    let mut indices = Vec::new();
+    for k in 0..24u32 {
+        let a = std::f64::consts::TAU * f64::from(k) / 24.0;
+        let p = centre + radius * bevy::math::DVec2::from_angle(a);
+        positions.push(to_world(p.extend(MARK_LIFT)).to_array());
+        let (b, c) = (1 + k, 1 + (k + 1) % 24);
+        indices.extend([0, b, c, 0, c, b]);
+    }
+    flat_mesh(positions, indices)
+}
+
+fn flat_mesh(positions: Vec<[f32; 3]>, indices: Vec<u32>) -> Mesh {
+    let normals = vec![[0.0, 1.0, 0.0]; positions.len()];
+    Mesh::new(
+        bevy::mesh::PrimitiveTopology::TriangleList,
+        bevy::asset::RenderAssetUsages::default(),
+    )
+    .with_inserted_attribute(Mesh::ATTRIBUTE_POSITION, positions)
+    .with_inserted_attribute(Mesh::ATTRIBUTE_NORMAL, normals)
+    .with_inserted_indices(bevy::mesh::Indices::U32(indices))
 }

@@ -107,7 +107,7 @@ fn shot_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
     });
     // Always there, disabled unless the cue ball is in hand after a free-play scratch, so the
     // rows below never move.
-    let in_hand = state.status.ball_in_hand == Some(billiards_rules::CueBall::Respot);
+    let in_hand = state.status.ball_in_hand == Some(crate::sim::HandRule::Respot);
     let limit = state.spec.width / 2.0 - state.spec.ball_radius;
     let cue = state
         .cue_ball

@@ -12,8 +12,8 @@ use crate::{
     recording::{RecordingsFolder, game_file},
     settings::{PhysicsSettings, TableSetup},
     sim::{
-        LayoutRequested, RackRequested, Referee, ShotFinished, SimStatus, Solver, clock_seed,
-        params_from, respot_ball, table_for,
+        HandRule, LayoutRequested, RackRequested, Referee, ShotFinished, SimStatus, Solver,
+        clock_seed, params_for, respot_ball, table_for,
     },
     table::balls::BallMotion,
     table::geometry::TableSpec,
@@ -77,7 +77,7 @@ fn rack_request(
     settings: &PhysicsSettings,
 ) -> LayoutRequested {
     let table = table_for(spec, settings);
-    let params = params_from(settings);
+    let params = params_for(spec, settings);
     LayoutRequested {
         balls: game.rack_styled(&table, &params.ball, seed, style),
         rack: match game {
@@ -240,7 +240,7 @@ pub(super) fn apply_commands(
             let table = table_for(&spec, &settings);
             let rack = crate::sim::STARTING_RACK;
             layouts.write(LayoutRequested {
-                balls: rack.layout(&table, &params_from(&settings).ball),
+                balls: rack.layout(&table, &params_for(&spec, &settings).ball),
                 rack,
                 name: crate::sim::rack_slug(rack),
             });
@@ -391,7 +391,9 @@ pub(super) fn follow_rules(
     if let Some(game) = &rules.game
         && status.at_rest
     {
-        let hand = in_hand(game.next()).filter(|_| game.rack().over.is_none());
+        let hand = in_hand(game.next())
+            .filter(|_| game.rack().over.is_none())
+            .and_then(HandRule::of);
         if status.ball_in_hand != hand {
             status.ball_in_hand = hand;
         }

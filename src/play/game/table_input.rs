@@ -2,13 +2,13 @@
 
 use bevy::{math::DVec2, prelude::*};
 use billiards_physics::Pocket;
-use billiards_rules::{Call, CallRule, CueBall};
+use billiards_rules::{Call, CallRule};
 
 use super::state::*;
 use crate::{
     input::AimLocked,
     play::cue::PointerInput,
-    sim::SimStatus,
+    sim::{HandRule, SimStatus},
     table::geometry::{TableSpec, to_world},
 };
 
@@ -99,7 +99,7 @@ pub(super) fn draw_rules(
     {
         let h = spec.half_extents() - DVec2::splat(spec.ball_radius);
         let right = match rule {
-            CueBall::InHandBehindHeadString => spec.head_spot().x,
+            HandRule::BehindHeadString => spec.head_spot().x,
             _ => h.x,
         };
         let corners = [
