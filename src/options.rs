@@ -30,7 +30,7 @@ pub struct LaunchOptions {
     /// Open this recording in the replay viewer at start (`billiards replay FILE`).
     pub replay: Option<PathBuf>,
     /// Start a match of this game (two players, race to 3) instead of free play.
-    pub game: Option<billiards_rules::Game>,
+    pub game: Option<crate::play::game::GameChoice>,
 }
 
 /// Why the command line could not be understood.
@@ -68,7 +68,7 @@ impl LaunchOptions {
     /// The usage text printed by `--help` and after a command-line error.
     pub const USAGE: &'static str = "\
 usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
-                 [--game nine-ball|eight-ball|free-play] [--no-config]
+                 [--game nine-ball|eight-ball|snooker|free-play] [--no-config]
                  [--size WxH] [--screenshot PATH [--settle SECONDS]]
                  [--check-layout PATH] [--open-sections] [--count-idle-frames SECONDS]
 
@@ -77,8 +77,8 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
   --no-record         do not save recordings
   --no-config         start from the default settings and keep none (the settings file
                       is otherwise in the config directory: $XDG_CONFIG_HOME/billiards)
-  --game GAME         start a match (two players, race to 3) of nine-ball or eight-ball;
-                      free-play (the default) is the sandbox
+  --game GAME         start a match (two players, race to 3) of nine-ball, eight-ball
+                      or snooker (best of 5 frames); free-play (the default) is the sandbox
 
   --screenshot PATH   wait until the scene has been drawn, save it as PNG to PATH, exit
   --settle SECONDS    how long every render pipeline must have been ready before the
@@ -164,10 +164,13 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                 "--no-config" => options.no_config = true,
                 "--game" => {
                     let value = args.next().ok_or(ArgsError::MissingValue("--game"))?;
+                    use crate::play::game::GameChoice;
+                    use billiards_rules::Game;
                     options.game = Some(match value.as_str() {
-                        "nine-ball" | "9-ball" => billiards_rules::Game::NineBall,
-                        "eight-ball" | "8-ball" => billiards_rules::Game::EightBall,
-                        "free-play" => billiards_rules::Game::FreePlay,
+                        "nine-ball" | "9-ball" => GameChoice::Pool(Game::NineBall),
+                        "eight-ball" | "8-ball" => GameChoice::Pool(Game::EightBall),
+                        "snooker" => GameChoice::Snooker,
+                        "free-play" => GameChoice::Pool(Game::FreePlay),
                         _ => {
                             return Err(ArgsError::InvalidValue {
                                 flag: "--game",
@@ -228,10 +231,16 @@ mod tests {
         assert!(parse(&["--no-record"]).unwrap().no_record);
         assert_eq!(
             parse(&["--game", "nine-ball"]).unwrap().game,
-            Some(billiards_rules::Game::NineBall)
+            Some(crate::play::game::GameChoice::Pool(
+                billiards_rules::Game::NineBall
+            ))
+        );
+        assert_eq!(
+            parse(&["--game", "snooker"]).unwrap().game,
+            Some(crate::play::game::GameChoice::Snooker)
         );
         assert!(matches!(
-            parse(&["--game", "snooker"]),
+            parse(&["--game", "pyramid"]),
             Err(ArgsError::InvalidValue { flag: "--game", .. })
         ));
         assert_eq!(parse(&["replay"]), Err(ArgsError::MissingValue("replay")));

@@ -23,7 +23,9 @@ pub(super) fn follow_table_setup(
     solver: Option<Res<Solver>>,
     mut racks: MessageWriter<RackRequested>,
 ) {
-    if !setup.is_changed() || referee.active {
+    // Added is not chosen: the kept table reaches the spec as the settings load, and a game
+    // started at launch (snooker's own table) must not be laid over by it.
+    if !setup.is_changed() || setup.is_added() || referee.active {
         return;
     }
     if spec.set_if_neq(TableSpec::of(setup.table)) {

@@ -69,6 +69,17 @@ impl Solver {
         self.entities.get(id).copied()
     }
 
+    /// Puts ball `id` at rest at `at` (a spotted colour, a replace): recorded as any
+    /// placement. The ball's component is the caller's to update.
+    pub fn place_at_rest(
+        &mut self,
+        id: usize,
+        at: physics::Vec2,
+    ) -> Result<(), physics::SetupError> {
+        self.rec
+            .place(id, at, physics::Vec2::ZERO, physics::Vec3::ZERO)
+    }
+
     /// Whether anything has happened since the rack (a new rack or game then asks first).
     pub fn in_progress(&self) -> bool {
         !self.simulation().history().events().is_empty()

@@ -9,15 +9,16 @@ use bevy::{light::NotShadowCaster, math::DVec3, prelude::*};
 use geometry::{TableSpec, to_world};
 
 /// Spawns the table from the [`TableSpec`] resource, and again when another table is chosen.
+/// The first spawn is in the first frame's `PostUpdate` (an added resource counts as
+/// changed), after a game started at launch has set its table: a snooker match set in that
+/// frame would otherwise be drawn on the pool table spawned at startup.
 pub fn plugin(app: &mut App) {
-    app.init_resource::<TableSpec>()
-        .add_systems(Startup, spawn_table)
-        .add_systems(
-            PostUpdate,
-            (despawn_table, spawn_table)
-                .chain()
-                .run_if(resource_changed::<TableSpec>.and_then(not(resource_added::<TableSpec>))),
-        );
+    app.init_resource::<TableSpec>().add_systems(
+        PostUpdate,
+        (despawn_table, spawn_table)
+            .chain()
+            .run_if(resource_changed::<TableSpec>),
+    );
 }
 
 /// Clears the old table before another is spawned (a new game on another table).

@@ -10,7 +10,7 @@ use billiards_rules::{Call, CallRule, Game};
 use super::layout::{HUD_BUTTON_WIDTH, HudLine, INFO, PANEL_WIDTH, WARNING};
 use crate::{
     play::computer::{Computer, HintRequested},
-    play::game::{NewGameRequested, Rules, Turn, TurnCommand},
+    play::game::{GameChoice, NewGameRequested, Rules, Turn, TurnCommand, snooker},
     settings::{TableSetup, rack_style_label, table_choices, table_label},
     sim::{Solver, clock_seed},
     view::camera::OrbitCamera,
@@ -20,7 +20,7 @@ use crate::{
 #[derive(Resource, Debug, Clone, PartialEq, Eq)]
 pub struct NewGameForm {
     /// The game chosen.
-    pub game: Game,
+    pub game: GameChoice,
     /// The players' names.
     pub players: [String; 2],
     /// Racks to win.
@@ -36,7 +36,7 @@ pub struct NewGameForm {
 impl Default for NewGameForm {
     fn default() -> Self {
         Self {
-            game: Game::NineBall,
+            game: GameChoice::Pool(Game::NineBall),
             players: ["Player 1".to_owned(), "Player 2".to_owned()],
             race_to: 3,
             computer: [None, Some(Level::Medium)],
@@ -91,15 +91,23 @@ pub const HUD_BUTTONS: [&str; 5] = [
 /// Whether a human is to shoot in the match in play (aiming, or with the ball in hand).
 pub fn human_to_shoot(state: &GameParam) -> bool {
     let turn = state.turn.as_ref().map(|t| *t.get());
-    state.rules.game.as_ref().is_some_and(|game| {
-        game.computer(game.next().shooter).is_none()
-            && matches!(turn, Some(Turn::Aiming | Turn::BallInHand))
-    })
+    let aiming = matches!(turn, Some(Turn::Aiming | Turn::BallInHand));
+    let pool = state
+        .rules
+        .game
+        .as_ref()
+        .is_some_and(|game| game.computer(game.next().shooter).is_none() && aiming);
+    let snooker = state
+        .rules
+        .snooker
+        .as_ref()
+        .is_some_and(|game| game.computer(game.next().striker).is_none() && aiming);
+    pool || snooker
 }
 
 /// Whether the table is in free play (no match in play).
 pub fn free_play(state: &GameParam) -> bool {
-    state.rules.game.is_none()
+    !state.rules.in_match()
 }
 
 /// The HUD's buttons, one row, each always in its place: disabled when it does not apply
@@ -164,11 +172,31 @@ pub fn hud_lines(state: &GameParam) -> (Vec<HudLine>, Vec<HudLine>) {
     let Some(turn) = state.turn.as_ref().map(|t| *t.get()) else {
         return (Vec::new(), Vec::new());
     };
+    let mut first = Vec::new();
+    let mut second = Vec::new();
+    if let Some(game) = &state.rules.snooker {
+        for (k, line) in game.hud_lines(turn).into_iter().enumerate() {
+            let colour = if k == 2 {
+                Some(INFO)
+            } else if line.starts_with("last foul") || line.contains("snooker") && k > 2 {
+                Some(WARNING)
+            } else {
+                None
+            };
+            if k < 3 {
+                first.push((line, colour));
+            } else {
+                second.push((line, colour));
+            }
+        }
+        if let Some(doing) = &state.computer.doing {
+            first.push((doing.clone(), Some(INFO)));
+        }
+        return (first, second);
+    }
     let Some(game) = &state.rules.game else {
         return (vec![("free play".to_owned(), None)], Vec::new());
     };
-    let mut first = Vec::new();
-    let mut second = Vec::new();
     // Balls the shot in play has dropped so far: "balls left" counts them off at once.
     let dropped: Vec<u8> = match (&state.solver, turn) {
         (Some(solver), Turn::ShotInPlay) => {
@@ -221,6 +249,12 @@ pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result 
     match turn {
         Turn::NewGame => {
             centre("New game").show(&ctx, |ui| new_game_form(ui, &mut state));
+        }
+        Turn::Verdict if state.rules.snooker.is_some() => {
+            snooker_verdict(&ctx, centre("Verdict"), &mut state);
+        }
+        Turn::GameOver if state.rules.snooker.is_some() => {
+            snooker_frame_over(&ctx, centre("Frame over"), &mut state);
         }
         Turn::Verdict => {
             let Some(game) = &state.rules.game else {
@@ -337,32 +371,120 @@ pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result 
     Ok(())
 }
 
+/// Snooker's verdict: the sentence, then the incoming player's choices or Continue.
+fn snooker_verdict(ctx: &egui::Context, window: egui::Window, state: &mut GameParam) {
+    let Some(game) = &state.rules.snooker else {
+        return;
+    };
+    window.show(ctx, |ui| {
+        if let Some(verdict) = &game.last {
+            ui.label(&verdict.text);
+        }
+        let next = game.next();
+        let striker = game.name(next.striker);
+        if !next.choices.is_empty() && game.computer(next.striker).is_some() {
+            ui.label(format!("{striker} (computer) chooses next"));
+        } else if !next.choices.is_empty() {
+            ui.label(format!("{striker} chooses:"));
+            ui.horizontal_wrapped(|ui| {
+                for &choice in &next.choices {
+                    if ui.button(snooker::choice_label(choice, game)).clicked() {
+                        state.commands.write(TurnCommand::SnookerChoose(choice));
+                    }
+                }
+            });
+        } else {
+            let hand = if next.in_hand {
+                ", with the cue ball in hand in the D"
+            } else {
+                ""
+            };
+            let free = if next.free_ball {
+                " (a free ball: any ball may be nominated)"
+            } else {
+                ""
+            };
+            ui.label(format!("{striker} plays next{hand}{free}"));
+            if game.has_human() && ui.button("Continue (Enter)").clicked() {
+                state.commands.write(TurnCommand::Continue);
+            }
+        }
+    });
+}
+
+/// The end of a snooker frame: the winner, the frames, the next frame or a new game.
+fn snooker_frame_over(ctx: &egui::Context, window: egui::Window, state: &mut GameParam) {
+    let Some(game) = &state.rules.snooker else {
+        return;
+    };
+    window.show(ctx, |ui| {
+        if let Some(end) = game.frame.end {
+            ui.label(snooker::end_text(game, end));
+        }
+        let f = &game.frame;
+        ui.label(format!(
+            "points {} {} - {} {}; highest breaks {} and {}",
+            game.name(billiards_rules::Seat::A),
+            f.scores[0],
+            f.scores[1],
+            game.name(billiards_rules::Seat::B),
+            f.highest_break[0],
+            f.highest_break[1]
+        ));
+        ui.label(format!(
+            "frames {} - {} (best of {})",
+            game.frames.frames[0], game.frames.frames[1], game.frames.best_of
+        ));
+        match game.frames.winner() {
+            Some(winner) => {
+                ui.label(format!("{} wins the match", game.name(winner)));
+                if ui.button("New game...").clicked() {
+                    state.commands.write(TurnCommand::OpenDialog);
+                }
+            }
+            None => {
+                if ui.button("Next frame").clicked() {
+                    state.commands.write(TurnCommand::NextRack);
+                }
+            }
+        }
+    });
+}
+
 fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
     let form = &mut *state.form;
     ui.horizontal(|ui| {
         ui.label("Game:");
-        ui.selectable_value(&mut form.game, Game::NineBall, "9-ball");
-        ui.selectable_value(&mut form.game, Game::EightBall, "8-ball");
-        ui.selectable_value(&mut form.game, Game::FreePlay, "free play");
+        for choice in GameChoice::ALL {
+            ui.selectable_value(&mut form.game, choice, choice.label());
+        }
     });
+    let snooker = form.game == GameChoice::Snooker;
     let setup = form.setup.get_or_insert(*state.setup);
-    ui.horizontal(|ui| {
-        ui.label("Table:");
-        egui::ComboBox::from_id_salt("new-game-table")
-            .selected_text(table_label(setup.table))
-            .width(230.0)
-            .show_ui(ui, |ui| {
-                for choice in table_choices() {
-                    ui.selectable_value(&mut setup.table, choice, table_label(choice));
-                }
-            });
-    });
-    if form.game != Game::FreePlay {
+    if snooker {
+        ui.label("Table: 12-ft snooker, 3569 x 1778 mm (WPBSA 1.1), 52.5 mm balls");
+    }
+    ui.add_enabled_ui(!snooker, |ui| {
         ui.horizontal(|ui| {
-            ui.label("Rack:");
-            for style in billiards_rules::RackStyle::ALL {
-                ui.selectable_value(&mut setup.rack_style, style, rack_style_label(style));
-            }
+            ui.label("Table:");
+            egui::ComboBox::from_id_salt("new-game-table")
+                .selected_text(table_label(setup.table))
+                .width(230.0)
+                .show_ui(ui, |ui| {
+                    for choice in table_choices() {
+                        ui.selectable_value(&mut setup.table, choice, table_label(choice));
+                    }
+                });
+        })
+    });
+    if form.game != GameChoice::Pool(Game::FreePlay) {
+        ui.add_enabled_ui(!snooker, |ui| {
+            ui.horizontal(|ui| {
+                ui.label("Rack:");
+                for style in billiards_rules::RackStyle::ALL {
+                    ui.selectable_value(&mut setup.rack_style, style, rack_style_label(style));
+                }
+            })
         });
         for (k, (name, seat)) in form
             .players
@@ -396,7 +518,14 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
                     .update_while_editing(false)
                     .range(1..=15),
             );
-            ui.label("racks; player 1 breaks first, then the break alternates");
+            if snooker {
+                ui.label(format!(
+                    "frames (best of {}); player 1 breaks first, then the break alternates",
+                    2 * form.race_to - 1
+                ));
+            } else {
+                ui.label("racks; player 1 breaks first, then the break alternates");
+            }
         });
     }
     // A game with shots in it ends only when the player says so (as the rack buttons ask).
@@ -453,7 +582,7 @@ mod tests {
             .init_resource::<NewGameForm>()
             .add_systems(Update, remember_new_game);
         app.world_mut().write_message(NewGameRequested {
-            game: Game::EightBall,
+            game: Game::EightBall.into(),
             players: ["Ann".to_owned(), "Bob".to_owned()],
             race_to: 5,
             seed: 1,
@@ -462,7 +591,7 @@ mod tests {
         });
         app.update();
         let form = app.world().resource::<NewGameForm>();
-        assert_eq!(form.game, Game::EightBall);
+        assert_eq!(form.game, Game::EightBall.into());
         assert_eq!(form.players, ["Ann".to_owned(), "Bob".to_owned()]);
         assert_eq!(form.race_to, 5);
         assert_eq!(form.computer, [Some(Level::Hard), Some(Level::Easy)]);

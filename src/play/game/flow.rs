@@ -6,6 +6,7 @@ use billiards_rules::{
     Call, CallRule, CueBall, Game, GameLog, LoggedShot, Match, NextShot, RackStyle, Seat, summarise,
 };
 
+use super::snooker::SnookerInPlay;
 use super::state::*;
 use crate::{
     play::aim::AimPrediction,
@@ -13,7 +14,7 @@ use crate::{
     settings::{PhysicsSettings, TableSetup},
     sim::{
         HandRule, LayoutRequested, RackRequested, Referee, ShotFinished, SimStatus, Solver,
-        clock_seed, params_for, respot_ball, table_for,
+        clock_seed, params_for, respot_ball, snooker_layout, table_for,
     },
     table::balls::BallMotion,
     table::geometry::TableSpec,
@@ -26,6 +27,9 @@ fn phase(rules: &Rules, status: &SimStatus, dialog: bool) -> Turn {
     }
     if !status.at_rest {
         return Turn::ShotInPlay;
+    }
+    if let Some(snooker) = &rules.snooker {
+        return snooker.phase();
     }
     let Some(game) = &rules.game else {
         return Turn::Aiming;
@@ -229,13 +233,30 @@ pub(super) fn apply_commands(
     // A rack from the panel is free play.
     if racks.read().count() > 0 {
         rules.game = None;
+        rules.snooker = None;
     }
     for request in new_games.read() {
         dialog.0 = false;
+        rules.game = None;
+        rules.snooker = None;
+        let game = match request.game {
+            GameChoice::Snooker => {
+                start_snooker(
+                    request,
+                    &mut rules,
+                    &mut spec,
+                    &settings,
+                    &mut layouts,
+                    &mut status,
+                );
+                continue;
+            }
+            GameChoice::Pool(game) => game,
+        };
         // The table first: the rack below is set on it, and the table's meshes follow.
         setup.set_if_neq(request.setup);
         spec.set_if_neq(TableSpec::of(request.setup.table));
-        if request.game == Game::FreePlay {
+        if game == Game::FreePlay {
             rules.game = None;
             let table = table_for(&spec, &settings);
             let rack = crate::sim::STARTING_RACK;
@@ -246,15 +267,10 @@ pub(super) fn apply_commands(
             });
             continue;
         }
-        let play = Match::new(
-            request.game,
-            request.players.clone(),
-            request.race_to,
-            Seat::A,
-        );
-        let log = GameLog::new(request.game, request.seed, request.players.clone(), Seat::A);
+        let play = Match::new(game, request.players.clone(), request.race_to, Seat::A);
+        let log = GameLog::new(game, request.seed, request.players.clone(), Seat::A);
         let rack = (request.seed, request.setup.rack_style);
-        layouts.write(rack_request(request.game, rack, &spec, &settings));
+        layouts.write(rack_request(game, rack, &spec, &settings));
         rules.game = Some(GameInPlay {
             play,
             log,
@@ -277,11 +293,19 @@ pub(super) fn apply_commands(
             TurnCommand::CloseDialog => dialog.0 = false,
             _ => {}
         }
+        if let Some(game) = rules.snooker.as_mut() {
+            snooker_command(game, command, &mut status, &mut layouts, &spec, &settings);
+            continue;
+        }
         let Some(game) = rules.game.as_mut() else {
             continue;
         };
         match command {
-            TurnCommand::OpenDialog | TurnCommand::CloseDialog => {}
+            TurnCommand::OpenDialog
+            | TurnCommand::CloseDialog
+            | TurnCommand::SnookerChoose(_)
+            | TurnCommand::Nominate(_)
+            | TurnCommand::Concede => {}
             TurnCommand::Continue => game.verdict_shown = false,
             TurnCommand::Choose(choice) => match game.play.choose(choice) {
                 Ok(next) => {
@@ -383,11 +407,20 @@ pub(super) fn follow_rules(
     }
     .map(str::to_owned);
     let wanted_referee = Referee {
-        active: rules.game.is_some(),
+        active: rules.in_match(),
         refuse_shot,
         rack_over: wanted == Turn::GameOver,
     };
     referee.set_if_neq(wanted_referee);
+    if let Some(game) = &rules.snooker
+        && status.at_rest
+    {
+        let next = game.next();
+        let hand = (next.in_hand && game.frame.end.is_none()).then_some(HandRule::InD);
+        if status.ball_in_hand != hand {
+            status.ball_in_hand = hand;
+        }
+    }
     if let Some(game) = &rules.game
         && status.at_rest
     {
@@ -486,5 +519,83 @@ mod tests {
             None
         );
         assert_eq!(proposed_call(&next(CallRule::NotUsed, vec![3]), &aim), None);
+    }
+}
+
+/// A new snooker match: the 12-ft table, the 22 balls, frame 1.
+fn start_snooker(
+    request: &NewGameRequested,
+    rules: &mut Rules,
+    spec: &mut ResMut<TableSpec>,
+    settings: &PhysicsSettings,
+    layouts: &mut MessageWriter<LayoutRequested>,
+    status: &mut SimStatus,
+) {
+    spec.set_if_neq(TableSpec::snooker());
+    let table = table_for(spec, settings);
+    let params = params_for(spec, settings);
+    // 2.1: a match is the best of an odd number of frames; `race_to` frames win it.
+    let best_of = 2 * request.race_to.max(1) - 1;
+    let started = SnookerInPlay::new(
+        request.players.clone(),
+        best_of,
+        request.computer,
+        request.seed,
+        &table,
+        &params.ball,
+    );
+    match (started, snooker_layout(&table, &params.ball)) {
+        (Ok(game), Ok(balls)) => {
+            rules.snooker = Some(game);
+            layouts.write(LayoutRequested {
+                balls,
+                rack: Rack::FifteenBall,
+                name: "snooker",
+            });
+        }
+        (Err(error), _) => status.note = Some(format!("cannot start snooker: {}", error.0)),
+        (_, Err(error)) => status.note = Some(format!("cannot start snooker: {error}")),
+    }
+}
+
+/// A player's command in a snooker match.
+fn snooker_command(
+    game: &mut SnookerInPlay,
+    command: TurnCommand,
+    status: &mut SimStatus,
+    layouts: &mut MessageWriter<LayoutRequested>,
+    spec: &TableSpec,
+    settings: &PhysicsSettings,
+) {
+    match command {
+        TurnCommand::Continue => game.verdict_shown = false,
+        TurnCommand::SnookerChoose(choice) => match game.frame.choose(choice) {
+            Ok(chosen) => {
+                game.choices.push(choice);
+                game.verdict_shown = false;
+                game.pending_layout = chosen.layout;
+            }
+            Err(error) => status.note = Some(error.to_string()),
+        },
+        TurnCommand::Nominate(ball) => game.nominated = Some(ball),
+        TurnCommand::Concede => {
+            let striker = game.next().striker;
+            match game.frame.concede(striker) {
+                Ok(_) => {
+                    game.verdict_shown = false;
+                    game.count_the_frame();
+                }
+                Err(error) => status.note = Some(error.to_string()),
+            }
+        }
+        TurnCommand::NextRack => {
+            if game.frame.winner().is_none() || game.frames.winner().is_some() {
+                return;
+            }
+            if let Err(error) = game.next_frame(spec, settings, layouts) {
+                status.note = Some(error);
+            }
+        }
+        _ => {}
     }
 }

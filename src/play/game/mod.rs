@@ -19,6 +19,7 @@
 //! pockets while calling and the called pocket (gizmos), and the click on a pocket.
 
 mod flow;
+pub mod snooker;
 mod state;
 mod table_input;
 
@@ -48,7 +49,13 @@ pub fn plugin(app: &mut App) {
         .add_systems(Update, lock_aim.before(InputSystems::Pointer))
         .add_systems(
             Update,
-            (judge_shot, apply_commands, follow_rules)
+            (
+                judge_shot,
+                snooker::judge_stroke,
+                apply_commands,
+                snooker::replace_balls,
+                follow_rules,
+            )
                 .chain()
                 .in_set(SimSystems::Flow)
                 .after(crate::sim::respot_after_scratch),

@@ -30,14 +30,49 @@ pub enum Turn {
     GameOver,
 }
 
+/// A game the player can start: one of pool's, or snooker.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum GameChoice {
+    /// 8-ball, 9-ball or free play ([`Game`]).
+    Pool(Game),
+    /// Snooker on the 12-ft table ([`billiards_rules::snooker`]).
+    Snooker,
+}
+
+impl GameChoice {
+    /// Every choice, in the dialog's order.
+    pub const ALL: [GameChoice; 4] = [
+        GameChoice::Pool(Game::NineBall),
+        GameChoice::Pool(Game::EightBall),
+        GameChoice::Snooker,
+        GameChoice::Pool(Game::FreePlay),
+    ];
+
+    /// The player's name for it.
+    pub fn label(self) -> &'static str {
+        match self {
+            GameChoice::Pool(Game::NineBall) => "9-ball",
+            GameChoice::Pool(Game::EightBall) => "8-ball",
+            GameChoice::Pool(Game::FreePlay) => "free play",
+            GameChoice::Snooker => "snooker",
+        }
+    }
+}
+
+impl From<Game> for GameChoice {
+    fn from(game: Game) -> Self {
+        GameChoice::Pool(game)
+    }
+}
+
 /// Starts a new game (the dialog's Start).
 #[derive(Message, Debug, Clone, PartialEq, Eq)]
 pub struct NewGameRequested {
-    /// The game; [`Game::FreePlay`] is the sandbox (no match).
-    pub game: Game,
+    /// The game; free play is the sandbox (no match).
+    pub game: GameChoice,
     /// The players' names.
     pub players: [String; 2],
-    /// Racks needed to win the match.
+    /// Racks (snooker: frames) needed to win the match.
     pub race_to: u32,
     /// The seed of the first rack's gaps (each later rack takes the next seed).
     pub seed: u64,
@@ -64,15 +99,30 @@ pub enum TurnCommand {
     CallBall(u8),
     /// Make this call for the next shot (a pocket, a safety, a push out, or none).
     Call(Call),
+    /// Snooker: take one of the choices offered after a foul or a tie.
+    SnookerChoose(billiards_rules::snooker::Choice),
+    /// Snooker: nominate this colour or free ball for the next stroke (2.12, 3.12).
+    Nominate(u8),
+    /// Snooker: the striker concedes the frame (2.1(a)).
+    Concede,
     /// The rack is over: rack the next one of the match.
     NextRack,
 }
 
-/// The rules side of the live game: `None` in free play.
+/// The rules side of the live game: both `None` in free play.
 #[derive(Resource, Debug, Default)]
 pub struct Rules {
-    /// The match in play, if any.
+    /// The pool match in play, if any.
     pub game: Option<GameInPlay>,
+    /// The snooker match in play, if any.
+    pub snooker: Option<super::snooker::SnookerInPlay>,
+}
+
+impl Rules {
+    /// Whether a match (pool or snooker) is in play.
+    pub fn in_match(&self) -> bool {
+        self.game.is_some() || self.snooker.is_some()
+    }
 }
 
 /// A match in play and what the players did since the last shot.
@@ -296,7 +346,7 @@ fn choices_text(choices: &[Choice]) -> String {
 
 /// The game to start at launch (`--game`), two players, race to 3.
 #[derive(Resource, Debug, Clone, Copy, PartialEq, Eq)]
-pub struct StartGame(pub Game);
+pub struct StartGame(pub GameChoice);
 
 /// Whether the new-game dialog is open.
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]

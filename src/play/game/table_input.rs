@@ -59,7 +59,11 @@ pub(super) fn lock_aim(
     let computer = rules
         .game
         .as_ref()
-        .is_some_and(|g| g.computer(g.next().shooter).is_some());
+        .is_some_and(|g| g.computer(g.next().shooter).is_some())
+        || rules
+            .snooker
+            .as_ref()
+            .is_some_and(|g| g.computer(g.next().striker).is_some());
     lock.set_if_neq(AimLocked(calling || computer));
 }
 
@@ -69,12 +73,15 @@ pub(super) fn confirm_key(
     rules: Res<Rules>,
     mut turn_commands: MessageWriter<TurnCommand>,
 ) {
-    if keys.just_pressed(KeyCode::Enter)
-        && rules
-            .game
+    let no_choice = rules
+        .game
+        .as_ref()
+        .is_some_and(|g| g.next().choices.is_empty())
+        || rules
+            .snooker
             .as_ref()
-            .is_some_and(|g| g.next().choices.is_empty())
-    {
+            .is_some_and(|g| g.next().choices.is_empty());
+    if keys.just_pressed(KeyCode::Enter) && no_choice {
         turn_commands.write(TurnCommand::Continue);
     }
 }
@@ -87,13 +94,29 @@ pub(super) fn draw_rules(
     turn: Option<Res<State<Turn>>>,
     mut gizmos: Gizmos,
 ) {
-    let Some(game) = &rules.game else { return };
     let Some(turn) = turn.map(|t| *t.get()) else {
         return;
     };
     let lift = 0.003;
     let at = |p: DVec2| to_world(p.extend(lift));
     let flat = Quat::from_rotation_x(std::f32::consts::FRAC_PI_2);
+    if turn == Turn::BallInHand
+        && status.ball_in_hand == Some(HandRule::InD)
+        && let Ok(marks) = billiards_physics::SnookerMarks::of(&spec.physics_table())
+    {
+        // The D (3.4): the half circle behind the baulk-line, and the line across it.
+        let centre = DVec2::new(marks.brown.x, marks.brown.y);
+        let d: Vec<Vec3> = (0..=32)
+            .map(|k| {
+                let a = std::f64::consts::FRAC_PI_2 + std::f64::consts::PI * f64::from(k) / 32.0;
+                at(centre + marks.d_radius * DVec2::from_angle(a))
+            })
+            .collect();
+        let ends = [d[0], d[d.len() - 1]];
+        gizmos.linestrip(d, Color::srgb(0.3, 0.9, 1.0));
+        gizmos.line(ends[0], ends[1], Color::srgb(0.3, 0.9, 1.0));
+    }
+    let Some(game) = &rules.game else { return };
     if turn == Turn::BallInHand
         && let Some(rule) = status.ball_in_hand
     {
