@@ -26,7 +26,7 @@ fn start(folder: &Path, game: Game) -> App {
     app.insert_resource(ComputerPace(Duration::from_millis(20)));
     app.update();
     app.world_mut().write_message(NewGameRequested {
-        game,
+        game: game.into(),
         players: ["Ann".to_owned(), "Bob".to_owned()],
         race_to: 1,
         seed: 11,
@@ -142,7 +142,7 @@ fn a_verdict_before_the_computers_turn_waits_for_the_human() {
     app.insert_resource(ComputerPace(Duration::ZERO));
     app.update();
     app.world_mut().write_message(NewGameRequested {
-        game: Game::NineBall,
+        game: Game::NineBall.into(),
         players: ["Ann".to_owned(), "Bob".to_owned()],
         race_to: 1,
         seed: 3,

@@ -25,7 +25,7 @@ fn start(folder: &Path, game: Game, race_to: u32) -> App {
     app.insert_resource(RecordingsFolder(Some(folder.to_path_buf())));
     app.update();
     app.world_mut().write_message(NewGameRequested {
-        game,
+        game: game.into(),
         players: ["Ann".to_owned(), "Bob".to_owned()],
         race_to,
         seed: 7,
@@ -297,7 +297,7 @@ fn a_nine_ball_match_is_played_through_the_turns_to_its_winner() {
     }
     // A new game of free play ends the match.
     app.world_mut().write_message(NewGameRequested {
-        game: Game::FreePlay,
+        game: Game::FreePlay.into(),
         players: ["Ann".to_owned(), "Bob".to_owned()],
         race_to: 1,
         seed: 0,

@@ -1,0 +1,231 @@
+//! Headless snooker through the game's states (issue 26): the 12-ft table and its balls, the
+//! cue ball in hand in the D (WPBSA 3.4), a foul and a miss with the balls replaced (3.14),
+//! scores that add up to the verdicts.
+
+mod common;
+
+use std::path::Path;
+
+use bevy::{math::DVec2, prelude::*};
+use billiards::{
+    play::game::{self, GameChoice, NewGameRequested, Rules, Turn, TurnCommand},
+    recording::RecordingsFolder,
+    sim::{HandError, HandRule, ShotRequested, SimStatus, Solver, place_ball_in_hand},
+    table::balls::{Ball, BallMotion},
+    table::geometry::TableSpec,
+};
+use billiards_physics::snooker::{BLUE, PINK, SNOOKER_BALL_DIAMETER, YELLOW};
+use billiards_rules::Seat;
+use billiards_rules::snooker::{BallOn, Choice};
+
+/// A fresh folder of this test's own for the recordings.
+fn folder(test: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("billiards-snooker-{test}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+fn start(folder: &Path) -> App {
+    let mut app = common::headless(game::plugin);
+    app.insert_resource(RecordingsFolder(Some(folder.to_path_buf())));
+    app.update();
+    app.world_mut().write_message(NewGameRequested {
+        game: GameChoice::Snooker,
+        players: ["Ann".to_owned(), "Bob".to_owned()],
+        race_to: 2,
+        seed: 11,
+        computer: [None, None],
+        setup: Default::default(),
+    });
+    for _ in 0..3 {
+        app.update();
+    }
+    app
+}
+
+fn turn(app: &App) -> Turn {
+    *app.world().resource::<State<Turn>>().get()
+}
+
+fn snooker(app: &App) -> &billiards::play::game::snooker::SnookerInPlay {
+    app.world().resource::<Rules>().snooker.as_ref().unwrap()
+}
+
+fn balls(app: &App) -> Vec<(u8, DVec2)> {
+    let sim = app.world().resource::<Solver>().simulation();
+    sim.balls()
+        .zip(sim.numbers())
+        .filter(|(s, _)| s.motion.on_table())
+        .map(|(s, &n)| (n, DVec2::new(s.position.x, s.position.y)))
+        .collect()
+}
+
+fn position(app: &App, n: u8) -> DVec2 {
+    balls(app).into_iter().find(|b| b.0 == n).unwrap().1
+}
+
+fn place(app: &mut App, at: DVec2) -> Result<(), HandError> {
+    let rule = app.world().resource::<SimStatus>().ball_in_hand.unwrap();
+    let result = app
+        .world_mut()
+        .resource_scope(|world, solver: Mut<Solver>| {
+            let spec = world.resource::<TableSpec>().clone();
+            let mut query = world.query::<(&Ball, &mut BallMotion)>();
+            let (_, mut motion) = query
+                .iter_mut(world)
+                .find(|(ball, _)| ball.number == 0)
+                .unwrap();
+            place_ball_in_hand(&solver, &spec, &mut motion, at, rule)
+        });
+    app.update();
+    result
+}
+
+fn shoot(app: &mut App, angle: f64, speed: f64) {
+    app.world_mut().write_message(ShotRequested {
+        angle,
+        speed,
+        tip: Default::default(),
+        elevation: 0.0,
+    });
+    for _ in 0..3 {
+        app.update();
+    }
+    assert_eq!(turn(app), Turn::ShotInPlay, "the stroke was not taken");
+    for _ in 0..5000 {
+        app.update();
+        if app.world().resource::<SimStatus>().at_rest {
+            app.update();
+            return;
+        }
+    }
+    panic!("balls still moving");
+}
+
+/// The frame starts on the 12-ft table with 52.5 mm balls (WPBSA 1.1, 1.2), the 22 balls
+/// (3.2), the cue ball in hand: it goes anywhere in the D and nowhere else (3.4).
+#[test]
+fn a_frame_starts_on_the_snooker_table_with_the_cue_ball_in_the_d() {
+    let dir = folder("start");
+    let mut app = start(&dir);
+    let spec = app.world().resource::<TableSpec>();
+    assert!(spec.is_snooker());
+    assert_eq!(spec.length, 3.569);
+    let sim = app.world().resource::<Solver>().simulation();
+    assert_eq!(sim.params().ball.radius, SNOOKER_BALL_DIAMETER / 2.0);
+    assert_eq!(sim.table().length, 3.569);
+    assert_eq!(balls(&app).len(), 22);
+    assert_eq!(turn(&app), Turn::BallInHand);
+    assert_eq!(
+        app.world().resource::<SimStatus>().ball_in_hand,
+        Some(HandRule::InD)
+    );
+    // The baulk-line is 737 mm from the bottom cushion; the D's radius is 292 mm.
+    let baulk = -3.569 / 2.0 + 0.737;
+    assert_eq!(
+        place(&mut app, DVec2::new(baulk + 0.05, 0.1)),
+        Err(HandError::OutsideD),
+        "in front of the baulk-line"
+    );
+    assert_eq!(
+        place(&mut app, DVec2::new(baulk - 0.25, 0.2)),
+        Err(HandError::OutsideD),
+        "behind the line but outside the half circle"
+    );
+    let inside = DVec2::new(baulk - 0.2, 0.1);
+    place(&mut app, inside).unwrap();
+    assert_eq!(position(&app, 0), inside);
+}
+
+/// 3.14: a foul that is a miss (the pink hit first, a red on, a clear view of the reds)
+/// gives 6 points (3.10: the value of the ball hit, at least 4) and the opponent may have the
+/// balls replaced: every ball goes back exactly where it was and the offender plays again.
+#[test]
+fn a_miss_on_the_break_is_replaced_exactly() {
+    let dir = folder("replace");
+    let mut app = start(&dir);
+    let before = balls(&app);
+    let cue = position(&app, 0);
+    let pink = position(&app, PINK);
+    shoot(&mut app, (pink - cue).to_angle(), 2.0);
+    let game = snooker(&app);
+    let verdict = game.last.clone().unwrap();
+    assert!(!verdict.fair(), "{}", verdict.text);
+    assert!(verdict.miss, "{}", verdict.text);
+    assert_eq!(verdict.penalty, 6, "{}", verdict.text);
+    assert_eq!(game.frame.scores, [0, 6]);
+    assert_eq!(game.next().striker, Seat::B);
+    assert!(game.next().choices.contains(&Choice::Replace));
+    assert_eq!(turn(&app), Turn::Verdict);
+    app.world_mut()
+        .write_message(TurnCommand::SnookerChoose(Choice::Replace));
+    for _ in 0..3 {
+        app.update();
+    }
+    let mut after = balls(&app);
+    let mut expected = before.clone();
+    after.sort_by_key(|b| b.0);
+    expected.sort_by_key(|b| b.0);
+    assert_eq!(after, expected, "every ball back where it was");
+    let game = snooker(&app);
+    assert_eq!(game.next().striker, Seat::A, "the offender plays again");
+    assert_eq!(game.frame.scores, [0, 6], "the penalty stands");
+    assert_eq!(turn(&app), Turn::BallInHand);
+}
+
+/// A fair stroke that pots nothing passes the turn; a stroke that hits nothing is a foul of
+/// 4 (3.10); every verdict's scores are the frame's and add up to the points and penalties.
+#[test]
+fn scores_add_up_to_the_verdicts() {
+    let dir = folder("scores");
+    let mut app = start(&dir);
+    let mut expected = [0u32; 2];
+    // Straight up the table at the reds' far corner: a red first.
+    let cue = position(&app, 0);
+    let red = balls(&app)
+        .into_iter()
+        .filter(|b| (1..=15).contains(&b.0))
+        .max_by(|a, b| (a.1.x - a.1.y).total_cmp(&(b.1.x - b.1.y)))
+        .unwrap()
+        .1;
+    shoot(&mut app, (red - cue).to_angle(), 3.0);
+    let v = snooker(&app).last.clone().unwrap();
+    assert!(
+        matches!(v.on, BallOn::Red),
+        "a red is on at the start: {}",
+        v.text
+    );
+    expected[v.striker.index()] += v.points;
+    expected[v.striker.other().index()] += v.penalty;
+    assert_eq!(snooker(&app).frame.scores, expected, "{}", v.text);
+    // The next striker rolls the cue ball softly away from every ball: no ball hit.
+    app.world_mut().write_message(TurnCommand::Continue);
+    for _ in 0..3 {
+        app.update();
+    }
+    if !snooker(&app).next().choices.is_empty() {
+        app.world_mut()
+            .write_message(TurnCommand::SnookerChoose(Choice::PlayOn));
+        for _ in 0..3 {
+            app.update();
+        }
+    }
+    let cue = position(&app, 0);
+    let nearest = balls(&app)
+        .into_iter()
+        .filter(|b| b.0 != 0)
+        .min_by(|a, b| a.1.distance(cue).total_cmp(&b.1.distance(cue)))
+        .unwrap()
+        .1;
+    shoot(&mut app, (cue - nearest).to_angle(), 0.05);
+    let v = snooker(&app).last.clone().unwrap();
+    assert!(!v.fair(), "{}", v.text);
+    assert!(v.penalty >= 4, "{}", v.text);
+    expected[v.striker.index()] += v.points;
+    expected[v.striker.other().index()] += v.penalty;
+    assert_eq!(snooker(&app).frame.scores, expected, "{}", v.text);
+    // The colours still stand on their spots.
+    let blue = position(&app, BLUE);
+    assert_eq!(blue, DVec2::ZERO);
+    assert!(balls(&app).iter().any(|b| b.0 == YELLOW));
+}
