@@ -22,6 +22,7 @@ mod flow;
 pub mod snooker;
 mod state;
 mod table_input;
+mod turn;
 
 pub use state::*;
 pub use table_input::pocket_near;
@@ -51,9 +52,9 @@ pub fn plugin(app: &mut App) {
             Update,
             (
                 judge_shot,
-                snooker::judge_stroke,
+                snooker::flow::judge_stroke,
                 apply_commands,
-                snooker::replace_balls,
+                snooker::flow::replace_balls,
                 follow_rules,
             )
                 .chain()

@@ -10,16 +10,18 @@
 
 use bevy::{math::DVec2, prelude::*};
 use billiards_ai::Level;
-use billiards_physics::{EventKind, SnookerMarks, Vec2, snooker::default_cue_position};
+use billiards_physics::{SnookerMarks, Vec2, snooker::default_cue_position};
+use billiards_rules::Seat;
 use billiards_rules::snooker::{
-    self, BallOn, Choice, Frame, FrameEnd, NextShot, SnookerMatch, Stroke, Verdict,
+    self, BallOn, Choice, Frame, FrameEnd, NextShot, SnookerMatch, Verdict,
     balls::{is_colour, name},
 };
-use billiards_rules::{Seat, summarise};
 
-use super::state::{Rules, Turn};
+pub mod flow;
+
+use super::turn::Turn;
 use crate::{
-    sim::{ShotFinished, SimStatus, Solver, to_dvec2},
+    sim::{SimStatus, Solver, to_dvec2},
     table::balls::{BallMotion, MotionState, Pocketed},
 };
 
@@ -277,7 +279,7 @@ pub fn choice_label(choice: Choice, game: &SnookerInPlay) -> String {
 }
 
 /// Every ball on the table of `sim` at time `t` of its history, by number.
-fn layout_at(sim: &billiards_physics::Simulation, t: Option<f64>) -> Vec<(u8, Vec2)> {
+pub(crate) fn layout_at(sim: &billiards_physics::Simulation, t: Option<f64>) -> Vec<(u8, Vec2)> {
     let states: Vec<billiards_physics::BallState> = match t {
         Some(t) => sim.history().states_at(t),
         None => sim.balls().collect(),
@@ -292,7 +294,7 @@ fn layout_at(sim: &billiards_physics::Simulation, t: Option<f64>) -> Vec<(u8, Ve
 
 /// The nomination for a stroke: the player's, or else the ball hit first when that is the
 /// obvious one (2.12: a colour after a red; 3.12: a free ball that is not otherwise on).
-fn nomination(frame: &Frame, chosen: Option<u8>, first: Option<u8>) -> Option<u8> {
+pub(crate) fn nomination(frame: &Frame, chosen: Option<u8>, first: Option<u8>) -> Option<u8> {
     chosen.or(match frame.next.on {
         BallOn::Colour { .. } => first.filter(|&c| is_colour(c)),
         on if frame.next.free_ball => {
@@ -300,64 +302,6 @@ fn nomination(frame: &Frame, chosen: Option<u8>, first: Option<u8>) -> Option<u8
         }
         _ => None,
     })
-}
-
-/// On a finished stroke of a snooker match: summarise, judge, spot the colours, put a cue
-/// ball in hand into the D.
-#[allow(clippy::too_many_arguments)]
-pub(super) fn judge_stroke(
-    mut commands: Commands,
-    mut finished: MessageReader<ShotFinished>,
-    mut rules: ResMut<Rules>,
-    solver: Option<ResMut<Solver>>,
-    mut balls: Query<(&mut BallMotion, Has<Pocketed>)>,
-    mut status: ResMut<SimStatus>,
-) {
-    if finished.read().count() == 0 {
-        return;
-    }
-    let (Some(game), Some(mut solver)) = (rules.snooker.as_mut(), solver) else {
-        return;
-    };
-    let sim = solver.simulation();
-    let events = sim.history().events();
-    let Some(strike) = events
-        .iter()
-        .rposition(|e| matches!(e.kind, EventKind::Strike { .. }))
-    else {
-        return;
-    };
-    let summary = summarise(&events[strike..], sim.numbers());
-    let before = layout_at(sim, Some(events[strike].time));
-    let after = layout_at(sim, None);
-    let nominated = nomination(&game.frame, game.nominated.take(), summary.first_contact);
-    let verdict = match game.frame.play(Stroke {
-        summary: &summary,
-        nominated,
-        before: &before,
-        after: &after,
-    }) {
-        Ok(verdict) => verdict,
-        Err(error) => {
-            status.note = Some(format!("the rules refused the stroke: {error}"));
-            return;
-        }
-    };
-    game.strokes += 1;
-    game.choices.clear();
-    if !verdict.fair() {
-        game.last_foul = Some(verdict.text.clone());
-    }
-    let spots = verdict.spots.clone();
-    let in_hand = verdict.next.as_ref().is_some_and(|n| n.in_hand);
-    game.last = Some(verdict);
-    game.verdict_shown = true;
-    game.count_the_frame();
-    let mut moves: Vec<(u8, Vec2)> = spots;
-    if in_hand && let Some(at) = free_place_in_d(solver.simulation()) {
-        moves.push((0, at));
-    }
-    set_balls(&mut commands, &mut solver, &moves, &mut balls, &mut status);
 }
 
 /// A free place for the cue ball in hand in the D: the usual one between the brown and the
@@ -386,7 +330,7 @@ pub fn free_place_in_d(sim: &billiards_physics::Simulation) -> Option<Vec2> {
 /// Puts the balls `moves` names where it says, in the solver directly (a replace can move
 /// a ball onto the place another one leaves, so they go in passes: each pass places every
 /// ball whose place is free) and in their components; pocketed ones come back.
-pub(super) fn set_balls(
+pub(crate) fn set_balls(
     commands: &mut Commands,
     solver: &mut Solver,
     moves: &[(u8, Vec2)],
@@ -439,23 +383,4 @@ pub(super) fn set_balls(
 /// The ends of a frame in words ("Ann wins the frame on points").
 pub fn end_text(game: &SnookerInPlay, (winner, end): (Seat, FrameEnd)) -> String {
     format!("{} wins the frame {end}", game.name(winner))
-}
-
-/// 3.14: a replace chosen: the balls go back where they were before the foul.
-pub(super) fn replace_balls(
-    mut commands: Commands,
-    mut rules: ResMut<Rules>,
-    solver: Option<ResMut<Solver>>,
-    mut balls: Query<(&mut BallMotion, Has<Pocketed>)>,
-    mut status: ResMut<SimStatus>,
-) {
-    let (Some(game), Some(mut solver)) = (rules.snooker.as_mut(), solver) else {
-        return;
-    };
-    let Some(layout) = game.pending_layout.take() else {
-        return;
-    };
-    // Balls on the table now but not in the layout were potted then: none can be, as a
-    // stroke pots balls and never adds one; the layout is every ball to set.
-    set_balls(&mut commands, &mut solver, &layout, &mut balls, &mut status);
 }
