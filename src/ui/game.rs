@@ -126,9 +126,10 @@ pub fn hud_buttons(ui: &mut egui::Ui, state: &mut GameParam) {
         if new_game.clicked() {
             state.commands.write(TurnCommand::OpenDialog);
         }
+        // The hint is pool's search; snooker's computer plays but does not advise yet.
         let hint = ui
             .add_enabled(
-                human_to_shoot,
+                human_to_shoot && state.rules.game.is_some(),
                 egui::Button::new(HUD_BUTTONS[1]).min_size(size),
             )
             .on_hover_text("the computer's choice for you, shown as your aim (and its call)");
@@ -366,9 +367,68 @@ pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result 
                 }
             });
         }
+        Turn::Aiming | Turn::BallInHand if human_to_shoot(&state) => {
+            if state.rules.snooker.is_some() {
+                let window = egui::Window::new("Nominate")
+                    .collapsible(true)
+                    .resizable(false)
+                    .anchor(egui::Align2::RIGHT_BOTTOM, [-10.0, -10.0]);
+                snooker_nominate(&ctx, window, &mut state);
+            }
+        }
         Turn::Aiming | Turn::BallInHand | Turn::ShotInPlay => {}
     }
     Ok(())
+}
+
+/// Snooker, a human to play: the colour (or free ball) to nominate (2.12, 3.12; without one
+/// the ball hit first is taken as nominated), and the concession of the frame (2.1(a)).
+fn snooker_nominate(ctx: &egui::Context, window: egui::Window, state: &mut GameParam) {
+    use billiards_rules::snooker::{BallOn, balls};
+    let Some(game) = &state.rules.snooker else {
+        return;
+    };
+    let next = game.next();
+    let colour_on = matches!(next.on, BallOn::Colour { .. });
+    let on = game.frame.balls_on(next.on);
+    // A free ball may be any ball; the colours are offered (a red as a free ball is the one
+    // hit first).
+    let choices: Vec<u8> = if colour_on || next.free_ball {
+        balls::COLOURS
+            .iter()
+            .copied()
+            .filter(|c| game.frame.on_table.contains(c))
+            .filter(|c| colour_on || !on.contains(c))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    window.show(ctx, |ui| {
+        if choices.is_empty() {
+            ui.label(format!("ball on: {}", next.on));
+        } else {
+            ui.label(if colour_on {
+                "Nominate a colour (else the one hit first):"
+            } else {
+                "Free ball: nominate one (else the one hit first):"
+            });
+            ui.horizontal(|ui| {
+                for &c in &choices {
+                    let chosen = game.nominated == Some(c);
+                    if ui.selectable_label(chosen, balls::name(c)).clicked() {
+                        state.commands.write(TurnCommand::Nominate(c));
+                    }
+                }
+            });
+        }
+        if ui
+            .button("Concede the frame")
+            .on_hover_text("WPBSA 2.1(a): the opponent wins the frame")
+            .clicked()
+        {
+            state.commands.write(TurnCommand::Concede);
+        }
+    });
 }
 
 /// Snooker's verdict: the sentence, then the incoming player's choices or Continue.
