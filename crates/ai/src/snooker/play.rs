@@ -164,7 +164,11 @@ impl Table2 {
             let bound = self.sim().table().centre_bounds(r);
             let spot = (0..200)
                 .map(|j| Vec2::new(-bound.x + 1e-3, -bound.y + 0.06 * f64::from(j + parked)))
-                .find(|&q| q.y < bound.y && clear(blocker, q) && todo.iter().all(|&(_, t)| (t - q).length() >= 2.0 * r))
+                .find(|&q| {
+                    q.y < bound.y
+                        && clear(blocker, q)
+                        && todo.iter().all(|&(_, t)| (t - q).length() >= 2.0 * r)
+                })
                 .ok_or("no room to move a ball aside for the replace")?;
             parked += 1;
             let id = self.id(blocker)?;

@@ -2,13 +2,13 @@
 //! sample in points, the rounds of refinement, places in the D and the choices after a foul.
 
 use super::{SnookerDecision, SnookerPlan};
+use crate::AiError;
 use crate::candidates::{Candidate, Layout, ShotKind, combo_aims, direct_aims, expand, rail_aims};
 use crate::evaluate::{Mode, Search, Stats};
 use crate::level::Level;
 use crate::noise::{Noise, stream};
 use crate::position::aim_probability;
 use crate::quiet::final_layout;
-use crate::AiError;
 use billiards_physics::{
     BallId, BallSetup, EventKind, Shot, Simulation, SnookerMarks, TipOffset, Vec2, Vec3,
 };
@@ -182,10 +182,7 @@ pub fn decide_snooker_with(
         vec![None]
     };
     let mut pool = Pool::default();
-    let first: Vec<Cand> = places
-        .iter()
-        .flat_map(|&p| s.offence(p, budget))
-        .collect();
+    let first: Vec<Cand> = places.iter().flat_map(|&p| s.offence(p, budget)).collect();
     pool.add(&s, first, budget.samples);
     let scoring = pool
         .best()
@@ -309,7 +306,12 @@ fn chance_in_hand(layout: &Layout, marks: &SnookerMarks, on: &[u8], noise: Noise
     let mut l = layout.clone();
     probes
         .iter()
-        .filter(|&&p| layout.balls.iter().all(|&(_, q)| (p - q).length() > 2.0 * r))
+        .filter(|&&p| {
+            layout
+                .balls
+                .iter()
+                .all(|&(_, q)| (p - q).length() > 2.0 * r)
+        })
         .map(|&p| {
             l.cue = p;
             chance(&l, on, noise)

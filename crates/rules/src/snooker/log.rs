@@ -16,8 +16,8 @@ use super::judge::Stroke;
 use super::verdict::{Choice, Verdict};
 use crate::game::Seat;
 use crate::shot::summarise;
-use billiards_physics::recording::{Action, Recording};
 use billiards_physics::Vec2;
+use billiards_physics::recording::{Action, Recording};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
@@ -209,10 +209,7 @@ impl FrameLog {
                     }
                     let n = numbers.get(ball).copied().unwrap_or(u8::MAX);
                     if n != WHITE {
-                        return Err(FrameLogError::NotTheCueBall {
-                            stroke: k,
-                            ball: n,
-                        });
+                        return Err(FrameLogError::NotTheCueBall { stroke: k, ball: n });
                     }
                     let before = layout(&sim);
                     check_table(&frame, &before, &expected, k)?;
