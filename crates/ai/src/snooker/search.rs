@@ -30,6 +30,8 @@ const FRAME: f64 = 40.0;
 const SNOOKER_BONUS: f64 = 2.0;
 /// The same when snookers are needed to win: a snooker is the only way back.
 const NEEDED_SNOOKER_BONUS: f64 = 6.0;
+/// A ball potted while snookers are needed: one fewer ball to snooker behind.
+const NEEDED_POT_COST: f64 = 4.0;
 /// Below this chance of a fair pot, safeties are searched too.
 const SAFETY_BELOW: f64 = 0.6;
 /// Most events one sample may take before it is scored on the layout of the moment.
@@ -691,16 +693,27 @@ impl Snook<'_> {
             Some(_) if !next.in_hand => chance(&layout, &on_next, self.noise),
             _ => chance_in_hand(&layout, &frame.marks, &on_next, self.noise),
         };
-        let gained = if self.needs {
-            0.0
-        } else {
-            f64::from(verdict.points)
-        };
         if !verdict.fair() {
             return -f64::from(verdict.penalty) - next_chance;
         }
+        if self.needs && verdict.points > 0 {
+            // A pot for nothing: the points do not close the gap (3.3, 3.10), and each ball
+            // gone is one fewer to lay a snooker behind; with one object ball left there is
+            // none.
+            let gone = self
+                .frame
+                .on_table
+                .len()
+                .saturating_sub(frame.on_table.len());
+            return if frame.on_table.len() <= 1 {
+                -0.5 * FRAME
+            } else {
+                -NEEDED_POT_COST * gone.max(1) as f64
+            };
+        }
+        let gained = f64::from(verdict.points);
         if next.striker == me && next.choices.is_empty() {
-            return gained + if self.needs { 0.0 } else { next_chance };
+            return gained + next_chance;
         }
         let bonus = match cue {
             Some(c) if !next.in_hand && snookered(c, &on_next, &objects, frame.radius) => {
