@@ -50,11 +50,12 @@ fn shoot(d: SnookerDecision) -> SnookerPlan {
     }
 }
 
-/// Plays `plan` without noise; the stroke for the rules.
-fn strike(
-    sim: &mut Simulation,
-    plan: &SnookerPlan,
-) -> (ShotSummary, Vec<(u8, Vec2)>, Vec<(u8, Vec2)>) {
+/// Balls on the table: number and centre.
+type Balls = Vec<(u8, Vec2)>;
+
+/// Plays `plan` without noise; the stroke for the rules: its summary, the balls before and
+/// after.
+fn strike(sim: &mut Simulation, plan: &SnookerPlan) -> (ShotSummary, Balls, Balls) {
     let layout = |s: &Simulation| -> Vec<(u8, Vec2)> {
         s.balls()
             .zip(s.numbers())

@@ -87,7 +87,7 @@ pub struct FrameRun {
 
 /// The table of a frame: lean, or recorded input by input.
 enum Table2 {
-    Lean(Simulation),
+    Lean(Box<Simulation>),
     Recorded(Box<Recorder>),
 }
 
@@ -206,7 +206,7 @@ pub fn play_frame(
     } else {
         let mut s = Simulation::new(table, params, &balls).map_err(|e| e.to_string())?;
         s.set_record_history(false);
-        Table2::Lean(s)
+        Table2::Lean(Box::new(s))
     };
     let mut frame =
         Frame::new(names.clone(), table, &params.ball, breaker).map_err(|e| e.to_string())?;

@@ -16,6 +16,7 @@ use billiards_rules::snooker::balls::{WHITE, is_colour, is_red, value};
 use billiards_rules::snooker::geometry::snookered;
 use billiards_rules::snooker::{BallOn, Choice, Frame, Stroke, Verdict};
 use billiards_rules::{Call, Game, GameState, Seat, ShotSummary};
+use rand::Rng;
 use rayon::prelude::*;
 
 /// What a red is worth to the player who pots it: its point and the colour that follows
@@ -30,6 +31,11 @@ const FRAME: f64 = 40.0;
 const SNOOKER_BONUS: f64 = 2.0;
 /// The same when snookers are needed to win: a snooker is the only way back.
 const NEEDED_SNOOKER_BONUS: f64 = 6.0;
+/// The stream of the second ply's outcomes: common to every finalist (close strokes meet the
+/// same errors), far from the candidates' own streams and [`SnookerPlan::executed`]'s.
+const OUTCOMES: u64 = 1 << 62;
+/// The stream of the seeds of the second ply's searches.
+const STREAMS: u64 = (1 << 62) + 1;
 /// A ball potted while snookers are needed: one fewer ball to snooker behind.
 const NEEDED_POT_COST: f64 = 4.0;
 /// Below this chance of a fair pot, safeties are searched too.
@@ -65,6 +71,21 @@ pub struct SnookerBudget {
     pub safety_hits: usize,
     /// The budget of the search behind each choice after a foul (`None`: this one).
     pub choice: Option<Box<SnookerBudget>>,
+    /// The second ply (`None`: positions valued analytically, one ply).
+    pub second: Option<SnookerTwoPly>,
+}
+
+/// The second ply at snooker, as [`crate::twoply`] at pool: the `finalists` best strokes
+/// each struck `outcomes` more times (one stream common to them), run to rest and judged;
+/// from each table the next stroke is searched with `reply`, for whoever plays it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SnookerTwoPly {
+    /// Strokes valued two plies deep (the best by their one-ply value).
+    pub finalists: usize,
+    /// Noisy outcomes of each, searched for the next stroke.
+    pub outcomes: usize,
+    /// The budget of each search of the next stroke.
+    pub reply: Box<SnookerBudget>,
 }
 
 impl SnookerBudget {
@@ -83,6 +104,12 @@ impl SnookerBudget {
             safety_balls: 2,
             safety_hits: 3,
             choice: None,
+            second: None,
+        };
+        let second = |finalists, outcomes| SnookerTwoPly {
+            finalists,
+            outcomes,
+            reply: Box::new(reply.clone()),
         };
         match level {
             Level::Easy | Level::Medium => SnookerBudget {
@@ -96,7 +123,8 @@ impl SnookerBudget {
                 correct_aim: b.correct_aim,
                 safety_balls: 2,
                 safety_hits: b.safeties.min(5),
-                choice: Some(Box::new(reply)),
+                choice: Some(Box::new(reply.clone())),
+                second: None,
             },
             Level::Hard | Level::Expert | Level::Perfect => SnookerBudget {
                 samples: 6,
@@ -109,7 +137,12 @@ impl SnookerBudget {
                 correct_aim: true,
                 safety_balls: if level == Level::Expert { 5 } else { 4 },
                 safety_hits: 7,
-                choice: Some(Box::new(reply)),
+                choice: Some(Box::new(reply.clone())),
+                second: Some(if level == Level::Expert {
+                    second(6, 16)
+                } else {
+                    second(4, 8)
+                }),
             },
         }
     }
@@ -196,8 +229,12 @@ pub fn decide_snooker_with(
     for &(k, m) in &budget.rounds {
         pool.refine(&s, k, m);
     }
+    if let Some(two) = &budget.second {
+        pool.second_ply(&s, two);
+    }
     let best = pool.best().ok_or(AiError::NoBall)?;
     let (c, st) = (pool.cands[best], pool.stats[best]);
+    let value = pool.value(best);
     Ok(SnookerDecision::Shoot(SnookerPlan {
         shot: c.cand.shot,
         place: c.cand.place,
@@ -205,7 +242,7 @@ pub fn decide_snooker_with(
         kind: c.cand.kind,
         success: st.pot_rate(),
         foul: st.fouls as f64 / st.n.max(1) as f64,
-        value: st.mean(),
+        value,
         samples: st.n,
         simulations: pool.simulations,
         events: pool.events,
@@ -220,6 +257,8 @@ struct Pool {
     simulations: usize,
     events: usize,
     finalists: Vec<usize>,
+    /// Candidates valued two plies deep, with their values (empty: one ply).
+    two: Vec<(usize, f64)>,
 }
 
 impl Pool {
@@ -261,8 +300,55 @@ impl Pool {
         self.events += stats.iter().map(|s| s.events).sum::<usize>();
     }
 
-    /// The best mean among the finalists (all candidates before any round; ties: the first).
+    /// Values the best finalists two plies deep; they become the only candidates
+    /// [`Pool::best`] chooses from. A stroke's value: its one-ply mean plus the mean, over
+    /// its searched outcomes, of (second-ply value - one-ply value) of the same outcome (a
+    /// control variate, as [`crate::twoply`]).
+    fn second_ply(&mut self, s: &Snook, two: &SnookerTwoPly) {
+        let mut order = if self.finalists.is_empty() {
+            (0..self.cands.len()).collect()
+        } else {
+            self.finalists.clone()
+        };
+        let mean = |i: usize| self.stats[i].mean();
+        order.sort_by(|&a, &b| mean(b).total_cmp(&mean(a)).then(a.cmp(&b)));
+        order.truncate(two.finalists);
+        let jobs: Vec<(usize, u64)> = order
+            .iter()
+            .flat_map(|&i| (0..two.outcomes as u64).map(move |k| (i, k)))
+            .collect();
+        let corrections: Vec<(f64, usize, usize)> = jobs
+            .par_iter()
+            .map(|&(i, k)| s.correction(&self.cands[i], k, &two.reply))
+            .collect();
+        for (n, &i) in order.iter().enumerate() {
+            let mine = &corrections[n * two.outcomes..(n + 1) * two.outcomes];
+            let shift = mine.iter().map(|c| c.0).sum::<f64>() / two.outcomes.max(1) as f64;
+            self.two.push((i, self.stats[i].mean() + shift));
+            self.simulations += mine.iter().map(|c| c.1).sum::<usize>();
+            self.events += mine.iter().map(|c| c.2).sum::<usize>();
+        }
+    }
+
+    /// The value of candidate `i`: two plies deep when it was so valued, else its mean.
+    fn value(&self, i: usize) -> f64 {
+        self.two
+            .iter()
+            .find(|v| v.0 == i)
+            .map_or(self.stats[i].mean(), |v| v.1)
+    }
+
+    /// The best mean among the finalists (all candidates before any round; ties: the first);
+    /// after a second ply, the best two-ply value.
     fn best(&self) -> Option<usize> {
+        if !self.two.is_empty() {
+            return self
+                .two
+                .iter()
+                .copied()
+                .reduce(|a, b| if b.1 > a.1 { b } else { a })
+                .map(|v| v.0);
+        }
         let all: Vec<usize> = (0..self.cands.len()).collect();
         let pool = if self.finalists.is_empty() {
             &all
@@ -666,14 +752,22 @@ impl Snook<'_> {
     }
 
     /// The value of `verdict` for the striker, in points, the balls at rest in `after` and
-    /// `frame` the frame after the stroke.
+    /// `frame` the frame after the stroke: the stroke's own points and the position's.
     fn score(&self, frame: &Frame, verdict: &Verdict, after: &[(u8, Vec2)]) -> f64 {
+        let (now, position) = self.terms(frame, verdict, after);
+        now + position
+    }
+
+    /// [`Snook::score`] in two terms: what the stroke itself earns (points, a penalty, the
+    /// frame, a pot for nothing) and what the position is worth (the next player's chance,
+    /// for or against the striker, and a snooker's bonus).
+    fn terms(&self, frame: &Frame, verdict: &Verdict, after: &[(u8, Vec2)]) -> (f64, f64) {
         let me = self.me;
         if let Some((w, _)) = verdict.end {
-            return if w == me { FRAME } else { -FRAME };
+            return (if w == me { FRAME } else { -FRAME }, 0.0);
         }
         let Some(next) = &verdict.next else {
-            return 0.0;
+            return (0.0, 0.0);
         };
         let mut balls: Vec<(u8, Vec2)> = after.to_vec();
         for &(c, p) in &verdict.spots {
@@ -694,7 +788,7 @@ impl Snook<'_> {
             _ => chance_in_hand(&layout, &frame.marks, &on_next, self.noise),
         };
         if !verdict.fair() {
-            return -f64::from(verdict.penalty) - next_chance;
+            return (-f64::from(verdict.penalty), -next_chance);
         }
         if self.needs && verdict.points > 0 {
             // A pot for nothing: the points do not close the gap (3.3, 3.10), and each ball
@@ -705,15 +799,16 @@ impl Snook<'_> {
                 .on_table
                 .len()
                 .saturating_sub(frame.on_table.len());
-            return if frame.on_table.len() <= 1 {
-                -0.5 * FRAME
+            let cost = if frame.on_table.len() <= 1 {
+                0.5 * FRAME
             } else {
-                -NEEDED_POT_COST * gone.max(1) as f64
+                NEEDED_POT_COST * gone.max(1) as f64
             };
+            return (-cost, 0.0);
         }
         let gained = f64::from(verdict.points);
         if next.striker == me && next.choices.is_empty() {
-            return gained + next_chance;
+            return (gained, next_chance);
         }
         let bonus = match cue {
             Some(c) if !next.in_hand && snookered(c, &on_next, &objects, frame.radius) => {
@@ -725,7 +820,73 @@ impl Snook<'_> {
             }
             _ => 0.0,
         };
-        gained - next_chance + bonus
+        (gained, bonus - next_chance)
+    }
+
+    /// Draw `k` of the outcomes' stream struck as `c`, run to rest and judged: its
+    /// second-ply value (the stroke's own points and the next stroke's searched value, for
+    /// or against the striker) minus its one-ply value, the simulations and the events. The
+    /// end of the frame or a choice to make is not searched (a difference of 0).
+    fn correction(&self, c: &Cand, k: u64, reply: &SnookerBudget) -> (f64, usize, usize) {
+        let mut sim = self.base.clone();
+        if let Some(p) = c.cand.place
+            && sim.place(self.cue, p, Vec2::ZERO, Vec3::ZERO).is_err()
+        {
+            return (0.0, 1, 0);
+        }
+        let before = on_table(&sim);
+        let shot = self.noise.apply(
+            c.cand.shot,
+            sim.params(),
+            &mut stream(self.seed, OUTCOMES, k),
+        );
+        let first = sim.event_count();
+        if sim.strike(self.cue, shot).is_err() {
+            return (0.0, 1, 0);
+        }
+        let mut summary = ShotSummary::default();
+        while let Some(e) = sim.step_event() {
+            summary.record(&e.kind, sim.numbers());
+            if sim.event_count() - first > 20 * MAX_EVENTS {
+                return (0.0, 1, sim.event_count() - first);
+            }
+        }
+        let events = sim.event_count() - first;
+        let after = on_table(&sim);
+        let mut frame = self.frame.clone();
+        let Ok(verdict) = frame.play(Stroke {
+            summary: &summary,
+            nominated: c.nominated,
+            before: &before,
+            after: &after,
+        }) else {
+            return (0.0, 1, events);
+        };
+        let Some(next) = verdict.next.clone() else {
+            return (0.0, 1, events);
+        };
+        if !next.choices.is_empty() {
+            return (0.0, 1, events);
+        }
+        let (_, position) = self.terms(&frame, &verdict, &after);
+        for &(n, p) in &verdict.spots {
+            let Some(id) = sim.numbers().iter().position(|&m| m == n) else {
+                return (0.0, 1, events);
+            };
+            if sim.place(id, p, Vec2::ZERO, Vec3::ZERO).is_err() {
+                return (0.0, 1, events);
+            }
+        }
+        let sign = if next.striker == self.me { 1.0 } else { -1.0 };
+        let seed = stream(self.seed, STREAMS, k).random();
+        match decide_snooker_with(&frame, &sim, self.noise, reply, seed) {
+            Ok(SnookerDecision::Shoot(plan)) => (
+                sign * plan.value - position,
+                1 + plan.simulations,
+                events + plan.events,
+            ),
+            _ => (0.0, 1, events),
+        }
     }
 }
 

@@ -120,6 +120,9 @@ pub enum FrameLogError {
     },
 }
 
+/// A stroke in flight: its number (from 1), the balls at its strike, its first event.
+type InFlight = (usize, Vec<(u8, Vec2)>, usize);
+
 /// What the rules left on the table for the next strike.
 #[derive(Default)]
 struct Expected {
@@ -187,7 +190,7 @@ impl FrameLog {
             .map_err(|e| FrameLogError::Replay(format!("setup: {e}")))?;
         let numbers = sim.numbers().to_vec();
         // The stroke in flight: its number, the layout at the strike, its first event.
-        let mut pending: Option<(usize, Vec<(u8, Vec2)>, usize)> = None;
+        let mut pending: Option<InFlight> = None;
         let mut expected = Expected::default();
         let mut k = 0;
         for (i, input) in recording.inputs.iter().enumerate() {
@@ -252,7 +255,7 @@ impl FrameLog {
         frame: &mut Frame,
         sim: &billiards_physics::Simulation,
         numbers: &[u8],
-        (k, before, first): (usize, Vec<(u8, Vec2)>, usize),
+        (k, before, first): InFlight,
     ) -> Result<Expected, FrameLogError> {
         if !sim.is_at_rest() {
             return Err(FrameLogError::NotAtRest { stroke: k });
