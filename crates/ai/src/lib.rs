@@ -14,7 +14,9 @@
 //! - [`placement`]: ball in hand, by the same search from the best few places;
 //! - [`twoply`]: the best few shots valued two plies deep, by a search of the next shot
 //!   from their noisy outcomes;
-//! - [`level`]: skill levels (noise and budget); [`greedy`]: a baseline without simulation.
+//! - [`level`]: skill levels (noise and budget); [`greedy`]: a baseline without simulation;
+//! - [`snooker`]: the computer at snooker ([`decide_snooker`]), the same search judged by the
+//!   WPBSA rules and valued in points, and a whole frame between two levels.
 //!
 //! The same seed gives the same decision on any number of threads: every random draw comes
 //! from a stream named by the seed, the candidate's index and the sample's ([`noise::stream`]).
@@ -36,6 +38,7 @@ pub mod play;
 pub mod position;
 pub mod quiet;
 mod search;
+pub mod snooker;
 pub mod twoply;
 
 pub use candidates::{Candidate, Layout, ShotKind};
@@ -43,6 +46,7 @@ pub use evaluate::{Mode, Stats};
 pub use level::{Budget, Level, TwoPly, UnknownLevel};
 pub use noise::Noise;
 pub use search::{decide, decide_planned, decide_with};
+pub use snooker::{SnookerDecision, SnookerPlan, decide_snooker};
 
 use billiards_physics::{Params, Shot, Simulation, Vec2};
 use billiards_rules::{Call, Choice, GameState, NextShot};

@@ -187,7 +187,9 @@ fn row_items(shard: Shard, row: u64, breaks: u64) -> impl Iterator<Item = u64> {
 fn rows(a: &BreaksArgs) -> Result<Vec<(BreakSpec, RackStyle)>, String> {
     let mut out = Vec::new();
     for &g in &a.game {
-        let game: Game = g.into();
+        let Some(game) = g.pool() else {
+            return Err("the break study is pool's: --game nine-ball or eight-ball".into());
+        };
         if game == Game::FreePlay {
             return Err("free play has no break: --game nine-ball or eight-ball".into());
         }

@@ -73,14 +73,18 @@ pub enum GameArg {
     EightBall,
     /// The sandbox: no fouls, a scratch respots the cue ball.
     FreePlay,
+    /// Snooker, WPBSA rules, on the 12-ft table, between two computer levels.
+    Snooker,
 }
 
-impl From<GameArg> for Game {
-    fn from(g: GameArg) -> Self {
-        match g {
-            GameArg::NineBall => Game::NineBall,
-            GameArg::EightBall => Game::EightBall,
-            GameArg::FreePlay => Game::FreePlay,
+impl GameArg {
+    /// The pool game (`None`: snooker, which has an API of its own).
+    pub fn pool(self) -> Option<Game> {
+        match self {
+            GameArg::NineBall => Some(Game::NineBall),
+            GameArg::EightBall => Some(Game::EightBall),
+            GameArg::FreePlay => Some(Game::FreePlay),
+            GameArg::Snooker => None,
         }
     }
 }
@@ -189,6 +193,10 @@ pub struct SimulateArgs {
     /// (default: the first offered). Re-racks are not supported here (one rack a recording).
     #[arg(long = "choice", value_parser = parse_choice, requires = "game")]
     pub choices: Vec<Choice>,
+    /// Snooker: the computer levels of the two players, `A,B` (easy, medium, hard, expert,
+    /// perfect); the frame's draws come from `--rack-seed`.
+    #[arg(long, default_value = "hard,hard", requires = "game")]
+    pub computer: String,
 }
 
 /// `export` options.
@@ -479,7 +487,10 @@ fn play(rec: &mut Recorder, shot: Shot) -> Result<ShotSummary, String> {
 
 fn simulate(a: SimulateArgs) -> Result<(), String> {
     if let Some(game) = a.game {
-        return crate::game::play_game(&a, game.into());
+        return match game.pool() {
+            Some(game) => crate::game::play_game(&a, game),
+            None => crate::snooker::simulate(&a),
+        };
     }
     let (table, params, balls, shots) = setup(&a)?;
     if let Some(n) = a.batch {
@@ -596,7 +607,8 @@ fn verify(file: &std::path::Path) -> Result<(), String> {
                 file.display()
             );
             // The rules' log, when the game was played under rules (kept beside the file).
-            crate::game::check_log(file, &rec)
+            crate::game::check_log(file, &rec)?;
+            crate::snooker::check_log(file, &rec)
         }
         Verdict::Differs {
             index,

@@ -8,6 +8,7 @@ pub mod export;
 pub mod game;
 pub mod render;
 pub mod shard;
+pub mod snooker;
 pub mod soak;
 pub mod study;
 pub mod tournament;

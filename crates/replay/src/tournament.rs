@@ -20,7 +20,8 @@ use std::process::ExitCode;
 /// `tournament` options.
 #[derive(clap::Args, Debug)]
 pub struct TournamentArgs {
-    /// The game: nine-ball or eight-ball.
+    /// The game: nine-ball, eight-ball or snooker (computer levels only; frames, breaks
+    /// and centuries).
     #[arg(long, value_enum, default_value = "nine-ball")]
     pub game: crate::cli::GameArg,
     /// The two players, `A,B`: easy, medium, hard, expert, perfect, greedy or one-ply. A
@@ -158,8 +159,17 @@ fn players(s: &str) -> Result<[Player; 2], String> {
 }
 
 fn tournament(a: TournamentArgs) -> Result<(), Failure> {
+    if a.game.pool().is_none() {
+        return crate::snooker::tournament(&a).map_err(|(e, input)| {
+            if input {
+                Failure::Input(e)
+            } else {
+                Failure::Run(e)
+            }
+        });
+    }
     let results = if a.merge.is_empty() {
-        let game: Game = a.game.into();
+        let game: Game = a.game.pool().unwrap_or(Game::NineBall);
         if game == Game::FreePlay {
             return Err(Failure::Input(
                 "free play has no winner: --game nine-ball or eight-ball".into(),
@@ -296,7 +306,7 @@ pub fn report(r: &Results) -> String {
 }
 
 /// Wilson's 95 % score interval of `k` successes in `n`.
-fn wilson(k: usize, n: usize) -> (f64, f64) {
+pub fn wilson(k: usize, n: usize) -> (f64, f64) {
     if n == 0 {
         return (0.0, 1.0);
     }

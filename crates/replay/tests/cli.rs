@@ -624,3 +624,45 @@ fn elevation_reaches_every_shot_and_beyond_30_degrees_is_refused() {
     }
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn simulate_a_snooker_frame_and_verify_rejudges_its_log() {
+    let dir = temp("snooker");
+    let file = dir.join("frame.json");
+    let (ok, stdout, err) = run(bin()
+        .args(["simulate", "--game", "snooker", "--computer", "easy,easy"])
+        .args(["--players", "Ann,Bob", "--rack-seed", "3", "--out"])
+        .arg(&file));
+    assert!(ok, "{err}");
+    assert!(
+        stdout.contains("Ann (easy) breaks off against Bob (easy)"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("stroke 1: "), "{stdout}");
+    let log = dir.join("frame.snooker.json");
+    assert!(log.exists());
+    let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
+    assert!(ok, "{err}");
+    assert!(stdout.contains("reproduced bit for bit"), "{stdout}");
+    assert!(
+        stdout.contains("snooker verdicts re-judged identically"),
+        "{stdout}"
+    );
+    // The first verdict's scores edited: verify names the stroke and fails.
+    let text = std::fs::read_to_string(&log).unwrap();
+    let mut json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    json["strokes"][0]["verdict"]["scores"][0] = serde_json::json!(99);
+    std::fs::write(&log, json.to_string()).unwrap();
+    let (ok, _, err) = run(bin().arg("verify").arg(&file));
+    assert!(!ok && err.contains("stroke 1: logged"), "{err}");
+    // Pool's scripted shots are refused for snooker, with the reason.
+    let (ok, _, err) = run(bin().args(["simulate", "--game", "snooker", "--shot", "0:3"]));
+    assert!(!ok && err.contains("played by the computer"), "{err}");
+    let (ok, _, err) =
+        run(bin().args(["simulate", "--game", "snooker", "--computer", "hard,greedy"]));
+    assert!(
+        !ok && err.contains("snooker has computer levels only"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(dir).ok();
+}

@@ -102,3 +102,44 @@ fn two_shards_merged_are_the_whole_tournament() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("the seeds overlap"));
 }
+
+#[test]
+fn a_snooker_tournament_reports_frames_breaks_and_centuries() {
+    let out = bin()
+        .args(["tournament", "--game", "snooker", "--players", "easy,easy"])
+        .args(["--games", "2", "--seed", "4"])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        stdout.contains("snooker, easy vs easy: 2 of 2 frames"),
+        "{stdout}"
+    );
+    for column in [
+        "mean break",
+        "highest",
+        "centuries",
+        "fouls/shot",
+        "decision",
+    ] {
+        assert!(stdout.contains(column), "{column}: {stdout}");
+    }
+    let out = bin()
+        .args([
+            "tournament",
+            "--game",
+            "snooker",
+            "--players",
+            "hard,greedy",
+        ])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("computer levels only"), "{err}");
+}

@@ -10,16 +10,19 @@
 //! - `balls`: numbers, values, names;
 //! - `geometry`: re-spotting (3.6), snookered (2.16), a clear path (3.14);
 //! - `frame`, `judge`: the frame and its strokes; `verdict`: what a stroke returns;
-//! - `matches`: a match of N frames.
+//! - `matches`: a match of N frames;
+//! - `log`: the rules log of a recorded frame ([`FrameLog`]), re-judged against its recording.
 
 pub mod balls;
 pub mod frame;
 pub mod geometry;
 mod judge;
+pub mod log;
 pub mod matches;
 pub mod verdict;
 
 pub use frame::{Chosen, Frame, Snapshot, SnookerError};
 pub use judge::Stroke;
+pub use log::{FRAME_LOG_VERSION, FrameLog, FrameLogError, LoggedStroke};
 pub use matches::SnookerMatch;
 pub use verdict::{BallOn, Choice, Foul, FrameEnd, NextShot, Verdict};

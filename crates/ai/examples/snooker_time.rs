@@ -1,0 +1,71 @@
+//! Snooker decision time of a level on a full 22-ball table: the break-off (cue ball in hand
+//! in the D) and the table after the break-off of seeded frames (the strokes of a frame
+//! between two players of the level), mean and max, on all cores.
+//!
+//! ```sh
+//! cargo run --release -p billiards-ai --example snooker_time -- hard 3
+//! RAYON_NUM_THREADS=1 cargo run --release -p billiards-ai --example snooker_time -- hard 1
+//! ```
+
+use billiards_ai::snooker::play::{play_frame, snooker_table};
+use billiards_ai::{Level, SnookerDecision, decide_snooker};
+use billiards_physics::snooker::{default_cue_position, layout};
+use billiards_physics::{Simulation, SnookerMarks};
+use billiards_rules::Seat;
+use billiards_rules::snooker::Frame;
+use std::time::Instant;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let level: Level = args.first().map_or(Ok(Level::Hard), |s| s.parse()).unwrap();
+    let frames: u64 = args.get(1).map_or(2, |s| s.parse().unwrap());
+    println!("{level}, {} threads", rayon::current_num_threads());
+    let (table, params) = snooker_table();
+    let marks = SnookerMarks::of(&table).unwrap();
+    let balls = layout(&table, &params.ball, default_cue_position(&marks)).unwrap();
+    let sim = Simulation::new(table, params, &balls).unwrap();
+    let names = ["A".to_owned(), "B".to_owned()];
+    let frame = Frame::new(names.clone(), table, &params.ball, Seat::A).unwrap();
+    let mut times = Vec::new();
+    for seed in 0..3 {
+        let start = Instant::now();
+        let d = decide_snooker(&frame, &sim, level, seed).unwrap();
+        times.push(start.elapsed().as_secs_f64());
+        if let SnookerDecision::Shoot(p) = d {
+            println!(
+                "break-off seed {seed}: {:?} at {:?}, value {:.2}, foul {:.2}, {} simulations",
+                p.kind, p.place, p.value, p.foul, p.simulations
+            );
+        }
+    }
+    let mean = times.iter().sum::<f64>() / times.len() as f64;
+    let max = times.iter().copied().fold(0.0, f64::max);
+    println!("break-off: mean {mean:.3} s, max {max:.3} s");
+    let (mut all, mut worst, mut n) = (0.0, 0.0f64, 0usize);
+    for seed in 0..frames {
+        let start = Instant::now();
+        let run = play_frame([level, level], names.clone(), seed, seed, Seat::A, false).unwrap();
+        let r = &run.record;
+        for t in &r.players {
+            all += t.decision_secs;
+            worst = worst.max(t.max_decision_secs);
+            n += t.decisions;
+        }
+        println!(
+            "frame {seed}: {}-{} in {} strokes ({}), breaks {:?} / {:?}, {:.1} s",
+            r.scores[0],
+            r.scores[1],
+            r.strokes,
+            r.reason,
+            r.players[0].breaks,
+            r.players[1].breaks,
+            start.elapsed().as_secs_f64()
+        );
+    }
+    if n > 0 {
+        println!(
+            "in frames: {n} decisions, mean {:.3} s, max {worst:.3} s",
+            all / n as f64
+        );
+    }
+}
