@@ -135,6 +135,34 @@ fn save_game(folder: &Path, solver: &Solver, shots: u32, autosave: &mut Autosave
     }
 }
 
+/// Writes a rules log (`log`, JSON) beside the solver's recording in `folder`, at the path
+/// `beside` makes of the recording's (`NAME.game.json`, `NAME.snooker.json`): through a
+/// temporary file and a rename, so a crash never leaves half a log. A failure is warned and
+/// put in the status note; the game goes on.
+pub fn save_rules_log(
+    folder: &RecordingsFolder,
+    solver: &Solver,
+    beside: impl Fn(&Path) -> PathBuf,
+    log: &impl serde::Serialize,
+    status: &mut SimStatus,
+) {
+    let Some(folder) = &folder.0 else { return };
+    let path = beside(&game_file(folder, solver.started(), solver.name()));
+    let result = std::fs::create_dir_all(folder)
+        .map_err(|e| e.to_string())
+        .and_then(|()| serde_json::to_string_pretty(log).map_err(|e| e.to_string()))
+        .and_then(|json| {
+            let temporary = path.with_extension("tmp");
+            std::fs::write(&temporary, json)
+                .and_then(|()| std::fs::rename(&temporary, &path))
+                .map_err(|e| e.to_string())
+        });
+    if let Err(error) = result {
+        warn!("game log not saved: {error}");
+        status.note = Some(format!("game log not saved: {error}"));
+    }
+}
+
 /// The file of the game that started at `started` from the rack named `name` ("9-ball"):
 /// `YYYY-MM-DD_HH-MM-SS.mmm_<name>.json` (UTC), so a folder listing sorts by date.
 pub fn game_file(folder: &Path, started: SystemTime, name: &str) -> PathBuf {

@@ -14,9 +14,10 @@ use billiards::{
     table::balls::{Ball, BallMotion},
     table::geometry::TableSpec,
 };
+use billiards_physics::recording::Recording;
 use billiards_physics::snooker::{BLUE, PINK, SNOOKER_BALL_DIAMETER, YELLOW};
 use billiards_rules::Seat;
-use billiards_rules::snooker::{BallOn, Choice};
+use billiards_rules::snooker::{BallOn, Choice, FrameLog};
 
 /// A fresh folder of this test's own for the recordings.
 fn folder(test: &str) -> std::path::PathBuf {
@@ -171,6 +172,26 @@ fn a_miss_on_the_break_is_replaced_exactly() {
     assert_eq!(game.next().striker, Seat::A, "the offender plays again");
     assert_eq!(game.frame.scores, [0, 6], "the penalty stands");
     assert_eq!(turn(&app), Turn::BallInHand);
+    // The offender plays again, softly at the blue this time (another foul, 5).
+    let cue = position(&app, 0);
+    let blue = position(&app, BLUE);
+    shoot(&mut app, (blue - cue).to_angle(), 1.0);
+    assert_eq!(snooker(&app).frame.scores, [0, 11]);
+    // The recording and its frame log re-judge alike: the replace, the spots, the D.
+    let file = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .find(|p| {
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            name.ends_with("_snooker.json")
+        })
+        .expect("the frame's recording");
+    let recording = Recording::load(&file).unwrap();
+    let text = std::fs::read_to_string(FrameLog::path_beside(&file)).unwrap();
+    let log = FrameLog::from_json(&text).unwrap();
+    assert_eq!(log.strokes.len(), 2);
+    assert_eq!(log.strokes[1].choices, vec![Choice::Replace]);
+    assert_eq!(log.check(&recording), Ok(2));
 }
 
 /// A fair stroke that pots nothing passes the turn; a stroke that hits nothing is a foul of

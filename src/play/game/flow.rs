@@ -10,7 +10,7 @@ use super::snooker::SnookerInPlay;
 use super::state::*;
 use crate::{
     play::aim::AimPrediction,
-    recording::{RecordingsFolder, game_file},
+    recording::{RecordingsFolder, save_rules_log},
     settings::{PhysicsSettings, TableSetup},
     sim::{
         HandRule, LayoutRequested, RackRequested, Referee, ShotFinished, SimStatus, Solver,
@@ -145,7 +145,13 @@ pub(super) fn judge_shot(
     });
     game.last = Some(verdict);
     game.verdict_shown = true;
-    save_log(game, &solver, &folder, &mut status);
+    save_rules_log(
+        &folder,
+        &solver,
+        GameLog::path_beside,
+        &game.log,
+        &mut status,
+    );
     if game.rack().over.is_none() {
         let next = game.next().clone();
         prepare_table(
@@ -158,25 +164,6 @@ pub(super) fn judge_shot(
             &mut layouts,
             (&spec, &settings),
         );
-    }
-}
-
-/// Writes the rack's log beside its recording (`NAME.game.json`).
-fn save_log(game: &GameInPlay, solver: &Solver, folder: &RecordingsFolder, status: &mut SimStatus) {
-    let Some(folder) = &folder.0 else { return };
-    let path = GameLog::path_beside(&game_file(folder, solver.started(), solver.name()));
-    let result = std::fs::create_dir_all(folder)
-        .map_err(|e| e.to_string())
-        .and_then(|()| serde_json::to_string_pretty(&game.log).map_err(|e| e.to_string()))
-        .and_then(|json| {
-            let temporary = path.with_extension("tmp");
-            std::fs::write(&temporary, json)
-                .and_then(|()| std::fs::rename(&temporary, &path))
-                .map_err(|e| e.to_string())
-        });
-    if let Err(error) = result {
-        warn!("game log not saved: {error}");
-        status.note = Some(format!("game log not saved: {error}"));
     }
 }
 

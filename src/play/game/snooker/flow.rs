@@ -2,12 +2,13 @@
 
 use bevy::prelude::*;
 use billiards_physics::{EventKind, Vec2};
-use billiards_rules::snooker::Stroke;
+use billiards_rules::snooker::{FrameLog, LoggedStroke, Stroke};
 use billiards_rules::summarise;
 
 use super::{free_place_in_d, layout_at, nomination, set_balls};
 use crate::{
     play::game::state::Rules,
+    recording::{RecordingsFolder, save_rules_log},
     sim::{ShotFinished, SimStatus, Solver},
     table::balls::{BallMotion, Pocketed},
 };
@@ -22,6 +23,7 @@ pub(crate) fn judge_stroke(
     solver: Option<ResMut<Solver>>,
     mut balls: Query<(&mut BallMotion, Has<Pocketed>)>,
     mut status: ResMut<SimStatus>,
+    folder: Res<RecordingsFolder>,
 ) {
     if finished.read().count() == 0 {
         return;
@@ -54,7 +56,18 @@ pub(crate) fn judge_stroke(
         }
     };
     game.strokes += 1;
-    game.choices.clear();
+    game.log.strokes.push(LoggedStroke {
+        choices: std::mem::take(&mut game.choices),
+        nominated,
+        verdict: verdict.clone(),
+    });
+    save_rules_log(
+        &folder,
+        &solver,
+        FrameLog::path_beside,
+        &game.log,
+        &mut status,
+    );
     if !verdict.fair() {
         game.last_foul = Some(verdict.text.clone());
     }

@@ -13,7 +13,7 @@ use billiards_ai::Level;
 use billiards_physics::{SnookerMarks, Vec2, snooker::default_cue_position};
 use billiards_rules::Seat;
 use billiards_rules::snooker::{
-    self, BallOn, Choice, Frame, FrameEnd, NextShot, SnookerMatch, Verdict,
+    self, BallOn, Choice, Frame, FrameEnd, FrameLog, NextShot, SnookerMatch, Verdict,
     balls::{is_colour, name},
 };
 
@@ -53,6 +53,8 @@ pub struct SnookerInPlay {
     pub pending_layout: Option<Vec<(u8, Vec2)>>,
     /// The frame's end has been counted in [`SnookerInPlay::frames`].
     pub recorded: bool,
+    /// The frame's log (choices, nominations, verdicts), saved beside its recording.
+    pub log: FrameLog,
 }
 
 /// Why a snooker match could not start.
@@ -71,6 +73,7 @@ impl SnookerInPlay {
     ) -> Result<Self, SnookerStartError> {
         let err = |e: snooker::SnookerError| SnookerStartError(e.to_string());
         let frames = SnookerMatch::new(best_of, Seat::A).map_err(err)?;
+        let log = FrameLog::new(players.clone(), Seat::A);
         let frame = Frame::new(players, *table, ball, Seat::A).map_err(err)?;
         Ok(Self {
             frames,
@@ -85,6 +88,7 @@ impl SnookerInPlay {
             choices: Vec::new(),
             pending_layout: None,
             recorded: false,
+            log,
         })
     }
 
@@ -114,6 +118,7 @@ impl SnookerInPlay {
         let frame = Frame::new(self.frame.players.clone(), table, &ball, breaker)
             .map_err(|e| e.to_string())?;
         let balls = crate::sim::snooker_layout(&table, &ball)?;
+        self.log = FrameLog::new(self.frame.players.clone(), breaker);
         self.frame = frame;
         self.seed = self.seed.wrapping_add(1);
         self.strokes = 0;
