@@ -10,8 +10,9 @@ use std::{
 };
 
 use bevy::{math::DVec2, prelude::*, window::RequestRedraw};
-use billiards_ai::{AiError, Decision, Level, Plan, ShotKind};
+use billiards_ai::{AiError, Decision, Level, ShotKind, SnookerDecision};
 use billiards_physics::{Cushion, Vec2};
+use billiards_rules::snooker::{Choice as SnookerChoice, Frame, balls::name as snooker_name};
 use billiards_rules::{Call, GameState, pocket_name};
 
 use crate::{
@@ -64,7 +65,7 @@ pub enum Hint {
     /// The search runs.
     Thinking,
     /// The computer's choice for the human.
-    Decided(Decision),
+    Decided(Decided),
     /// No hint: why.
     Failed(String),
 }
@@ -83,6 +84,22 @@ impl Hint {
 /// Which turn of which rack a decision is for: a decision for another turn is dropped.
 pub type TurnKey = (u64, usize, usize);
 
+/// A decision of either game's computer.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Decided {
+    /// Pool's ([`billiards_ai::decide`]).
+    Pool(Decision),
+    /// Snooker's ([`billiards_ai::decide_snooker`]).
+    Snooker(SnookerDecision),
+}
+
+/// What a decision is asked of: the rules' state of either game.
+#[derive(Debug, Clone)]
+enum Question {
+    Pool(GameState),
+    Snooker(Box<Frame>),
+}
+
 #[derive(Debug)]
 enum Task {
     /// The verdict of the last shot is on screen; the computer continues after a moment.
@@ -91,13 +108,13 @@ enum Task {
         key: TurnKey,
         seed: u64,
         level: Level,
-        handle: JoinHandle<Result<Decision, AiError>>,
+        handle: JoinHandle<Result<Decided, AiError>>,
     },
     Showing {
         key: TurnKey,
         seed: u64,
         level: Level,
-        decision: Decision,
+        decision: Decided,
         since: Instant,
     },
 }
@@ -110,6 +127,55 @@ impl Task {
             }
         }
     }
+}
+
+/// The turn as the computer sees it, in either game.
+struct TurnView {
+    key: TurnKey,
+    /// Who is to shoot (or to choose).
+    name: String,
+    /// The shooter's level, `None` for a human.
+    level: Option<Level>,
+    /// The rack or frame is over.
+    over: bool,
+    /// Choices are offered before the shot.
+    choosing: bool,
+    has_human: bool,
+    /// Where the cue ball in hand may go.
+    hand: Option<HandRule>,
+    /// Pool: the call in force.
+    call: Call,
+    question: Question,
+}
+
+fn turn_view(rules: &Rules) -> Option<TurnView> {
+    if let Some(game) = &rules.snooker {
+        let next = game.next();
+        return Some(TurnView {
+            key: game.turn_key(),
+            name: game.name(next.striker).to_owned(),
+            level: game.computer(next.striker),
+            over: game.frame.end.is_some(),
+            choosing: !next.choices.is_empty(),
+            has_human: game.has_human(),
+            hand: next.in_hand.then_some(HandRule::InD),
+            call: Call::None,
+            question: Question::Snooker(Box::new(game.frame.clone())),
+        });
+    }
+    let game = rules.game.as_ref()?;
+    let next = game.next();
+    Some(TurnView {
+        key: game.turn_key(),
+        name: game.name(next.shooter).to_owned(),
+        level: game.computer(next.shooter),
+        over: game.rack().over.is_some(),
+        choosing: !next.choices.is_empty(),
+        has_human: game.has_human(),
+        hand: HandRule::of(next.cue_ball),
+        call: game.call,
+        question: Question::Pool(game.rack().clone()),
+    })
 }
 
 /// Registers the computer's turn and the hint.
@@ -134,10 +200,15 @@ fn decision_seed(key: TurnKey) -> u64 {
     seed ^ (shots as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ ((choices as u64) << 56)
 }
 
-fn think(state: GameState, sim: &Solver, level: Level, key: TurnKey) -> Task {
+fn think(question: Question, sim: &Solver, level: Level, key: TurnKey) -> Task {
     let sim = sim.simulation().clone();
     let seed = decision_seed(key);
-    let handle = std::thread::spawn(move || billiards_ai::decide(&state, &sim, level, seed));
+    let handle = std::thread::spawn(move || match question {
+        Question::Pool(state) => billiards_ai::decide(&state, &sim, level, seed).map(Decided::Pool),
+        Question::Snooker(frame) => {
+            billiards_ai::decide_snooker(&frame, &sim, level, seed).map(Decided::Snooker)
+        }
+    });
     Task::Thinking {
         key,
         seed,
@@ -164,18 +235,15 @@ fn play_computer_turn(
     mut redraw: MessageWriter<RequestRedraw>,
     view: Res<OrbitCamera>,
 ) {
-    let (Some(game), Some(turn), Some(solver)) = (&rules.game, turn, solver) else {
+    let (Some(seat), Some(turn), Some(solver)) = (turn_view(&rules), turn, solver) else {
         computer.turn = None;
         computer.doing = None;
         return;
     };
-    let next = game.next();
-    let key = game.turn_key();
-    let seat = next.shooter;
-    let level = game.computer(seat);
-    let ours = level.is_some()
+    let key = seat.key;
+    let ours = seat.level.is_some()
         && status.at_rest
-        && game.rack().over.is_none()
+        && !seat.over
         && matches!(*turn.get(), Turn::Aiming | Turn::BallInHand | Turn::Verdict);
     if !ours || computer.turn.as_ref().is_some_and(|t| t.key() != key) {
         computer.turn = None;
@@ -184,16 +252,16 @@ fn play_computer_turn(
     let just_fired = computer
         .fired
         .is_some_and(|(k, at)| k == key && at.elapsed() < Duration::from_secs(3));
-    let Some(level) = level.filter(|_| ours && !just_fired) else {
+    let Some(level) = seat.level.filter(|_| ours && !just_fired) else {
         return;
     };
     // The window draws on demand only: keep frames coming while the computer plays.
     redraw.write(RequestRedraw);
-    if *turn.get() == Turn::Verdict && next.choices.is_empty() {
+    if *turn.get() == Turn::Verdict && !seat.choosing {
         // A human at the table reads the verdict (a foul of theirs, ball in hand) and says
         // when: it stays until they continue. Between two computers it goes on after a moment.
-        if game.has_human() {
-            computer.doing = Some(format!("{} waits for you to continue", game.name(seat)));
+        if seat.has_human {
+            computer.doing = Some(format!("{} waits for you to continue", seat.name));
             return;
         }
         let since = match &computer.turn {
@@ -214,100 +282,132 @@ fn play_computer_turn(
     if matches!(computer.turn, Some(Task::Reading { .. })) {
         computer.turn = None;
     }
-    let name = game.name(seat).to_owned();
+    let name = seat.name.clone();
     match computer.turn.take() {
         None => {
             computer.doing = Some(format!("{name} ({level}) is thinking"));
-            computer.turn = Some(think(game.rack().clone(), &solver, level, key));
+            computer.turn = Some(think(seat.question, &solver, level, key));
         }
         Some(Task::Thinking {
             key,
             seed,
             level,
             handle,
-        }) if handle.is_finished() => {
-            match outcome(handle) {
-                Ok(decision) => {
-                    if let Decision::Shoot(plan) = &decision {
-                        show_plan(
-                            plan,
-                            &solver,
-                            &spec,
-                            HandRule::of(next.cue_ball),
-                            &mut shot_settings,
-                            &mut cue_ball,
-                        );
-                        if plan.call != game.call {
-                            turn_commands.write(TurnCommand::Call(plan.call));
-                        }
-                    }
-                    computer.doing =
-                        Some(format!("{name} ({level}): {}", describe(&decision, &view)));
-                    computer.turn = Some(Task::Showing {
-                        key,
-                        seed,
-                        level,
-                        decision,
-                        since: Instant::now(),
-                    });
-                }
-                Err(error) => {
-                    // Nothing the rules allow: the game waits for a human (a new game).
-                    computer.doing = Some(format!("{name} ({level}) cannot play: {error}"));
-                    warn!("computer player: {error}");
-                }
+        }) if handle.is_finished() => match outcome(handle) {
+            Ok(decision) => {
+                let mut shown = ShownOn {
+                    solver: &solver,
+                    spec: &spec,
+                    shot_settings: &mut shot_settings,
+                };
+                let (hand, call) = (seat.hand, seat.call);
+                show_decision(
+                    &decision,
+                    &mut shown,
+                    &mut cue_ball,
+                    hand,
+                    call,
+                    &mut turn_commands,
+                );
+                computer.doing = Some(format!("{name} ({level}): {}", describe(&decision, &view)));
+                computer.turn = Some(Task::Showing {
+                    key,
+                    seed,
+                    level,
+                    decision,
+                    since: Instant::now(),
+                });
             }
-        }
+            Err(error) => {
+                // Nothing the rules allow: the game waits for a human (a new game).
+                computer.doing = Some(format!("{name} ({level}) cannot play: {error}"));
+                warn!("computer player: {error}");
+            }
+        },
         Some(Task::Showing {
             key,
             seed,
             level,
             decision,
             since,
-        }) if since.elapsed() >= pace.0 => match decision {
-            Decision::Choose { choice, .. } => {
-                turn_commands.write(TurnCommand::Choose(choice));
+        }) if since.elapsed() >= pace.0 => {
+            let params = solver.simulation().params();
+            let noise = level.execution_noise();
+            match decision {
+                Decided::Pool(Decision::Choose { choice, .. }) => {
+                    turn_commands.write(TurnCommand::Choose(choice));
+                }
+                Decided::Snooker(SnookerDecision::Choose { choice, .. }) => {
+                    turn_commands.write(TurnCommand::SnookerChoose(choice));
+                }
+                Decided::Pool(Decision::Shoot(plan)) => {
+                    shots.write(ShotRequested::from(plan.executed(noise, params, seed)));
+                    computer.fired = Some((key, Instant::now()));
+                }
+                Decided::Snooker(SnookerDecision::Shoot(plan)) => {
+                    shots.write(ShotRequested::from(plan.executed(noise, params, seed)));
+                    computer.fired = Some((key, Instant::now()));
+                }
             }
-            Decision::Shoot(plan) => {
-                let shot =
-                    plan.executed(level.execution_noise(), solver.simulation().params(), seed);
-                shots.write(ShotRequested::from(shot));
-                computer.fired = Some((key, Instant::now()));
-            }
-        },
+        }
         task => computer.turn = task,
     }
 }
 
 /// A finished decision thread's answer; a panic is said as such, not as a rules error.
-fn outcome(handle: JoinHandle<Result<Decision, AiError>>) -> Result<Decision, String> {
+fn outcome(handle: JoinHandle<Result<Decided, AiError>>) -> Result<Decided, String> {
     handle
         .join()
         .map_err(|_| "the decision thread panicked".to_owned())?
         .map_err(|e| e.to_string())
 }
 
-/// Puts the plan on the table as a human's aim shows: the cue ball in hand where it goes, and
-/// the cue's angle, power and tip (the aiming aid and the cue follow them).
-fn show_plan(
-    plan: &Plan,
-    solver: &Solver,
-    spec: &TableSpec,
-    rule: Option<HandRule>,
-    shot_settings: &mut ShotSettings,
+/// Where a decision is shown: the table's cue ball and the shot's settings.
+struct ShownOn<'a> {
+    solver: &'a Solver,
+    spec: &'a TableSpec,
+    shot_settings: &'a mut ShotSettings,
+}
+
+/// Puts a decided shot on the table as a human's aim shows (the place, the cue's angle, power
+/// and tip) with its call (pool) or nomination (snooker); a choice shows nothing.
+fn show_decision(
+    decision: &Decided,
+    on: &mut ShownOn,
     cue_ball: &mut Query<(&Ball, &mut BallMotion), Without<Pocketed>>,
+    hand: Option<HandRule>,
+    call: Call,
+    commands: &mut MessageWriter<TurnCommand>,
 ) {
-    if let Some(at) = plan.place
-        && let Some(rule) = rule
+    let (shot, place) = match decision {
+        Decided::Pool(Decision::Shoot(plan)) => {
+            if plan.call != call {
+                commands.write(TurnCommand::Call(plan.call));
+            }
+            (plan.shot, plan.place)
+        }
+        Decided::Snooker(SnookerDecision::Shoot(plan)) => {
+            if let Some(n) = plan.nominated {
+                commands.write(TurnCommand::Nominate(n));
+            }
+            (plan.shot, plan.place)
+        }
+        Decided::Pool(Decision::Choose { .. })
+        | Decided::Snooker(SnookerDecision::Choose { .. }) => {
+            return;
+        }
+    };
+    if let Some(at) = place
+        && let Some(rule) = hand
         && let Some((_, mut motion)) = cue_ball.iter_mut().find(|(b, _)| b.number == 0)
-        && let Err(error) = place_ball_in_hand(solver, spec, &mut motion, to_dvec(at), rule)
+        && let Err(error) = place_ball_in_hand(on.solver, on.spec, &mut motion, to_dvec(at), rule)
     {
         warn!("computer's cue ball placement refused: {error}");
     }
-    shot_settings.angle = plan.shot.angle.rem_euclid(std::f64::consts::TAU);
-    shot_settings.power = plan.shot.speed;
-    shot_settings.tip = plan.shot.tip;
-    shot_settings.elevation = plan.shot.elevation.to_degrees();
+    on.shot_settings.angle = shot.angle.rem_euclid(std::f64::consts::TAU);
+    on.shot_settings.power = shot.speed;
+    on.shot_settings.tip = shot.tip;
+    on.shot_settings.elevation = shot.elevation.to_degrees();
 }
 
 fn to_dvec(v: Vec2) -> DVec2 {
@@ -328,14 +428,14 @@ fn give_hint(
     (mut redraw, mut calls): (MessageWriter<RequestRedraw>, MessageWriter<TurnCommand>),
 ) {
     let asked = requests.read().count() > 0;
-    let (Some(game), Some(solver)) = (&rules.game, solver) else {
+    let (Some(seat), Some(solver)) = (turn_view(&rules), solver) else {
         computer.hint_task = None;
         return;
     };
-    let key = game.turn_key();
+    let key = seat.key;
     if asked && status.at_rest && computer.hint_task.is_none() {
         computer.hint = Some((key, Hint::Thinking));
-        computer.hint_task = Some(think(game.rack().clone(), &solver, HINT_LEVEL, key));
+        computer.hint_task = Some(think(seat.question, &solver, HINT_LEVEL, key));
     }
     let finished = matches!(
         &computer.hint_task,
@@ -361,30 +461,105 @@ fn give_hint(
     }
     let hint = match outcome(handle) {
         Ok(decision) => {
-            if let Decision::Shoot(plan) = &decision {
-                show_plan(
-                    plan,
-                    &solver,
-                    &spec,
-                    HandRule::of(game.next().cue_ball),
-                    &mut shot_settings,
-                    &mut cue_ball,
-                );
-                // The hint's call too (a ball and pocket, a safety): the player confirms it by
-                // shooting, or changes it.
-                if plan.call != Call::None {
-                    calls.write(TurnCommand::Call(plan.call));
-                }
-            }
+            // The hint's call or nomination too: the player confirms it by shooting, or
+            // changes it.
+            let mut shown = ShownOn {
+                solver: &solver,
+                spec: &spec,
+                shot_settings: &mut shot_settings,
+            };
+            show_decision(
+                &decision,
+                &mut shown,
+                &mut cue_ball,
+                seat.hand,
+                seat.call,
+                &mut calls,
+            );
             Hint::Decided(decision)
         }
-        Err(error) => Hint::Failed(error.to_string()),
+        Err(error) => Hint::Failed(error),
     };
     computer.hint = Some((key, hint));
 }
 
 /// The decision in words, with its success probability; cushions named as `view` shows them.
-pub fn describe(decision: &Decision, view: &OrbitCamera) -> String {
+pub fn describe(decision: &Decided, view: &OrbitCamera) -> String {
+    match decision {
+        Decided::Pool(decision) => describe_pool(decision, view),
+        Decided::Snooker(SnookerDecision::Choose { choice, estimate }) => {
+            format!(
+                "{} (worth {estimate:+.1} points)",
+                snooker_choice_text(*choice)
+            )
+        }
+        Decided::Snooker(SnookerDecision::Shoot(plan)) => {
+            let what = snooker_kind_text(plan.kind, view);
+            let nominated = plan.nominated.map_or(String::new(), |n| {
+                format!(", nominating the {}", snooker_name(n))
+            });
+            format!(
+                "{what}{nominated}, {:.0} % to pot, {:.0} % foul",
+                100.0 * plan.success,
+                100.0 * plan.foul
+            )
+        }
+    }
+}
+
+fn snooker_choice_text(choice: SnookerChoice) -> String {
+    match choice {
+        SnookerChoice::PlayOn => "play on".to_owned(),
+        SnookerChoice::PutBack => "put the offender back in".to_owned(),
+        SnookerChoice::Replace => "replace the balls".to_owned(),
+        SnookerChoice::BlackFirst(seat) => format!("player {} plays the black", seat.index() + 1),
+    }
+}
+
+/// A snooker shot in words: the balls by their names ("the pink in the foot-left corner").
+fn snooker_kind_text(kind: ShotKind, view: &OrbitCamera) -> String {
+    let cushion = |c: Cushion| cushion_name(c, view);
+    let n = snooker_name;
+    match kind {
+        ShotKind::Break => "the break-off".to_owned(),
+        ShotKind::Pot { ball, pocket } => format!("the {} in the {}", n(ball), pocket_name(pocket)),
+        ShotKind::Bank {
+            ball,
+            pocket,
+            cushion: c,
+        } => format!(
+            "the {} off the {} cushion in the {}",
+            n(ball),
+            cushion(c),
+            pocket_name(pocket)
+        ),
+        ShotKind::Kick {
+            ball,
+            pocket,
+            cushion: c,
+        } => format!(
+            "a kick off the {} cushion, the {} in the {}",
+            cushion(c),
+            n(ball),
+            pocket_name(pocket)
+        ),
+        ShotKind::Combo {
+            first,
+            ball,
+            pocket,
+        } => format!(
+            "the {} into the {}, in the {}",
+            n(first),
+            n(ball),
+            pocket_name(pocket)
+        ),
+        ShotKind::Safety { ball } => format!("a safety off the {}", n(ball)),
+        ShotKind::PushOut => "a push out".to_owned(),
+    }
+}
+
+/// The decision in words, with its success probability; cushions named as `view` shows them.
+fn describe_pool(decision: &Decision, view: &OrbitCamera) -> String {
     match decision {
         Decision::Choose { choice, estimate } => {
             format!("{} ({:.0} %)", choice.label(), 100.0 * estimate)

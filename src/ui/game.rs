@@ -126,10 +126,9 @@ pub fn hud_buttons(ui: &mut egui::Ui, state: &mut GameParam) {
         if new_game.clicked() {
             state.commands.write(TurnCommand::OpenDialog);
         }
-        // The hint is pool's search; snooker's computer plays but does not advise yet.
         let hint = ui
             .add_enabled(
-                human_to_shoot && state.rules.game.is_some(),
+                human_to_shoot,
                 egui::Button::new(HUD_BUTTONS[1]).min_size(size),
             )
             .on_hover_text("the computer's choice for you, shown as your aim (and its call)");
@@ -192,6 +191,11 @@ pub fn hud_lines(state: &GameParam) -> (Vec<HudLine>, Vec<HudLine>) {
         }
         if let Some(doing) = &state.computer.doing {
             first.push((doing.clone(), Some(INFO)));
+        }
+        if let Some((key, hint)) = &state.computer.hint
+            && *key == game.turn_key()
+        {
+            first.push((hint.text(&state.view), Some(INFO)));
         }
         return (first, second);
     }
