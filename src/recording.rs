@@ -202,8 +202,12 @@ pub fn list_recordings(folder: &Path) -> Vec<PathBuf> {
     let mut files: Vec<PathBuf> = entries
         .filter_map(|entry| entry.ok().map(|entry| entry.path()))
         .filter(|path| path.extension().is_some_and(|ext| ext == "json"))
-        // A game's rules log sits beside its recording; it is not a recording.
-        .filter(|path| !path.to_string_lossy().ends_with(".game.json"))
+        // A game's rules log sits beside its recording (pool's and snooker's); it is not a
+        // recording.
+        .filter(|path| {
+            let name = path.to_string_lossy();
+            !name.ends_with(".game.json") && !name.ends_with(".snooker.json")
+        })
         .collect();
     files.sort_unstable_by(|a, b| b.cmp(a));
     files

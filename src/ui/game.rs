@@ -525,10 +525,10 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
     });
     let snooker = form.game == GameChoice::Snooker;
     let setup = form.setup.get_or_insert(*state.setup);
+    // Snooker has one table and one way to set the balls: the pool rows give way to it.
     if snooker {
-        ui.label("Table: 12-ft snooker, 3569 x 1778 mm (WPBSA 1.1), 52.5 mm balls");
-    }
-    ui.add_enabled_ui(!snooker, |ui| {
+        ui.label("Table: 12-ft snooker (WPBSA 1.1), 52.5 mm balls");
+    } else {
         ui.horizontal(|ui| {
             ui.label("Table:");
             egui::ComboBox::from_id_salt("new-game-table")
@@ -539,17 +539,17 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
                         ui.selectable_value(&mut setup.table, choice, table_label(choice));
                     }
                 });
-        })
-    });
+        });
+    }
     if form.game != GameChoice::Pool(Game::FreePlay) {
-        ui.add_enabled_ui(!snooker, |ui| {
+        if !snooker {
             ui.horizontal(|ui| {
                 ui.label("Rack:");
                 for style in billiards_rules::RackStyle::ALL {
                     ui.selectable_value(&mut setup.rack_style, style, rack_style_label(style));
                 }
-            })
-        });
+            });
+        }
         for (k, (name, seat)) in form
             .players
             .iter_mut()
@@ -584,7 +584,7 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
             );
             if snooker {
                 ui.label(format!(
-                    "frames (best of {}); player 1 breaks first, then the break alternates",
+                    "frames (best of {}); the break-off alternates",
                     2 * form.race_to - 1
                 ));
             } else {
