@@ -12,12 +12,12 @@ use billiards::{
     play::game::{self, GameInPlay, NewGameRequested, Rules, Turn, TurnCommand},
     recording::{Autosave, RecordingsFolder},
     replay::OpenRecording,
-    sim::{self, ShotRequested, SimStatus, Solver, place_ball_in_hand},
+    sim::{self, HandError, HandRule, ShotRequested, SimStatus, Solver, place_ball_in_hand},
     table::balls::{Ball, BallMotion},
     table::geometry::TableSpec,
 };
 use billiards_physics::recording::Recording;
-use billiards_rules::{CueBall, Foul, Game, GameLog, Outcome, PlacementError, Seat, WinReason};
+use billiards_rules::{Foul, Game, GameLog, Outcome, PlacementError, Seat, WinReason};
 
 /// A headless game saving into `folder`, with a new match of `game` started.
 fn start(folder: &Path, game: Game, race_to: u32) -> App {
@@ -91,7 +91,7 @@ fn balls(app: &mut App) -> Vec<(usize, u8, DVec2)> {
 }
 
 /// Puts the cue ball in hand at `at` the way the drag does (an edit the solver records).
-fn place(app: &mut App, at: DVec2) -> Result<(), PlacementError> {
+fn place(app: &mut App, at: DVec2) -> Result<(), HandError> {
     let rule = app.world().resource::<SimStatus>().ball_in_hand.unwrap();
     let result = app
         .world_mut()
@@ -158,13 +158,13 @@ fn play_rack_of_misses(app: &mut App, breaker: Seat) -> Seat {
     assert_eq!(next.shooter, breaker);
     assert_eq!(
         app.world().resource::<SimStatus>().ball_in_hand,
-        Some(CueBall::InHandBehindHeadString)
+        Some(HandRule::BehindHeadString)
     );
     // WPA 2.3: the cue ball must stay behind the head string for the break.
     let spec = app.world().resource::<TableSpec>().clone();
     assert_eq!(
         place(app, spec.foot_spot()),
-        Err(PlacementError::InFrontOfHeadString)
+        Err(HandError::Rules(PlacementError::InFrontOfHeadString))
     );
     let head = spec.head_spot();
     place(app, head + DVec2::new(-0.05, 0.02)).unwrap();
@@ -198,7 +198,7 @@ fn play_rack_of_misses(app: &mut App, breaker: Seat) -> Seat {
             None
         } else {
             // WPA 2.7: ball in hand anywhere after a foul.
-            Some(CueBall::InHandAnywhere)
+            Some(HandRule::Anywhere)
         };
         assert_eq!(
             app.world().resource::<SimStatus>().ball_in_hand,

@@ -15,7 +15,7 @@ use billiards::{
         ReplayCommand,
     },
     settings::PhysicsSettings,
-    sim::{RackRequested, ShotRequested, SimStatus, Solver, params_from},
+    sim::{RackRequested, ShotRequested, SimStatus, Solver, params_for},
     table::balls::{Ball, BallMotion, Pocketed},
     table::geometry::TableSpec,
 };
@@ -322,7 +322,7 @@ fn a_bad_file_shows_an_error_and_leaves_the_live_game() {
 /// A 16-ball recording made with the library alone, saved to `path`.
 fn fifteen_ball_recording(path: &Path) -> Recording {
     let spec = TableSpec::default();
-    let params = params_from(&PhysicsSettings::default());
+    let params = params_for(&spec, &PhysicsSettings::default());
     let table = spec.physics_table();
     let layout = Rack::FifteenBall.layout(&table, &params.ball);
     let mut rec = Recorder::new(table, params, layout).unwrap();

@@ -9,7 +9,7 @@ use billiards::{
     settings::{self, PhysicsSettings},
     sim::{
         self, BallPocketed, RackRequested, ShotFinished, ShotRequested, SimStatus, Solver,
-        params_from, table_for,
+        params_for, table_for,
     },
     table::balls::{Ball, BallMotion, Pocketed},
     table::geometry::TableSpec,
@@ -77,7 +77,7 @@ fn a_break_ends_bit_identical_to_the_library_however_frames_are_sliced() {
     // The library alone, run to rest.
     let spec = TableSpec::default();
     let settings = PhysicsSettings::default();
-    let params = params_from(&settings);
+    let params = params_for(&spec, &settings);
     let table = table_for(&spec, &settings);
     let layout = Rack::FifteenBall.layout(&table, &params.ball);
     let mut reference = Simulation::new(table, params, &layout).unwrap();
@@ -200,7 +200,7 @@ fn a_scratch_respots_the_cue_ball_on_the_head_spot() {
     // get the placement. Beyond the side cushion it is held at the cushion.
     assert_eq!(
         app.world().resource::<SimStatus>().ball_in_hand,
-        Some(billiards_rules::CueBall::Respot)
+        Some(billiards::sim::HandRule::Respot)
     );
     for (wanted_y, expected_y) in [(0.2, 0.2), (5.0, spec.width / 2.0 - spec.ball_radius)] {
         let mut query = app.world_mut().query::<(&Ball, &mut BallMotion)>();

@@ -439,76 +439,6 @@ fn proposed_call(next: &NextShot, aim: &AimPrediction) -> Option<Call> {
         })
 }
 
-#[cfg(test)]
-mod tests {
-    use crate::play::{
-        aim::{AimPrediction, BallPath},
-        game::flow::proposed_call,
-    };
-    use billiards_physics::Pocket;
-    use billiards_rules::{Call, CallRule, CueBall, NextShot, Seat};
-
-    fn next(call: CallRule, legal_first: Vec<u8>) -> NextShot {
-        NextShot {
-            shooter: Seat::A,
-            cue_ball: CueBall::AsItLies,
-            legal_first,
-            call,
-            break_shot: false,
-            push_out_allowed: false,
-            choices: Vec::new(),
-            spot: Vec::new(),
-            rerack: false,
-            fouls_in_a_row: 0,
-        }
-    }
-
-    fn path(number: u8, pocket: Option<Pocket>) -> BallPath {
-        BallPath {
-            number,
-            points: Vec::new(),
-            pocket,
-        }
-    }
-
-    /// Issue 28: the call follows the aim: the first ball of the player's that the aiming aid
-    /// sends into a pocket, with that pocket; not the cue ball, not a ball the player may not
-    /// call, nothing when no ball drops; the 8 only when it is on.
-    #[test]
-    fn the_proposed_call_is_the_ball_the_aim_pockets() {
-        let aim = AimPrediction {
-            after: vec![
-                path(0, Some(Pocket::FootLeft)),
-                path(2, None),
-                path(9, Some(Pocket::SideRight)),
-                path(3, Some(Pocket::FootRight)),
-            ],
-            ..Default::default()
-        };
-        let solids = next(CallRule::Optional, vec![1, 2, 3, 4, 5, 6, 7]);
-        assert_eq!(
-            proposed_call(&solids, &aim),
-            Some(Call::Ball {
-                ball: 3,
-                pocket: Pocket::FootRight
-            })
-        );
-        let stripes = next(CallRule::Optional, vec![9, 10]);
-        assert_eq!(
-            proposed_call(&stripes, &aim),
-            Some(Call::Ball {
-                ball: 9,
-                pocket: Pocket::SideRight
-            })
-        );
-        assert_eq!(
-            proposed_call(&next(CallRule::EightPocket, vec![8]), &aim),
-            None
-        );
-        assert_eq!(proposed_call(&next(CallRule::NotUsed, vec![3]), &aim), None);
-    }
-}
-
 /// A new snooker match: the 12-ft table, the 22 balls, frame 1.
 fn start_snooker(
     request: &NewGameRequested,
@@ -584,5 +514,75 @@ fn snooker_command(
             }
         }
         _ => {}
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::play::{
+        aim::{AimPrediction, BallPath},
+        game::flow::proposed_call,
+    };
+    use billiards_physics::Pocket;
+    use billiards_rules::{Call, CallRule, CueBall, NextShot, Seat};
+
+    fn next(call: CallRule, legal_first: Vec<u8>) -> NextShot {
+        NextShot {
+            shooter: Seat::A,
+            cue_ball: CueBall::AsItLies,
+            legal_first,
+            call,
+            break_shot: false,
+            push_out_allowed: false,
+            choices: Vec::new(),
+            spot: Vec::new(),
+            rerack: false,
+            fouls_in_a_row: 0,
+        }
+    }
+
+    fn path(number: u8, pocket: Option<Pocket>) -> BallPath {
+        BallPath {
+            number,
+            points: Vec::new(),
+            pocket,
+        }
+    }
+
+    /// Issue 28: the call follows the aim: the first ball of the player's that the aiming aid
+    /// sends into a pocket, with that pocket; not the cue ball, not a ball the player may not
+    /// call, nothing when no ball drops; the 8 only when it is on.
+    #[test]
+    fn the_proposed_call_is_the_ball_the_aim_pockets() {
+        let aim = AimPrediction {
+            after: vec![
+                path(0, Some(Pocket::FootLeft)),
+                path(2, None),
+                path(9, Some(Pocket::SideRight)),
+                path(3, Some(Pocket::FootRight)),
+            ],
+            ..Default::default()
+        };
+        let solids = next(CallRule::Optional, vec![1, 2, 3, 4, 5, 6, 7]);
+        assert_eq!(
+            proposed_call(&solids, &aim),
+            Some(Call::Ball {
+                ball: 3,
+                pocket: Pocket::FootRight
+            })
+        );
+        let stripes = next(CallRule::Optional, vec![9, 10]);
+        assert_eq!(
+            proposed_call(&stripes, &aim),
+            Some(Call::Ball {
+                ball: 9,
+                pocket: Pocket::SideRight
+            })
+        );
+        assert_eq!(
+            proposed_call(&next(CallRule::EightPocket, vec![8]), &aim),
+            None
+        );
+        assert_eq!(proposed_call(&next(CallRule::NotUsed, vec![3]), &aim), None);
     }
 }
