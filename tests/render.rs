@@ -186,8 +186,8 @@ fn recorded_break() -> PathBuf {
 /// Every text of the UI fits (item 5 of issue 15), read from egui's own layout by
 /// `--check-layout`: none elided, none cut at the side of its panel or window, none off the
 /// screen; at 1280x720 and 1920x1080, in free play with every panel section open, in a match
-/// in a replay (the timeline strip) and after a recording failed to open (the error). And the
-/// HUD's buttons keep their places in all four (issue 28, item 1: a click aimed at Hint opened
+/// (9-ball and snooker), in a replay (the timeline strip) and after a recording failed to open (the error). And the
+/// HUD's buttons keep their places in all five (issue 28, item 1: a click aimed at Hint opened
 /// the New game dialog when the buttons moved between states).
 #[test]
 fn every_text_fits_at_both_sizes() {
@@ -201,9 +201,11 @@ fn every_text_fits_at_both_sizes() {
         .join("a-folder-with-a-long-name-for-recordings")
         .join("2026-12-01_12-00-00.000_15-ball-that-does-not-exist.json");
     let missing = missing.to_string_lossy().into_owned();
-    let states: [&[&str]; 4] = [
+    let states: [&[&str]; 5] = [
         &["--open-sections"],
         &["--game", "nine-ball"],
+        // Snooker's longer HUD lines (frames, score, break, points remaining).
+        &["--game", "snooker"],
         &["replay", &recording],
         &["replay", &missing],
     ];
