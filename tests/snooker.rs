@@ -10,6 +10,7 @@ use bevy::{math::DVec2, prelude::*};
 use billiards::{
     play::game::{self, GameChoice, NewGameRequested, Rules, Turn, TurnCommand},
     recording::RecordingsFolder,
+    replay::OpenRecording,
     sim::{HandError, HandRule, ShotRequested, SimStatus, Solver, place_ball_in_hand},
     table::balls::{Ball, BallMotion},
     table::geometry::TableSpec,
@@ -192,6 +193,19 @@ fn a_miss_on_the_break_is_replaced_exactly() {
     assert_eq!(log.strokes.len(), 2);
     assert_eq!(log.strokes[1].choices, vec![Choice::Replace]);
     assert_eq!(log.check(&recording), Ok(2));
+    // The replay viewer reads the frame's log: each stroke's verdict under the timeline, the
+    // verdicts re-judged, and the balls named by colour.
+    let open = OpenRecording::new(&file, recording).unwrap();
+    assert_eq!(open.check_verdicts(), Some(Ok(2)));
+    let first = open.shots.span(1).unwrap();
+    let line = open.game_line(first.0 + 1e-3).unwrap();
+    assert!(line.starts_with("stroke 1: foul and a miss"), "{line}");
+    let hit = open
+        .events()
+        .iter()
+        .find(|e| matches!(e.kind, billiards_physics::EventKind::BallBall { .. }))
+        .unwrap();
+    assert_eq!(open.describe(hit), "cue ball hit pink");
 }
 
 /// A fair stroke that pots nothing passes the turn; a stroke that hits nothing is a foul of

@@ -8,8 +8,12 @@ use super::open::OpenRecording;
 impl OpenRecording {
     /// What happened at an event, with the balls by number (`"ball 3 hit the foot cushion"`).
     pub fn describe(&self, event: &Event) -> String {
+        // A snooker recording names its balls by colour ("the pink"; every red is "a red").
+        let snooker =
+            crate::table::geometry::TableSpec::fitting(&self.recording.table).is_snooker();
         let ball = |id: usize| match self.number(id) {
             0 => "cue ball".to_owned(),
+            n if snooker => billiards_rules::snooker::balls::name(n).to_owned(),
             n => format!("ball {n}"),
         };
         match event.kind {

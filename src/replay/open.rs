@@ -7,7 +7,7 @@ use std::{
 };
 
 use billiards_physics::{Event, History, recording::Recording};
-use billiards_rules::{GameLog, Shots};
+use billiards_rules::{GameLog, Shots, snooker::FrameLog};
 
 use super::jobs::{ExportFormat, ExportScope};
 
@@ -22,9 +22,19 @@ pub struct OpenRecording {
     pub history: History,
     /// The shots: strike times and where the replay ends.
     pub shots: Shots,
-    /// The rules' log beside the file (`NAME.game.json`): `None` for free play, an error text
-    /// when it is there but cannot be read (the recording still replays).
-    pub game: Option<Result<GameLog, String>>,
+    /// The rules' log beside the file (`NAME.game.json`, or a snooker frame's
+    /// `NAME.snooker.json`): `None` for free play, an error text when it is there but cannot be
+    /// read (the recording still replays).
+    pub game: Option<Result<RulesLog, String>>,
+}
+
+/// The rules' log of a recorded game.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RulesLog {
+    /// A rack of 8-ball or 9-ball.
+    Pool(GameLog),
+    /// A frame of snooker.
+    Snooker(FrameLog),
 }
 
 impl OpenRecording {
@@ -78,10 +88,15 @@ impl OpenRecording {
     pub fn game_line(&self, t: f64) -> Option<String> {
         match self.game.as_ref()? {
             Err(error) => Some(format!("game log: {error}")),
-            Ok(log) => {
+            Ok(RulesLog::Pool(log)) => {
                 let k = self.shot_at(t);
                 let text = log.shot_text(k)?;
                 Some(format!("shot {k}, {text}"))
+            }
+            Ok(RulesLog::Snooker(log)) => {
+                let k = self.shot_at(t);
+                let text = &log.strokes.get(k.checked_sub(1)?)?.verdict.text;
+                Some(format!("stroke {k}: {text}"))
             }
         }
     }
@@ -94,10 +109,12 @@ impl OpenRecording {
             Err(error) => return Some(Err(error.clone())),
         };
         let numbers: Vec<u8> = self.recording.balls.iter().map(|b| b.number).collect();
-        Some(
-            log.check(&self.recording.events, &numbers)
+        Some(match log {
+            RulesLog::Pool(log) => log
+                .check(&self.recording.events, &numbers)
                 .map_err(|e| e.to_string()),
-        )
+            RulesLog::Snooker(log) => log.check(&self.recording).map_err(|e| e.to_string()),
+        })
     }
 
     /// The time of the first event after `t`.
@@ -154,15 +171,22 @@ impl OpenRecording {
 }
 
 /// The rules' log beside the recording at `path`, if there is one.
-fn read_log(path: &Path) -> Option<Result<GameLog, String>> {
-    let log_path = GameLog::path_beside(path);
-    if !log_path.exists() {
-        return None;
-    }
-    Some(
+fn read_log(path: &Path) -> Option<Result<RulesLog, String>> {
+    let read = |log_path: PathBuf, parse: fn(&str) -> Result<RulesLog, String>| {
         std::fs::read_to_string(&log_path)
             .map_err(|e| e.to_string())
-            .and_then(|text| GameLog::from_json(&text))
-            .map_err(|e| format!("{}: {e}", log_path.display())),
-    )
+            .and_then(|text| parse(&text))
+            .map_err(|e| format!("{}: {e}", log_path.display()))
+    };
+    let pool = GameLog::path_beside(path);
+    let snooker = FrameLog::path_beside(path);
+    if pool.exists() {
+        Some(read(pool, |t| GameLog::from_json(t).map(RulesLog::Pool)))
+    } else if snooker.exists() {
+        Some(read(snooker, |t| {
+            FrameLog::from_json(t).map(RulesLog::Snooker)
+        }))
+    } else {
+        None
+    }
 }
