@@ -8,14 +8,14 @@
 //! (3.6); a replace (3.14) puts every ball back. With a recording every placement is an input,
 //! so [`FrameLog::check`] re-judges the frame from it.
 
-use super::{SnookerDecision, decide_snooker};
+use super::{SnookerDecision, SnookerPlan, decide_snooker};
 use crate::level::Level;
 use crate::noise::stream;
 use billiards_physics::recording::{Recorder, Recording};
 use billiards_physics::snooker::{default_cue_position, layout};
 use billiards_physics::{BallId, Params, Shot, Simulation, Table, Vec2, Vec3};
 use billiards_rules::snooker::balls::WHITE;
-use billiards_rules::snooker::{Frame, FrameLog, LoggedStroke, Stroke};
+use billiards_rules::snooker::{Choice, Frame, FrameLog, LoggedStroke, Stroke};
 use billiards_rules::{Seat, ShotSummary, summarise};
 use rand::Rng;
 use serde::{Deserialize, Serialize};
@@ -186,6 +186,46 @@ fn on_table(sim: &Simulation) -> Vec<(u8, Vec2)> {
         .collect()
 }
 
+/// The choices the rules offer, taken one by one (a replace sets its layout), then the
+/// stroke: each decision timed into `tally`, seeded by the `decisions` count.
+fn plan_next(
+    frame: &mut Frame,
+    t: &mut Table2,
+    levels: [Level; 2],
+    seed: u64,
+    decisions: &mut u64,
+    tally: &mut [FrameTally; 2],
+) -> Result<(SnookerPlan, Vec<Choice>), String> {
+    let mut made = Vec::new();
+    loop {
+        let who = frame.next.striker.index();
+        let started = Instant::now();
+        let d = decide_snooker(
+            frame,
+            t.sim(),
+            levels[who],
+            stream(seed, 1, *decisions).random(),
+        )
+        .map_err(|e| format!("{}: {e}", levels[who]))?;
+        *decisions += 1;
+        let secs = started.elapsed().as_secs_f64();
+        let tl = &mut tally[who];
+        tl.decisions += 1;
+        tl.decision_secs += secs;
+        tl.max_decision_secs = tl.max_decision_secs.max(secs);
+        match d {
+            SnookerDecision::Choose { choice, .. } => {
+                let chosen = frame.choose(choice).map_err(|e| e.to_string())?;
+                if let Some(l) = chosen.layout {
+                    t.set_layout(&l)?;
+                }
+                made.push(choice);
+            }
+            SnookerDecision::Shoot(plan) => return Ok((plan, made)),
+        }
+    }
+}
+
 /// Plays one frame between `levels` (`levels[0]` is seat A) named `names`, `breaker`
 /// breaking off, every random draw from `seed`; with `record`, every input is recorded.
 pub fn play_frame(
@@ -217,34 +257,8 @@ pub fn play_frame(
     let mut strokes = 0;
     let mut decisions = 0u64;
     while frame.end.is_none() && strokes < MAX_STROKES {
-        let mut made = Vec::new();
-        let plan = loop {
-            let who = frame.next.striker.index();
-            let started = Instant::now();
-            let d = decide_snooker(
-                &frame,
-                t.sim(),
-                levels[who],
-                stream(seed, 1, decisions).random(),
-            )
-            .map_err(|e| format!("stroke {}: {}: {e}", strokes + 1, levels[who]))?;
-            decisions += 1;
-            let secs = started.elapsed().as_secs_f64();
-            let tl = &mut tally[who];
-            tl.decisions += 1;
-            tl.decision_secs += secs;
-            tl.max_decision_secs = tl.max_decision_secs.max(secs);
-            match d {
-                SnookerDecision::Choose { choice, .. } => {
-                    let chosen = frame.choose(choice).map_err(|e| e.to_string())?;
-                    if let Some(l) = chosen.layout {
-                        t.set_layout(&l)?;
-                    }
-                    made.push(choice);
-                }
-                SnookerDecision::Shoot(plan) => break plan,
-            }
-        };
+        let (plan, made) = plan_next(&mut frame, &mut t, levels, seed, &mut decisions, &mut tally)
+            .map_err(|e| format!("stroke {}: {e}", strokes + 1))?;
         let who = frame.next.striker.index();
         tally[who].simulations += plan.simulations;
         if let Some(p) = plan.place {
