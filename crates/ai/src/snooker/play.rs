@@ -15,6 +15,7 @@ use billiards_physics::recording::{Recorder, Recording};
 use billiards_physics::snooker::{default_cue_position, layout};
 use billiards_physics::{BallId, Params, Shot, Simulation, Table, Vec2, Vec3};
 use billiards_rules::snooker::balls::WHITE;
+use billiards_rules::snooker::geometry::replace_moves;
 use billiards_rules::snooker::{Choice, Frame, FrameLog, LoggedStroke, Stroke};
 use billiards_rules::{Seat, ShotSummary, summarise};
 use rand::Rng;
@@ -136,43 +137,15 @@ impl Table2 {
             .ok_or_else(|| format!("no ball {n}"))
     }
 
-    /// Every ball of `balls` where it says, as the rules' replace asks (3.14): balls whose
-    /// place is clear first, a ball in the way of another moved aside when none is.
+    /// Every ball of `balls` where it says, as the rules' replace asks (3.14), in the order
+    /// of [`replace_moves`] (no placement on another ball).
     fn set_layout(&mut self, balls: &[(u8, Vec2)]) -> Result<(), String> {
-        let r = self.sim().params().ball.radius;
-        let mut todo: Vec<(u8, Vec2)> = balls.to_vec();
-        let mut parked = 0;
-        while !todo.is_empty() {
-            let now = on_table(self.sim());
-            let clear = |n: u8, p: Vec2| {
-                now.iter()
-                    .all(|&(m, q)| m == n || (p - q).length() >= 2.0 * r + 1e-9)
-            };
-            if let Some(i) = todo.iter().position(|&(n, p)| clear(n, p)) {
-                let (n, p) = todo.remove(i);
-                let id = self.id(n)?;
-                self.place(id, p)?;
-                continue;
-            }
-            // Every place is taken by a ball still to move: park the first such ball on a
-            // free point of the baulk cushion's line, to be placed in its turn.
-            let (n, p) = todo[0];
-            let (blocker, _) = *now
-                .iter()
-                .find(|&&(m, q)| m != n && (p - q).length() < 2.0 * r + 1e-9)
-                .ok_or("a replace blocked by nothing")?;
-            let bound = self.sim().table().centre_bounds(r);
-            let spot = (0..200)
-                .map(|j| Vec2::new(-bound.x + 1e-3, -bound.y + 0.06 * f64::from(j + parked)))
-                .find(|&q| {
-                    q.y < bound.y
-                        && clear(blocker, q)
-                        && todo.iter().all(|&(_, t)| (t - q).length() >= 2.0 * r)
-                })
-                .ok_or("no room to move a ball aside for the replace")?;
-            parked += 1;
-            let id = self.id(blocker)?;
-            self.place(id, spot)?;
+        let sim = self.sim();
+        let moves = replace_moves(&on_table(sim), balls, sim.params().ball.radius, sim.table())
+            .ok_or("no room to move a ball aside for the replace")?;
+        for (n, p) in moves {
+            let id = self.id(n)?;
+            self.place(id, p)?;
         }
         Ok(())
     }
