@@ -1,6 +1,6 @@
 //! Snooker decision time of a level on a full 22-ball table: the break-off (cue ball in hand
-//! in the D) and the table after the break-off of seeded frames (the strokes of a frame
-//! between two players of the level), mean and max, on all cores.
+//! in the D), the table the break-off leaves (22 balls, as they lie), and every decision of
+//! seeded frames between two players of the level; mean and max, on all cores.
 //!
 //! ```sh
 //! cargo run --release -p billiards-ai --example snooker_time -- hard 3
@@ -10,10 +10,19 @@
 use billiards_ai::snooker::play::{play_frame, snooker_table};
 use billiards_ai::{Level, SnookerDecision, decide_snooker};
 use billiards_physics::snooker::{default_cue_position, layout};
-use billiards_physics::{Simulation, SnookerMarks};
-use billiards_rules::Seat;
-use billiards_rules::snooker::Frame;
+use billiards_physics::{Simulation, SnookerMarks, Vec2, Vec3};
+use billiards_rules::snooker::{Frame, Stroke};
+use billiards_rules::{Seat, summarise};
 use std::time::Instant;
+
+/// The balls of `sim` on the table, by number.
+fn on_table(sim: &Simulation) -> Vec<(u8, billiards_physics::Vec2)> {
+    sim.balls()
+        .zip(sim.numbers())
+        .filter(|(b, _)| b.motion.on_table())
+        .map(|(b, &n)| (n, b.position))
+        .collect()
+}
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -41,6 +50,54 @@ fn main() {
     let mean = times.iter().sum::<f64>() / times.len() as f64;
     let max = times.iter().copied().fold(0.0, f64::max);
     println!("break-off: mean {mean:.3} s, max {max:.3} s");
+    // The table the break-off leaves (22 balls, the cue ball as it lies): the next decision.
+    let mut times = Vec::new();
+    for seed in 0..frames.max(3) {
+        let mut frame = frame.clone();
+        let mut sim = sim.clone();
+        let SnookerDecision::Shoot(p) = decide_snooker(&frame, &sim, level, seed).unwrap() else {
+            continue;
+        };
+        sim.place(0, p.place.unwrap(), Vec2::ZERO, Vec3::ZERO)
+            .unwrap();
+        let before = on_table(&sim);
+        let shot = p.executed(level.execution_noise(), sim.params(), seed);
+        sim.strike(0, shot).unwrap();
+        sim.run_to_rest().unwrap();
+        let summary = summarise(sim.history().events(), sim.numbers());
+        let after = on_table(&sim);
+        let v = frame
+            .play(Stroke {
+                summary: &summary,
+                nominated: p.nominated,
+                before: &before,
+                after: &after,
+            })
+            .unwrap();
+        for &(c, at) in &v.spots {
+            sim.place(usize::from(c), at, Vec2::ZERO, Vec3::ZERO)
+                .unwrap();
+        }
+        if frame.end.is_some() || !frame.next.choices.is_empty() {
+            continue;
+        }
+        let start = Instant::now();
+        let d = decide_snooker(&frame, &sim, level, seed + 100).unwrap();
+        times.push(start.elapsed().as_secs_f64());
+        if let SnookerDecision::Shoot(p) = d {
+            println!(
+                "after the break-off, seed {seed}: {} balls, {:?}, {} simulations",
+                after.len(),
+                p.kind,
+                p.simulations
+            );
+        }
+    }
+    if !times.is_empty() {
+        let mean = times.iter().sum::<f64>() / times.len() as f64;
+        let max = times.iter().copied().fold(0.0, f64::max);
+        println!("after the break-off: mean {mean:.3} s, max {max:.3} s");
+    }
     let (mut all, mut worst, mut n) = (0.0, 0.0f64, 0usize);
     for seed in 0..frames {
         let start = Instant::now();

@@ -275,7 +275,9 @@ pub fn report(r: &SnookerResults) -> String {
             .iter()
             .map(|f| f.players[p].max_decision_secs)
             .fold(0.0, f64::max);
+        // Clamped: rounding can leave the interval's ends a hair outside 0..1.
         let (lo, hi) = wilson(wins, n);
+        let (lo, hi) = (lo.max(0.0), hi.min(1.0));
         out += &format!(
             "{:<8} {:>5} {:>6.1}% {:>5.1}-{:>5.1}% {:>9.1} {:>10.2} {:>8} {:>5} ({:>5.3}/fr) {:>11.3} {:>7.3}/{:.3} s\n",
             r.players[p].to_string(),

@@ -227,3 +227,41 @@ fn the_log_lives_beside_the_recording() {
             .contains("version 2")
     );
 }
+
+#[test]
+fn a_replace_swapping_two_balls_is_placed_without_an_overlap() {
+    use billiards_rules::snooker::geometry::replace_moves;
+    let table = Table::snooker_12ft();
+    let r = Params::snooker().ball.radius;
+    let (a, b, c) = (
+        Vec2::new(0.3, 0.1),
+        Vec2::new(0.3 + 2.0 * r + 1e-3, 0.1),
+        Vec2::new(-0.5, 0.4),
+    );
+    // The red and the cue ball swap places, the blue comes back from the pocket.
+    let now = [(WHITE, a), (1, b)];
+    let layout = [(WHITE, b), (1, a), (19, c)];
+    let moves = replace_moves(&now, &layout, r, &table).unwrap();
+    let mut at: Vec<(u8, Vec2)> = now.to_vec();
+    for &(n, p) in &moves {
+        at.retain(|q| q.0 != n);
+        for &(m, q) in &at {
+            assert!(
+                (p - q).length() >= 2.0 * r,
+                "ball {n} placed on ball {m}: {moves:?}"
+            );
+        }
+        at.push((n, p));
+    }
+    for (n, p) in layout {
+        assert_eq!(
+            at.iter().find(|q| q.0 == n).map(|q| q.1),
+            Some(p),
+            "ball {n}"
+        );
+    }
+    assert!(
+        moves.len() > layout.len(),
+        "one ball parked first: {moves:?}"
+    );
+}

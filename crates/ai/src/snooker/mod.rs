@@ -2,12 +2,12 @@
 //! [`Frame`] and the table at rest and returns a choice after a foul or a stroke to play.
 //!
 //! How it decides, in points (the striker's expected points minus the opponent's):
-//! - candidates ([`search`]): ghost-ball pots of every ball on into every pocket (with banks,
+//! - candidates (`strokes.rs`): ghost-ball pots of every ball on into every pocket (with banks,
 //!   kicks and red-on-red plants when the level's budget has them) in the level's speeds and
 //!   tips, the best aims first; safeties (hits from full to thin on the nearest balls on, three
 //!   speeds) when nothing pots well or snookers are needed; with the cue ball in hand, the same
-//!   from the best few places in the D ([`search::d_places`]);
-//! - each candidate struck under the level's execution noise and judged by the rules
+//!   from the best few places in the D ([`value::d_places`]);
+//! - each candidate struck (`sample.rs`) under the level's execution noise and judged by the rules
 //!   ([`Frame::play`] on a clone); value = points scored − penalty conceded, plus the
 //!   position: the analytic chance of the next ball on times its worth for the striker if he
 //!   stays at the table, minus the same for the opponent otherwise; a snooker left earns a
@@ -21,8 +21,12 @@
 //! Randomness comes from [`crate::noise::stream`] named by the seed and the candidate and
 //! sample indices: the same seed gives the same decision on any number of threads.
 
+pub mod budget;
 pub mod play;
-pub mod search;
+mod sample;
+mod search;
+mod strokes;
+pub mod value;
 
 use crate::level::Level;
 use crate::noise::{self, Noise};
@@ -30,7 +34,8 @@ use crate::{AiError, ShotKind};
 use billiards_physics::{Params, Shot, Simulation, Vec2};
 use billiards_rules::snooker::{Choice, Frame};
 
-pub use search::{SnookerBudget, decide_snooker_with};
+pub use budget::{SnookerBudget, SnookerTwoPly};
+pub use search::decide_snooker_with;
 
 /// What the computer does next at snooker.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]

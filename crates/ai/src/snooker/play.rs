@@ -8,14 +8,15 @@
 //! (3.6); a replace (3.14) puts every ball back. With a recording every placement is an input,
 //! so [`FrameLog::check`] re-judges the frame from it.
 
-use super::{SnookerDecision, decide_snooker};
+use super::{SnookerDecision, SnookerPlan, decide_snooker};
 use crate::level::Level;
 use crate::noise::stream;
 use billiards_physics::recording::{Recorder, Recording};
 use billiards_physics::snooker::{default_cue_position, layout};
 use billiards_physics::{BallId, Params, Shot, Simulation, Table, Vec2, Vec3};
 use billiards_rules::snooker::balls::WHITE;
-use billiards_rules::snooker::{Frame, FrameLog, LoggedStroke, Stroke};
+use billiards_rules::snooker::geometry::replace_moves;
+use billiards_rules::snooker::{Choice, Frame, FrameLog, LoggedStroke, Stroke};
 use billiards_rules::{Seat, ShotSummary, summarise};
 use rand::Rng;
 use serde::{Deserialize, Serialize};
@@ -136,43 +137,15 @@ impl Table2 {
             .ok_or_else(|| format!("no ball {n}"))
     }
 
-    /// Every ball of `balls` where it says, as the rules' replace asks (3.14): balls whose
-    /// place is clear first, a ball in the way of another moved aside when none is.
+    /// Every ball of `balls` where it says, as the rules' replace asks (3.14), in the order
+    /// of [`replace_moves`] (no placement on another ball).
     fn set_layout(&mut self, balls: &[(u8, Vec2)]) -> Result<(), String> {
-        let r = self.sim().params().ball.radius;
-        let mut todo: Vec<(u8, Vec2)> = balls.to_vec();
-        let mut parked = 0;
-        while !todo.is_empty() {
-            let now = on_table(self.sim());
-            let clear = |n: u8, p: Vec2| {
-                now.iter()
-                    .all(|&(m, q)| m == n || (p - q).length() >= 2.0 * r + 1e-9)
-            };
-            if let Some(i) = todo.iter().position(|&(n, p)| clear(n, p)) {
-                let (n, p) = todo.remove(i);
-                let id = self.id(n)?;
-                self.place(id, p)?;
-                continue;
-            }
-            // Every place is taken by a ball still to move: park the first such ball on a
-            // free point of the baulk cushion's line, to be placed in its turn.
-            let (n, p) = todo[0];
-            let (blocker, _) = *now
-                .iter()
-                .find(|&&(m, q)| m != n && (p - q).length() < 2.0 * r + 1e-9)
-                .ok_or("a replace blocked by nothing")?;
-            let bound = self.sim().table().centre_bounds(r);
-            let spot = (0..200)
-                .map(|j| Vec2::new(-bound.x + 1e-3, -bound.y + 0.06 * f64::from(j + parked)))
-                .find(|&q| {
-                    q.y < bound.y
-                        && clear(blocker, q)
-                        && todo.iter().all(|&(_, t)| (t - q).length() >= 2.0 * r)
-                })
-                .ok_or("no room to move a ball aside for the replace")?;
-            parked += 1;
-            let id = self.id(blocker)?;
-            self.place(id, spot)?;
+        let sim = self.sim();
+        let moves = replace_moves(&on_table(sim), balls, sim.params().ball.radius, sim.table())
+            .ok_or("no room to move a ball aside for the replace")?;
+        for (n, p) in moves {
+            let id = self.id(n)?;
+            self.place(id, p)?;
         }
         Ok(())
     }
@@ -184,6 +157,46 @@ fn on_table(sim: &Simulation) -> Vec<(u8, Vec2)> {
         .filter(|(b, _)| b.motion.on_table())
         .map(|(b, &n)| (n, b.position))
         .collect()
+}
+
+/// The choices the rules offer, taken one by one (a replace sets its layout), then the
+/// stroke: each decision timed into `tally`, seeded by the `decisions` count.
+fn plan_next(
+    frame: &mut Frame,
+    t: &mut Table2,
+    levels: [Level; 2],
+    seed: u64,
+    decisions: &mut u64,
+    tally: &mut [FrameTally; 2],
+) -> Result<(SnookerPlan, Vec<Choice>), String> {
+    let mut made = Vec::new();
+    loop {
+        let who = frame.next.striker.index();
+        let started = Instant::now();
+        let d = decide_snooker(
+            frame,
+            t.sim(),
+            levels[who],
+            stream(seed, 1, *decisions).random(),
+        )
+        .map_err(|e| format!("{}: {e}", levels[who]))?;
+        *decisions += 1;
+        let secs = started.elapsed().as_secs_f64();
+        let tl = &mut tally[who];
+        tl.decisions += 1;
+        tl.decision_secs += secs;
+        tl.max_decision_secs = tl.max_decision_secs.max(secs);
+        match d {
+            SnookerDecision::Choose { choice, .. } => {
+                let chosen = frame.choose(choice).map_err(|e| e.to_string())?;
+                if let Some(l) = chosen.layout {
+                    t.set_layout(&l)?;
+                }
+                made.push(choice);
+            }
+            SnookerDecision::Shoot(plan) => return Ok((plan, made)),
+        }
+    }
 }
 
 /// Plays one frame between `levels` (`levels[0]` is seat A) named `names`, `breaker`
@@ -217,34 +230,8 @@ pub fn play_frame(
     let mut strokes = 0;
     let mut decisions = 0u64;
     while frame.end.is_none() && strokes < MAX_STROKES {
-        let mut made = Vec::new();
-        let plan = loop {
-            let who = frame.next.striker.index();
-            let started = Instant::now();
-            let d = decide_snooker(
-                &frame,
-                t.sim(),
-                levels[who],
-                stream(seed, 1, decisions).random(),
-            )
-            .map_err(|e| format!("stroke {}: {}: {e}", strokes + 1, levels[who]))?;
-            decisions += 1;
-            let secs = started.elapsed().as_secs_f64();
-            let tl = &mut tally[who];
-            tl.decisions += 1;
-            tl.decision_secs += secs;
-            tl.max_decision_secs = tl.max_decision_secs.max(secs);
-            match d {
-                SnookerDecision::Choose { choice, .. } => {
-                    let chosen = frame.choose(choice).map_err(|e| e.to_string())?;
-                    if let Some(l) = chosen.layout {
-                        t.set_layout(&l)?;
-                    }
-                    made.push(choice);
-                }
-                SnookerDecision::Shoot(plan) => break plan,
-            }
-        };
+        let (plan, made) = plan_next(&mut frame, &mut t, levels, seed, &mut decisions, &mut tally)
+            .map_err(|e| format!("stroke {}: {e}", strokes + 1))?;
         let who = frame.next.striker.index();
         tally[who].simulations += plan.simulations;
         if let Some(p) = plan.place {

@@ -1,0 +1,205 @@
+//! Noisy samples of the candidates at snooker, each judged by `Frame::play` on a clone and
+//! scored, and the second ply's outcomes searched for the next stroke.
+
+use super::SnookerDecision;
+use super::budget::SnookerBudget;
+use super::search::{Cand, Snook, decide_snooker_with};
+use crate::evaluate::Stats;
+use crate::noise::stream;
+use crate::quiet::final_layout;
+use billiards_physics::{EventKind, Simulation, Vec2, Vec3};
+use billiards_rules::ShotSummary;
+use billiards_rules::snooker::Stroke;
+use billiards_rules::snooker::balls::WHITE;
+use rand::Rng;
+use rayon::prelude::*;
+
+/// The stream of the second ply's outcomes: common to every finalist (close strokes meet the
+/// same errors), far from the candidates' own streams and [`SnookerPlan::executed`]'s.
+const OUTCOMES: u64 = 1 << 62;
+/// The stream of the seeds of the second ply's searches.
+const STREAMS: u64 = (1 << 62) + 1;
+/// Most events one sample may take before it is scored on the layout of the moment.
+const MAX_EVENTS: usize = 600;
+/// A refused stroke (a place the solver rejects, a stroke the rules refuse) costs this.
+const REFUSED: f64 = 10.0;
+
+/// The balls of `sim` on the table, by number.
+pub(super) fn on_table(sim: &Simulation) -> Vec<(u8, Vec2)> {
+    sim.balls()
+        .zip(sim.numbers())
+        .filter(|(b, _)| b.motion.on_table())
+        .map(|(b, &n)| (n, b.position))
+        .collect()
+}
+
+impl Snook<'_> {
+    /// Samples of each run `(candidate, stream, draws)` on all cores, summed in the order of
+    /// their draws (so the result does not depend on the threads).
+    pub(super) fn evaluate(
+        &self,
+        cands: &[Cand],
+        runs: &[(usize, u64, std::ops::Range<u64>)],
+    ) -> Vec<Stats> {
+        let mut starts = Vec::with_capacity(runs.len() + 1);
+        let mut total = 0usize;
+        for r in runs {
+            starts.push(total);
+            total += (r.2.end - r.2.start) as usize;
+        }
+        starts.push(total);
+        let samples: Vec<Stats> = (0..total)
+            .into_par_iter()
+            .map_init(
+                || self.base.clone(),
+                |sim, n| {
+                    let r = starts.partition_point(|&s| s <= n) - 1;
+                    let (i, stream_id, ref draws) = runs[r];
+                    let k = draws.start + (n - starts[r]) as u64;
+                    self.sample(&cands[i], stream_id, k, sim)
+                },
+            )
+            .collect();
+        starts
+            .windows(2)
+            .map(|w| {
+                samples[w[0]..w[1]]
+                    .iter()
+                    .fold(Stats::default(), |s, x| s.merged(*x))
+            })
+            .collect()
+    }
+
+    /// One noisy sample of `c` (draw `k` of stream `id`) in the scratch simulation `sim`.
+    pub(super) fn sample(&self, c: &Cand, id: u64, k: u64, sim: &mut Simulation) -> Stats {
+        let refused = Stats {
+            n: 1,
+            value: -REFUSED,
+            fouls: 1,
+            ..Stats::default()
+        };
+        sim.clone_from(&self.base);
+        if let Some(p) = c.cand.place
+            && sim.place(self.cue, p, Vec2::ZERO, Vec3::ZERO).is_err()
+        {
+            return refused;
+        }
+        let before = on_table(sim);
+        let shot = self
+            .noise
+            .apply(c.cand.shot, sim.params(), &mut stream(self.seed, id, k));
+        let first = sim.event_count();
+        if sim.strike(self.cue, shot).is_err() {
+            return refused;
+        }
+        let mut summary = ShotSummary::default();
+        let mut layout = None;
+        while let Some(e) = sim.step_event() {
+            summary.record(&e.kind, sim.numbers());
+            if sim.event_count() - first > MAX_EVENTS {
+                break;
+            }
+            if matches!(e.kind, EventKind::Transition { .. }) {
+                layout = final_layout(sim);
+                if layout.is_some() {
+                    break;
+                }
+            }
+        }
+        let events = sim.event_count() - first;
+        let after: Vec<(u8, Vec2)> = match layout {
+            Some(l) => std::iter::once((WHITE, l.cue)).chain(l.balls).collect(),
+            None => on_table(sim),
+        };
+        let mut frame = self.frame.clone();
+        let Ok(verdict) = frame.play(Stroke {
+            summary: &summary,
+            nominated: c.nominated,
+            before: &before,
+            after: &after,
+        }) else {
+            return Stats { events, ..refused };
+        };
+        let value = self.score(&frame, &verdict, &after);
+        let pot = verdict.fair() && verdict.points > 0;
+        Stats {
+            n: 1,
+            value,
+            pots: usize::from(pot),
+            fouls: usize::from(!verdict.fair()),
+            losses: usize::from(verdict.end.is_some_and(|(w, _)| w != self.me)),
+            events,
+        }
+    }
+
+    /// Draw `k` of the outcomes' stream struck as `c`, run to rest and judged: its
+    /// second-ply value (the stroke's own points and the next stroke's searched value, for
+    /// or against the striker) minus its one-ply value, the simulations and the events. The
+    /// end of the frame or a choice to make is not searched (a difference of 0).
+    pub(super) fn correction(
+        &self,
+        c: &Cand,
+        k: u64,
+        reply: &SnookerBudget,
+    ) -> (f64, usize, usize) {
+        let mut sim = self.base.clone();
+        if let Some(p) = c.cand.place
+            && sim.place(self.cue, p, Vec2::ZERO, Vec3::ZERO).is_err()
+        {
+            return (0.0, 1, 0);
+        }
+        let before = on_table(&sim);
+        let shot = self.noise.apply(
+            c.cand.shot,
+            sim.params(),
+            &mut stream(self.seed, OUTCOMES, k),
+        );
+        let first = sim.event_count();
+        if sim.strike(self.cue, shot).is_err() {
+            return (0.0, 1, 0);
+        }
+        let mut summary = ShotSummary::default();
+        while let Some(e) = sim.step_event() {
+            summary.record(&e.kind, sim.numbers());
+            if sim.event_count() - first > 20 * MAX_EVENTS {
+                return (0.0, 1, sim.event_count() - first);
+            }
+        }
+        let events = sim.event_count() - first;
+        let after = on_table(&sim);
+        let mut frame = self.frame.clone();
+        let Ok(verdict) = frame.play(Stroke {
+            summary: &summary,
+            nominated: c.nominated,
+            before: &before,
+            after: &after,
+        }) else {
+            return (0.0, 1, events);
+        };
+        let Some(next) = verdict.next.clone() else {
+            return (0.0, 1, events);
+        };
+        if !next.choices.is_empty() {
+            return (0.0, 1, events);
+        }
+        let (_, position) = self.terms(&frame, &verdict, &after);
+        for &(n, p) in &verdict.spots {
+            let Some(id) = sim.numbers().iter().position(|&m| m == n) else {
+                return (0.0, 1, events);
+            };
+            if sim.place(id, p, Vec2::ZERO, Vec3::ZERO).is_err() {
+                return (0.0, 1, events);
+            }
+        }
+        let sign = if next.striker == self.me { 1.0 } else { -1.0 };
+        let seed = stream(self.seed, STREAMS, k).random();
+        match decide_snooker_with(&frame, &sim, self.noise, reply, seed) {
+            Ok(SnookerDecision::Shoot(plan)) => (
+                sign * plan.value - position,
+                1 + plan.simulations,
+                events + plan.events,
+            ),
+            _ => (0.0, 1, events),
+        }
+    }
+}
