@@ -41,11 +41,12 @@
 mod contact;
 mod dopri;
 mod limits;
+mod slaved;
 #[cfg(test)]
 mod tests;
 
 use crate::math::{Vec2, Vec3};
-use contact::{Event, Grip, Setup, State, hypot, unit};
+use contact::{Dir, Event, Grip, Setup, State, hypot, unit};
 
 /// Most steps one impact may take before the result is given up for Han's impulse.
 const MAX_STEPS: usize = 100_000;
@@ -92,6 +93,8 @@ pub struct Stats {
     pub evaluations: usize,
     /// The longest step kept, as a fraction of the expected impulse.
     pub longest: f64,
+    /// Steps kept with a contact slaved to the direction its slip grows in.
+    pub slaved: usize,
 }
 
 /// One impact being integrated: the state in the cushion's frame (X along it, Y into it),
@@ -118,6 +121,14 @@ struct Impact {
     /// The rate at `y` for the current grips, if known (the last step's last stage).
     d: Option<State>,
     stats: Stats,
+    /// Where each contact's friction takes its direction from (slaved or its slip's).
+    dirs: [Dir; 2],
+    /// A bound on the friction impulse (per unit mass) misdirected so far by slaving.
+    lag: f64,
+    /// The slaved direction at the last plan, and the longest slaved step from there.
+    slaved_at: Option<([f64; 2], f64)>,
+    /// The last step kept.
+    last_h: f64,
 }
 
 /// The step planned from the current state.
@@ -177,6 +188,10 @@ impl Impact {
             h: f64::INFINITY,
             d: None,
             stats: Stats::default(),
+            dirs: [Dir::Own; 2],
+            lag: 0.0,
+            slaved_at: None,
+            last_h: 0.0,
         }
     }
 
@@ -216,7 +231,7 @@ impl Impact {
                 sl[0] * u[0] + sl[1] * u[1]
             }
             Event::LetsGo(nose) => {
-                let (f, nn) = setup.friction(t, self.gi, self.gc);
+                let (f, nn) = setup.friction_fixed(t, self.gi, self.gc, self.dirs);
                 if nose {
                     setup.mu_w - hypot([f[0], f[1]])
                 } else {
@@ -257,6 +272,7 @@ impl Impact {
         if let Grip::Slide(_) = self.gc {
             self.gc = Grip::Slide(u0[1]);
         }
+        self.slave([si, sc], u0);
         let (gi, gc) = (self.gi, self.gc);
         let phase = if self.target.is_none() {
             Event::Compressed
@@ -271,7 +287,7 @@ impl Impact {
             Some(d) => d,
             None => {
                 self.stats.evaluations += 1;
-                setup.rate(&y, gi, gc)
+                setup.rate_fixed(&y, gi, gc, self.dirs)
             }
         };
         let (ri, rc) = setup.slip_rates_of(&d);
@@ -307,6 +323,7 @@ impl Impact {
                 let u = plan.u0[k];
                 let size = hypot(sl);
                 matches!(g, Grip::Slide(_))
+                    && self.dirs[k] == Dir::Own
                     && predicted != Some(Event::SlipZero(k == 0))
                     && size > self.setup.zero
                     && (sl[0] * u[0] + sl[1] * u[1]) < 0.8776 * size
@@ -333,17 +350,21 @@ impl Impact {
         let floor = 1e-12 * self.span;
         let mut rejected = false;
         let step = loop {
-            let mut fixed = [false; 2];
+            let mut dirs = self.dirs;
             if let Some(Event::SlipZero(nose)) = predicted {
-                fixed[usize::from(!nose)] = true;
+                dirs[usize::from(!nose)] = Dir::Held;
             }
-            let st = dopri::step(&self.y, &plan.d, h, |t| setup.rate_fixed(t, gi, gc, fixed));
+            let st = dopri::step(&self.y, &plan.d, h, |t| setup.rate_fixed(t, gi, gc, dirs));
             self.stats.evaluations += 6;
             let err = self.error(&st.err);
             let turned = self.turned(&st.y, predicted, plan);
             if (err <= 1.0 && !turned) || h <= floor {
                 self.stats.steps += 1;
                 self.stats.longest = self.stats.longest.max(h / self.span);
+                self.last_h = h;
+                if self.dirs != [Dir::Own; 2] {
+                    self.stats.slaved += 1;
+                }
                 if predicted.is_none() {
                     // Step size control (Hairer et al., section II.4): the next step from this
                     // one's error, err^(-1/4) (two square roots; the pair's 1/5 would need a
@@ -352,7 +373,7 @@ impl Impact {
                     let fac = (0.9 / err.max(1e-12).sqrt().sqrt()).clamp(0.2, 5.0);
                     self.h = if rejected { h * fac.min(1.0) } else { h * fac };
                 }
-                break (st, fixed);
+                break (st, dirs);
             }
             self.stats.rejected += 1;
             rejected = true;
@@ -367,7 +388,7 @@ impl Impact {
             }
             predicted = None;
         };
-        let (st, fixed) = step;
+        let (st, dirs) = step;
         let (mut hit, mut theta) = (None, 1.0);
         // A step meant to end on a zero slip finds it like the other events: its rate along
         // the held direction need not stay constant (the other contact turns).
@@ -387,7 +408,7 @@ impl Impact {
             st.y
         };
         // The last stage is the next step's first unless an event changes the rates.
-        self.d = (hit.is_none() && fixed == [false; 2]).then_some(st.k7);
+        self.d = (hit.is_none() && dirs == self.dirs).then_some(st.k7);
         (hit, next)
     }
 
@@ -450,7 +471,7 @@ impl Impact {
             }
             Some(Event::LetsGo(nose)) => {
                 // Past its cone: friction keeps its direction, opposing what sticking needed.
-                let (f, _) = setup.friction(&self.y, self.gi, self.gc);
+                let (f, _) = setup.friction_fixed(&self.y, self.gi, self.gc, self.dirs);
                 let need = if nose { [f[0], f[1]] } else { [f[2], f[3]] };
                 let u = unit(need, [1.0, 0.0]);
                 let grip = Grip::Slide([-u[0], -u[1]]);
