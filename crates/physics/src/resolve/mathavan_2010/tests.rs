@@ -93,7 +93,7 @@ fn worst_against_reference(shots: &[(Vec2, Vec3)], m: &Mathavan2010) -> (f64, us
 #[test]
 fn the_default_is_within_1e5_of_a_reference_with_100_times_smaller_steps() {
     // The stated accuracy of Accuracy::DEFAULT (Dormand-Prince 5(4), 1e-6 a step) over the
-    // 38 test shots: measured 2.7e-6 (printed), pinned below 1e-5 of the incoming speed.
+    // 38 test shots: measured 2.3e-6 (printed), pinned below 1e-5 of the incoming speed.
     let shots: Vec<_> = shots()
         .into_iter()
         .map(|(speed, alpha, top, side)| shot(speed, alpha, top, side))
@@ -174,11 +174,11 @@ fn a_rolling_ball_square_into_the_cushion_keeps_0_911_of_its_speed() {
 fn random_impacts_all_finish_within_20_000_evaluations_and_lose_energy() {
     // 2,000 impacts over every incidence, spin (up to 3 v/R about each axis) and speed
     // (0.05 to 6 m/s): none falls back (the step cap), none takes more than 20,000 rate
-    // evaluations (20,000 random impacts measured: mean 51, largest 2,788), none gains
-    // energy.
+    // evaluations (20,000 random impacts measured: mean 36, largest 324; before slaving and
+    // PI step control, mean 51, largest 2,788), none gains energy.
     use rand::{Rng, SeedableRng};
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
-    let mut most = 0;
+    let (mut most, mut total) = (0, 0);
     for _ in 0..2000 {
         let speed: f64 = rng.random_range(0.05..6.0);
         let a: f64 = rng.random_range(0.02..std::f64::consts::PI - 0.02);
@@ -192,8 +192,9 @@ fn random_impacts_all_finish_within_20_000_evaluations_and_lose_energy() {
             "{v:?} {w:?}"
         );
         most = most.max(stats.evaluations);
+        total += stats.evaluations;
     }
-    println!("most rate evaluations: {most}");
+    println!("rate evaluations: mean {}, most {most}", total / 2000);
     assert!(most <= 20_000, "{most}");
 }
 
