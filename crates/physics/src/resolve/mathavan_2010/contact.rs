@@ -64,23 +64,6 @@ impl Setup {
         )
     }
 
-    /// The sliding direction of `slip` under `grip`: its own, or the grip's while the slip is
-    /// within `zero` (one square root: this runs in every rate evaluation).
-    pub(super) fn direction(&self, slip: [f64; 2], grip: Grip) -> [f64; 2] {
-        match grip {
-            Grip::Slide(d) => {
-                let l2 = slip[0] * slip[0] + slip[1] * slip[1];
-                if l2 <= self.zero * self.zero {
-                    d
-                } else {
-                    let inv = 1.0 / l2.sqrt();
-                    [slip[0] * inv, slip[1] * inv]
-                }
-            }
-            Grip::Stick => [0.0, 0.0],
-        }
-    }
-
     /// Friction `(a, b, p, q)` per unit impulse for the grips, and the table's normal `N`.
     pub(super) fn friction(&self, y: &State, gi: Grip, gc: Grip) -> ([f64; 4], f64) {
         self.friction_fixed(y, gi, gc, [Dir::Own; 2])
@@ -161,6 +144,39 @@ impl Setup {
         let slack = 1.0 + 1e-12;
         (gi != Grip::Stick || hypot([f[0], f[1]]) <= self.mu_w * slack)
             && (gc != Grip::Stick || hypot([f[2], f[3]]) <= self.mu_s * n * slack)
+    }
+
+    /// [`Self::rate`] with both contacts sliding along their own slips (`di`, `dc`: their
+    /// grips' directions, for a slip within `zero`): the same arithmetic as the general path,
+    /// without its cases, for the steps that need none (most).
+    pub(super) fn rate_sliding(&self, y: &State, di: [f64; 2], dc: [f64; 2]) -> State {
+        let (s, c, r) = (self.s, self.c, self.r);
+        let (si, sc) = self.slips(y);
+        let l2 = [si[0] * si[0] + si[1] * si[1], sc[0] * sc[0] + sc[1] * sc[1]];
+        let inv = [1.0 / l2[0].sqrt(), 1.0 / l2[1].sqrt()];
+        let z2 = self.zero * self.zero;
+        let ui = if l2[0] <= z2 {
+            di
+        } else {
+            [si[0] * inv[0], si[1] * inv[0]]
+        };
+        let uc = if l2[1] <= z2 {
+            dc
+        } else {
+            [sc[0] * inv[1], sc[1] * inv[1]]
+        };
+        let (a, b) = (-self.mu_w * ui[0], -self.mu_w * ui[1]);
+        let n = (s - c * b).max(0.0);
+        let (p, q) = (-self.mu_s * n * uc[0], -self.mu_s * n * uc[1]);
+        let k = 2.5 / r;
+        [
+            a + p,
+            -c - b * s + q,
+            k * (b + q),
+            k * (a * s - p),
+            -k * a * c,
+            c * y[1],
+        ]
     }
 
     pub(super) fn rate(&self, y: &State, gi: Grip, gc: Grip) -> State {

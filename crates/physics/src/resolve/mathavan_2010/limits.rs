@@ -39,12 +39,12 @@ impl Impact {
         }
     }
 
-    /// The longest step the sliding contacts allow, from the slips `sl`, their rates `r`, the
+    /// The longest step the sliding contacts allow, from the slips' sizes `sl`, their rates `r`, the
     /// table's normal `nn` and the sliding directions `u0`; and for each slip heading for
     /// zero close enough to be met in one step, the impulse to its zero.
     pub(super) fn limits(
         &self,
-        sl: [[f64; 2]; 2],
+        sl: [f64; 2],
         r: [[f64; 2]; 2],
         nn: f64,
         u0: [[f64; 2]; 2],
@@ -58,7 +58,7 @@ impl Impact {
         }
         let mut finals: [Option<f64>; 2] = [None; 2];
         for k in 0..2 {
-            let size = hypot(sl[k]);
+            let size = sl[k];
             if !matches!(grips[k], Grip::Slide(_)) || size <= setup.zero || self.dirs[k] != Dir::Own
             {
                 continue;
@@ -101,7 +101,7 @@ impl Impact {
     /// Slaves a sliding contact to the direction its slip grows in (`slaved.rs`) while its
     /// direction's relaxation, not the error, bounds the step and the friction impulse the
     /// slaving misdirects stays within half the tolerance; frees it otherwise. `sl`: the
-    /// slips, `u0` their sliding directions.
+    /// slips' sizes, `u0` their sliding directions.
     ///
     /// The bound: slaved, the friction's direction lags the true one by at most
     /// `|S| |dphi*/dP| / kappa`, so a step misdirects at most `mu |S| |dphi*| / kappa` of
@@ -109,13 +109,13 @@ impl Impact {
     /// followed `u*` on average) relaxes to the true one within `|S| / kappa`, misdirecting at
     /// most `mu |S / |S| - u*| |S| / kappa`. Both are charged to `lag`, which may not exceed
     /// half the tolerance over the impact.
-    pub(super) fn slave(&mut self, sl: [[f64; 2]; 2], u0: [[f64; 2]; 2]) {
+    pub(super) fn slave(&mut self, sl: [f64; 2], u0: [[f64; 2]; 2]) {
         let setup = self.setup;
         let grips = [self.gi, self.gc];
         let budget = 0.5 * self.atol;
         for k in 0..2 {
             let other = 1 - k;
-            let (size, mu) = (hypot(sl[k]), [setup.mu_w, setup.mu_s][k]);
+            let (size, mu) = (sl[k], [setup.mu_w, setup.mu_s][k]);
             if !matches!(grips[k], Grip::Slide(_)) || self.dirs[other] != Dir::Own || mu <= 0.0 {
                 self.free(k);
                 continue;

@@ -267,18 +267,32 @@ impl Impact {
                 self.d = None;
             }
         }
-        self.snap_zero_slips();
+        let (mut si, mut sc) = setup.slips(&self.y);
+        let mut sizes = [hypot(si), hypot(sc)];
+        if sizes.iter().any(|&l| l > setup.tol && l <= setup.zero) {
+            self.snap_zero_slips();
+            (si, sc) = setup.slips(&self.y);
+            sizes = [hypot(si), hypot(sc)];
+        }
         let y = self.y;
-        let (si, sc) = setup.slips(&y);
-        // Sliding directions at the step's start (a slip's own direction, or the one kept).
-        let u0 = [setup.direction(si, self.gi), setup.direction(sc, self.gc)];
+        // Sliding directions at the step's start (a slip's own direction, or the one kept
+        // within `zero`).
+        let along = |sl: [f64; 2], size: f64, g: Grip| match g {
+            Grip::Slide(d) if size <= setup.zero => d,
+            Grip::Slide(_) => {
+                let inv = 1.0 / size;
+                [sl[0] * inv, sl[1] * inv]
+            }
+            Grip::Stick => [0.0, 0.0],
+        };
+        let u0 = [along(si, sizes[0], self.gi), along(sc, sizes[1], self.gc)];
         if let Grip::Slide(_) = self.gi {
             self.gi = Grip::Slide(u0[0]);
         }
         if let Grip::Slide(_) = self.gc {
             self.gc = Grip::Slide(u0[1]);
         }
-        self.slave([si, sc], u0);
+        self.slave(sizes, u0);
         let (gi, gc) = (self.gi, self.gc);
         let phase = if self.target.is_none() {
             Event::Compressed
@@ -298,7 +312,7 @@ impl Impact {
         };
         let (ri, rc) = setup.slip_rates_of(&d);
         let nn = setup.normal_of(&d);
-        let (mut h, finals) = self.limits([si, sc], [ri, rc], nn, u0);
+        let (mut h, finals) = self.limits(sizes, [ri, rc], nn, u0);
         let h_free = h;
         let mut predicted = None;
         for (k, reach) in finals.into_iter().enumerate() {
@@ -360,7 +374,12 @@ impl Impact {
             if let Some(Event::SlipZero(nose)) = predicted {
                 dirs[usize::from(!nose)] = Dir::Held;
             }
-            let st = dopri::step(&self.y, &plan.d, h, |t| setup.rate_fixed(t, gi, gc, dirs));
+            let st = match (gi, gc, dirs) {
+                (Grip::Slide(di), Grip::Slide(dc), [Dir::Own, Dir::Own]) => {
+                    dopri::step(&self.y, &plan.d, h, |t| setup.rate_sliding(t, di, dc))
+                }
+                _ => dopri::step(&self.y, &plan.d, h, |t| setup.rate_fixed(t, gi, gc, dirs)),
+            };
             self.stats.evaluations += 6;
             let err = self.error(&st.err);
             let turned = self.turned(&st.y, predicted, plan);
