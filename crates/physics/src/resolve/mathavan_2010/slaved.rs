@@ -95,6 +95,9 @@ impl Setup {
         for _ in 0..60 {
             let (ux, uy, ix, iy) = u_of(l);
             let g = ux * ux + uy * uy - 1.0;
+            if g.abs() <= 1e-14 {
+                break; // |u| = 1 to rounding: no further step needed
+            }
             if g > 0.0 {
                 lo = l;
             } else {
