@@ -7,8 +7,9 @@
 //! cargo run --release -p billiards-physics --example mathavan_probe -- [REPEATS] [-v]
 //! ```
 //!
-//! `-v` lists each impact (steps kept and rejected, rate evaluations, longest step, error,
-//! time); `TOL=1e-7` integrates at another tolerance; `ONLY=K` runs impact K alone;
+//! `-v` lists each impact (steps kept and rejected, rate evaluations, steps with a slip
+//! slaved, longest step, error, time); `TOL=1e-7` integrates at another tolerance; `ONLY=K`
+//! runs impact K alone;
 //! `NOREF=1` skips the reference (for profiling). The constants are the game's (e 0.98,
 //! mu 0.14, cloth 0.2, nose at 0.635 of the diameter).
 
@@ -124,8 +125,8 @@ fn main() {
         worst[set] = worst[set].max(err);
         if verbose {
             println!(
-                "{k:>2} steps {:>3} rejected {:>3} evals {:>4} longest {:.3} err {err:.1e} {ns:>7.0} ns",
-                stats.steps, stats.rejected, stats.evaluations, stats.longest
+                "{k:>2} steps {:>3} rejected {:>3} evals {:>4} slaved {:>3} longest {:.3} err {err:.1e} {ns:>7.0} ns",
+                stats.steps, stats.rejected, stats.evaluations, stats.slaved, stats.longest
             );
         }
     }

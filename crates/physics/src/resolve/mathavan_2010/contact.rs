@@ -9,6 +9,18 @@ pub(super) enum Grip {
     Stick,
 }
 
+/// Where a sliding contact's friction takes its direction from in a rate evaluation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Dir {
+    /// Its slip's own direction (its grip's while the slip is within `zero`).
+    Own,
+    /// Its grip's, whatever the slip (a step meant to end on the slip's zero).
+    Held,
+    /// The direction its slip grows in at the state (`slaved.rs`), the Newton iteration
+    /// started from this growth rate.
+    Slaved(f64),
+}
+
 /// The geometry and constants in the form the equations use.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Setup {
@@ -52,36 +64,18 @@ impl Setup {
         )
     }
 
-    /// The sliding direction of `slip` under `grip`: its own, or the grip's while the slip is
-    /// within `zero` (one square root: this runs in every rate evaluation).
-    pub(super) fn direction(&self, slip: [f64; 2], grip: Grip) -> [f64; 2] {
-        match grip {
-            Grip::Slide(d) => {
-                let l2 = slip[0] * slip[0] + slip[1] * slip[1];
-                if l2 <= self.zero * self.zero {
-                    d
-                } else {
-                    let inv = 1.0 / l2.sqrt();
-                    [slip[0] * inv, slip[1] * inv]
-                }
-            }
-            Grip::Stick => [0.0, 0.0],
-        }
-    }
-
     /// Friction `(a, b, p, q)` per unit impulse for the grips, and the table's normal `N`.
     pub(super) fn friction(&self, y: &State, gi: Grip, gc: Grip) -> ([f64; 4], f64) {
-        self.friction_fixed(y, gi, gc, [false; 2])
+        self.friction_fixed(y, gi, gc, [Dir::Own; 2])
     }
 
-    /// [`Self::friction`], the nose's (`Some(true)`) or cloth's sliding direction held at the
-    /// one its grip keeps.
+    /// [`Self::friction`], the sliding directions taken as `dirs` says.
     pub(super) fn friction_fixed(
         &self,
         y: &State,
         gi: Grip,
         gc: Grip,
-        fixed: [bool; 2],
+        dirs: [Dir; 2],
     ) -> ([f64; 4], f64) {
         let (s, c) = (self.s, self.c);
         let (si, sc) = self.slips(y);
@@ -91,11 +85,22 @@ impl Setup {
         let inv = [1.0 / l2[0].sqrt(), 1.0 / l2[1].sqrt()];
         let z2 = self.zero * self.zero;
         let along = |g: Grip, sl: [f64; 2], k: usize| match g {
-            Grip::Slide(d) if fixed[k] || l2[k] <= z2 => d,
+            Grip::Slide(d) if dirs[k] == Dir::Held || l2[k] <= z2 => d,
             Grip::Slide(_) => [sl[0] * inv[k], sl[1] * inv[k]],
             Grip::Stick => [0.0, 0.0],
         };
-        let (ui, uc) = (along(gi, si, 0), along(gc, sc, 1));
+        let (mut ui, mut uc) = (along(gi, si, 0), along(gc, sc, 1));
+        // A slaved contact (never both) takes the direction its slip grows in, given the
+        // other's friction.
+        if let Dir::Slaved(l0) = dirs[0]
+            && let Some((u, _, _)) = self.slaved(true, uc, gc == Grip::Stick, l0)
+        {
+            ui = u;
+        } else if let Dir::Slaved(l0) = dirs[1]
+            && let Some((u, _, _)) = self.slaved(false, ui, gi == Grip::Stick, l0)
+        {
+            uc = u;
+        }
         let normal = |b: f64| (s - c * b).max(0.0);
         // The slip rates are d(slip)/dP = g + K f with g = (0, s c | 0, -c) and
         // K = [[7/2, 1 - 5s/2], [1 - 5s/2, 7/2]] on (a, p), [[s^2 + 5/2, 5/2 - s], [5/2 - s, 7/2]]
@@ -141,12 +146,45 @@ impl Setup {
             && (gc != Grip::Stick || hypot([f[2], f[3]]) <= self.mu_s * n * slack)
     }
 
-    pub(super) fn rate(&self, y: &State, gi: Grip, gc: Grip) -> State {
-        self.rate_fixed(y, gi, gc, [false; 2])
+    /// [`Self::rate`] with both contacts sliding along their own slips (`di`, `dc`: their
+    /// grips' directions, for a slip within `zero`): the same arithmetic as the general path,
+    /// without its cases, for the steps that need none (most).
+    pub(super) fn rate_sliding(&self, y: &State, di: [f64; 2], dc: [f64; 2]) -> State {
+        let (s, c, r) = (self.s, self.c, self.r);
+        let (si, sc) = self.slips(y);
+        let l2 = [si[0] * si[0] + si[1] * si[1], sc[0] * sc[0] + sc[1] * sc[1]];
+        let inv = [1.0 / l2[0].sqrt(), 1.0 / l2[1].sqrt()];
+        let z2 = self.zero * self.zero;
+        let ui = if l2[0] <= z2 {
+            di
+        } else {
+            [si[0] * inv[0], si[1] * inv[0]]
+        };
+        let uc = if l2[1] <= z2 {
+            dc
+        } else {
+            [sc[0] * inv[1], sc[1] * inv[1]]
+        };
+        let (a, b) = (-self.mu_w * ui[0], -self.mu_w * ui[1]);
+        let n = (s - c * b).max(0.0);
+        let (p, q) = (-self.mu_s * n * uc[0], -self.mu_s * n * uc[1]);
+        let k = 2.5 / r;
+        [
+            a + p,
+            -c - b * s + q,
+            k * (b + q),
+            k * (a * s - p),
+            -k * a * c,
+            c * y[1],
+        ]
     }
 
-    pub(super) fn rate_fixed(&self, y: &State, gi: Grip, gc: Grip, fixed: [bool; 2]) -> State {
-        self.rate_and_normal(y, gi, gc, fixed).0
+    pub(super) fn rate(&self, y: &State, gi: Grip, gc: Grip) -> State {
+        self.rate_fixed(y, gi, gc, [Dir::Own; 2])
+    }
+
+    pub(super) fn rate_fixed(&self, y: &State, gi: Grip, gc: Grip, dirs: [Dir; 2]) -> State {
+        self.rate_and_normal(y, gi, gc, dirs).0
     }
 
     /// [`Self::rate_fixed`] and the table's normal `N` of the same friction.
@@ -155,10 +193,10 @@ impl Setup {
         y: &State,
         gi: Grip,
         gc: Grip,
-        fixed: [bool; 2],
+        dirs: [Dir; 2],
     ) -> (State, f64) {
         let (s, c) = (self.s, self.c);
-        let ([a, b, p, q], n) = self.friction_fixed(y, gi, gc, fixed);
+        let ([a, b, p, q], n) = self.friction_fixed(y, gi, gc, dirs);
         let k = 2.5 / self.r;
         let d = [
             a + p,

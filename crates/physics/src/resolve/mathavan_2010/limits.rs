@@ -2,7 +2,7 @@
 //! whose sliding direction turns at a rate 1 / |slip|.
 
 use super::Impact;
-use super::contact::{Grip, hypot};
+use super::contact::{Dir, Grip, hypot};
 
 impl Impact {
     /// A sliding slip within the tolerance of zero is zero: moved into the spins (a change
@@ -20,7 +20,12 @@ impl Impact {
             };
             let size = hypot(sl);
             let mu = if nose { setup.mu_w } else { setup.mu_s };
-            if matches!(grip, Grip::Slide(_)) && mu > 0.0 && size > setup.tol && size <= setup.zero
+            let free = self.dirs[usize::from(!nose)] == Dir::Own;
+            if matches!(grip, Grip::Slide(_))
+                && free
+                && mu > 0.0
+                && size > setup.tol
+                && size <= setup.zero
             {
                 setup.snap(&mut self.y, nose);
                 let grip = setup.grip_at_zero(&self.y, nose, other);
@@ -34,12 +39,12 @@ impl Impact {
         }
     }
 
-    /// The longest step the sliding contacts allow, from the slips `sl`, their rates `r`, the
+    /// The longest step the sliding contacts allow, from the slips' sizes `sl`, their rates `r`, the
     /// table's normal `nn` and the sliding directions `u0`; and for each slip heading for
     /// zero close enough to be met in one step, the impulse to its zero.
     pub(super) fn limits(
         &self,
-        sl: [[f64; 2]; 2],
+        sl: [f64; 2],
         r: [[f64; 2]; 2],
         nn: f64,
         u0: [[f64; 2]; 2],
@@ -48,10 +53,14 @@ impl Impact {
         let grips = [self.gi, self.gc];
         let mus = [setup.mu_w, setup.mu_s * nn];
         let mut h = self.h.min(self.max_h);
+        if let Some((_, cap)) = self.slaved_at {
+            h = h.min(cap);
+        }
         let mut finals: [Option<f64>; 2] = [None; 2];
         for k in 0..2 {
-            let size = hypot(sl[k]);
-            if !matches!(grips[k], Grip::Slide(_)) || size <= setup.zero {
+            let size = sl[k];
+            if !matches!(grips[k], Grip::Slide(_)) || size <= setup.zero || self.dirs[k] != Dir::Own
+            {
                 continue;
             }
             let (u, r, mu) = (u0[k], r[k], mus[k]);
@@ -87,5 +96,107 @@ impl Impact {
             }
         }
         (h, finals)
+    }
+
+    /// Slaves a sliding contact to the direction its slip grows in (`slaved.rs`) while its
+    /// direction's relaxation, not the error, bounds the step and the friction impulse the
+    /// slaving misdirects stays within half the tolerance; frees it otherwise. `sl`: the
+    /// slips' sizes, `u0` their sliding directions.
+    ///
+    /// The bound: slaved, the friction's direction lags the true one by at most
+    /// `|S| |dphi*/dP| / kappa`, so a step misdirects at most `mu |S| |dphi*| / kappa` of
+    /// impulse (`dphi*`: how far `u*` turned over it); freed, the slip's direction (which
+    /// followed `u*` on average) relaxes to the true one within `|S| / kappa`, misdirecting at
+    /// most `mu |S / |S| - u*| |S| / kappa`. Both are charged to `lag`, which may not exceed
+    /// half the tolerance over the impact.
+    pub(super) fn slave(&mut self, sl: [f64; 2], u0: [[f64; 2]; 2]) {
+        let setup = self.setup;
+        let grips = [self.gi, self.gc];
+        let budget = 0.5 * self.atol;
+        for k in 0..2 {
+            let other = 1 - k;
+            let (size, mu) = (sl[k], [setup.mu_w, setup.mu_s][k]);
+            if !matches!(grips[k], Grip::Slide(_)) || self.dirs[other] != Dir::Own || mu <= 0.0 {
+                self.free(k);
+                continue;
+            }
+            let start = match self.dirs[k] {
+                Dir::Slaved(l) => l,
+                // Not worth a look unless its relaxation (about 7/2 mu / |S|) would bound the
+                // step well below the error's.
+                _ if 2.5 * size.max(setup.zero) > 0.5 * 3.5 * mu * self.h.min(self.max_h) => {
+                    continue;
+                }
+                _ => 0.0,
+            };
+            let Some((u, lambda, kappa)) =
+                setup.slaved(k == 0, u0[other], grips[other] == Grip::Stick, start)
+            else {
+                self.free(k);
+                continue;
+            };
+            // Its friction's part of the table's normal for the cloth (N ~ 1 suffices for a
+            // bound: N = s - c b <= s + c mu_w).
+            let mu = if k == 0 {
+                mu
+            } else {
+                mu * (setup.s + setup.c * setup.mu_w)
+            };
+            // (A slip within `zero` has its grip's direction, and may be that far off it.)
+            let off = hypot([u0[k][0] - u[0], u0[k][1] - u[1]]);
+            let exit = mu * off * size.max(setup.zero) / kappa;
+            // The explicit step its relaxation allows (as in `limits`), against the step the
+            // error would allow.
+            let x = 2.5 * lambda / kappa;
+            let stable = 2.5 * size.max(setup.zero) / kappa * (1.0 + x * (0.5 + x / 6.0));
+            // (A slip growing fast relaxes ever more slowly: explicit steps then grow fast.)
+            let stiff = x < 1.0 && stable < self.h.min(self.max_h);
+            // The longest slaved step: at most 4 times the last, and short enough that the
+            // lag over it and the freeing after it stay within the budget, with u* turning
+            // as it did over the last step: both are about mu (dphi*/dP) |S|_end^2 / (lambda
+            // kappa) (the slip's direction averages u* over the |S| / lambda it grew in).
+            let cap = |rate: f64, last: f64, lag: f64| {
+                let rem = (budget - lag).max(0.0);
+                let end = (rem * kappa * lambda / (1.5 * mu * rate.max(1e-300))).sqrt();
+                ((end - size) / lambda).max(0.0).min(4.0 * last)
+            };
+            let keep = match (self.dirs[k], self.slaved_at) {
+                (Dir::Slaved(_), Some((before, _))) if self.last_h > 0.0 => {
+                    let turned = hypot([u[0] - before[0], u[1] - before[1]]);
+                    self.lag += mu * size * turned / kappa;
+                    let h = cap(turned / self.last_h, self.last_h, self.lag);
+                    (stiff && h > stable && self.lag + exit <= budget).then_some(h)
+                }
+                (Dir::Slaved(_), _) => None,
+                // Entered off the slow manifold, the transient to it is neglected: it
+                // misdirects at most `exit`, charged at once (and the first step is short).
+                _ => (stiff && self.lag + 2.0 * exit <= budget).then(|| {
+                    self.lag += exit;
+                    self.d = None;
+                    4.0 * stable
+                }),
+            };
+            match keep {
+                Some(h) => {
+                    self.dirs[k] = Dir::Slaved(lambda);
+                    self.slaved_at = Some((u, h));
+                }
+                None => {
+                    if self.dirs[k] != Dir::Own {
+                        self.lag += exit;
+                    }
+                    self.free(k);
+                }
+            }
+        }
+    }
+
+    /// Frees contact `k` from slaving.
+    fn free(&mut self, k: usize) {
+        if self.dirs[k] != Dir::Own {
+            self.dirs[k] = Dir::Own;
+            self.slaved_at = None;
+            self.d = None;
+        }
     }
 }
