@@ -264,3 +264,47 @@ fn scores_add_up_to_the_verdicts() {
     assert_eq!(blue, DVec2::ZERO);
     assert!(balls(&app).iter().any(|b| b.0 == YELLOW));
 }
+
+/// 2.1(a): the striker concedes; the frame goes to the opponent and counts in the match (best
+/// of 3 here); the next frame is laid out afresh with the other player breaking off; the
+/// match ends when one player has two frames.
+#[test]
+fn conceded_frames_decide_a_best_of_three() {
+    let dir = folder("concede");
+    let mut app = start(&dir);
+    let command = |app: &mut App, c: TurnCommand| {
+        app.world_mut().write_message(c);
+        for _ in 0..3 {
+            app.update();
+        }
+    };
+    assert_eq!(snooker(&app).frames.best_of, 3);
+    assert_eq!(snooker(&app).next().striker, Seat::A);
+    command(&mut app, TurnCommand::Concede);
+    assert_eq!(turn(&app), Turn::GameOver);
+    let game = snooker(&app);
+    assert_eq!(game.frame.winner(), Some(Seat::B));
+    assert_eq!(game.frames.frames, [0, 1]);
+    assert_eq!(game.frames.winner(), None);
+    // Frame 2: a fresh table, B breaks off from the D (2.1: the break-off alternates).
+    command(&mut app, TurnCommand::NextRack);
+    assert_eq!(turn(&app), Turn::BallInHand);
+    assert_eq!(balls(&app).len(), 22);
+    let game = snooker(&app);
+    assert_eq!(game.frame.scores, [0, 0]);
+    assert_eq!(game.next().striker, Seat::B);
+    assert!(game.log.strokes.is_empty());
+    command(&mut app, TurnCommand::Concede);
+    let game = snooker(&app);
+    assert_eq!(game.frames.frames, [1, 1]);
+    command(&mut app, TurnCommand::NextRack);
+    assert_eq!(snooker(&app).next().striker, Seat::A);
+    command(&mut app, TurnCommand::Concede);
+    let game = snooker(&app);
+    assert_eq!(game.frames.frames, [1, 2]);
+    assert_eq!(game.frames.winner(), Some(Seat::B));
+    // The match is over: no further frame.
+    command(&mut app, TurnCommand::NextRack);
+    assert_eq!(turn(&app), Turn::GameOver);
+    assert_eq!(snooker(&app).frames.frames, [1, 2]);
+}
