@@ -12,8 +12,7 @@ use billiards::{
     play::game::{self, GameInPlay, NewGameRequested, Rules, Turn, TurnCommand},
     recording::{Autosave, RecordingsFolder},
     replay::OpenRecording,
-    sim::{self, HandError, HandRule, ShotRequested, SimStatus, Solver, place_ball_in_hand},
-    table::balls::{Ball, BallMotion},
+    sim::{self, HandError, HandRule, ShotRequested, SimStatus, Solver},
     table::geometry::TableSpec,
 };
 use billiards_physics::recording::Recording;
@@ -90,23 +89,7 @@ fn balls(app: &mut App) -> Vec<(usize, u8, DVec2)> {
         .collect()
 }
 
-/// Puts the cue ball in hand at `at` the way the drag does (an edit the solver records).
-fn place(app: &mut App, at: DVec2) -> Result<(), HandError> {
-    let rule = app.world().resource::<SimStatus>().ball_in_hand.unwrap();
-    let result = app
-        .world_mut()
-        .resource_scope(|world, solver: Mut<Solver>| {
-            let spec = world.resource::<TableSpec>().clone();
-            let mut query = world.query::<(&Ball, &mut BallMotion)>();
-            let (_, mut motion) = query
-                .iter_mut(world)
-                .find(|(ball, _)| ball.number == 0)
-                .unwrap();
-            place_ball_in_hand(&solver, &spec, &mut motion, at, rule)
-        });
-    app.update();
-    result
-}
+use common::place;
 
 /// A shot that touches no ball: with the cue ball in hand, put it far from every ball first;
 /// then a soft roll away from the nearest ball (WPA 6.2: a foul).

@@ -11,8 +11,7 @@ use billiards::{
     play::game::{self, GameChoice, NewGameRequested, Rules, Turn, TurnCommand},
     recording::RecordingsFolder,
     replay::OpenRecording,
-    sim::{HandError, HandRule, ShotRequested, SimStatus, Solver, place_ball_in_hand},
-    table::balls::{Ball, BallMotion},
+    sim::{HandError, HandRule, ShotRequested, SimStatus, Solver},
     table::geometry::TableSpec,
 };
 use billiards_physics::recording::Recording;
@@ -66,22 +65,7 @@ fn position(app: &App, n: u8) -> DVec2 {
     balls(app).into_iter().find(|b| b.0 == n).unwrap().1
 }
 
-fn place(app: &mut App, at: DVec2) -> Result<(), HandError> {
-    let rule = app.world().resource::<SimStatus>().ball_in_hand.unwrap();
-    let result = app
-        .world_mut()
-        .resource_scope(|world, solver: Mut<Solver>| {
-            let spec = world.resource::<TableSpec>().clone();
-            let mut query = world.query::<(&Ball, &mut BallMotion)>();
-            let (_, mut motion) = query
-                .iter_mut(world)
-                .find(|(ball, _)| ball.number == 0)
-                .unwrap();
-            place_ball_in_hand(&solver, &spec, &mut motion, at, rule)
-        });
-    app.update();
-    result
-}
+use common::place;
 
 fn shoot(app: &mut App, angle: f64, speed: f64) {
     app.world_mut().write_message(ShotRequested {

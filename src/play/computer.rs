@@ -494,7 +494,10 @@ pub fn describe(decision: &Decided, view: &OrbitCamera) -> String {
             )
         }
         Decided::Snooker(SnookerDecision::Shoot(plan)) => {
-            let what = snooker_kind_text(plan.kind, view);
+            let what = match plan.kind {
+                ShotKind::Break => "the break-off".to_owned(),
+                kind => kind_text(kind, view, |n| snooker_name(n).to_owned()),
+            };
             let nominated = plan.nominated.map_or(String::new(), |n| {
                 format!(", nominating the {}", snooker_name(n))
             });
@@ -516,48 +519,6 @@ fn snooker_choice_text(choice: SnookerChoice) -> String {
     }
 }
 
-/// A snooker shot in words: the balls by their names ("the pink in the foot-left corner").
-fn snooker_kind_text(kind: ShotKind, view: &OrbitCamera) -> String {
-    let cushion = |c: Cushion| cushion_name(c, view);
-    let n = snooker_name;
-    match kind {
-        ShotKind::Break => "the break-off".to_owned(),
-        ShotKind::Pot { ball, pocket } => format!("the {} in the {}", n(ball), pocket_name(pocket)),
-        ShotKind::Bank {
-            ball,
-            pocket,
-            cushion: c,
-        } => format!(
-            "the {} off the {} cushion in the {}",
-            n(ball),
-            cushion(c),
-            pocket_name(pocket)
-        ),
-        ShotKind::Kick {
-            ball,
-            pocket,
-            cushion: c,
-        } => format!(
-            "a kick off the {} cushion, the {} in the {}",
-            cushion(c),
-            n(ball),
-            pocket_name(pocket)
-        ),
-        ShotKind::Combo {
-            first,
-            ball,
-            pocket,
-        } => format!(
-            "the {} into the {}, in the {}",
-            n(first),
-            n(ball),
-            pocket_name(pocket)
-        ),
-        ShotKind::Safety { ball } => format!("a safety off the {}", n(ball)),
-        ShotKind::PushOut => "a push out".to_owned(),
-    }
-}
-
 /// The decision in words, with its success probability; cushions named as `view` shows them.
 fn describe_pool(decision: &Decision, view: &OrbitCamera) -> String {
     match decision {
@@ -565,7 +526,7 @@ fn describe_pool(decision: &Decision, view: &OrbitCamera) -> String {
             format!("{} ({:.0} %)", choice.label(), 100.0 * estimate)
         }
         Decision::Shoot(plan) => {
-            let what = kind_text(plan.kind, view);
+            let what = kind_text(plan.kind, view, |n| n.to_string());
             let call = match plan.call {
                 Call::Ball { .. } | Call::None => String::new(),
                 other => other.text().map_or(String::new(), |c| format!(", {c}")),
@@ -607,17 +568,21 @@ pub fn cushion_name(cushion: Cushion, view: &OrbitCamera) -> &'static str {
     }
 }
 
-fn kind_text(kind: ShotKind, view: &OrbitCamera) -> String {
+/// A shot in words, the balls named by `name` (pool's numbers, snooker's colours).
+fn kind_text(kind: ShotKind, view: &OrbitCamera, name: impl Fn(u8) -> String) -> String {
     let cushion = |c: Cushion| cushion_name(c, view);
     match kind {
         ShotKind::Break => "the break".to_owned(),
-        ShotKind::Pot { ball, pocket } => format!("the {ball} in the {}", pocket_name(pocket)),
+        ShotKind::Pot { ball, pocket } => {
+            format!("the {} in the {}", name(ball), pocket_name(pocket))
+        }
         ShotKind::Bank {
             ball,
             pocket,
             cushion: c,
         } => format!(
-            "the {ball} off the {} cushion in the {}",
+            "the {} off the {} cushion in the {}",
+            name(ball),
             cushion(c),
             pocket_name(pocket)
         ),
@@ -626,8 +591,9 @@ fn kind_text(kind: ShotKind, view: &OrbitCamera) -> String {
             pocket,
             cushion: c,
         } => format!(
-            "a kick off the {} cushion, the {ball} in the {}",
+            "a kick off the {} cushion, the {} in the {}",
             cushion(c),
+            name(ball),
             pocket_name(pocket)
         ),
         ShotKind::Combo {
@@ -635,10 +601,12 @@ fn kind_text(kind: ShotKind, view: &OrbitCamera) -> String {
             ball,
             pocket,
         } => format!(
-            "the {first} into the {ball}, in the {}",
+            "the {} into the {}, in the {}",
+            name(first),
+            name(ball),
             pocket_name(pocket)
         ),
-        ShotKind::Safety { ball } => format!("a safety on the {ball}"),
+        ShotKind::Safety { ball } => format!("a safety on the {}", name(ball)),
         ShotKind::PushOut => "a push out".to_owned(),
     }
 }

@@ -172,32 +172,11 @@ pub fn hud_lines(state: &GameParam) -> (Vec<HudLine>, Vec<HudLine>) {
     let Some(turn) = state.turn.as_ref().map(|t| *t.get()) else {
         return (Vec::new(), Vec::new());
     };
-    let mut first = Vec::new();
-    let mut second = Vec::new();
     if let Some(game) = &state.rules.snooker {
-        for (k, line) in game.hud_lines(turn).into_iter().enumerate() {
-            let colour = if k == 2 {
-                Some(INFO)
-            } else if line.starts_with("last foul") || line.contains("snooker") && k > 2 {
-                Some(WARNING)
-            } else {
-                None
-            };
-            if k < 3 {
-                first.push((line, colour));
-            } else {
-                second.push((line, colour));
-            }
-        }
-        if let Some(doing) = &state.computer.doing {
-            first.push((doing.clone(), Some(INFO)));
-        }
-        if let Some((key, hint)) = &state.computer.hint
-            && *key == game.turn_key()
-        {
-            first.push((hint.text(&state.view), Some(INFO)));
-        }
-        return (first, second);
+        // The match and the frame's score above the turn; the snookers needed in warning.
+        let lines = game.hud_lines(turn);
+        let warn = |k: usize, line: &str| k > 2 && line.contains("snooker");
+        return split_lines(state, lines, 2, warn, game.turn_key());
     }
     let Some(game) = &state.rules.game else {
         return (vec![("free play".to_owned(), None)], Vec::new());
@@ -213,15 +192,30 @@ pub fn hud_lines(state: &GameParam) -> (Vec<HudLine>, Vec<HudLine>) {
         }
         _ => Vec::new(),
     };
-    for (k, line) in game.hud_lines(turn, &dropped).into_iter().enumerate() {
-        let colour = if k == 1 {
+    let lines = game.hud_lines(turn, &dropped);
+    split_lines(state, lines, 1, |_, _| false, game.turn_key())
+}
+
+/// The match's HUD lines in two columns: up to the turn's line (at `turn_line`, in the info
+/// colour) in the first, with the computer's doing and the hint after it; the rest in the
+/// second, the last foul and what `warn` picks in the warning colour.
+fn split_lines(
+    state: &GameParam,
+    lines: Vec<String>,
+    turn_line: usize,
+    warn: impl Fn(usize, &str) -> bool,
+    key: crate::play::computer::TurnKey,
+) -> (Vec<HudLine>, Vec<HudLine>) {
+    let (mut first, mut second) = (Vec::new(), Vec::new());
+    for (k, line) in lines.into_iter().enumerate() {
+        let colour = if k == turn_line {
             Some(INFO)
-        } else if line.starts_with("last foul") {
+        } else if line.starts_with("last foul") || warn(k, &line) {
             Some(WARNING)
         } else {
             None
         };
-        if k < 2 {
+        if k <= turn_line {
             first.push((line, colour));
         } else {
             second.push((line, colour));
@@ -230,8 +224,8 @@ pub fn hud_lines(state: &GameParam) -> (Vec<HudLine>, Vec<HudLine>) {
     if let Some(doing) = &state.computer.doing {
         first.push((doing.clone(), Some(INFO)));
     }
-    if let Some((key, hint)) = &state.computer.hint
-        && *key == game.turn_key()
+    if let Some((hint_key, hint)) = &state.computer.hint
+        && *hint_key == key
     {
         first.push((hint.text(&state.view), Some(INFO)));
     }

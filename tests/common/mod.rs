@@ -34,3 +34,30 @@ pub fn update_until(app: &mut App, mut done: impl FnMut(&mut App) -> bool) {
         app.update();
     }
 }
+
+/// Puts the cue ball in hand at `at` the way the drag does (an edit the solver records).
+#[allow(dead_code, reason = "not every test file places the cue ball")]
+pub fn place(app: &mut App, at: bevy::math::DVec2) -> Result<(), sim::HandError> {
+    use billiards::table::{
+        balls::{Ball, BallMotion},
+        geometry::TableSpec,
+    };
+    let rule = app
+        .world()
+        .resource::<sim::SimStatus>()
+        .ball_in_hand
+        .unwrap();
+    let result = app
+        .world_mut()
+        .resource_scope(|world, solver: Mut<sim::Solver>| {
+            let spec = world.resource::<TableSpec>().clone();
+            let mut query = world.query::<(&Ball, &mut BallMotion)>();
+            let (_, mut motion) = query
+                .iter_mut(world)
+                .find(|(ball, _)| ball.number == 0)
+                .unwrap();
+            sim::place_ball_in_hand(&solver, &spec, &mut motion, at, rule)
+        });
+    app.update();
+    result
+}
