@@ -1,11 +1,10 @@
 //! Snooker in the game: a match of N frames under the WPBSA Official Rules (November 2019,
 //! [`billiards_rules::snooker`]) on the 12-ft table.
 //!
-//! The flow is pool's ([`super::flow`]) with snooker's own state: [`judge_stroke`] judges a
-//! finished stroke ([`Frame::play`]), logs it, spots the colours where the verdict says and
-//! puts a cue ball in hand into the D; [`apply_snooker_commands`] takes the incoming player's
-//! choices (play on, put back, replace, who plays the re-spotted black), a concession and
-//! the next frame. A colour after a red is nominated by the player, or is the one hit first
+//! The flow is pool's with snooker's own state: [`flow`]'s `judge_stroke` judges a finished
+//! stroke ([`Frame::play`]), logs it, spots the colours where the verdict says and puts a cue
+//! ball in hand into the D; the game's commands take the incoming player's choices (play on,
+//! put back, replace, who plays the re-spotted black), a concession and the next frame. A colour after a red is nominated by the player, or is the one hit first
 //! (2.12: an obvious ball needs no nomination); a free ball likewise (3.12).
 
 use bevy::{math::DVec2, prelude::*};
