@@ -19,7 +19,11 @@ use std::collections::BTreeMap;
 /// How an inning (a visit to the table) ended.
 fn ending(kind: ShotKind, legal: bool, potted: bool, over: bool, won: bool) -> String {
     if over {
-        return if won { "won".into() } else { "lost (foul on the 9 or the like)".into() };
+        return if won {
+            "won".into()
+        } else {
+            "lost (foul on the 9 or the like)".into()
+        };
     }
     if !legal {
         return "foul".into();
@@ -148,8 +152,14 @@ fn main() -> Result<(), String> {
             winner.map(|w| "AB".as_bytes()[w] as char)
         );
     }
-    println!("wins: {} {} {}, {} {}", players[0], wins[0], players[1], wins[1], n);
-    println!("{} lost after its last inning ended by: {lost_after:?}", players[0]);
+    println!(
+        "wins: {} {} {}, {} {}",
+        players[0], wins[0], players[1], wins[1], n
+    );
+    println!(
+        "{} lost after its last inning ended by: {lost_after:?}",
+        players[0]
+    );
     for p in 0..2 {
         let m = &missed_estimates[p];
         println!(
