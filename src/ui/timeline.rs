@@ -218,7 +218,10 @@ fn timeline(
     // A rules game: the verdicts re-judged with the verification, on a line always there.
     if open.game.is_some() {
         match &replay.rules_verdict {
-            Some(Ok(n)) => ui.colored_label(SUCCESS, format!("{n} verdicts re-judged alike")),
+            Some(Ok(n)) => {
+                let s = if *n == 1 { "" } else { "s" };
+                ui.colored_label(SUCCESS, format!("{n} verdict{s} re-judged alike"))
+            }
             Some(Err(e)) => ui.colored_label(WARNING, format!("verdicts: {e}")),
             None => ui.label(RichText::new("verdicts not re-judged yet").weak()),
         };
