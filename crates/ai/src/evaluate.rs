@@ -452,3 +452,30 @@ impl Search<'_> {
         out
     }
 }
+
+/// The best candidate of a search: after a second ply the best two-ply value (`two`: the
+/// candidate and its value); else the best mean among the finalists of the last round (all
+/// `stats` when there was none; ties: the first).
+pub(crate) fn best_candidate(
+    two: &[(usize, f64)],
+    finalists: &[usize],
+    stats: &[Stats],
+) -> Option<usize> {
+    if !two.is_empty() {
+        return two
+            .iter()
+            .copied()
+            .reduce(|a, b| if b.1 > a.1 { b } else { a })
+            .map(|v| v.0);
+    }
+    let all: Vec<usize> = (0..stats.len()).collect();
+    let pool = if finalists.is_empty() {
+        &all
+    } else {
+        finalists
+    };
+    pool.iter().copied().reduce(|a, b| {
+        let (ma, mb) = (stats[a].mean(), stats[b].mean());
+        if mb > ma || (mb == ma && b < a) { b } else { a }
+    })
+}

@@ -4,7 +4,7 @@
 use crate::candidates::{
     Candidate, Layout, ShotKind, combo_aims, direct_aims, expand, rail_aims, safeties,
 };
-use crate::evaluate::{Mode, Run, Search, Stats};
+use crate::evaluate::{Mode, Run, Search, Stats, best_candidate};
 use crate::level::{Budget, Level, TwoPly};
 use crate::noise::Noise;
 use crate::placement::places;
@@ -246,27 +246,9 @@ impl Pool {
         self.events += stats.iter().map(|s| s.events).sum::<usize>();
     }
 
-    /// The candidate of the best mean value among the finalists of the last round (all
-    /// candidates when there was none; ties: the first).
+    /// The best candidate so far ([`best_candidate`]).
     fn best(&self) -> Option<usize> {
-        if !self.two.is_empty() {
-            return self
-                .two
-                .iter()
-                .copied()
-                .reduce(|a, b| if b.1 > a.1 { b } else { a })
-                .map(|v| v.0);
-        }
-        let all: Vec<usize> = (0..self.cands.len()).collect();
-        let pool = if self.finalists.is_empty() {
-            &all
-        } else {
-            &self.finalists
-        };
-        pool.iter().copied().reduce(|a, b| {
-            let (ma, mb) = (self.stats[a].mean(), self.stats[b].mean());
-            if mb > ma || (mb == ma && b < a) { b } else { a }
-        })
+        best_candidate(&self.two, &self.finalists, &self.stats)
     }
 }
 

@@ -7,7 +7,7 @@ use super::value::d_places;
 use super::{SnookerDecision, SnookerPlan};
 use crate::AiError;
 use crate::candidates::Candidate;
-use crate::evaluate::Stats;
+use crate::evaluate::{Stats, best_candidate};
 use crate::noise::Noise;
 use billiards_physics::{BallId, BallSetup, Simulation, Vec2};
 use billiards_rules::Seat;
@@ -208,27 +208,9 @@ impl Pool {
             .map_or(self.stats[i].mean(), |v| v.1)
     }
 
-    /// The best mean among the finalists (all candidates before any round; ties: the first);
-    /// after a second ply, the best two-ply value.
+    /// The best candidate so far ([`best_candidate`]).
     fn best(&self) -> Option<usize> {
-        if !self.two.is_empty() {
-            return self
-                .two
-                .iter()
-                .copied()
-                .reduce(|a, b| if b.1 > a.1 { b } else { a })
-                .map(|v| v.0);
-        }
-        let all: Vec<usize> = (0..self.cands.len()).collect();
-        let pool = if self.finalists.is_empty() {
-            &all
-        } else {
-            &self.finalists
-        };
-        pool.iter().copied().reduce(|a, b| {
-            let (ma, mb) = (self.stats[a].mean(), self.stats[b].mean());
-            if mb > ma || (mb == ma && b < a) { b } else { a }
-        })
+        best_candidate(&self.two, &self.finalists, &self.stats)
     }
 }
 
