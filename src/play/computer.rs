@@ -11,7 +11,7 @@ use std::{
 
 use bevy::{math::DVec2, prelude::*, window::RequestRedraw};
 use billiards_ai::{AiError, Decision, Level, ShotKind, SnookerDecision};
-use billiards_physics::{Cushion, Vec2};
+use billiards_physics::{Cushion, Shot, Vec2};
 use billiards_rules::snooker::{Choice as SnookerChoice, Frame, balls::name as snooker_name};
 use billiards_rules::{Call, GameState, pocket_name};
 
@@ -295,20 +295,12 @@ fn play_computer_turn(
             handle,
         }) if handle.is_finished() => match outcome(handle) {
             Ok(decision) => {
-                let mut shown = ShownOn {
-                    solver: &solver,
-                    spec: &spec,
-                    shot_settings: &mut shot_settings,
-                };
-                let (hand, call) = (seat.hand, seat.call);
-                show_decision(
-                    &decision,
-                    &mut shown,
-                    &mut cue_ball,
-                    hand,
-                    call,
-                    &mut turn_commands,
-                );
+                announce(&decision, seat.call, &mut turn_commands);
+                if let Some((shot, place)) = decision.aim() {
+                    let place = place.zip(seat.hand);
+                    let table = (&*solver, &*spec);
+                    show_aim(shot, place, table, &mut shot_settings, &mut cue_ball);
+                }
                 computer.doing = Some(format!("{name} ({level}): {}", describe(&decision, &view)));
                 computer.turn = Some(Task::Showing {
                     key,
@@ -362,52 +354,53 @@ fn outcome(handle: JoinHandle<Result<Decided, AiError>>) -> Result<Decided, Stri
         .map_err(|e| e.to_string())
 }
 
-/// Where a decision is shown: the table's cue ball and the shot's settings.
-struct ShownOn<'a> {
-    solver: &'a Solver,
-    spec: &'a TableSpec,
-    shot_settings: &'a mut ShotSettings,
+impl Decided {
+    /// The shot decided on and the cue ball's place in hand; `None` for a choice.
+    fn aim(&self) -> Option<(Shot, Option<Vec2>)> {
+        match self {
+            Decided::Pool(Decision::Shoot(plan)) => Some((plan.shot, plan.place)),
+            Decided::Snooker(SnookerDecision::Shoot(plan)) => Some((plan.shot, plan.place)),
+            Decided::Pool(Decision::Choose { .. })
+            | Decided::Snooker(SnookerDecision::Choose { .. }) => None,
+        }
+    }
 }
 
-/// Puts a decided shot on the table as a human's aim shows (the place, the cue's angle, power
-/// and tip) with its call (pool) or nomination (snooker); a choice shows nothing.
-fn show_decision(
-    decision: &Decided,
-    on: &mut ShownOn,
-    cue_ball: &mut Query<(&Ball, &mut BallMotion), Without<Pocketed>>,
-    hand: Option<HandRule>,
-    call: Call,
-    commands: &mut MessageWriter<TurnCommand>,
-) {
-    let (shot, place) = match decision {
-        Decided::Pool(Decision::Shoot(plan)) => {
-            if plan.call != call {
-                commands.write(TurnCommand::Call(plan.call));
-            }
-            (plan.shot, plan.place)
+/// What goes with a decided shot before it is struck: pool's call (when it differs from the
+/// one in force), snooker's nomination.
+fn announce(decision: &Decided, call: Call, commands: &mut MessageWriter<TurnCommand>) {
+    match decision {
+        Decided::Pool(Decision::Shoot(plan)) if plan.call != call => {
+            commands.write(TurnCommand::Call(plan.call));
         }
         Decided::Snooker(SnookerDecision::Shoot(plan)) => {
             if let Some(n) = plan.nominated {
                 commands.write(TurnCommand::Nominate(n));
             }
-            (plan.shot, plan.place)
         }
-        Decided::Pool(Decision::Choose { .. })
-        | Decided::Snooker(SnookerDecision::Choose { .. }) => {
-            return;
-        }
-    };
-    if let Some(at) = place
-        && let Some(rule) = hand
+        _ => {}
+    }
+}
+
+/// Puts a decided shot on the table as a human's aim shows: the cue ball in hand where it
+/// goes (`place`, under its rule), and the cue's angle, power and tip.
+fn show_aim(
+    shot: Shot,
+    place: Option<(Vec2, HandRule)>,
+    (solver, spec): (&Solver, &TableSpec),
+    shot_settings: &mut ShotSettings,
+    cue_ball: &mut Query<(&Ball, &mut BallMotion), Without<Pocketed>>,
+) {
+    if let Some((at, rule)) = place
         && let Some((_, mut motion)) = cue_ball.iter_mut().find(|(b, _)| b.number == 0)
-        && let Err(error) = place_ball_in_hand(on.solver, on.spec, &mut motion, to_dvec(at), rule)
+        && let Err(error) = place_ball_in_hand(solver, spec, &mut motion, to_dvec(at), rule)
     {
         warn!("computer's cue ball placement refused: {error}");
     }
-    on.shot_settings.angle = shot.angle.rem_euclid(std::f64::consts::TAU);
-    on.shot_settings.power = shot.speed;
-    on.shot_settings.tip = shot.tip;
-    on.shot_settings.elevation = shot.elevation.to_degrees();
+    shot_settings.angle = shot.angle.rem_euclid(std::f64::consts::TAU);
+    shot_settings.power = shot.speed;
+    shot_settings.tip = shot.tip;
+    shot_settings.elevation = shot.elevation.to_degrees();
 }
 
 fn to_dvec(v: Vec2) -> DVec2 {
@@ -463,19 +456,12 @@ fn give_hint(
         Ok(decision) => {
             // The hint's call or nomination too: the player confirms it by shooting, or
             // changes it.
-            let mut shown = ShownOn {
-                solver: &solver,
-                spec: &spec,
-                shot_settings: &mut shot_settings,
-            };
-            show_decision(
-                &decision,
-                &mut shown,
-                &mut cue_ball,
-                seat.hand,
-                seat.call,
-                &mut calls,
-            );
+            announce(&decision, seat.call, &mut calls);
+            if let Some((shot, place)) = decision.aim() {
+                let place = place.zip(seat.hand);
+                let table = (&*solver, &*spec);
+                show_aim(shot, place, table, &mut shot_settings, &mut cue_ball);
+            }
             Hint::Decided(decision)
         }
         Err(error) => Hint::Failed(error),

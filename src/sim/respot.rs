@@ -4,6 +4,12 @@ use bevy::{math::DVec2, prelude::*};
 
 use billiards_rules::{CueBall, PlacementError};
 
+use super::{messages::*, solver::*};
+use crate::{
+    table::balls::{BallMotion, MotionState, Pocketed},
+    table::geometry::TableSpec,
+};
+
 /// Why the cue ball in hand cannot go there.
 #[derive(Debug, Clone, PartialEq)]
 pub enum HandError {
@@ -27,12 +33,6 @@ impl From<PlacementError> for HandError {
         HandError::Rules(error)
     }
 }
-
-use super::{messages::*, solver::*};
-use crate::{
-    table::balls::{BallMotion, MotionState, Pocketed},
-    table::geometry::TableSpec,
-};
 
 /// Free play: after a scratch the cue ball goes back on the head string, where
 /// [`billiards_rules::cue_ball_spot`] says (the rule the command line plays by too). The edit

@@ -383,6 +383,19 @@ pub fn table_dir_to_world(d: DVec2) -> Vec3 {
     Vec3::new(d.x as f32, 0.0, -d.y as f32)
 }
 
+/// The D of a snooker table (WPBSA 1.1(e)) as a polyline of `segments` pieces: the half circle
+/// behind the baulk-line, centred on the brown spot, from the green's corner to the yellow's.
+pub fn d_outline(marks: &billiards_physics::SnookerMarks, segments: u32) -> Vec<DVec2> {
+    let centre = DVec2::new(marks.brown.x, marks.brown.y);
+    (0..=segments)
+        .map(|k| {
+            let a = std::f64::consts::FRAC_PI_2
+                + std::f64::consts::PI * f64::from(k) / f64::from(segments);
+            centre + marks.d_radius * DVec2::from_angle(a)
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

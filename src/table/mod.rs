@@ -188,13 +188,7 @@ fn snooker_marks(spec: &TableSpec) -> Vec<(&'static str, Mesh)> {
         bevy::math::DVec2::new(marks.baulk_x, -hy),
         bevy::math::DVec2::new(marks.baulk_x, hy),
     ];
-    // The D: the half circle behind the baulk-line, centred on the brown spot.
-    let d: Vec<_> = (0..=48)
-        .map(|k| {
-            let a = std::f64::consts::FRAC_PI_2 + std::f64::consts::PI * f64::from(k) / 48.0;
-            at(marks.brown) + marks.d_radius * bevy::math::DVec2::from_angle(a)
-        })
-        .collect();
+    let d = geometry::d_outline(&marks, 48);
     let mut out = vec![
         ("Baulk-line", flat_strip(&baulk, LINE_WIDTH)),
         ("The D", flat_strip(&d, LINE_WIDTH)),

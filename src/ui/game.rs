@@ -91,18 +91,11 @@ pub const HUD_BUTTONS: [&str; 5] = [
 /// Whether a human is to shoot in the match in play (aiming, or with the ball in hand).
 pub fn human_to_shoot(state: &GameParam) -> bool {
     let turn = state.turn.as_ref().map(|t| *t.get());
-    let aiming = matches!(turn, Some(Turn::Aiming | Turn::BallInHand));
-    let pool = state
-        .rules
-        .game
-        .as_ref()
-        .is_some_and(|game| game.computer(game.next().shooter).is_none() && aiming);
-    let snooker = state
-        .rules
-        .snooker
-        .as_ref()
-        .is_some_and(|game| game.computer(game.next().striker).is_none() && aiming);
-    pool || snooker
+    matches!(turn, Some(Turn::Aiming | Turn::BallInHand))
+        && state
+            .rules
+            .to_play()
+            .is_some_and(|(level, _)| level.is_none())
 }
 
 /// Whether the table is in free play (no match in play).

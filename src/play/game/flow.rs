@@ -6,7 +6,7 @@ use billiards_rules::{
     Call, CallRule, CueBall, Game, GameLog, LoggedShot, Match, NextShot, RackStyle, Seat, summarise,
 };
 
-use super::snooker::SnookerInPlay;
+use super::snooker::{self, SnookerInPlay};
 use super::state::*;
 use crate::{
     play::aim::AimPrediction,
@@ -14,7 +14,7 @@ use crate::{
     settings::{PhysicsSettings, TableSetup},
     sim::{
         HandRule, LayoutRequested, RackRequested, Referee, ShotFinished, SimStatus, Solver,
-        clock_seed, params_for, respot_ball, snooker_layout, table_for,
+        clock_seed, params_for, respot_ball, table_for,
     },
     table::balls::BallMotion,
     table::geometry::TableSpec,
@@ -244,7 +244,6 @@ pub(super) fn apply_commands(
         setup.set_if_neq(request.setup);
         spec.set_if_neq(TableSpec::of(request.setup.table));
         if game == Game::FreePlay {
-            rules.game = None;
             let table = table_for(&spec, &settings);
             let rack = crate::sim::STARTING_RACK;
             layouts.write(LayoutRequested {
@@ -449,8 +448,7 @@ fn start_snooker(
     status: &mut SimStatus,
 ) {
     spec.set_if_neq(TableSpec::snooker());
-    let table = table_for(spec, settings);
-    let params = params_for(spec, settings);
+    let (table, ball) = snooker::equipment(spec, settings);
     // 2.1: a match is the best of an odd number of frames; `race_to` frames win it.
     let best_of = 2 * request.race_to.max(1) - 1;
     let started = SnookerInPlay::new(
@@ -459,16 +457,12 @@ fn start_snooker(
         request.computer,
         request.seed,
         &table,
-        &params.ball,
+        &ball,
     );
-    match (started, snooker_layout(&table, &params.ball)) {
-        (Ok(game), Ok(balls)) => {
+    match (started, snooker::rack_request(spec, settings)) {
+        (Ok(game), Ok(rack)) => {
             rules.snooker = Some(game);
-            layouts.write(LayoutRequested {
-                balls,
-                rack: Rack::FifteenBall,
-                name: "snooker",
-            });
+            layouts.write(rack);
         }
         (Err(error), _) => status.note = Some(format!("cannot start snooker: {}", error.0)),
         (_, Err(error)) => status.note = Some(format!("cannot start snooker: {error}")),

@@ -104,6 +104,18 @@ impl Rules {
     pub fn in_match(&self) -> bool {
         self.game.is_some() || self.snooker.is_some()
     }
+
+    /// The match's next player: whether the computer plays that seat (its level, `None` for
+    /// a human) and whether choices are offered first; `None` in free play.
+    pub fn to_play(&self) -> Option<(Option<Level>, bool)> {
+        if let Some(game) = &self.snooker {
+            let next = game.next();
+            return Some((game.computer(next.striker), !next.choices.is_empty()));
+        }
+        let game = self.game.as_ref()?;
+        let next = game.next();
+        Some((game.computer(next.shooter), !next.choices.is_empty()))
+    }
 }
 
 /// A match in play and what the players did since the last shot.

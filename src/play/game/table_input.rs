@@ -9,7 +9,7 @@ use crate::{
     input::AimLocked,
     play::cue::PointerInput,
     sim::{HandRule, SimStatus},
-    table::geometry::{TableSpec, to_world},
+    table::geometry::{TableSpec, d_outline, to_world},
 };
 
 /// While calling: a click near a pocket calls it (with the ball chosen, the 8 when it is on).
@@ -56,14 +56,7 @@ pub(super) fn lock_aim(
     mut lock: ResMut<AimLocked>,
 ) {
     let calling = turn.is_some_and(|t| *t.get() == Turn::Calling);
-    let computer = rules
-        .game
-        .as_ref()
-        .is_some_and(|g| g.computer(g.next().shooter).is_some())
-        || rules
-            .snooker
-            .as_ref()
-            .is_some_and(|g| g.computer(g.next().striker).is_some());
+    let computer = rules.to_play().is_some_and(|(level, _)| level.is_some());
     lock.set_if_neq(AimLocked(calling || computer));
 }
 
@@ -73,14 +66,7 @@ pub(super) fn confirm_key(
     rules: Res<Rules>,
     mut turn_commands: MessageWriter<TurnCommand>,
 ) {
-    let no_choice = rules
-        .game
-        .as_ref()
-        .is_some_and(|g| g.next().choices.is_empty())
-        || rules
-            .snooker
-            .as_ref()
-            .is_some_and(|g| g.next().choices.is_empty());
+    let no_choice = rules.to_play().is_some_and(|(_, choosing)| !choosing);
     if keys.just_pressed(KeyCode::Enter) && no_choice {
         turn_commands.write(TurnCommand::Continue);
     }
@@ -105,13 +91,7 @@ pub(super) fn draw_rules(
         && let Ok(marks) = billiards_physics::SnookerMarks::of(&spec.physics_table())
     {
         // The D (3.4): the half circle behind the baulk-line, and the line across it.
-        let centre = DVec2::new(marks.brown.x, marks.brown.y);
-        let d: Vec<Vec3> = (0..=32)
-            .map(|k| {
-                let a = std::f64::consts::FRAC_PI_2 + std::f64::consts::PI * f64::from(k) / 32.0;
-                at(centre + marks.d_radius * DVec2::from_angle(a))
-            })
-            .collect();
+        let d: Vec<Vec3> = d_outline(&marks, 32).into_iter().map(at).collect();
         let ends = [d[0], d[d.len() - 1]];
         gizmos.linestrip(d, Color::srgb(0.3, 0.9, 1.0));
         gizmos.line(ends[0], ends[1], Color::srgb(0.3, 0.9, 1.0));

@@ -55,7 +55,6 @@ pub(crate) fn judge_stroke(
             return;
         }
     };
-    game.strokes += 1;
     game.log.strokes.push(LoggedStroke {
         choices: std::mem::take(&mut game.choices),
         nominated,

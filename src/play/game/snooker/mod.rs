@@ -4,8 +4,9 @@
 //! The flow is pool's with snooker's own state: [`flow`]'s `judge_stroke` judges a finished
 //! stroke ([`Frame::play`]), logs it, spots the colours where the verdict says and puts a cue
 //! ball in hand into the D; the game's commands take the incoming player's choices (play on,
-//! put back, replace, who plays the re-spotted black), a concession and the next frame. A colour after a red is nominated by the player, or is the one hit first
-//! (2.12: an obvious ball needs no nomination); a free ball likewise (3.12).
+//! put back, replace, who plays the re-spotted black), a concession and the next frame. A
+//! colour after a red is nominated by the player, or is the one hit first (2.12: an obvious
+//! ball needs no nomination); a free ball likewise (3.12).
 
 use bevy::{math::DVec2, prelude::*};
 use billiards_ai::Level;
@@ -36,8 +37,6 @@ pub struct SnookerInPlay {
     pub seats: [Option<Level>; 2],
     /// The frame's number from the match's seed: each frame takes the next.
     pub seed: u64,
-    /// Strokes played in the frame.
-    pub strokes: usize,
     /// The colour (or free ball) nominated for the next stroke.
     pub nominated: Option<u8>,
     /// The last verdict.
@@ -79,7 +78,6 @@ impl SnookerInPlay {
             frame,
             seats,
             seed,
-            strokes: 0,
             nominated: None,
             last: None,
             verdict_shown: false,
@@ -111,16 +109,14 @@ impl SnookerInPlay {
         settings: &crate::settings::PhysicsSettings,
         layouts: &mut MessageWriter<crate::sim::LayoutRequested>,
     ) -> Result<(), String> {
-        let table = crate::sim::table_for(spec, settings);
-        let ball = crate::sim::params_for(spec, settings).ball;
+        let (table, ball) = equipment(spec, settings);
         let breaker = self.frames.next_breaker();
         let frame = Frame::new(self.frame.players.clone(), table, &ball, breaker)
             .map_err(|e| e.to_string())?;
-        let balls = crate::sim::snooker_layout(&table, &ball)?;
+        let request = rack_request(spec, settings)?;
         self.log = FrameLog::new(self.frame.players.clone(), breaker);
         self.frame = frame;
         self.seed = self.seed.wrapping_add(1);
-        self.strokes = 0;
         self.nominated = None;
         self.last = None;
         self.verdict_shown = false;
@@ -128,11 +124,7 @@ impl SnookerInPlay {
         self.choices.clear();
         self.pending_layout = None;
         self.recorded = false;
-        layouts.write(crate::sim::LayoutRequested {
-            balls,
-            rack: billiards_physics::Rack::FifteenBall,
-            name: "snooker",
-        });
+        layouts.write(request);
         Ok(())
     }
 
@@ -158,7 +150,7 @@ impl SnookerInPlay {
 
     /// Which turn this is: the frame, the strokes and the choices so far.
     pub fn turn_key(&self) -> (u64, usize, usize) {
-        (self.seed, self.strokes, self.choices.len())
+        (self.seed, self.log.strokes.len(), self.choices.len())
     }
 
     /// The turn's phase (with the balls at rest and no dialog open).
@@ -253,6 +245,29 @@ impl SnookerInPlay {
         }
         lines
     }
+}
+
+/// The solver's table and ball of `spec` (the snooker table) under `settings`.
+pub fn equipment(
+    spec: &crate::table::geometry::TableSpec,
+    settings: &crate::settings::PhysicsSettings,
+) -> (billiards_physics::Table, billiards_physics::BallSpec) {
+    let table = crate::sim::table_for(spec, settings);
+    (table, crate::sim::params_for(spec, settings).ball)
+}
+
+/// A frame's 22 balls (WPBSA 3.2) as asked of the simulation; the recording is named
+/// "snooker".
+pub fn rack_request(
+    spec: &crate::table::geometry::TableSpec,
+    settings: &crate::settings::PhysicsSettings,
+) -> Result<crate::sim::LayoutRequested, String> {
+    let (table, ball) = equipment(spec, settings);
+    Ok(crate::sim::LayoutRequested {
+        balls: crate::sim::snooker_layout(&table, &ball)?,
+        rack: billiards_physics::Rack::FifteenBall,
+        name: "snooker",
+    })
 }
 
 /// What is on, for the HUD: "a red", "a colour (the one hit first counts as nominated)",
