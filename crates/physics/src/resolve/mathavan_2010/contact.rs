@@ -179,6 +179,82 @@ impl Setup {
         ]
     }
 
+    /// The slips `(x_I, y'_I, x_C, y_C)` of [`Self::slips`] in one array.
+    pub(super) fn slips4(&self, y: &State) -> [f64; 4] {
+        let (si, sc) = self.slips(y);
+        [si[0], si[1], sc[0], sc[1]]
+    }
+
+    /// The slips' rates of [`Self::slip_rates_of`] in one array.
+    pub(super) fn slip_rates4(&self, d: &State) -> [f64; 4] {
+        let (ri, rc) = self.slip_rates_of(d);
+        [ri[0], ri[1], rc[0], rc[1]]
+    }
+
+    /// [`Self::rate_sliding`] from the slips `z` alone (`slips4`): their rates and the
+    /// friction `(a, b, p, q)` ([`Self::rate_of_friction`] gives the state's rate). The slip
+    /// rates are `g + K f` (see `friction_fixed`), so a Runge–Kutta stage needs only this:
+    /// from the slips to their rates, one square root and one division side by side, then
+    /// multiplies and adds.
+    #[inline(always)]
+    pub(super) fn slip_rates_sliding(
+        &self,
+        z: &[f64; 4],
+        di: [f64; 2],
+        dc: [f64; 2],
+    ) -> ([f64; 4], [f64; 4]) {
+        let (s, c) = (self.s, self.c);
+        let l2 = [z[0] * z[0] + z[1] * z[1], z[2] * z[2] + z[3] * z[3]];
+        // 1/|S| = |S| (1/|S|^2): the square root and the division in parallel, not in turn
+        // (within two roundings of 1/sqrt); a |S|^2 too small for 1/|S|^2 takes the latter.
+        let mut inv = [l2[0].sqrt() * (1.0 / l2[0]), l2[1].sqrt() * (1.0 / l2[1])];
+        if !(inv[0].is_finite() && inv[1].is_finite()) {
+            inv = [1.0 / l2[0].sqrt(), 1.0 / l2[1].sqrt()];
+        }
+        let z2 = self.zero * self.zero;
+        // Friction -mu u; N = s - c b = s + c mu_w u_y (as in `rate_sliding`).
+        let (ma, mc) = (-self.mu_w, -self.mu_s);
+        let (a, b, n) = if l2[0] <= z2 {
+            let (a, b) = (ma * di[0], ma * di[1]);
+            (a, b, s - c * b)
+        } else {
+            let (a, b) = ((ma * z[0]) * inv[0], (ma * z[1]) * inv[0]);
+            (a, b, s - (c * ma * z[1]) * inv[0])
+        };
+        let n = n.max(0.0);
+        let (p, q) = if l2[1] <= z2 {
+            (n * (mc * dc[0]), n * (mc * dc[1]))
+        } else {
+            (n * ((mc * z[2]) * inv[1]), n * ((mc * z[3]) * inv[1]))
+        };
+        let (kx, ka, kb) = (1.0 - 2.5 * s, s * s + 2.5, 2.5 - s);
+        (
+            [
+                3.5 * a + kx * p,
+                s * c + ka * b + kb * q,
+                kx * a + 3.5 * p,
+                kb * b - c + 3.5 * q,
+            ],
+            [a, b, p, q],
+        )
+    }
+
+    /// The state's rate at `y` for friction `f = (a, b, p, q)` (eqs. 14, 17).
+    #[inline(always)]
+    pub(super) fn rate_of_friction(&self, f: &[f64; 4], y: &State) -> State {
+        let (s, c) = (self.s, self.c);
+        let [a, b, p, q] = *f;
+        let k = 2.5 / self.r;
+        [
+            a + p,
+            -c - b * s + q,
+            k * (b + q),
+            k * (a * s - p),
+            -k * a * c,
+            c * y[1],
+        ]
+    }
+
     pub(super) fn rate(&self, y: &State, gi: Grip, gc: Grip) -> State {
         self.rate_fixed(y, gi, gc, [Dir::Own; 2])
     }

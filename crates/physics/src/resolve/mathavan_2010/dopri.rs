@@ -73,23 +73,78 @@ impl Step {
 
 /// One step of `h` from `y`, whose rate `k1` the caller has.
 pub(super) fn step(y: &State, k1: &State, h: f64, rate: impl Fn(&State) -> State) -> Step {
-    let k2 = rate(&std::array::from_fn(|i| y[i] + h * A21 * k1[i]));
-    let k3 = rate(&std::array::from_fn(|i| {
-        y[i] + h * (A31 * k1[i] + A32 * k2[i])
+    step_split(
+        y,
+        k1,
+        h,
+        [0.0; 0],
+        [0.0; 0],
+        |_: &[f64; 0]| ([0.0; 0], ()),
+        |_, t| rate(t),
+    )
+}
+
+/// [`step`] for a rate that depends on the state only through `N` linear combinations `z` of
+/// it (the slips) and on the state itself only where nothing feeds back (`slow`): the stages
+/// follow `z` along the chain of rate evaluations (`fast` gives `dz/dP` and what `slow` needs
+/// from `z`), the full state off it. Runge–Kutta methods commute with linear maps, so this is
+/// the same step to rounding, with a shorter chain of dependent operations per stage. `z0`
+/// and `dz1`: `z` and its rate at `y`. With each stage's coefficients multiplied by `h` once
+/// and the newest stage added last, a stage waits one multiply and one add for the last.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn step_split<const N: usize, F>(
+    y: &State,
+    k1: &State,
+    h: f64,
+    z0: [f64; N],
+    dz1: [f64; N],
+    fast: impl Fn(&[f64; N]) -> ([f64; N], F),
+    slow: impl Fn(&F, &State) -> State,
+) -> Step {
+    let (a21, a31, a32) = (h * A21, h * A31, h * A32);
+    let (a41, a42, a43) = (h * A41, h * A42, h * A43);
+    let (a51, a52, a53, a54) = (h * A51, h * A52, h * A53, h * A54);
+    let (a61, a62, a63, a64, a65) = (h * A61, h * A62, h * A63, h * A64, h * A65);
+    let (b1, b3, b4, b5, b6) = (h * B1, h * B3, h * B4, h * B5, h * B6);
+    let dz: [f64; N] = dz1;
+    let (dz2, f2) = fast(&std::array::from_fn(|i| z0[i] + a21 * dz[i]));
+    let (dz3, f3) = fast(&std::array::from_fn(|i| z0[i] + a31 * dz[i] + a32 * dz2[i]));
+    let (dz4, f4) = fast(&std::array::from_fn(|i| {
+        z0[i] + a41 * dz[i] + a42 * dz2[i] + a43 * dz3[i]
     }));
-    let k4 = rate(&std::array::from_fn(|i| {
-        y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i])
+    let (dz5, f5) = fast(&std::array::from_fn(|i| {
+        z0[i] + a51 * dz[i] + a52 * dz2[i] + a53 * dz3[i] + a54 * dz4[i]
     }));
-    let k5 = rate(&std::array::from_fn(|i| {
-        y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i])
+    let (dz6, f6) = fast(&std::array::from_fn(|i| {
+        z0[i] + a61 * dz[i] + a62 * dz2[i] + a63 * dz3[i] + a64 * dz4[i] + a65 * dz5[i]
     }));
-    let k6 = rate(&std::array::from_fn(|i| {
-        y[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i])
+    let (_, f7) = fast(&std::array::from_fn(|i| {
+        z0[i] + b1 * dz[i] + b3 * dz3[i] + b4 * dz4[i] + b5 * dz5[i] + b6 * dz6[i]
     }));
+    // The full state's stages (off the chain above when N > 0).
+    let k2 = slow(&f2, &std::array::from_fn(|i| y[i] + a21 * k1[i]));
+    let k3 = slow(
+        &f3,
+        &std::array::from_fn(|i| y[i] + a31 * k1[i] + a32 * k2[i]),
+    );
+    let k4 = slow(
+        &f4,
+        &std::array::from_fn(|i| y[i] + a41 * k1[i] + a42 * k2[i] + a43 * k3[i]),
+    );
+    let k5 = slow(
+        &f5,
+        &std::array::from_fn(|i| y[i] + a51 * k1[i] + a52 * k2[i] + a53 * k3[i] + a54 * k4[i]),
+    );
+    let k6 = slow(
+        &f6,
+        &std::array::from_fn(|i| {
+            y[i] + a61 * k1[i] + a62 * k2[i] + a63 * k3[i] + a64 * k4[i] + a65 * k5[i]
+        }),
+    );
     let y1: State = std::array::from_fn(|i| {
-        y[i] + h * (B1 * k1[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] + B6 * k6[i])
+        y[i] + b1 * k1[i] + b3 * k3[i] + b4 * k4[i] + b5 * k5[i] + b6 * k6[i]
     });
-    let k7 = rate(&y1);
+    let k7 = slow(&f7, &y1);
     let err = std::array::from_fn(|i| {
         h * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i])
     });

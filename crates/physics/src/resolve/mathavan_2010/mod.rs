@@ -378,9 +378,17 @@ impl Impact {
                 dirs[usize::from(!nose)] = Dir::Held;
             }
             let st = match (gi, gc, dirs) {
-                (Grip::Slide(di), Grip::Slide(dc), [Dir::Own, Dir::Own]) => {
-                    dopri::step(&self.y, &plan.d, h, |t| setup.rate_sliding(t, di, dc))
-                }
+                (Grip::Slide(di), Grip::Slide(dc), [Dir::Own, Dir::Own]) => dopri::step_split(
+                    &self.y,
+                    &plan.d,
+                    h,
+                    setup.slips4(&self.y),
+                    setup.slip_rates4(&plan.d),
+                    #[inline(always)]
+                    |z| setup.slip_rates_sliding(z, di, dc),
+                    #[inline(always)]
+                    |f, t| setup.rate_of_friction(f, t),
+                ),
                 _ => dopri::step(&self.y, &plan.d, h, |t| setup.rate_fixed(t, gi, gc, dirs)),
             };
             self.stats.evaluations += 6;
