@@ -56,18 +56,22 @@ pub(super) struct Step {
 impl Step {
     /// The state at fraction `theta` of the step (4th order; exact at 0 and 1), from the
     /// stages kept (computed here: most steps never need it).
+    #[inline]
     pub(super) fn at(&self, theta: f64) -> State {
+        std::array::from_fn(|i| self.at_one(i, theta))
+    }
+
+    /// Component `i` of [`Self::at`] (an event on one component needs no other).
+    #[inline]
+    pub(super) fn at_one(&self, i: usize, theta: f64) -> f64 {
         let (y, y1, h, k7) = (&self.y0, &self.y, self.h, &self.k7);
         let [k1, k3, k4, k5, k6] = &self.k;
         let t1 = 1.0 - theta;
-        std::array::from_fn(|i| {
-            let r2 = y1[i] - y[i];
-            let r3 = h * k1[i] - r2;
-            let r4 = r2 - h * k7[i] - r3;
-            let r5 =
-                h * (D1 * k1[i] + D3 * k3[i] + D4 * k4[i] + D5 * k5[i] + D6 * k6[i] + D7 * k7[i]);
-            y[i] + theta * (r2 + t1 * (r3 + theta * (r4 + t1 * r5)))
-        })
+        let r2 = y1[i] - y[i];
+        let r3 = h * k1[i] - r2;
+        let r4 = r2 - h * k7[i] - r3;
+        let r5 = h * (D1 * k1[i] + D3 * k3[i] + D4 * k4[i] + D5 * k5[i] + D6 * k6[i] + D7 * k7[i]);
+        y[i] + theta * (r2 + t1 * (r3 + theta * (r4 + t1 * r5)))
     }
 }
 

@@ -272,7 +272,8 @@ impl Impact {
         }
         let (mut si, mut sc) = setup.slips(&self.y);
         let mut sizes = [hypot(si), hypot(sc)];
-        if sizes.iter().any(|&l| l > setup.tol && l <= setup.zero) {
+        let near = |l: f64| l > setup.tol && l <= setup.zero;
+        if near(sizes[0]) || near(sizes[1]) {
             self.snap_zero_slips();
             (si, sc) = setup.slips(&self.y);
             sizes = [hypot(si), hypot(sc)];
@@ -340,17 +341,18 @@ impl Impact {
     /// direction: it passed close by zero inside the step.
     fn turned(&self, t: &State, predicted: Option<Event>, plan: &Plan) -> bool {
         let (a, b) = self.setup.slips(t);
-        [(a, self.gi, 0), (b, self.gc, 1)]
-            .iter()
-            .any(|&(sl, g, k)| {
-                let u = plan.u0[k];
-                let size = hypot(sl);
-                matches!(g, Grip::Slide(_))
-                    && self.dirs[k] == Dir::Own
-                    && predicted != Some(Event::SlipZero(k == 0))
-                    && size > self.setup.zero
-                    && (sl[0] * u[0] + sl[1] * u[1]) < 0.8776 * size
-            })
+        let z2 = self.setup.zero * self.setup.zero;
+        let turned = |sl: [f64; 2], g: Grip, k: usize| {
+            let u = plan.u0[k];
+            // cos(angle) < 0.8776 (0.5 rad) against the start, squared: no square root.
+            let (dot, l2) = (sl[0] * u[0] + sl[1] * u[1], sl[0] * sl[0] + sl[1] * sl[1]);
+            matches!(g, Grip::Slide(_))
+                && self.dirs[k] == Dir::Own
+                && predicted != Some(Event::SlipZero(k == 0))
+                && l2 > z2
+                && (dot < 0.0 || dot * dot < 0.8776 * 0.8776 * l2)
+        };
+        turned(a, self.gi, 0) || turned(b, self.gc, 1)
     }
 
     /// The local error estimate relative to the tolerance (1: at the tolerance).
@@ -471,7 +473,11 @@ impl Impact {
             if !(at > lo && at < hi) {
                 at = 0.5 * (lo + hi);
             }
-            let ga = self.g(e, &st.at(at), u0);
+            let ga = match e {
+                Event::Compressed => st.at_one(1, at),
+                Event::Restituted => st.at_one(5, at) - self.target.unwrap_or(0.0),
+                _ => self.g(e, &st.at(at), u0),
+            };
             if ga.abs() <= tol || hi - lo <= 1e-15 {
                 break;
             }
