@@ -146,39 +146,6 @@ impl Setup {
             && (gc != Grip::Stick || hypot([f[2], f[3]]) <= self.mu_s * n * slack)
     }
 
-    /// [`Self::rate`] with both contacts sliding along their own slips (`di`, `dc`: their
-    /// grips' directions, for a slip within `zero`): the same arithmetic as the general path,
-    /// without its cases, for the steps that need none (most).
-    pub(super) fn rate_sliding(&self, y: &State, di: [f64; 2], dc: [f64; 2]) -> State {
-        let (s, c, r) = (self.s, self.c, self.r);
-        let (si, sc) = self.slips(y);
-        let l2 = [si[0] * si[0] + si[1] * si[1], sc[0] * sc[0] + sc[1] * sc[1]];
-        let inv = [1.0 / l2[0].sqrt(), 1.0 / l2[1].sqrt()];
-        let z2 = self.zero * self.zero;
-        let ui = if l2[0] <= z2 {
-            di
-        } else {
-            [si[0] * inv[0], si[1] * inv[0]]
-        };
-        let uc = if l2[1] <= z2 {
-            dc
-        } else {
-            [sc[0] * inv[1], sc[1] * inv[1]]
-        };
-        let (a, b) = (-self.mu_w * ui[0], -self.mu_w * ui[1]);
-        let n = (s - c * b).max(0.0);
-        let (p, q) = (-self.mu_s * n * uc[0], -self.mu_s * n * uc[1]);
-        let k = 2.5 / r;
-        [
-            a + p,
-            -c - b * s + q,
-            k * (b + q),
-            k * (a * s - p),
-            -k * a * c,
-            c * y[1],
-        ]
-    }
-
     /// The slips `(x_I, y'_I, x_C, y_C)` of [`Self::slips`] in one array.
     pub(super) fn slips4(&self, y: &State) -> [f64; 4] {
         let (si, sc) = self.slips(y);
@@ -191,11 +158,13 @@ impl Setup {
         [ri[0], ri[1], rc[0], rc[1]]
     }
 
-    /// [`Self::rate_sliding`] from the slips `z` alone (`slips4`): their rates and the
-    /// friction `(a, b, p, q)` ([`Self::rate_of_friction`] gives the state's rate). The slip
-    /// rates are `g + K f` (see `friction_fixed`), so a Runge–Kutta stage needs only this:
-    /// from the slips to their rates, one square root and one division side by side, then
-    /// multiplies and adds.
+    /// The rates of the slips `z` (`slips4`) with both contacts sliding along their own slips
+    /// (`di`, `dc`: their grips' directions, for a slip within `zero`), and the friction
+    /// `(a, b, p, q)` ([`Self::rate_of_friction`] gives the state's rate): the arithmetic of
+    /// [`Self::friction_fixed`] without its cases, for the steps that need none (most). The
+    /// slip rates are `g + K f` (see `friction_fixed`), so a Runge–Kutta stage needs only
+    /// this: from the slips to their rates, one square root and one division side by side,
+    /// then multiplies and adds.
     #[inline(always)]
     pub(super) fn slip_rates_sliding(
         &self,
@@ -212,7 +181,7 @@ impl Setup {
             inv = [1.0 / l2[0].sqrt(), 1.0 / l2[1].sqrt()];
         }
         let z2 = self.zero * self.zero;
-        // Friction -mu u; N = s - c b = s + c mu_w u_y (as in `rate_sliding`).
+        // Friction -mu u; N = s - c b = s + c mu_w u_y.
         let (ma, mc) = (-self.mu_w, -self.mu_s);
         let (a, b, n) = if l2[0] <= z2 {
             let (a, b) = (ma * di[0], ma * di[1]);
