@@ -96,6 +96,7 @@ pub(super) fn step(y: &State, k1: &State, h: f64, rate: impl Fn(&State) -> State
 /// and `dz1`: `z` and its rate at `y`. With each stage's coefficients multiplied by `h` once
 /// and the newest stage added last, a stage waits one multiply and one add for the last.
 #[allow(clippy::too_many_arguments)]
+#[inline(always)]
 pub(super) fn step_split<const N: usize, F>(
     y: &State,
     k1: &State,
