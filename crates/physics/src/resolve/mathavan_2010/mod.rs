@@ -374,12 +374,15 @@ impl Impact {
         let (gi, gc) = (self.gi, self.gc);
         let floor = 1e-12 * self.span;
         let mut rejected = false;
-        let step = loop {
-            let mut dirs = self.dirs;
+        // Assigned in place (a step is some 500 bytes: moving it out of the loop copies it).
+        let mut dirs;
+        let mut st;
+        loop {
+            dirs = self.dirs;
             if let Some(Event::SlipZero(nose)) = predicted {
                 dirs[usize::from(!nose)] = Dir::Held;
             }
-            let st = match (gi, gc, dirs) {
+            st = match (gi, gc, dirs) {
                 (Grip::Slide(di), Grip::Slide(dc), [Dir::Own, Dir::Own]) => dopri::step_split(
                     &self.y,
                     &plan.d,
@@ -415,7 +418,7 @@ impl Impact {
                     self.err_old = e.max(1e-4).sqrt().sqrt().sqrt();
                     self.h = if rejected { h * fac.min(1.0) } else { h * fac };
                 }
-                break (st, dirs);
+                break;
             }
             self.stats.rejected += 1;
             rejected = true;
@@ -429,8 +432,7 @@ impl Impact {
                 };
             }
             predicted = None;
-        };
-        let (st, dirs) = step;
+        }
         let (mut hit, mut theta) = (None, 1.0);
         // A step meant to end on a zero slip finds it like the other events: its rate along
         // the held direction need not stay constant (the other contact turns).
