@@ -259,8 +259,9 @@ fn a_slow_slip_slaved_to_its_growing_direction_matches_the_reference() {
     // The 9-ball break's stiffest impact (examples/mathavan_probe.rs, impact 17: 2.8 m/s into
     // the cushion, the nose's slip leaving zero slowly), with the game's ball and constants:
     // slaved for part of restitution, it stays within 1e-5 of the incoming speed of the
-    // reference with 100 times smaller steps (measured 7.7e-7) and takes under 450 rate
-    // evaluations (301; 901 before slaving).
+    // reference with 100 times smaller steps (measured 2.7e-6; 7.7e-7 before the split
+    // step's roundings took another path) and takes under 450 rate evaluations (326; 901
+    // before slaving).
     let r = 0.028575;
     let m = Mathavan2010 {
         e: 0.98,
