@@ -89,7 +89,7 @@ pub fn decide_planned(
     let budget = budget.clone();
     let place_list: Vec<Option<Vec2>> = if in_hand {
         let found = if next.break_shot {
-            break_places(sim, cue, next.cue_ball)
+            break_places(sim, cue, next.cue_ball, budget.breaks.places)
         } else {
             let (rule, legal) = (next.cue_ball, &next.legal_first);
             places(sim, cue, rule, legal, search.noise, budget.placements)
@@ -111,11 +111,9 @@ pub fn decide_planned(
             .collect()
     };
     let budget = if next.break_shot {
-        // A break runs ten times the events of a shot and has few candidates worth telling
-        // apart: 8 samples each, the best three 32 more.
         Budget {
-            samples: 8,
-            rounds: &[(3, 32)],
+            samples: budget.breaks.samples,
+            rounds: budget.breaks.rounds,
             ..budget
         }
     } else {
@@ -319,13 +317,8 @@ fn breaks(search: &Search, place_list: &[Option<Vec2>], budget: &Budget) -> Vec<
             .min_by(|a, b| (a.1 - spot).length().total_cmp(&(b.1 - spot).length()));
         let Some(&(_, at)) = apex else { continue };
         let angle = (at - layout.cue).angle();
-        let speeds: &[f64] = if budget.speeds.len() > 1 {
-            &[8.0, 10.0, 12.0]
-        } else {
-            &[10.0]
-        };
-        for &speed in speeds {
-            for height in [0.0, -0.2] {
+        for &speed in budget.breaks.speeds {
+            for &height in budget.breaks.heights {
                 out.push(Candidate {
                     kind: ShotKind::Break,
                     shot: Shot {
@@ -344,15 +337,16 @@ fn breaks(search: &Search, place_list: &[Option<Vec2>], budget: &Budget) -> Vec<
     out
 }
 
-/// Where the breaker may put the cue ball: the head spot, a quarter of the way to either side
-/// cushion, and three quarters of the way, near the rail, where pros break 9-ball from: the
-/// wing ball then reaches the corner pocket (crates/rules/README.md, the break study), those
-/// legal.
-fn break_places(sim: &Simulation, cue: usize, rule: CueBall) -> Vec<Vec2> {
+/// Where the breaker may put the cue ball: on the head string at each fraction of the way to
+/// either long cushion, those legal. Three quarters of the way, near the rail, is where pros
+/// break 9-ball from: the wing ball then reaches the corner pocket (crates/rules/README.md,
+/// the break study).
+fn break_places(sim: &Simulation, cue: usize, rule: CueBall, fractions: &[f64]) -> Vec<Vec2> {
     let spot = sim.table().head_spot();
     let half = sim.table().centre_bounds(sim.params().ball.radius).y;
-    [0.0, 0.25, -0.25, 0.75, -0.75]
-        .into_iter()
+    fractions
+        .iter()
+        .flat_map(|&f| if f == 0.0 { vec![f] } else { vec![f, -f] })
         .map(|f| spot + Vec2::new(0.0, f * half))
         .filter(|&p| check_placement(sim, cue, p, rule).is_ok())
         .collect()
