@@ -9,10 +9,10 @@
 //! ```
 
 use billiards_ai::noise::stream;
-use billiards_ai::play::{spot_balls, table_and_params_on};
+use billiards_ai::play::{execute, spot_balls, table_and_params_on};
 use billiards_ai::{Decision, Player, ShotKind};
-use billiards_physics::{Simulation, TableChoice, Vec2, Vec3};
-use billiards_rules::{CUE, Game, GameState, Outcome, RackStyle, Seat, ShotSummary};
+use billiards_physics::{Simulation, TableChoice};
+use billiards_rules::{Game, GameState, Outcome, RackStyle, Seat};
 use rand::Rng;
 use std::collections::BTreeMap;
 
@@ -88,21 +88,12 @@ fn main() -> Result<(), String> {
                 }
                 Decision::Shoot(plan) => plan,
             };
-            let cue = sim.numbers().iter().position(|&n| n == CUE).ok_or("cue")?;
-            if let Some(p) = plan.place {
-                sim.place(cue, p, Vec2::ZERO, Vec3::ZERO)
-                    .map_err(|e| e.to_string())?;
-            }
-            let shot = plan.executed(
+            let summary = execute(
+                &mut sim,
+                &plan,
                 player.execution_noise(),
-                sim.params(),
                 stream(seed, 2, shots as u64).random(),
-            );
-            sim.strike(cue, shot).map_err(|e| e.to_string())?;
-            let mut summary = ShotSummary::default();
-            while let Some(e) = sim.step_event() {
-                summary.record(&e.kind, sim.numbers());
-            }
+            )?;
             let verdict = state.play(&summary, plan.call).map_err(|e| e.to_string())?;
             shots += 1;
             let potted = summary.pocketed_object_balls().next().is_some();

@@ -5,8 +5,9 @@
 //! each rack comes from the game's seed ([`billiards_rules::Game::rack_styled`]); every shot is the player's decision
 //! struck with its execution noise, run to rest without a history, summarised and judged.
 
+use crate::noise::Noise;
 use crate::noise::stream;
-use crate::{Decision, Player};
+use crate::{Decision, Plan, Player};
 use billiards_physics::{Model, Params, Simulation, SpinModel, Table, TableChoice, Vec2, Vec3};
 use billiards_rules::{
     CUE, Game, GameState, Outcome, RackStyle, Seat, ShotSummary, object_ball_spot,
@@ -105,6 +106,32 @@ pub fn play_rack(
     play_rack_at(Venue::default(), game, players, index, seed, breaker)
 }
 
+/// Plays `plan` on `sim` as a player does: the cue ball placed where the plan says, the shot
+/// struck with `noise` drawn from `seed`, run to rest and summarised for the rules.
+pub fn execute(
+    sim: &mut Simulation,
+    plan: &Plan,
+    noise: Noise,
+    seed: u64,
+) -> Result<ShotSummary, String> {
+    let cue = sim
+        .numbers()
+        .iter()
+        .position(|&n| n == CUE)
+        .ok_or("no cue ball")?;
+    if let Some(p) = plan.place {
+        sim.place(cue, p, Vec2::ZERO, Vec3::ZERO)
+            .map_err(|e| format!("place: {e}"))?;
+    }
+    let shot = plan.executed(noise, sim.params(), seed);
+    sim.strike(cue, shot).map_err(|e| format!("strike: {e}"))?;
+    let mut summary = ShotSummary::default();
+    while let Some(e) = sim.step_event() {
+        summary.record(&e.kind, sim.numbers());
+    }
+    Ok(summary)
+}
+
 /// [`play_rack`] at `venue`.
 pub fn play_rack_at(
     venue: Venue,
@@ -158,25 +185,12 @@ pub fn play_rack_at(
         if next.shooter != breaker_now {
             opponent_shot = true;
         }
-        let cue = sim
-            .numbers()
-            .iter()
-            .position(|&n| n == CUE)
-            .ok_or("no cue ball")?;
-        if let Some(p) = plan.place {
-            sim.place(cue, p, Vec2::ZERO, Vec3::ZERO)
-                .map_err(|e| format!("place: {e}"))?;
-        }
-        let shot = plan.executed(
+        let summary = execute(
+            &mut sim,
+            &plan,
             player.execution_noise(),
-            sim.params(),
             stream(seed, 2, shots as u64).random(),
-        );
-        sim.strike(cue, shot).map_err(|e| format!("strike: {e}"))?;
-        let mut summary = ShotSummary::default();
-        while let Some(e) = sim.step_event() {
-            summary.record(&e.kind, sim.numbers());
-        }
+        )?;
         let verdict = state.play(&summary, plan.call).map_err(|e| e.to_string())?;
         shots += 1;
         t.shots += 1;
