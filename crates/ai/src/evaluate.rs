@@ -229,7 +229,12 @@ impl Search<'_> {
             Mode::Lean => {
                 while let Some(e) = sim.step_event() {
                     summary.record(&e.kind, sim.numbers());
-                    if settled(self.state, cand.call, &summary) {
+                    // Only a first contact or a pocketing changes what `settled` reads.
+                    let changes = matches!(
+                        e.kind,
+                        EventKind::BallBall { .. } | EventKind::Pocketed { .. }
+                    );
+                    if changes && settled(self.state, cand.call, &summary) {
                         break;
                     }
                     if sim.event_count() - first > cap {
