@@ -95,7 +95,7 @@ pub struct Run<'c> {
 }
 
 /// What one thread reuses from sample to sample: the simulation (reset from the search's
-/// base) and the shot's summary (cleared), so a sample allocates neither.
+/// base) and the shot's summary (cleared), so a sample allocates neither anew.
 #[derive(Clone, Debug)]
 pub struct Scratch {
     /// The simulation a sample runs in.
@@ -231,6 +231,7 @@ impl Search<'_> {
         scratch: &mut Scratch,
     ) -> Option<(Option<Layout>, usize)> {
         let Scratch { sim, summary } = scratch;
+        summary.clear();
         self.reset(cand, sim)?;
         let mut rng = stream(self.seed, index, k);
         let shot = self.noise.apply(cand.shot, sim.params(), &mut rng);
@@ -239,7 +240,6 @@ impl Search<'_> {
             sim.set_record_history(true);
         }
         sim.strike(self.cue, shot).ok()?;
-        summary.clear();
         let mut layout = None;
         let cap = if self.state.next.break_shot {
             MAX_BREAK_EVENTS
@@ -407,16 +407,16 @@ impl Search<'_> {
             total += (r.samples.end.saturating_sub(r.samples.start)) as usize;
         }
         starts.push(total);
-        // One scratch simulation per rayon job, reset from the base for each sample.
+        // One scratch per rayon job, its simulation reset from the base for each sample.
         let samples: Vec<Stats> = (0..total)
             .into_par_iter()
             .map_init(
                 || Scratch::new(&self.base),
-                |sim, n| {
+                |scratch, n| {
                     let r = starts.partition_point(|&s| s <= n) - 1;
                     let run = &runs[r];
                     let k = run.samples.start + (n - starts[r]) as u64;
-                    self.sample(run.cand, run.stream, k, sim)
+                    self.sample(run.cand, run.stream, k, scratch)
                 },
             )
             .collect();
