@@ -218,8 +218,24 @@ fn ghost(b: Vec2, u: Vec2, from: Vec2, radius: f64) -> Option<(Vec2, Vec2, f64)>
 
 /// Straight and cut shots of each ball of `legal` into each pocket.
 pub fn direct_aims(layout: &Layout, legal: &[u8]) -> Vec<Aim> {
-    let (t, r) = (&layout.table, layout.radius);
     let mut out = Vec::new();
+    each_direct_aim(layout, legal, |aim, open| {
+        if open() {
+            out.push(aim);
+        }
+    });
+    out
+}
+
+/// Every geometric straight or cut shot of each ball of `legal` into each pocket, in the
+/// order of [`direct_aims`], handed to `f` with a test of whether its two lines are clear
+/// (the costly part, so a caller that does not need an aim need not run it).
+pub(crate) fn each_direct_aim(
+    layout: &Layout,
+    legal: &[u8],
+    mut f: impl FnMut(Aim, &dyn Fn() -> bool),
+) {
+    let (t, r) = (&layout.table, layout.radius);
     for &n in legal {
         let Some(b) = layout.ball(n) else { continue };
         for pocket in Pocket::ALL {
@@ -233,11 +249,9 @@ pub fn direct_aims(layout: &Layout, legal: &[u8]) -> Vec<Aim> {
             let Some((g, dir, cut_cos)) = ghost(b, u, layout.cue, r) else {
                 continue;
             };
-            if !layout.clear(layout.cue, g, &[CUE, n]) || !layout.clear(b, target, &[n]) {
-                continue;
-            }
+            let open = || layout.clear(layout.cue, g, &[CUE, n]) && layout.clear(b, target, &[n]);
             let (d1, d2) = ((g - layout.cue).length(), (target - b).length());
-            out.push(Aim {
+            let aim = Aim {
                 kind: ShotKind::Pot { ball: n, pocket },
                 angle: dir.angle(),
                 first: n,
@@ -246,10 +260,10 @@ pub fn direct_aims(layout: &Layout, legal: &[u8]) -> Vec<Aim> {
                 spread: d2 * (1.0 + d1 / (2.0 * r * cut_cos)),
                 tolerance: tol,
                 speed: speed_for(d1, d2, cut_cos),
-            });
+            };
+            f(aim, &open);
         }
     }
-    out
 }
 
 /// One-rail banks of the object ball and kicks of the cue ball, for each ball of `legal`.

@@ -7,7 +7,7 @@
 //! sigma))`. A floor on `sigma` (a quarter of the reference noise) keeps a noiseless
 //! player's estimates from saturating at 1, which would make every position look alike.
 
-use crate::candidates::{Aim, Layout, direct_aims};
+use crate::candidates::{Aim, Layout, each_direct_aim};
 use crate::noise::{Noise, erf};
 
 /// Smallest aim deviation the estimates assume, radians (a quarter of FastFiz's 0.125 deg).
@@ -28,15 +28,22 @@ pub fn aim_probability(aim: &Aim, noise: Noise) -> f64 {
 /// The best success probability among the straight and cut shots at the balls of `legal`
 /// from `layout`, under `noise` (0 when none is open).
 pub fn best_success(layout: &Layout, legal: &[u8], noise: Noise) -> f64 {
-    direct_aims(layout, legal)
-        .iter()
-        .map(|a| aim_probability(a, noise))
-        .fold(0.0, f64::max)
+    // The maximum over the open aims of `direct_aims`; an aim no better than the best so far
+    // cannot change it, so its lines are not checked.
+    let mut best = 0.0;
+    each_direct_aim(layout, legal, |aim, open| {
+        let p = aim_probability(&aim, noise);
+        if p > best && open() {
+            best = p;
+        }
+    });
+    best
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::candidates::direct_aims;
     use billiards_physics::{Table, Vec2};
 
     fn layout(cue: Vec2, balls: Vec<(u8, Vec2)>) -> Layout {
