@@ -12,6 +12,7 @@ use billiards_physics::{BallSetup, Simulation, Vec2};
 use billiards_rules::{CallRule, CueBall, Game, GameState, Seat};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use std::hash::{Hash, Hasher};
 use std::time::Instant;
 
 /// The cue ball and `n` object balls at random, 1 cm apart at least.
@@ -86,6 +87,8 @@ fn main() {
             runs.iter().map(|r| r.1 as f64).sum::<f64>() / n
         );
     }
+    // Every layout's decision hashed: a change that keeps the search exact keeps it.
+    let mut decisions = std::collections::hash_map::DefaultHasher::new();
     for n in [9u8, 15] {
         for cue_ball in [CueBall::AsItLies, CueBall::InHandAnywhere] {
             let (mut total, mut max, mut sims) = (0.0f64, 0.0f64, 0usize);
@@ -95,6 +98,7 @@ fn main() {
                 let start = Instant::now();
                 let d = decide(&st, &sim, level, seed).unwrap();
                 let secs = start.elapsed().as_secs_f64();
+                format!("{d:?}").hash(&mut decisions);
                 total += secs;
                 max = max.max(secs);
                 if let Decision::Shoot(p) = d {
@@ -109,4 +113,5 @@ fn main() {
             );
         }
     }
+    println!("decisions hash {:016x}", decisions.finish());
 }

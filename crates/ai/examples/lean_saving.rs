@@ -17,6 +17,7 @@ use billiards_ai::play::table_and_params;
 use billiards_ai::{Layout, Level};
 use billiards_physics::{BallSetup, Shot, Simulation, Vec2};
 use billiards_rules::{CueBall, Game, GameState, Seat};
+use std::hash::{Hash, Hasher};
 use std::time::Instant;
 
 fn main() {
@@ -74,6 +75,12 @@ fn main() {
         secs,
         n as f64 / secs
     );
+    // Every candidate's totals hashed: a change that keeps the search's values exact keeps it.
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    for s in &stats {
+        (s.n, s.value.to_bits(), s.pots, s.fouls, s.losses, s.events).hash(&mut h);
+    }
+    println!("stats hash {:016x}", h.finish());
 }
 
 /// `shots` of the bench's yardstick, on this thread: the same stream of random shots.

@@ -218,8 +218,45 @@ fn ghost(b: Vec2, u: Vec2, from: Vec2, radius: f64) -> Option<(Vec2, Vec2, f64)>
 
 /// Straight and cut shots of each ball of `legal` into each pocket.
 pub fn direct_aims(layout: &Layout, legal: &[u8]) -> Vec<Aim> {
-    let (t, r) = (&layout.table, layout.radius);
     let mut out = Vec::new();
+    each_direct_aim(layout, legal, true, |aim, lines| {
+        if lines.open(layout) {
+            out.push(aim);
+        }
+    });
+    out
+}
+
+/// The two lines a direct aim needs clear: the cue ball to the ghost ball, and the ball to
+/// its pocket.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Lines {
+    cue: Vec2,
+    ghost: Vec2,
+    ball: Vec2,
+    target: Vec2,
+    number: u8,
+}
+
+impl Lines {
+    /// Whether no other ball blocks either line (the costly part of an aim).
+    pub(crate) fn open(&self, layout: &Layout) -> bool {
+        layout.clear(self.cue, self.ghost, &[CUE, self.number])
+            && layout.clear(self.ball, self.target, &[self.number])
+    }
+}
+
+/// Every geometric straight or cut shot of each ball of `legal` into each pocket, in the
+/// order of [`direct_aims`], handed to `f` with the lines it needs clear, unchecked (so a
+/// caller that does not need an aim need not check them). Without `angles` each aim's
+/// `angle` is NaN (for callers that read only its spread, tolerance and speed).
+pub(crate) fn each_direct_aim(
+    layout: &Layout,
+    legal: &[u8],
+    angles: bool,
+    mut f: impl FnMut(Aim, Lines),
+) {
+    let (t, r) = (&layout.table, layout.radius);
     for &n in legal {
         let Some(b) = layout.ball(n) else { continue };
         for pocket in Pocket::ALL {
@@ -233,23 +270,37 @@ pub fn direct_aims(layout: &Layout, legal: &[u8]) -> Vec<Aim> {
             let Some((g, dir, cut_cos)) = ghost(b, u, layout.cue, r) else {
                 continue;
             };
-            if !layout.clear(layout.cue, g, &[CUE, n]) || !layout.clear(b, target, &[n]) {
-                continue;
-            }
             let (d1, d2) = ((g - layout.cue).length(), (target - b).length());
-            out.push(Aim {
+            let aim = Aim {
                 kind: ShotKind::Pot { ball: n, pocket },
-                angle: dir.angle(),
+                angle: if angles { dir.angle() } else { f64::NAN },
                 first: n,
                 object_dir: u,
                 // Aim error e moves the contact by d1 e, turning the ball by d1 e / (2R cos).
                 spread: d2 * (1.0 + d1 / (2.0 * r * cut_cos)),
                 tolerance: tol,
                 speed: speed_for(d1, d2, cut_cos),
-            });
+            };
+            let lines = Lines {
+                cue: layout.cue,
+                ghost: g,
+                ball: b,
+                target,
+                number: n,
+            };
+            f(aim, lines);
         }
     }
-    out
+}
+
+/// The best of `values` (each with its lines) whose lines are open in `layout`, 0 when
+/// none is positive and open: the values best first, the first open one.
+pub(crate) fn best_open(layout: &Layout, values: &mut [(f64, Lines)]) -> f64 {
+    values.sort_by(|a, b| b.0.total_cmp(&a.0));
+    values
+        .iter()
+        .find(|v| v.0 > 0.0 && v.1.open(layout))
+        .map_or(0.0, |v| v.0)
 }
 
 /// One-rail banks of the object ball and kicks of the cue ball, for each ball of `legal`.

@@ -94,6 +94,26 @@ pub struct Run<'c> {
     pub samples: std::ops::Range<u64>,
 }
 
+/// What one thread reuses from sample to sample: the simulation (reset from the search's
+/// base) and the shot's summary (cleared), so a sample allocates neither anew.
+#[derive(Clone, Debug)]
+pub struct Scratch {
+    /// The simulation a sample runs in.
+    pub sim: Simulation,
+    /// The summary of the sample's shot.
+    pub summary: ShotSummary,
+}
+
+impl Scratch {
+    /// A scratch for samples from `base`.
+    pub fn new(base: &Simulation) -> Self {
+        Self {
+            sim: base.clone(),
+            summary: ShotSummary::default(),
+        }
+    }
+}
+
 /// Everything a search shares: the rules' state, the resting table and the noise it plans
 /// under.
 #[derive(Clone, Debug)]
@@ -208,8 +228,10 @@ impl Search<'_> {
         cand: &Candidate,
         index: u64,
         k: u64,
-        sim: &mut Simulation,
-    ) -> Option<(ShotSummary, Option<Layout>, usize)> {
+        scratch: &mut Scratch,
+    ) -> Option<(Option<Layout>, usize)> {
+        let Scratch { sim, summary } = scratch;
+        summary.clear();
         self.reset(cand, sim)?;
         let mut rng = stream(self.seed, index, k);
         let shot = self.noise.apply(cand.shot, sim.params(), &mut rng);
@@ -218,7 +240,6 @@ impl Search<'_> {
             sim.set_record_history(true);
         }
         sim.strike(self.cue, shot).ok()?;
-        let mut summary = ShotSummary::default();
         let mut layout = None;
         let cap = if self.state.next.break_shot {
             MAX_BREAK_EVENTS
@@ -229,7 +250,12 @@ impl Search<'_> {
             Mode::Lean => {
                 while let Some(e) = sim.step_event() {
                     summary.record(&e.kind, sim.numbers());
-                    if settled(self.state, cand.call, &summary) {
+                    // Only a first contact or a pocketing changes what `settled` reads.
+                    let changes = matches!(
+                        e.kind,
+                        EventKind::BallBall { .. } | EventKind::Pocketed { .. }
+                    );
+                    if changes && settled(self.state, cand.call, summary) {
                         break;
                     }
                     if sim.event_count() - first > cap {
@@ -250,12 +276,12 @@ impl Search<'_> {
             }
             Mode::Full => {
                 let _ = sim.run_to_rest();
-                summary = summarise(sim.history().events(), sim.numbers());
+                *summary = summarise(sim.history().events(), sim.numbers());
                 layout = Layout::of(sim, None);
             }
         }
         let events = sim.event_count() - first;
-        Some((summary, layout, events))
+        Some((layout, events))
     }
 
     /// Draw `k` of candidate `index` run to rest (no early stop: the next shot is searched
@@ -285,9 +311,9 @@ impl Search<'_> {
         Some((sim, summary, events))
     }
 
-    /// One noisy sample of candidate `index` (draw `k`), scored, run in the scratch
-    /// simulation `sim` (reset from the base first, its buffers reused).
-    pub fn sample(&self, cand: &Candidate, index: u64, k: u64, sim: &mut Simulation) -> Stats {
+    /// One noisy sample of candidate `index` (draw `k`), scored, run in `scratch` (its
+    /// simulation reset from the base first, its buffers reused).
+    pub fn sample(&self, cand: &Candidate, index: u64, k: u64, scratch: &mut Scratch) -> Stats {
         let me = self.state.next.shooter;
         let foul = Stats {
             n: 1,
@@ -295,11 +321,12 @@ impl Search<'_> {
             fouls: 1,
             ..Stats::default()
         };
-        let Some((summary, layout, events)) = self.run(cand, index, k, sim) else {
+        let Some((layout, events)) = self.run(cand, index, k, scratch) else {
             return foul;
         };
+        let summary = &scratch.summary;
         let mut after = self.state.clone();
-        let Ok(verdict) = after.play(&summary, cand.call) else {
+        let Ok(verdict) = after.play(summary, cand.call) else {
             return Stats { events, ..foul };
         };
         let potted = summary.pocketed_object_balls().next().is_some();
@@ -380,16 +407,16 @@ impl Search<'_> {
             total += (r.samples.end.saturating_sub(r.samples.start)) as usize;
         }
         starts.push(total);
-        // One scratch simulation per rayon job, reset from the base for each sample.
+        // One scratch per rayon job, its simulation reset from the base for each sample.
         let samples: Vec<Stats> = (0..total)
             .into_par_iter()
             .map_init(
-                || self.base.clone(),
-                |sim, n| {
+                || Scratch::new(&self.base),
+                |scratch, n| {
                     let r = starts.partition_point(|&s| s <= n) - 1;
                     let run = &runs[r];
                     let k = run.samples.start + (n - starts[r]) as u64;
-                    self.sample(run.cand, run.stream, k, sim)
+                    self.sample(run.cand, run.stream, k, scratch)
                 },
             )
             .collect();

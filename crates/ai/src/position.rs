@@ -7,7 +7,7 @@
 //! sigma))`. A floor on `sigma` (a quarter of the reference noise) keeps a noiseless
 //! player's estimates from saturating at 1, which would make every position look alike.
 
-use crate::candidates::{Aim, Layout, direct_aims};
+use crate::candidates::{Aim, Layout, best_open, each_direct_aim};
 use crate::noise::{Noise, erf};
 
 /// Smallest aim deviation the estimates assume, radians (a quarter of FastFiz's 0.125 deg).
@@ -28,15 +28,19 @@ pub fn aim_probability(aim: &Aim, noise: Noise) -> f64 {
 /// The best success probability among the straight and cut shots at the balls of `legal`
 /// from `layout`, under `noise` (0 when none is open).
 pub fn best_success(layout: &Layout, legal: &[u8], noise: Noise) -> f64 {
-    direct_aims(layout, legal)
-        .iter()
-        .map(|a| aim_probability(a, noise))
-        .fold(0.0, f64::max)
+    // The maximum over the open aims of `direct_aims` (0 without one): only the lines of
+    // the best aims are checked, best first, up to the first open one.
+    let mut values = Vec::new();
+    each_direct_aim(layout, legal, false, |aim, lines| {
+        values.push((aim_probability(&aim, noise), lines));
+    });
+    best_open(layout, &mut values)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::candidates::direct_aims;
     use billiards_physics::{Table, Vec2};
 
     fn layout(cue: Vec2, balls: Vec<(u8, Vec2)>) -> Layout {

@@ -40,6 +40,25 @@ pub struct ShotSummary {
 }
 
 impl ShotSummary {
+    /// Back to the summary of no shot ([`Default`]), keeping the lists' buffers.
+    pub fn clear(&mut self) {
+        // Every field named, so a new one cannot be missed.
+        let ShotSummary {
+            first_contact,
+            rails_after_contact,
+            rails,
+            cue_rail,
+            pocketed,
+            jaws,
+        } = self;
+        *first_contact = None;
+        rails_after_contact.clear();
+        rails.clear();
+        *cue_rail = false;
+        pocketed.clear();
+        jaws.clear();
+    }
+
     /// The cue ball was pocketed (rule 6.1).
     pub fn scratch(&self) -> bool {
         self.pocketed.iter().any(|&(b, _)| b == CUE)

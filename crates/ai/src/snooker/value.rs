@@ -3,7 +3,7 @@
 //! their worth), and where to put the cue ball in hand in the D.
 
 use super::search::Snook;
-use crate::candidates::{Layout, direct_aims};
+use crate::candidates::{Layout, best_open, each_direct_aim};
 use crate::noise::Noise;
 use crate::position::aim_probability;
 use billiards_physics::{Simulation, SnookerMarks, Vec2};
@@ -39,10 +39,13 @@ pub(super) fn worth(n: u8) -> f64 {
 /// best straight or cut pot of a ball of `on`, its chance times the ball's worth and the
 /// continuation (the pool search's one-ply position value, weighted by the balls' values).
 pub fn chance(layout: &Layout, on: &[u8], noise: Noise) -> f64 {
-    direct_aims(layout, on)
-        .iter()
-        .map(|a| aim_probability(a, noise) * (worth(a.first) + CONTINUATION))
-        .fold(0.0, f64::max)
+    // The maximum over the open aims (0 without one), best first up to the first open one.
+    let mut values = Vec::new();
+    each_direct_aim(layout, on, false, |a, lines| {
+        let v = aim_probability(&a, noise) * (worth(a.first) + CONTINUATION);
+        values.push((v, lines));
+    });
+    best_open(layout, &mut values)
 }
 
 /// [`chance`] with the cue ball in hand: the best of three places in the D (behind the
