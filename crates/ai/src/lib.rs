@@ -43,7 +43,7 @@ pub mod twoply;
 
 pub use candidates::{Candidate, Layout, ShotKind};
 pub use evaluate::{Mode, Stats};
-pub use level::{Budget, Level, TwoPly, UnknownLevel};
+pub use level::{Breaks, Budget, Level, TwoPly, UnknownLevel};
 pub use noise::Noise;
 pub use search::{decide, decide_planned, decide_with};
 pub use snooker::{SnookerDecision, SnookerPlan, decide_snooker};

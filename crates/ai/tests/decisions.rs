@@ -239,3 +239,63 @@ fn after_a_push_out_it_shoots_what_it_can_play_and_passes_back_a_walled_in_one()
         }
     }
 }
+
+/// The break (WPA 9-ball 2.3, 1.5): on each table size every searching player breaks from a
+/// legal place on the head string, at one of its own places, speeds and tip heights, full
+/// on the 1; the one-ply baseline keeps the break it had before the two-ply levels (three
+/// places each side, 8 to 12 m/s, stun or a little draw), so it stays the same yardstick.
+#[test]
+fn every_searching_player_breaks_legally_from_its_own_break_set() {
+    use billiards_ai::{Breaks, Player, play::table_and_params_on};
+    use billiards_physics::TableChoice;
+    use billiards_rules::RackStyle;
+    let narrow = Level::one_ply().breaks;
+    assert_eq!(
+        (narrow.places, narrow.speeds, narrow.heights),
+        (
+            &[0.0, 0.25, 0.75][..],
+            &[8.0, 10.0, 12.0][..],
+            &[0.0, -0.2][..]
+        )
+    );
+    assert_eq!((narrow.samples, narrow.rounds), (8, &[(3, 32)][..]));
+    let players: [(Player, Breaks); 3] = [
+        (Player::OnePly, narrow),
+        (Player::Computer(Level::Hard), Level::Hard.budget().breaks),
+        (
+            Player::Computer(Level::Expert),
+            Level::Expert.budget().breaks,
+        ),
+    ];
+    for choice in ["7ft", "8ft", "9ft"] {
+        let choice: TableChoice = choice.parse().unwrap();
+        let (t, params) = table_and_params_on(choice);
+        let balls = Game::NineBall.rack_styled(&t, &params.ball, 5, RackStyle::Template);
+        let sim = billiards_physics::Simulation::new(t, params, &balls).unwrap();
+        let state = GameState::new(Game::NineBall, Seat::A);
+        let one = balls.iter().find(|b| b.number == 1).unwrap().position;
+        let half = t.centre_bounds(params.ball.radius).y;
+        for (player, breaks) in players {
+            let plan = shoot(player.decide(&state, &sim, 11).unwrap());
+            assert_eq!(plan.kind, ShotKind::Break, "{choice:?} {player}");
+            let p = plan.place.expect("the breaker places the cue ball");
+            let cue = sim.numbers().iter().position(|&n| n == 0).unwrap();
+            assert!(
+                check_placement(&sim, cue, p, CueBall::InHandBehindHeadString).is_ok(),
+                "{choice:?} {player}: {p:?}"
+            );
+            let f = ((p - t.head_spot()).y / half).abs();
+            assert!(
+                breaks.places.iter().any(|&q| (q - f).abs() < 1e-9),
+                "{choice:?} {player}: place {f} not in {:?}",
+                breaks.places
+            );
+            assert!(breaks.speeds.contains(&plan.shot.speed), "{player}");
+            assert!(breaks.heights.contains(&plan.shot.tip.height), "{player}");
+            // Full on the 1: the aim passes through its centre.
+            let aim = Vec2::new(plan.shot.angle.cos(), plan.shot.angle.sin());
+            let to_one = one - p;
+            assert!(aim.perp_dot(to_one).abs() < 1e-9, "{choice:?} {player}");
+        }
+    }
+}
