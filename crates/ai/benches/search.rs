@@ -15,55 +15,29 @@
 //! per sample (and the second core) against a bare simulation's. Figures in
 //! crates/ai/README.md (Speed).
 
-use billiards_ai::candidates::{Candidate, combo_aims, direct_aims, expand, rail_aims, safeties};
+#[path = "../examples/fixture/mod.rs"]
+mod fixture;
+
+use billiards_ai::candidates::Candidate;
 use billiards_ai::evaluate::{Mode, Search};
 use billiards_ai::play::table_and_params;
-use billiards_ai::{Layout, Level, decide};
-use billiards_physics::{BallSetup, Params, Shot, Simulation, Table, Vec2};
-use billiards_rules::{CueBall, Game, GameState, Seat};
+use billiards_ai::{Level, decide};
+use billiards_physics::{Params, Simulation, Table};
+use billiards_rules::{CueBall, GameState};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Instant;
 
-/// A 9-ball table after the break: six balls left, the 2 lowest, the cue ball mid-table; on
-/// the game's table (spin model, jaws) or, with `paper`, on the solver's default one (the
-/// paper's model, pocket mouths without jaws: the set-up of the 90,000 shots a second).
+/// The bench's mid-game layout on the game's table (spin model, jaws) or, with `paper`, on
+/// the solver's default one (the paper's model, pocket mouths without jaws: the set-up of the
+/// issue's 90,000 shots a second).
 fn mid_game(paper: bool) -> (GameState, Simulation) {
-    let balls = [
-        (0, Vec2::new(-0.35, 0.05)),
-        (2, Vec2::new(0.25, 0.30)),
-        (3, Vec2::new(0.62, -0.21)),
-        (5, Vec2::new(-0.71, -0.38)),
-        (6, Vec2::new(0.05, -0.44)),
-        (8, Vec2::new(0.88, 0.12)),
-        (9, Vec2::new(0.45, 0.02)),
-    ];
-    let (table, params) = if paper {
-        (Table::wpa_8ft(), Params::default())
+    if paper {
+        fixture::mid_game(Table::wpa_8ft(), Params::default())
     } else {
-        table_and_params()
-    };
-    let setups: Vec<BallSetup> = balls.iter().map(|&(n, p)| BallSetup::at(n, p)).collect();
-    let sim = Simulation::new(table, params, &setups).unwrap();
-    let mut state = GameState::new(Game::NineBall, Seat::A);
-    state.on_table = vec![2, 3, 5, 6, 8, 9];
-    state.next.break_shot = false;
-    state.next.cue_ball = CueBall::AsItLies;
-    state.next.legal_first = vec![2];
-    (state, sim)
-}
-
-/// The hard level's candidates on that table: every pot, bank, kick, combination and
-/// safety in its speeds and tips.
-fn candidates(sim: &Simulation) -> Vec<Candidate> {
-    let layout = Layout::of(sim, None).unwrap();
-    let budget = Level::Hard.budget();
-    let mut aims = direct_aims(&layout, &[2]);
-    aims.extend(rail_aims(&layout, &[2]));
-    aims.extend(combo_aims(&layout, &[2], &[3, 5, 6, 8, 9]));
-    let mut c = expand(&aims, budget.speeds, budget.tips, false, None);
-    c.extend(safeties(&layout, &[2], budget.safeties, None));
-    c
+        let (table, params) = table_and_params();
+        fixture::mid_game(table, params)
+    }
 }
 
 fn search<'a>(state: &'a GameState, sim: &Simulation, mode: Mode) -> Search<'a> {
@@ -84,19 +58,12 @@ fn search<'a>(state: &'a GameState, sim: &Simulation, mode: Mode) -> Search<'a> 
 /// on, `shots` of them from the stream `x` (xorshift64, no dependency; it goes on from call
 /// to call). Returns shots a second and events a shot.
 fn yardstick(sim: &Simulation, shots: usize, x: &mut u64) -> (f64, f64) {
-    let mut uniform = || {
-        *x ^= *x << 13;
-        *x ^= *x >> 7;
-        *x ^= *x << 17;
-        (*x >> 11) as f64 / (1u64 << 53) as f64
-    };
     let mut events = 0;
     let start = Instant::now();
     for _ in 0..shots {
         let mut s = sim.clone();
         s.set_record_history(true);
-        let shot = Shot::new(uniform() * std::f64::consts::TAU, 0.1 + 7.9 * uniform());
-        s.strike(0, shot).unwrap();
+        s.strike(0, fixture::yardstick_shot(x)).unwrap();
         s.run_to_rest().unwrap();
         events += s.history().events().len();
     }
@@ -131,7 +98,7 @@ fn compare_modes(state: &GameState, sim: &Simulation, cands: &[Candidate]) {
         search(state, sim, Mode::Full),
         search(state, sim, Mode::Lean),
     );
-    let mut x: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut x = fixture::YARDSTICK_SEED;
     let (mut f, mut l, mut y, mut ratios) = (vec![], vec![], vec![], vec![]);
     let mut events = (0.0, 0.0, 0.0);
     for _ in 0..ROUNDS {
@@ -187,7 +154,7 @@ fn throughput(c: &mut Criterion) {
     g.sample_size(10);
     for (table, paper) in [("game_table", false), ("paper_table", true)] {
         let (state, sim) = mid_game(paper);
-        let cands = candidates(&sim);
+        let cands = fixture::hard_candidates(&sim);
         println!("{table}: {} candidates", cands.len());
         compare_modes(&state, &sim, &cands);
         let samples = 8;

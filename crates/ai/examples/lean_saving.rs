@@ -11,12 +11,12 @@
 //!     --callgrind-out-file=/tmp/cg.$m target/release/examples/lean_saving $m 4; done
 //! ```
 
-use billiards_ai::candidates::{combo_aims, direct_aims, expand, rail_aims, safeties};
+mod fixture;
+
+use billiards_ai::Level;
 use billiards_ai::evaluate::{Mode, Search};
 use billiards_ai::play::table_and_params;
-use billiards_ai::{Layout, Level};
-use billiards_physics::{BallSetup, Shot, Simulation, Vec2};
-use billiards_rules::{CueBall, Game, GameState, Seat};
+use billiards_physics::Simulation;
 use std::hash::{Hash, Hasher};
 use std::time::Instant;
 
@@ -28,31 +28,10 @@ fn main() {
         _ => Mode::Lean,
     };
     let samples: u64 = args.get(1).map_or(16, |s| s.parse().expect("samples"));
-    let balls = [
-        (0, Vec2::new(-0.35, 0.05)),
-        (2, Vec2::new(0.25, 0.30)),
-        (3, Vec2::new(0.62, -0.21)),
-        (5, Vec2::new(-0.71, -0.38)),
-        (6, Vec2::new(0.05, -0.44)),
-        (8, Vec2::new(0.88, 0.12)),
-        (9, Vec2::new(0.45, 0.02)),
-    ];
     let (table, params) = table_and_params();
-    let setups: Vec<BallSetup> = balls.iter().map(|&(n, p)| BallSetup::at(n, p)).collect();
-    let mut base = Simulation::new(table, params, &setups).expect("layout");
+    let (state, mut base) = fixture::mid_game(table, params);
     base.set_record_history(false);
-    let mut state = GameState::new(Game::NineBall, Seat::A);
-    state.on_table = vec![2, 3, 5, 6, 8, 9];
-    state.next.break_shot = false;
-    state.next.cue_ball = CueBall::AsItLies;
-    state.next.legal_first = vec![2];
-    let layout = Layout::of(&base, None).expect("cue ball");
-    let budget = Level::Hard.budget();
-    let mut aims = direct_aims(&layout, &[2]);
-    aims.extend(rail_aims(&layout, &[2]));
-    aims.extend(combo_aims(&layout, &[2], &[3, 5, 6, 8, 9]));
-    let mut cands = expand(&aims, budget.speeds, budget.tips, false, None);
-    cands.extend(safeties(&layout, &[2], budget.safeties, None));
+    let cands = fixture::hard_candidates(&base);
     if yard {
         return yardstick(&base, cands.len() * samples as usize);
     }
@@ -85,13 +64,7 @@ fn main() {
 
 /// `shots` of the bench's yardstick, on this thread: the same stream of random shots.
 fn yardstick(base: &Simulation, shots: usize) {
-    let mut x: u64 = 0x9e37_79b9_7f4a_7c15;
-    let mut uniform = || {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut x = fixture::YARDSTICK_SEED;
     // As the bench's table: built with its history on.
     let mut on = base.clone();
     on.set_record_history(true);
@@ -100,8 +73,8 @@ fn yardstick(base: &Simulation, shots: usize) {
     for _ in 0..shots {
         let mut s = on.clone();
         s.set_record_history(true);
-        let shot = Shot::new(uniform() * std::f64::consts::TAU, 0.1 + 7.9 * uniform());
-        s.strike(0, shot).expect("a shot in the contract");
+        s.strike(0, fixture::yardstick_shot(&mut x))
+            .expect("a shot in the contract");
         s.run_to_rest().expect("comes to rest");
         events += s.history().events().len();
     }
