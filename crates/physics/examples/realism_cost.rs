@@ -10,6 +10,11 @@
 //! `--only han|reflection|mathavan|alciatore` runs that variant alone, for an instruction
 //! count that a loaded machine cannot disturb (`valgrind --tool=callgrind`: run 5 and 55
 //! breaks, the difference over 50 is one break's count).
+//!
+//! `--spread` runs 64 breaks instead of the one (the cue ball at eight places across the
+//! head string, at 7, 8, 9 and 10 m/s, aimed at the 1-ball's centre and half a radius beside it), each
+//! `BREAKS / 64` times a round: a break is chaotic, so one break's events (and with them its
+//! cost) differ between cushion models by chance; 64 give the cost of a typical break.
 
 use billiards_physics::*;
 use std::time::Instant;
@@ -20,14 +25,19 @@ fn main() {
         .iter()
         .position(|a| a == "--only")
         .map(|i| args.get(i + 1).cloned().unwrap_or_default());
+    let spread = args.iter().any(|a| a == "--spread");
     let usage = || -> ! {
         eprintln!(
-            "usage: realism_cost [BREAKS] [--only han|reflection|mathavan|alciatore], \
-             BREAKS a positive integer"
+            "usage: realism_cost [BREAKS] [--only han|reflection|mathavan|alciatore] \
+             [--spread], BREAKS a positive integer"
         );
         std::process::exit(2);
     };
-    let n: usize = match args.first().filter(|a| *a != "--only").map(|s| s.parse()) {
+    let n: usize = match args
+        .first()
+        .filter(|a| !a.starts_with("--"))
+        .map(|s| s.parse())
+    {
         None => 300,
         Some(Ok(n)) if n > 0 => n,
         Some(_) => usage(),
@@ -66,35 +76,58 @@ fn main() {
         },
     };
     let table = Table::wpa_8ft();
-    let sims: Vec<Simulation> = variants
+    // (cue ball across the head string in metres, speed m/s, aim
+    // off the 1-ball's centre in radii): the one break, or 64.
+    let breaks: Vec<(f64, f64, f64)> = if spread {
+        let mut v = Vec::new();
+        for i in 0..8 {
+            for speed in [7.0, 8.0, 9.0, 10.0] {
+                for off in [0.0, 0.5] {
+                    v.push(((-0.7 + 0.2 * f64::from(i)) * 0.5 * table.width, speed, off));
+                }
+            }
+        }
+        v
+    } else {
+        vec![(0.1, 8.0, 0.0)]
+    };
+    let sims: Vec<Vec<Simulation>> = variants
         .iter()
         .map(|&(_, model)| {
             let params = Params {
                 model: Model::Spin(model),
                 ..Params::default()
             };
-            let mut balls = Rack::NineBall.layout(&table, &params.ball);
-            balls[0].position = Vec2::new(-0.25 * table.length, 0.1);
-            let aim = (balls[1].position - balls[0].position).angle();
-            let mut sim = Simulation::new(table, params, &balls).expect("a valid break");
-            sim.strike(0, Shot::new(aim, 8.0)).expect("a valid shot");
-            sim
+            breaks
+                .iter()
+                .map(|&(y, speed, off)| {
+                    let radius = params.ball.radius;
+                    let mut balls = Rack::NineBall.layout(&table, &params.ball);
+                    balls[0].position = Vec2::new(-0.25 * table.length, y);
+                    let to = balls[1].position - balls[0].position;
+                    // `off` radii beside the centre: `off R / |to|` radians (small-angle).
+                    let aim = to.angle() + off * radius / to.length();
+                    let mut sim = Simulation::new(table, params, &balls).expect("a valid break");
+                    sim.strike(0, Shot::new(aim, speed)).expect("a valid shot");
+                    sim
+                })
+                .collect()
         })
         .collect();
     // Rounds interleave the variants and each keeps its fastest round, so a busy machine's
     // load (shared cores) slows every variant alike or is filtered out.
     const ROUNDS: usize = 5;
-    let per_round = n.div_ceil(ROUNDS);
+    let per_round = n.div_ceil(ROUNDS).div_ceil(breaks.len());
     let mut best = vec![f64::INFINITY; sims.len()];
-    let mut counts = vec![(0, 0); sims.len()];
+    let mut counts = vec![(0.0, 0.0); sims.len()];
     for _ in 0..ROUNDS {
-        for (k, sim) in sims.iter().enumerate() {
+        for (k, set) in sims.iter().enumerate() {
             if !chosen.contains(&k) {
                 continue;
             }
             let start = Instant::now();
             let (mut events, mut cushions) = (0, 0);
-            for _ in 0..per_round {
+            for sim in (0..per_round).flat_map(|_| set) {
                 let mut s = sim.clone();
                 s.run_to_rest().expect("the break comes to rest");
                 events += s.history().events().len();
@@ -105,9 +138,10 @@ fn main() {
                     .filter(|e| matches!(e.kind, EventKind::Cushion { .. }))
                     .count();
             }
-            let us = start.elapsed().as_secs_f64() / per_round as f64 * 1e6;
+            let runs = per_round * set.len();
+            let us = start.elapsed().as_secs_f64() / runs as f64 * 1e6;
             best[k] = best[k].min(us);
-            counts[k] = (events / per_round, cushions / per_round);
+            counts[k] = (events as f64 / runs as f64, cushions as f64 / runs as f64);
         }
     }
     for (k, (name, _)) in variants.iter().enumerate() {
@@ -116,7 +150,7 @@ fn main() {
         }
         let (us, (events, cushions)) = (best[k], counts[k]);
         println!(
-            "{name:<38} {us:>8.1} us per break ({:.2}x), {:>5.0} ns per event, {events} events and {cushions} cushion contacts a break",
+            "{name:<38} {us:>8.1} us per break ({:.2}x), {:>5.0} ns per event, {events:.1} events and {cushions:.1} cushion contacts a break",
             us / if best[0].is_finite() { best[0] } else { us },
             us * 1e3 / events as f64,
         );
