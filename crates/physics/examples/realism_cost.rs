@@ -152,7 +152,7 @@ fn main() {
         println!(
             "{name:<38} {us:>8.1} us per break ({:.2}x), {:>5.0} ns per event, {events:.1} events and {cushions:.1} cushion contacts a break",
             us / if best[0].is_finite() { best[0] } else { us },
-            us * 1e3 / events as f64,
+            us * 1e3 / events,
         );
     }
 }
