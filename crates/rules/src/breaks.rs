@@ -211,6 +211,35 @@ pub fn one_break(
     rng: &mut ChaCha8Rng,
 ) -> Result<BreakOutcome, BreakError> {
     let err = |e: &dyn fmt::Display| BreakError(e.to_string());
+    let sim = break_run(spec, params, rng)?;
+    let summary = summarise(sim.history().events(), sim.numbers());
+    let verdict = GameState::new(spec.game, Seat::A)
+        .play(&summary, Call::None)
+        .map_err(|e| err(&e))?;
+    let down = summary.pocketed_object_balls().count();
+    let illegal = verdict
+        .fouls
+        .iter()
+        .any(|f| matches!(f, Foul::IllegalBreak { .. }));
+    let money = if spec.game == Game::NineBall { 9 } else { 8 };
+    Ok(BreakOutcome {
+        balls: down,
+        scratch: summary.scratch(),
+        legal: !illegal,
+        success: down > 0 && verdict.legal(),
+        money_ball: summary.pocket_of(money).is_some(),
+        events: sim.history().events().len(),
+    })
+}
+
+/// [`one_break`]'s break run to rest, with its history, not judged: the same draws from
+/// `rng`, for a study of what the balls did.
+pub fn break_run(
+    spec: &BreakSpec,
+    params: &Params,
+    rng: &mut ChaCha8Rng,
+) -> Result<Simulation, BreakError> {
+    let err = |e: &dyn fmt::Display| BreakError(e.to_string());
     let table = spec.table.table().with_jaws(0.015);
     let seed = rng.random();
     let mut balls: Vec<BallSetup> = match spec.game {
@@ -238,24 +267,7 @@ pub fn one_break(
     };
     sim.strike(0, shot).map_err(|e| err(&e))?;
     sim.run_to_rest().map_err(|e| err(&e))?;
-    let summary = summarise(sim.history().events(), sim.numbers());
-    let verdict = GameState::new(spec.game, Seat::A)
-        .play(&summary, Call::None)
-        .map_err(|e| err(&e))?;
-    let down = summary.pocketed_object_balls().count();
-    let illegal = verdict
-        .fouls
-        .iter()
-        .any(|f| matches!(f, Foul::IllegalBreak { .. }));
-    let money = if spec.game == Game::NineBall { 9 } else { 8 };
-    Ok(BreakOutcome {
-        balls: down,
-        scratch: summary.scratch(),
-        legal: !illegal,
-        success: down > 0 && verdict.legal(),
-        money_ball: summary.pocket_of(money).is_some(),
-        events: sim.history().events().len(),
-    })
+    Ok(sim)
 }
 
 /// Counts over a set of breaks: whole numbers only, so sets add up in any order.
