@@ -91,16 +91,16 @@ fn worst_against_reference(shots: &[(Vec2, Vec3)], m: &Mathavan2010) -> (f64, us
 }
 
 #[test]
-fn the_default_is_within_1e5_of_a_reference_with_100_times_smaller_steps() {
-    // The stated accuracy of Accuracy::DEFAULT (Dormand-Prince 5(4), 3e-6 a step) over the
-    // 38 test shots: measured 5.0e-6 (printed), pinned below 1e-5 of the incoming speed.
+fn the_default_is_within_2e4_of_a_reference_with_100_times_smaller_steps() {
+    // The stated accuracy of Accuracy::DEFAULT (Dormand-Prince 5(4), 1e-4 a step) over the
+    // 38 test shots: measured 1.1e-4 (printed), pinned below 2e-4 of the incoming speed.
     let shots: Vec<_> = shots()
         .into_iter()
         .map(|(speed, alpha, top, side)| shot(speed, alpha, top, side))
         .collect();
     let (worst, most) = worst_against_reference(&shots, &paper());
     println!("largest relative difference: {worst:e}; at most {most} rate evaluations");
-    assert!(worst < 1e-5, "{worst:e}");
+    assert!(worst < 2e-4, "{worst:e}");
 }
 
 #[test]
@@ -286,6 +286,6 @@ fn a_slow_slip_slaved_to_its_growing_direction_matches_the_reference() {
         stats.evaluations, stats.slaved
     );
     assert!(stats.slaved > 0);
-    assert!(err < 1e-5, "{err:e}");
+    assert!(err < 2e-4, "{err:e}");
     assert!(stats.evaluations < 450, "{}", stats.evaluations);
 }
