@@ -11,12 +11,13 @@ use super::range::{ClampNote, ParamRange};
 #[serde(rename_all = "snake_case")]
 pub enum CushionChoice {
     /// Han (2005): impulse at the nose height with friction; english changes the rebound.
-    #[default]
     Han2005,
     /// Plain reflection with restitution (no spin effect).
     Reflect,
     /// Mathavan, Jackson and Parkin (2010): the impact integrated with slip at the nose and
-    /// the cloth; fits their high-speed camera data best below 2.5 m/s (docs/realism.md).
+    /// the cloth; fits their high-speed camera data best below 2.5 m/s (docs/realism.md), so
+    /// the game's default.
+    #[default]
     Mathavan2010,
 }
 
@@ -34,8 +35,8 @@ impl CushionChoice {
     }
 
     /// The restitution and nose friction its authors fitted, loaded into the panel's shared
-    /// sliders when the model is chosen: Mathavan et al. 2010 (e 0.98, mu 0.14), Han 2005 as
-    /// the game's defaults (0.85, 0.2). `None`: keep the sliders.
+    /// sliders when the model is chosen: Mathavan et al. 2010 (e 0.98, mu 0.14, the game's
+    /// defaults), Han 2005 as the game had them before (0.85, 0.2). `None`: keep the sliders.
     pub fn fitted(self) -> Option<(f64, f64)> {
         match self {
             Self::Han2005 => Some((0.85, 0.2)),
@@ -223,13 +224,14 @@ impl Default for PhysicsSettings {
             mu_roll: 0.01,
             slide_roll_speed: 0.5,
             e_ball: 0.95,
-            e_cushion: 0.85,
+            // Mathavan et al.'s fit (the default cushion's; `CushionChoice::fitted`).
+            e_cushion: 0.98,
             mu_spin: spin.mu_spin,
             mu_ball: spin.mu_ball,
             ball_friction: BallFrictionChoice::Constant,
             shaft: ShaftChoice::NoSquirt,
-            cushion: CushionChoice::Han2005,
-            mu_cushion: 0.2,
+            cushion: CushionChoice::Mathavan2010,
+            mu_cushion: 0.14,
             cushion_height: spin.cushion_height,
             cue_mass: spin.cue_mass,
             jaws: true,
