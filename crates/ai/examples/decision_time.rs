@@ -4,20 +4,38 @@
 //! ```sh
 //! cargo run --release -p billiards-ai --example decision_time -- hard 20
 //! cargo run --release -p billiards-ai --example decision_time -- expert 10
+//! cargo run --release -p billiards-ai --example decision_time -- hard 20 --mathavan
 //! ```
+//!
+//! `--mathavan`: on Mathavan 2010's cushion, the game's default, instead of the tournaments'
+//! Han 2005 (`billiards_ai::play::table_and_params`).
 
 use billiards_ai::play::table_and_params;
 use billiards_ai::{Decision, Level, decide};
-use billiards_physics::{BallSetup, Simulation, Vec2};
+use billiards_physics::{BallSetup, CushionModel, Model, Params, Simulation, Table, Vec2};
 use billiards_rules::{CallRule, CueBall, Game, GameState, Seat};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::hash::{Hash, Hasher};
 use std::time::Instant;
 
+/// Whether `--mathavan` was given.
+static MATHAVAN: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+
+/// The tournaments' table and physics, with Mathavan's cushion under `--mathavan`.
+fn table_and_physics() -> (Table, Params) {
+    let (table, mut params) = table_and_params();
+    if *MATHAVAN.get().unwrap_or(&false)
+        && let Model::Spin(m) = &mut params.model
+    {
+        m.cushion = CushionModel::MATHAVAN_2010;
+    }
+    (table, params)
+}
+
 /// The cue ball and `n` object balls at random, 1 cm apart at least.
 fn layout(n: u8, seed: u64) -> Simulation {
-    let (table, params) = table_and_params();
+    let (table, params) = table_and_physics();
     let r = params.ball.radius;
     let b = table.centre_bounds(r) * 0.95;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
@@ -57,7 +75,7 @@ fn state(n: u8, cue_ball: CueBall) -> GameState {
 
 /// The break of `game`'s rack from `seed`: its decision time and noisy simulations.
 fn break_decision(game: Game, level: Level, seed: u64) -> (f64, usize) {
-    let (table, params) = table_and_params();
+    let (table, params) = table_and_physics();
     let balls = game.rack(&table, &params.ball, seed);
     let sim = Simulation::new(table, params, &balls).unwrap();
     let state = GameState::new(game, Seat::A);
@@ -71,10 +89,21 @@ fn break_decision(game: Game, level: Level, seed: u64) -> (f64, usize) {
 }
 
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let mathavan = args.iter().any(|a| a == "--mathavan");
+    args.retain(|a| a != "--mathavan");
+    MATHAVAN.set(mathavan).expect("set once");
     let level: Level = args.first().map_or(Ok(Level::Hard), |s| s.parse()).unwrap();
     let count: u64 = args.get(1).map_or(20, |s| s.parse().unwrap());
-    println!("{level}, {} threads", rayon::current_num_threads());
+    println!(
+        "{level}, {} threads, {} cushion",
+        rayon::current_num_threads(),
+        if mathavan {
+            "Mathavan 2010"
+        } else {
+            "Han 2005"
+        }
+    );
     for game in [Game::NineBall, Game::EightBall] {
         let runs: Vec<(f64, usize)> = (0..count.min(5))
             .map(|seed| break_decision(game, level, seed))
