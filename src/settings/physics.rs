@@ -219,19 +219,22 @@ impl Default for PhysicsSettings {
     fn default() -> Self {
         // Typical values from docs/physics reference (pooltool, FastFiz, Alciatore).
         let spin = SpinModel::default();
+        let cushion = CushionChoice::default();
+        // The default cushion's fitted constants (Mathavan et al.: e 0.98, mu 0.14); a default
+        // without a fit (reflection) would start from Han's.
+        let (e_cushion, mu_cushion) = cushion.fitted().unwrap_or((0.85, 0.2));
         Self {
             mu_slide: 0.2,
             mu_roll: 0.01,
             slide_roll_speed: 0.5,
             e_ball: 0.95,
-            // Mathavan et al.'s fit (the default cushion's; `CushionChoice::fitted`).
-            e_cushion: 0.98,
+            e_cushion,
             mu_spin: spin.mu_spin,
             mu_ball: spin.mu_ball,
             ball_friction: BallFrictionChoice::Constant,
             shaft: ShaftChoice::NoSquirt,
-            cushion: CushionChoice::Mathavan2010,
-            mu_cushion: 0.14,
+            cushion,
+            mu_cushion,
             cushion_height: spin.cushion_height,
             cue_mass: spin.cue_mass,
             jaws: true,
