@@ -19,23 +19,18 @@ use rand_chacha::ChaCha8Rng;
 use std::hash::{Hash, Hasher};
 use std::time::Instant;
 
-/// Whether `--mathavan` was given.
-static MATHAVAN: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
-
-/// The tournaments' table and physics, with Mathavan's cushion under `--mathavan`.
-fn table_and_physics() -> (Table, Params) {
+/// The tournaments' table and physics, with Mathavan's cushion if `mathavan`.
+fn table_and_physics(mathavan: bool) -> (Table, Params) {
     let (table, mut params) = table_and_params();
-    if *MATHAVAN.get().unwrap_or(&false)
-        && let Model::Spin(m) = &mut params.model
-    {
+    if mathavan && let Model::Spin(m) = &mut params.model {
         m.cushion = CushionModel::MATHAVAN_2010;
     }
     (table, params)
 }
 
 /// The cue ball and `n` object balls at random, 1 cm apart at least.
-fn layout(n: u8, seed: u64) -> Simulation {
-    let (table, params) = table_and_physics();
+fn layout(n: u8, seed: u64, mathavan: bool) -> Simulation {
+    let (table, params) = table_and_physics(mathavan);
     let r = params.ball.radius;
     let b = table.centre_bounds(r) * 0.95;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
@@ -74,8 +69,8 @@ fn state(n: u8, cue_ball: CueBall) -> GameState {
 }
 
 /// The break of `game`'s rack from `seed`: its decision time and noisy simulations.
-fn break_decision(game: Game, level: Level, seed: u64) -> (f64, usize) {
-    let (table, params) = table_and_physics();
+fn break_decision(game: Game, level: Level, seed: u64, mathavan: bool) -> (f64, usize) {
+    let (table, params) = table_and_physics(mathavan);
     let balls = game.rack(&table, &params.ball, seed);
     let sim = Simulation::new(table, params, &balls).unwrap();
     let state = GameState::new(game, Seat::A);
@@ -92,7 +87,6 @@ fn main() {
     let mut args: Vec<String> = std::env::args().skip(1).collect();
     let mathavan = args.iter().any(|a| a == "--mathavan");
     args.retain(|a| a != "--mathavan");
-    MATHAVAN.set(mathavan).expect("set once");
     let level: Level = args.first().map_or(Ok(Level::Hard), |s| s.parse()).unwrap();
     let count: u64 = args.get(1).map_or(20, |s| s.parse().unwrap());
     println!(
@@ -106,7 +100,7 @@ fn main() {
     );
     for game in [Game::NineBall, Game::EightBall] {
         let runs: Vec<(f64, usize)> = (0..count.min(5))
-            .map(|seed| break_decision(game, level, seed))
+            .map(|seed| break_decision(game, level, seed, mathavan))
             .collect();
         let n = runs.len() as f64;
         println!(
@@ -122,7 +116,7 @@ fn main() {
         for cue_ball in [CueBall::AsItLies, CueBall::InHandAnywhere] {
             let (mut total, mut max, mut sims) = (0.0f64, 0.0f64, 0usize);
             for seed in 0..count {
-                let sim = layout(n, seed);
+                let sim = layout(n, seed, mathavan);
                 let st = state(n, cue_ball);
                 let start = Instant::now();
                 let d = decide(&st, &sim, level, seed).unwrap();
