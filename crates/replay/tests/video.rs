@@ -8,6 +8,17 @@ use billiards_physics::*;
 use billiards_replay::export::{self, ExportError, ExportOptions};
 use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
+use std::sync::{Mutex, MutexGuard};
+
+/// Held by each test for its whole body. Writing the stand-in script while the other test
+/// forks its encoder lets the child inherit the script's write descriptor until its exec, and
+/// running the script then fails with ETXTBSY ("Text file busy"): 6 runs in 300 did before.
+static SPAWNS: Mutex<()> = Mutex::new(());
+
+fn one_at_a_time() -> MutexGuard<'static, ()> {
+    // A test that failed while holding it leaves it poisoned; the next still runs alone.
+    SPAWNS.lock().unwrap_or_else(|e| e.into_inner())
+}
 
 fn temp(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("billiards-video-{}-{name}", std::process::id()));
@@ -53,6 +64,7 @@ fn fake_ffmpeg(dir: &Path, code: i32) -> PathBuf {
 #[cfg(unix)]
 #[test]
 fn the_encoder_gets_every_frame_with_its_size_and_rate() {
+    let _alone = one_at_a_time();
     let dir = temp("ok");
     let program = fake_ffmpeg(&dir, 0);
     let out = dir.join("break.mp4");
@@ -89,6 +101,7 @@ fn the_encoder_gets_every_frame_with_its_size_and_rate() {
 #[cfg(unix)]
 #[test]
 fn a_missing_or_failing_encoder_is_a_clear_error_and_leaves_no_file() {
+    let _alone = one_at_a_time();
     let dir = temp("err");
     let out = dir.join("break.mp4");
     let missing = dir.join("no-such-ffmpeg");
