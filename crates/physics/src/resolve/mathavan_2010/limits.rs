@@ -78,8 +78,8 @@ impl Impact {
                 // A slip growing at `along` relaxes ever more slowly: the integral is
                 // (stiff / along) ln(1 + along h / |slip|), so h may reach |slip| / along
                 // (exp(x) - 1), x = 2.5 along / stiff; its cubic bounds that from below.
-                let x = 2.5 * along / stiff;
-                h = h.min(2.5 * size / stiff * (1.0 + x * (0.5 + x / 6.0)));
+                let x = super::bs3::STABLE * along / stiff;
+                h = h.min(super::bs3::STABLE * size / stiff * (1.0 + x * (0.5 + x / 6.0)));
                 continue;
             }
             // A slip heading for zero is met in one step along its start direction once what
@@ -92,7 +92,7 @@ impl Impact {
             if (across * reach * (1.0 + mu / -along)).min(2.0 * mu * reach) <= self.atol {
                 finals[k] = Some(reach);
             } else {
-                h = h.min(0.5 * reach).min(2.5 * size / stiff);
+                h = h.min(0.5 * reach).min(super::bs3::STABLE * size / stiff);
             }
         }
         (h, finals)
@@ -124,7 +124,9 @@ impl Impact {
                 Dir::Slaved(l) => l,
                 // Not worth a look unless its relaxation (about 7/2 mu / |S|) would bound the
                 // step well below the error's.
-                _ if 2.5 * size.max(setup.zero) > 0.5 * 3.5 * mu * self.h.min(self.max_h) => {
+                _ if super::bs3::STABLE * size.max(setup.zero)
+                    > 0.5 * 3.5 * mu * self.h.min(self.max_h) =>
+                {
                     continue;
                 }
                 _ => 0.0,
@@ -147,8 +149,9 @@ impl Impact {
             let exit = mu * off * size.max(setup.zero) / kappa;
             // The explicit step its relaxation allows (as in `limits`), against the step the
             // error would allow.
-            let x = 2.5 * lambda / kappa;
-            let stable = 2.5 * size.max(setup.zero) / kappa * (1.0 + x * (0.5 + x / 6.0));
+            let x = super::bs3::STABLE * lambda / kappa;
+            let stable =
+                super::bs3::STABLE * size.max(setup.zero) / kappa * (1.0 + x * (0.5 + x / 6.0));
             // (A slip growing fast relaxes ever more slowly: explicit steps then grow fast.)
             let stiff = x < 1.0 && stable < self.h.min(self.max_h);
             // The longest slaved step: at most 4 times the last, and short enough that the

@@ -22,7 +22,7 @@
 //! Compression ends at `vy = 0` with work `Wc = int cos vy dP`; restitution ends when the work
 //! has fallen to `(1 - e^2) Wc` (eq. 16).
 //!
-//! Integrator: the embedded Runge–Kutta pair 5(4) of Dormand & Prince in `P` (`dopri.rs`),
+//! Integrator: the embedded Runge–Kutta pair 3(2) of Bogacki & Shampine in `P` (`bs3.rs`),
 //! each step's local error held to [`Accuracy::tol`] of the incoming speed (the error control
 //! of Hairer, Nørsett & Wanner, section II.4, with Gustafsson's PI step size control). Between
 //! events the rates change only as the sliding directions turn, so where they do not turn a
@@ -34,17 +34,17 @@
 //! grip's direction. A slip that leaves zero slowly (its direction stiff: relaxing far faster
 //! than it grows) is slaved to the direction it grows in, solved from the contacts' affine
 //! rates (`slaved.rs`), while the friction impulse that misdirects stays within half the
-//! tolerance. At the default 1e-4 a step, against a reference with 100 times smaller steps
-//! (and tolerance) the result differs by at most 1.1e-4 of the incoming speed over 38 test
-//! shots (a test pins 2e-4) and 9.0e-5 over the 18 cushion impacts of a 9-ball break
-//! (`examples/mathavan_probe.rs`; at 3e-6 a step, 5.0e-6 and 3.4e-6 for 28 % more rate
-//! evaluations); it agrees with the paper's own explicit Euler scheme at 200,000 steps within
-//! 2e-4.
+//! tolerance. At the default 5e-5 a step the result differs from a reference at 1e-9 a step
+//! and steps of 1e-3 of the impulse by at most 2.0e-4 of the incoming speed over 3,000 random
+//! impacts (99 % within 8.0e-5), and from one with 100 times smaller steps by at most 5.4e-5
+//! over 38 test shots (a test pins 2e-4) and 7.8e-5 over the 18 cushion impacts of a 9-ball
+//! break (`examples/mathavan_probe.rs`); it agrees with the paper's own explicit Euler scheme
+//! at 200,000 steps within 2e-4.
 //! pooltool's `mathavan_2010` (explicit Euler, fixed `delta_p`, the same equations) is the
 //! comparison implementation.
 
+mod bs3;
 mod contact;
-mod dopri;
 mod limits;
 mod slaved;
 #[cfg(test)]
@@ -80,14 +80,13 @@ pub struct Accuracy {
 }
 
 impl Accuracy {
-    /// The game's: 1e-4 a step, steps as long as the error allows (against a reference at
-    /// 1e-6 with 100 times smaller steps: within 1.1e-4 of the incoming speed over the test
-    /// shots, 9.0e-5 over a 9-ball break's impacts). A tenth of a millimetre a second at
-    /// 1 m/s, against the 2.6 % the model stands from the measured rebound (docs/realism.md):
-    /// 3e-6 (5.0e-6 and 3.4e-6) cost 28 % more rate evaluations, which put a break's cost
-    /// above the 2x a Han break that issue 24 allows.
+    /// The game's: 5e-5 a step, steps as long as the error allows (within 2.0e-4 of the
+    /// incoming speed of a fine reference over 3,000 random impacts, 99 % within 8.0e-5: see
+    /// the module). A fifth of a millimetre a second at 1 m/s, against the 2.6 % the model
+    /// stands from the measured rebound (docs/realism.md); finer tolerances cost rate
+    /// evaluations that put a break's cost above the 2x a Han break that issue 24 allows.
     pub const DEFAULT: Self = Self {
-        tol: 1e-4,
+        tol: 5e-5,
         max_step: 1.0,
     };
 }
@@ -387,7 +386,7 @@ impl Impact {
                 dirs[usize::from(!nose)] = Dir::Held;
             }
             st = match (gi, gc, dirs) {
-                (Grip::Slide(di), Grip::Slide(dc), [Dir::Own, Dir::Own]) => dopri::step_split(
+                (Grip::Slide(di), Grip::Slide(dc), [Dir::Own, Dir::Own]) => bs3::step_split(
                     &self.y,
                     &plan.d,
                     h,
@@ -398,9 +397,9 @@ impl Impact {
                     #[inline(always)]
                     |f, t| setup.rate_of_friction(f, t),
                 ),
-                _ => dopri::step(&self.y, &plan.d, h, |t| setup.rate_fixed(t, gi, gc, dirs)),
+                _ => bs3::step(&self.y, &plan.d, h, |t| setup.rate_fixed(t, gi, gc, dirs)),
             };
-            self.stats.evaluations += 6;
+            self.stats.evaluations += bs3::EVALS;
             let err = self.error(&st.err);
             let turned = self.turned(&st.y, predicted, plan);
             if (err <= 1.0 && !turned) || h <= floor {
@@ -412,11 +411,10 @@ impl Impact {
                 }
                 if predicted.is_none() {
                     // Step size control with memory (Gustafsson's PI control, Hairer & Wanner,
-                    // Solving ODEs II, section IV.2, as their DOPRI5 uses it): the next step
-                    // from this one's error and the last's, err^(-1/4) err_old^(1/8) (square
-                    // roots, no pow), within a factor 0.2 to 5, no larger right after a
-                    // rejection. Against err^(-1/4) alone: 8 % fewer evaluations over the
-                    // break's impacts (fewer rejected steps).
+                    // Solving ODEs II, section IV.2): the next step from this one's error and
+                    // the last's, err^(-0.7/3) err_old^(0.4/3) for the pair's 2nd-order
+                    // estimate, here err^(-1/4) err_old^(1/8) (square roots: `powf` took 12 %
+                    // of an impact), within a factor 0.2 to 5, no larger after a rejection.
                     let e = err.max(1e-12);
                     let fac = (0.9 * self.err_old / e.sqrt().sqrt()).clamp(0.2, 5.0);
                     self.err_old = e.max(1e-4).sqrt().sqrt().sqrt();
@@ -432,7 +430,7 @@ impl Impact {
                 h *= if turned {
                     0.5
                 } else {
-                    (0.9 / err.sqrt().sqrt()).clamp(0.1, 0.5)
+                    (0.9 / err.cbrt()).clamp(0.1, 0.5)
                 };
             }
             predicted = None;
@@ -448,8 +446,8 @@ impl Impact {
                 (hit, theta) = (Some(e), at);
             }
         }
-        // At an event inside the step, the state from the dense output (4th order, within
-        // the step's tolerance: a step to it would cost six more evaluations).
+        // At an event inside the step, the state from the dense output (3rd order, within
+        // the step's tolerance: a step to it would cost three more evaluations).
         let next = if hit.is_some() && theta < 1.0 {
             st.at(theta)
         } else {
@@ -463,7 +461,7 @@ impl Impact {
     /// Where in a step event `e` happens, as a fraction of the step, if it does: its
     /// function changed sign, located by the Illinois variant of regula falsi on the step's
     /// dense output.
-    fn locate(&self, e: Event, plan: &Plan, st: &dopri::Step) -> Option<f64> {
+    fn locate(&self, e: Event, plan: &Plan, st: &bs3::Step) -> Option<f64> {
         let u0 = &plan.u0;
         let (g0, g1, tol) = (self.g(e, &self.y, u0), self.g(e, &st.y, u0), self.tol_of(e));
         if g0 <= tol || g1 > tol {
