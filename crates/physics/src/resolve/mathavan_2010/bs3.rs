@@ -7,8 +7,8 @@
 //! It replaced Dormand & Prince's 5(4) pair (six evaluations a step): an impact's steps are
 //! mostly bounded by its events and its slips' relaxation, not by the error, so the cheaper
 //! step wins. Over 3,000 random impacts against a 1e-9 reference, at 5e-5 a step: the largest
-//! difference 1.2e-4 and 53 evaluations an impact, where the 5(4) pair at 1e-4 gave 3.0e-4
-//! and 78 (docs/realism.md, Cost).
+//! difference 2.0e-4 (99 % within 8.0e-5) and 51 evaluations an impact, where the 5(4) pair
+//! at 1e-4 gave 3.0e-4 (1.3e-4) and 78 (docs/realism.md, Cost).
 
 use super::contact::State;
 
@@ -17,7 +17,7 @@ pub(super) const EVALS: usize = 3;
 /// How far a step may reach along the negative real axis (the step times a relaxation rate):
 /// a 3-stage 3rd-order method is stable to 2.51; at 2 a relaxing mode shrinks by 1/3 a step
 /// (at 2.5 by 0.98 only, which let 8 of 3,000 random impacts end above 2e-4 of the
-/// reference at 1e-4 a step; none at 2).
+/// reference at 1e-4 a step; 3 at 2).
 pub(super) const STABLE: f64 = 2.0;
 
 const B1: f64 = 2.0 / 9.0;
@@ -33,7 +33,7 @@ const E4: f64 = -1.0 / 8.0;
 /// local error estimate, and what the continuous extension over the step needs.
 pub(super) struct Step {
     pub(super) y: State,
-    pub(super) k7: State,
+    pub(super) k4: State,
     pub(super) err: State,
     y0: State,
     h: f64,
@@ -51,7 +51,7 @@ impl Step {
     #[inline]
     pub(super) fn at_one(&self, i: usize, theta: f64) -> f64 {
         let (y0, y1, h) = (self.y0[i], self.y[i], self.h);
-        let (f0, f1) = (h * self.k1[i], h * self.k7[i]);
+        let (f0, f1) = (h * self.k1[i], h * self.k4[i]);
         let t = theta;
         let t2 = t * t;
         let t3 = t2 * t;
@@ -82,7 +82,6 @@ pub(super) fn step(y: &State, k1: &State, h: f64, rate: impl Fn(&State) -> State
 /// from `z`), the full state off it. Runge–Kutta methods commute with linear maps, so this is
 /// the same step to rounding, with a shorter chain of dependent operations per stage. `z0`
 /// and `dz1`: `z` and its rate at `y`.
-#[allow(clippy::too_many_arguments)]
 #[inline(always)]
 pub(super) fn step_split<const N: usize, F>(
     y: &State,
@@ -108,7 +107,7 @@ pub(super) fn step_split<const N: usize, F>(
     let err = std::array::from_fn(|i| h * (E1 * k1[i] + E2 * k2[i] + E3 * k3[i] + E4 * k4[i]));
     Step {
         y: y1,
-        k7: k4,
+        k4,
         err,
         y0: *y,
         h,

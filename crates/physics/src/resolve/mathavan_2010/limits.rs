@@ -2,6 +2,7 @@
 //! whose sliding direction turns at a rate 1 / |slip|.
 
 use super::Impact;
+use super::bs3::STABLE;
 use super::contact::{Dir, Grip, hypot};
 
 impl Impact {
@@ -72,14 +73,14 @@ impl Impact {
             }
             // Across the slip friction relaxes its direction at 7/2 mu / |slip| per unit
             // impulse; an explicit step is stable while that, integrated over the step,
-            // stays below about 3 (here 2.5).
+            // stays below the method's bound (`STABLE`).
             let stiff = 3.5 * mu.max(f64::MIN_POSITIVE);
             if along >= 0.0 {
                 // A slip growing at `along` relaxes ever more slowly: the integral is
                 // (stiff / along) ln(1 + along h / |slip|), so h may reach |slip| / along
-                // (exp(x) - 1), x = 2.5 along / stiff; its cubic bounds that from below.
-                let x = super::bs3::STABLE * along / stiff;
-                h = h.min(super::bs3::STABLE * size / stiff * (1.0 + x * (0.5 + x / 6.0)));
+                // (exp(x) - 1), x = STABLE along / stiff; its cubic bounds that from below.
+                let x = STABLE * along / stiff;
+                h = h.min(STABLE * size / stiff * (1.0 + x * (0.5 + x / 6.0)));
                 continue;
             }
             // A slip heading for zero is met in one step along its start direction once what
@@ -92,7 +93,7 @@ impl Impact {
             if (across * reach * (1.0 + mu / -along)).min(2.0 * mu * reach) <= self.atol {
                 finals[k] = Some(reach);
             } else {
-                h = h.min(0.5 * reach).min(super::bs3::STABLE * size / stiff);
+                h = h.min(0.5 * reach).min(STABLE * size / stiff);
             }
         }
         (h, finals)
@@ -124,9 +125,7 @@ impl Impact {
                 Dir::Slaved(l) => l,
                 // Not worth a look unless its relaxation (about 7/2 mu / |S|) would bound the
                 // step well below the error's.
-                _ if super::bs3::STABLE * size.max(setup.zero)
-                    > 0.5 * 3.5 * mu * self.h.min(self.max_h) =>
-                {
+                _ if STABLE * size.max(setup.zero) > 0.5 * 3.5 * mu * self.h.min(self.max_h) => {
                     continue;
                 }
                 _ => 0.0,
@@ -149,9 +148,8 @@ impl Impact {
             let exit = mu * off * size.max(setup.zero) / kappa;
             // The explicit step its relaxation allows (as in `limits`), against the step the
             // error would allow.
-            let x = super::bs3::STABLE * lambda / kappa;
-            let stable =
-                super::bs3::STABLE * size.max(setup.zero) / kappa * (1.0 + x * (0.5 + x / 6.0));
+            let x = STABLE * lambda / kappa;
+            let stable = STABLE * size.max(setup.zero) / kappa * (1.0 + x * (0.5 + x / 6.0));
             // (A slip growing fast relaxes ever more slowly: explicit steps then grow fast.)
             let stiff = x < 1.0 && stable < self.h.min(self.max_h);
             // The longest slaved step: at most 4 times the last, and short enough that the

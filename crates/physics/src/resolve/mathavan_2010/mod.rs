@@ -454,7 +454,7 @@ impl Impact {
             st.y
         };
         // The last stage is the next step's first unless an event changes the rates.
-        self.d = (hit.is_none() && dirs == self.dirs).then_some(st.k7);
+        self.d = (hit.is_none() && dirs == self.dirs).then_some(st.k4);
         (hit, next)
     }
 

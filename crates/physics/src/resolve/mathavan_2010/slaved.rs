@@ -9,7 +9,7 @@
 //! the rate `kappa / |S|`, `kappa = lambda - u_perp . B u_perp`, while `|S|` grows at
 //! `lambda = u* . (A + B u*) > 0`. Near zero `kappa / |S|` is far above the rate at which
 //! `u*` moves (only as the other contact turns), so an explicit step must stay below
-//! `2.5 |S| / kappa` to stay stable, though nothing turns but `u*`.
+//! `STABLE |S| / kappa` (`bs3.rs`) to stay stable, though nothing turns but `u*`.
 //!
 //! Slaved, the contact's friction takes `u*` itself (the slow manifold, Tikhonov's zeroth
 //! order): `(lambda I - B) u = A` with `|u| = 1`. Both contacts' `B` are upper triangular
