@@ -201,7 +201,51 @@ fn rule_3_10_the_nominated_colour_is_the_ball_on_for_the_penalty() {
 }
 
 #[test]
-fn rule_3_10_d_playing_at_a_red_after_a_red_costs_7() {
+fn rule_3_10_b_a_red_hit_first_after_a_nominated_colour_costs_the_ball_on_at_least_4() {
+    // 3.10(b): the value of the ball on (the green, 3) or of the ball concerned (a red, 1),
+    // at least 4; a colour was nominated, so none of 3.10(d)'s 7-point cases applies.
+    let mut f = frame();
+    play(&mut f, Some(1), &[1], None);
+    let v = play(&mut f, Some(2), &[], Some(GREEN));
+    assert_eq!(
+        v.fouls,
+        vec![Foul::WrongBallFirst {
+            hit: 2,
+            on: BallOn::Colour {
+                nominated: Some(GREEN)
+            }
+        }]
+    );
+    assert_eq!(v.penalty, 4);
+    assert_eq!(f.scores, [1, 4]);
+    assert!(
+        v.text
+            .ends_with("the red was hit first, the green was on: 4 points to Bob"),
+        "{}",
+        v.text
+    );
+    // With the pink nominated the ball on is worth 6, and sets the penalty.
+    let mut f = frame();
+    play(&mut f, Some(1), &[1], None);
+    assert_eq!(play(&mut f, Some(2), &[], Some(PINK)).penalty, 6);
+}
+
+#[test]
+fn rule_3_10_d_i_a_foul_after_a_red_before_nominating_a_colour_costs_7() {
+    // 3.10(d)(i): no colour named and none hit first (2.12), the cue ball touching nothing.
+    let mut f = frame();
+    play(&mut f, Some(1), &[1], None);
+    let v = play(&mut f, None, &[], None);
+    assert_eq!(v.fouls, vec![Foul::NoBallHit]);
+    assert_eq!(v.penalty, 7);
+    // The same stroke with the yellow nominated costs the value of the ball on, at least 4.
+    let mut f = frame();
+    play(&mut f, Some(1), &[1], None);
+    assert_eq!(play(&mut f, None, &[], Some(YELLOW)).penalty, 4);
+}
+
+#[test]
+fn rule_3_10_d_iii_playing_at_reds_in_successive_strokes_costs_7() {
     let mut f = frame();
     play(&mut f, Some(1), &[1], None);
     let v = play(&mut f, Some(2), &[], None);
@@ -211,7 +255,28 @@ fn rule_3_10_d_playing_at_a_red_after_a_red_costs_7() {
         "{}",
         v.text
     );
+    // Potting that red as well changes nothing: still 7, and the red stays down.
+    let mut f = frame();
+    play(&mut f, Some(1), &[1], None);
+    let v = play(&mut f, Some(2), &[2], None);
+    assert_eq!(v.penalty, 7);
+    assert!(!f.on_table.contains(&2));
 }
+
+#[test]
+fn rule_2_12_a_colour_hit_first_is_nominated_so_a_foul_after_it_is_not_7() {
+    // The yellow hit first counts as nominated (2.12, obvious): potting the green with it is
+    // a foul at the value of the green (3), at least 4, not 3.10(d)(i)'s 7.
+    let mut f = frame();
+    play(&mut f, Some(1), &[1], None);
+    let v = play(&mut f, Some(YELLOW), &[GREEN], None);
+    assert_eq!(v.fouls, vec![Foul::PottedNotOn { ball: GREEN }]);
+    assert_eq!(v.penalty, 4);
+}
+
+// 3.10(d)(ii) (a ball off the table used for any purpose) and (d)(iv) (a ball other than the
+// white used as the cue ball) cannot be played here: a stroke always strikes the white, and
+// no ball is ever off the table, so `Stroke` has no way to express either.
 
 #[test]
 fn rule_3_10_c_after_a_foul_the_incoming_player_plays_or_puts_the_offender_back() {

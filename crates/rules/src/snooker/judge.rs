@@ -174,17 +174,16 @@ impl Frame {
         );
         if !fouls.is_empty() {
             // 3.10: the value of the ball on, or of the ball hit first, or of a ball potted
-            // wrongly, whichever is highest, at least 4; 7 for playing at a red after a red.
+            // wrongly, whichever is highest, at least 4. 3.10(d)(i): after a red, a foul
+            // before a colour is nominated (2.12: none named, none hit first) costs 7;
+            // that covers (d)(iii), playing at reds in successive strokes.
             let mut penalty = on_value.max(4);
+            if matches!(on, BallOn::Colour { nominated: None }) {
+                penalty = 7;
+            }
             for f in &fouls {
                 let v = match *f {
-                    Foul::WrongBallFirst { hit, .. } => {
-                        if is_red(hit) && matches!(on, BallOn::Colour { .. }) {
-                            7
-                        } else {
-                            value(hit).unwrap_or(0)
-                        }
-                    }
+                    Foul::WrongBallFirst { hit, .. } => value(hit).unwrap_or(0),
                     Foul::PottedNotOn { ball } => value(ball).unwrap_or(0),
                     _ => 0,
                 };
