@@ -1,7 +1,9 @@
 //! The prediction strategy of scenes split into cells (64 balls or more): each ball is tested
 //! only against the balls in the cells around it ([`Grid`]), leaving its cell is an event,
 //! and an event re-predicts the balls it touched in full and every ball whose cached event
-//! was a contact with one of them (found through a dependents index, not a scan).
+//! was a contact with one of them (found through a dependents index, not a scan). A ball's
+//! events with no other ball are kept until its segment changes, so a crossing or a
+//! partner's event re-solves only its pairs and its next crossing.
 
 use super::pending::{Pending, PendingKind, earlier, rank};
 use super::predict::Scene;
@@ -11,10 +13,51 @@ use crate::grid::{Grid, Side};
 use crate::math::Vec2;
 use crate::queue::Tournament;
 
+/// What a ball's pair searches read of it, in one cache line: its segment's start, state
+/// and acceleration, and the time of its next event with no other ball (a contact after it
+/// is searched again then). Random access by ball, so one line a neighbour, not one a field.
+#[derive(Clone, Copy, Debug, Default)]
+struct Path {
+    start: f64,
+    p: Vec2,
+    v: Vec2,
+    a: Vec2,
+    until: f64,
+}
+
+impl Path {
+    /// Position and velocity at `t`, computed as [`crate::ball::Segment::position_at`] and
+    /// `velocity_at` do (bit for bit, so the cull below sees what the exact search sees).
+    #[inline]
+    fn at(&self, t: f64) -> (Vec2, Vec2) {
+        let tau = t - self.start;
+        (
+            self.p + (self.v + self.a * (0.5 * tau)) * tau,
+            self.v + self.a * tau,
+        )
+    }
+}
+
+/// `CellLists::flags` bit: the ball moves.
+const MOVING: u8 = 1;
+/// `CellLists::flags` bit: the ball is on the table.
+const ON_TABLE: u8 = 2;
+
 /// The cell lists and the index of which predictions depend on which ball.
 #[derive(Debug)]
 pub(super) struct CellLists {
     grid: Grid,
+    /// Each ball's earliest event with no other ball, kept until its segment changes (a
+    /// grid crossing or a partner's event re-predicts only its pairs and crossing).
+    solo: Vec<Option<Pending>>,
+    /// Each ball's earliest contact with another ball found so far, valid until either
+    /// segment changes. Searched without the cap of the ball's next crossing, so a crossing
+    /// keeps it and searches only the cells it brings into the neighbourhood.
+    pairs: Vec<Option<Pending>>,
+    /// Each ball's path, for the pair cull.
+    paths: Vec<Path>,
+    /// [`MOVING`] and [`ON_TABLE`] bits of each ball.
+    flags: Vec<u8>,
     /// For each ball, the balls whose cached event is a contact with it (may hold stale
     /// entries; checked before use).
     dependents: Vec<Vec<BallId>>,
@@ -26,6 +69,10 @@ pub(super) struct CellLists {
 
 clone_reusing!(CellLists {
     grid,
+    solo,
+    pairs,
+    paths,
+    flags,
     dependents,
     stamps,
     round
@@ -36,6 +83,10 @@ impl CellLists {
     pub fn new(grid: Grid, n: usize) -> Self {
         Self {
             grid,
+            solo: vec![None; n],
+            pairs: vec![None; n],
+            paths: vec![Path::default(); n],
+            flags: vec![0; n],
             dependents: vec![Vec::new(); n],
             stamps: vec![0; n],
             round: 0,
@@ -52,10 +103,10 @@ impl CellLists {
         for (id, seg) in segments.iter().enumerate() {
             let on_table = seg.state.motion.on_table();
             self.grid.set(id, on_table.then(|| seg.position_at(t)));
+            self.set_path(scene, id, t);
         }
         for id in 0..segments.len() {
-            let p = self.predict(scene, id, t);
-            self.set_cache(queue, id, p);
+            self.predict(scene, queue, id, t);
         }
     }
 
@@ -74,12 +125,14 @@ impl CellLists {
             let seg = &scene.segments[id];
             let on_table = seg.state.motion.on_table();
             self.grid.set(id, on_table.then_some(seg.state.position));
-            let p = self.predict(scene, id, t);
-            self.set_cache(queue, id, p);
+            self.set_path(scene, id, t);
+        }
+        for &id in touched {
+            self.predict(scene, queue, id, t);
         }
         for &id in touched {
             for m in std::mem::take(&mut self.dependents[id]) {
-                let stale = queue.get(m).is_some_and(|p| p.involves(id));
+                let stale = self.pairs[m].is_some_and(|p| p.involves(id));
                 if !stale {
                     continue;
                 }
@@ -89,15 +142,15 @@ impl CellLists {
                     // of `id` leaves `m`'s pair event stale and it fires at a gap.
                     self.dependents[id].push(m);
                 } else {
-                    let p = self.predict(scene, m, t);
-                    self.set_cache(queue, m, p);
+                    self.predict(scene, queue, m, t);
                 }
             }
         }
     }
 
-    /// Ball `id` leaves its cell through `side` at time `t`: it is tested against its new
-    /// neighbours.
+    /// Ball `id` leaves its cell through `side` at time `t`: it is tested against the balls
+    /// of the cells that come into its neighbourhood only (its contacts with the others were
+    /// searched beyond this crossing, and are kept).
     pub fn cross(
         &mut self,
         scene: &Scene,
@@ -106,48 +159,108 @@ impl CellLists {
         side: Side,
         t: f64,
     ) {
-        self.grid.cross(id, side);
         self.round += 1;
-        let p = self.predict(scene, id, t);
-        self.set_cache(queue, id, p);
+        if self.grid.cross(id, side) {
+            let found = self.search(scene, id, t, self.pairs[id], self.grid.entered(id, side));
+            self.pairs[id] = found;
+        }
+        self.set_cache(queue, scene, id, t);
     }
 
-    /// Stores ball `id`'s prediction and indexes it under its partner, if any.
-    fn set_cache(&mut self, queue: &mut Tournament<Pending>, id: BallId, p: Option<Pending>) {
+    /// Ball `id`'s segment changed: its events with no other ball and its path.
+    fn set_path(&mut self, scene: &Scene, id: BallId, t: f64) {
+        let seg = &scene.segments[id];
+        let solo = scene.predict_solo(id, t);
+        self.solo[id] = solo;
+        self.paths[id] = Path {
+            start: seg.start,
+            p: seg.state.position,
+            v: seg.state.velocity,
+            a: match scene.kinematics() {
+                Kinematics::Exact => seg.acceleration,
+                Kinematics::Linear => Vec2::ZERO,
+            },
+            until: solo.map_or(f64::INFINITY, |p| p.time),
+        };
+        let m = seg.state.motion;
+        self.flags[id] =
+            if m.is_moving() { MOVING } else { 0 } | if m.on_table() { ON_TABLE } else { 0 };
+    }
+
+    /// Stores ball `id`'s earliest event (its own, its next crossing, its best pair) and
+    /// indexes its best pair under the partner.
+    fn set_cache(&mut self, queue: &mut Tournament<Pending>, scene: &Scene, id: BallId, t: f64) {
         self.stamps[id] = self.round;
+        let pair = self.pairs[id];
+        let p = earlier(earlier(self.solo[id], self.crossing(scene, id, t)), pair);
         queue.set(id, p, rank(p));
-        if let Some(partner) = p.and_then(|p| p.partner(id)) {
+        if let Some(partner) = pair.and_then(|p| p.partner(id)) {
             let deps = &mut self.dependents[partner];
             deps.push(id);
             if deps.len() > 64 {
                 // Drop stale entries so the list stays short in long runs.
-                deps.retain(|&m| queue.get(m).is_some_and(|q| q.involves(partner)));
+                let pairs = &self.pairs;
+                deps.retain(|&m| pairs[m].is_some_and(|q| q.involves(partner)));
                 deps.sort_unstable();
                 deps.dedup();
             }
         }
     }
 
-    /// The earliest event of ball `id` from time `t` on: its own events, a grid crossing, or
-    /// a contact with any other ball in play in the cells around it.
-    fn predict(&self, scene: &Scene, id: BallId, t: f64) -> Option<Pending> {
-        let seg = &scene.segments[id];
-        if !seg.state.motion.on_table() {
+    /// Predicts ball `id` from `t` in full: its pairs with every ball around it.
+    fn predict(&mut self, scene: &Scene, queue: &mut Tournament<Pending>, id: BallId, t: f64) {
+        let found = self.search(scene, id, t, None, self.grid.neighbours(id));
+        self.pairs[id] = found;
+        self.set_cache(queue, scene, id, t);
+    }
+
+    /// The earliest contact of ball `id` from `t` on with a ball of `others` (ball `id`
+    /// itself and balls out of play skipped), or `best` if none is earlier. A pair is
+    /// searched only up to the earlier of its balls' next events with no other ball and the
+    /// best contact found so far, and only if [`detect::misses`] keeps it.
+    fn search(
+        &self,
+        scene: &Scene,
+        id: BallId,
+        t: f64,
+        mut best: Option<Pending>,
+        others: impl Iterator<Item = BallId>,
+    ) -> Option<Pending> {
+        let fi = self.flags[id];
+        if fi & ON_TABLE == 0 {
             return None;
         }
+        let seg = &scene.segments[id];
         let kin = scene.kinematics();
-        let horizon = seg.end.map_or(f64::INFINITY, |e| e - t);
-        let mut best = earlier(scene.predict_solo(id, t), self.crossing(scene, id, t));
         let r = scene.params.ball.radius;
-        for j in self.grid.neighbours(id) {
-            let other = &scene.segments[j];
-            if j == id || !other.state.motion.on_table() {
+        let contact = 2.0 * r;
+        let me = self.paths[id];
+        let (pi, vi) = me.at(t);
+        for j in others {
+            let fj = self.flags[j];
+            if j == id || fj & ON_TABLE == 0 || (fi | fj) & MOVING == 0 {
                 continue;
             }
-            let h = other.end.map_or(horizon, |e| horizon.min(e - t));
-            // Only a pair that could be earlier than the best so far is worth solving.
-            let h = best.map_or(h, |b| h.min(b.time - t));
-            if let Some(tau) = detect::ball_ball(seg, other, t, r, h, kin) {
+            let other = self.paths[j];
+            let until = if other.until < me.until {
+                other.until
+            } else {
+                me.until
+            };
+            // Capped by the best contact so far, a few ulps wide so that a pair touching at
+            // the same instant is still found (and wins if it ranks first); not capped by a
+            // best at `t` itself, where a zero horizon would miss contacts of this instant.
+            let h = until - t;
+            let h = match best {
+                Some(b) if b.time > t => h.min((b.time - t) * (1.0 + 1e-12)),
+                _ => h,
+            };
+            let (pj, vj) = other.at(t);
+            if detect::misses(pj - pi, vj - vi, other.a - me.a, contact, h) {
+                continue;
+            }
+            let segj = &scene.segments[j];
+            if let Some(tau) = detect::ball_ball_kept(seg, segj, t, r, h, kin) {
                 let (a, b) = (id.min(j), id.max(j));
                 best = earlier(
                     best,
