@@ -1,4 +1,4 @@
-//! The prediction strategy of scenes split into cells (64 balls or more): each ball is tested
+//! The prediction strategy of scenes split into cells (250 balls or more): each ball is tested
 //! only against the balls in the cells around it ([`Grid`]), leaving its cell is an event,
 //! and an event re-predicts the balls it touched in full and every ball whose cached event
 //! was a contact with one of them (found through a dependents index, not a scan). A ball's

@@ -1,4 +1,4 @@
-//! The prediction strategy of scenes in one cell (fewer than 64 balls): a table of every
+//! The prediction strategy of scenes in one cell (fewer than 250 balls): a table of every
 //! pair's contact time, valid until either ball's segment changes. An event re-solves only
 //! the pairs of the balls it touched (most culled in one vectorized pass over the other
 //! balls), and every other ball takes its best from its row of the table.
