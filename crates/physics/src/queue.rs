@@ -60,8 +60,12 @@ impl<K: Copy> Tournament<K> {
         // stop (when the winner above is unchanged) would save.
         while node > 1 {
             let other = self.nodes[node ^ 1];
-            // Ties go to the left child, whose slots are all lower: the lower (rank, slot) wins.
-            best = std::hint::select_unpredictable(other < best, other, best);
+            // Ties go to the left child, whose slots are all lower: the lower (rank, slot)
+            // wins. So the rank alone decides, and an equal rank only from the left (`node`
+            // is a right child): one comparison of ranks, not of (rank, slot) pairs.
+            let right = node & 1 == 1;
+            let take = (other.0 < best.0) | ((other.0 == best.0) & right);
+            best = std::hint::select_unpredictable(take, other, best);
             node /= 2;
             self.nodes[node] = best;
         }

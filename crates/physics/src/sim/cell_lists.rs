@@ -23,6 +23,8 @@ struct Path {
     v: Vec2,
     a: Vec2,
     until: f64,
+    /// [`MOVING`] and [`ON_TABLE`] bits (here, so a neighbour's test reads one record).
+    flags: u8,
 }
 
 impl Path {
@@ -38,9 +40,9 @@ impl Path {
     }
 }
 
-/// `CellLists::flags` bit: the ball moves.
+/// `Path::flags` bit: the ball moves.
 const MOVING: u8 = 1;
-/// `CellLists::flags` bit: the ball is on the table.
+/// `Path::flags` bit: the ball is on the table.
 const ON_TABLE: u8 = 2;
 
 /// The cell lists and the index of which predictions depend on which ball.
@@ -56,8 +58,6 @@ pub(super) struct CellLists {
     pairs: Vec<Option<Pending>>,
     /// Each ball's path, for the pair cull.
     paths: Vec<Path>,
-    /// [`MOVING`] and [`ON_TABLE`] bits of each ball.
-    flags: Vec<u8>,
     /// For each ball, the balls whose cached event is a contact with it (may hold stale
     /// entries; checked before use).
     dependents: Vec<Vec<BallId>>,
@@ -72,7 +72,6 @@ clone_reusing!(CellLists {
     solo,
     pairs,
     paths,
-    flags,
     dependents,
     stamps,
     round
@@ -86,7 +85,6 @@ impl CellLists {
             solo: vec![None; n],
             pairs: vec![None; n],
             paths: vec![Path::default(); n],
-            flags: vec![0; n],
             dependents: vec![Vec::new(); n],
             stamps: vec![0; n],
             round: 0,
@@ -172,6 +170,7 @@ impl CellLists {
         let seg = &scene.segments[id];
         let solo = scene.predict_solo(id, t);
         self.solo[id] = solo;
+        let m = seg.state.motion;
         self.paths[id] = Path {
             start: seg.start,
             p: seg.state.position,
@@ -181,10 +180,8 @@ impl CellLists {
                 Kinematics::Linear => Vec2::ZERO,
             },
             until: solo.map_or(f64::INFINITY, |p| p.time),
+            flags: if m.is_moving() { MOVING } else { 0 } | if m.on_table() { ON_TABLE } else { 0 },
         };
-        let m = seg.state.motion;
-        self.flags[id] =
-            if m.is_moving() { MOVING } else { 0 } | if m.on_table() { ON_TABLE } else { 0 };
     }
 
     /// Stores ball `id`'s earliest event (its own, its next crossing, its best pair) and
@@ -226,7 +223,8 @@ impl CellLists {
         mut best: Option<Pending>,
         others: impl Iterator<Item = BallId>,
     ) -> Option<Pending> {
-        let fi = self.flags[id];
+        let me = self.paths[id];
+        let fi = me.flags;
         if fi & ON_TABLE == 0 {
             return None;
         }
@@ -234,14 +232,13 @@ impl CellLists {
         let kin = scene.kinematics();
         let r = scene.params.ball.radius;
         let contact = 2.0 * r;
-        let me = self.paths[id];
         let (pi, vi) = me.at(t);
         for j in others {
-            let fj = self.flags[j];
+            let other = self.paths[j];
+            let fj = other.flags;
             if j == id || fj & ON_TABLE == 0 || (fi | fj) & MOVING == 0 {
                 continue;
             }
-            let other = self.paths[j];
             let until = if other.until < me.until {
                 other.until
             } else {
