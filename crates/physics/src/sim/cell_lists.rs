@@ -278,6 +278,9 @@ impl CellLists {
             return None;
         }
         let horizon = seg.end.map_or(f64::INFINITY, |e| e - t);
+        // The state once for every side, as `detect::ball_line` computes it for each; the
+        // real path even in the linear comparison mode.
+        let (p, v, a) = (seg.position_at(t), seg.velocity_at(t), seg.acceleration);
         let mut best = None;
         for (side, at) in self.grid.exits(id) {
             let (n, offset) = match side {
@@ -286,8 +289,7 @@ impl CellLists {
                 Side::YPlus => (Vec2::new(0.0, -1.0), at),
                 Side::YMinus => (Vec2::new(0.0, 1.0), -at),
             };
-            // Crossings follow the real path even in the linear comparison mode.
-            if let Some(tau) = detect::ball_line(seg, t, n, offset, horizon, Kinematics::Exact) {
+            if let Some(tau) = detect::line_contact(p, v, a, n, offset, horizon) {
                 best = earlier(
                     best,
                     Some(Pending {
