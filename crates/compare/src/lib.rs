@@ -14,5 +14,6 @@ pub mod plot;
 pub mod rapier;
 pub mod realism;
 pub mod report;
+pub mod scaling;
 pub mod scene;
 pub mod trace;

@@ -1,4 +1,6 @@
 //! The benchmark program: `billiards-compare [--quick] [--out DIR]`; and
+//! `billiards-compare scaling CSV [--out FILE.svg] [--other NAME]`, the plot of the physics
+//! crate's `scaling` example table (issue 37, default `docs/scaling.svg`); and
 //! `billiards-compare realism [--out DIR]`, the models against measurements (issue 24:
 //! `throw.svg`, `cushion.svg`, `squirt.svg`, `swerve.svg` and the numbers of `docs/realism.md`, default `docs/realism`).
 //!
@@ -6,7 +8,7 @@
 //! `results.csv` and `runtime_vs_error.svg` into `DIR` (default `target/compare`), and exits
 //! non-zero if the exact solver's error anywhere exceeds 1e-9 m.
 
-use billiards_compare::{bench, plot, realism as models, report};
+use billiards_compare::{bench, plot, realism as models, report, scaling as cost};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -14,6 +16,9 @@ use std::time::Instant;
 fn main() -> ExitCode {
     if std::env::args().nth(1).as_deref() == Some("realism") {
         return realism(std::env::args().skip(2).collect());
+    }
+    if std::env::args().nth(1).as_deref() == Some("scaling") {
+        return scaling(std::env::args().skip(2).collect());
     }
     let mut quick = false;
     let mut out = PathBuf::from("target/compare");
@@ -101,5 +106,38 @@ fn realism(args: Vec<String>) -> ExitCode {
         "wrote {0}/throw.svg, {0}/cushion.svg, {0}/squirt.svg and {0}/swerve.svg",
         out.display()
     );
+    ExitCode::SUCCESS
+}
+
+fn scaling(args: Vec<String>) -> ExitCode {
+    let usage = || usage("usage: billiards-compare scaling CSV [--out FILE.svg] [--other NAME]");
+    let Some(csv) = args.first() else {
+        return usage();
+    };
+    let (mut out, mut other) = (PathBuf::from("docs/scaling.svg"), "c339665".to_owned());
+    let mut rest = args[1..].iter();
+    while let Some(a) = rest.next() {
+        match (a.as_str(), rest.next()) {
+            ("--out", Some(p)) => out = PathBuf::from(p),
+            ("--other", Some(n)) => other = n.clone(),
+            _ => return usage(),
+        }
+    }
+    let rows = match std::fs::read_to_string(csv).map_err(|e| e.to_string()) {
+        Ok(text) => cost::parse(&text),
+        Err(e) => Err(e),
+    };
+    let rows = match rows {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("cannot read {csv}: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    if let Err(e) = cost::draw(&rows, &other, &out) {
+        eprintln!("cannot write {}: {e}", out.display());
+        return ExitCode::FAILURE;
+    }
+    println!("wrote {}", out.display());
     ExitCode::SUCCESS
 }
