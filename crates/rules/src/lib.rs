@@ -14,7 +14,8 @@
 //! - [`race`]: a match, race to N racks;
 //! - [`log`]: the rules side of a recording (calls, choices, verdicts), kept beside it;
 //! - [`breaks`]: one break judged by the rules and the counts over many (break statistics);
-//! - [`snooker`]: snooker frames and matches under the WPBSA rules, an API of its own.
+//! - [`snooker`]: snooker frames and matches under the WPBSA rules, an API of its own;
+//! - [`position`]: a position (game, table, balls, physics, shot) as a short text code.
 
 pub mod breaks;
 pub mod eight_ball;
@@ -23,6 +24,7 @@ pub mod game;
 pub mod hand;
 pub mod log;
 pub mod nine_ball;
+pub mod position;
 pub mod race;
 pub mod racks;
 pub mod respot;
@@ -36,6 +38,7 @@ pub use game::{
 };
 pub use hand::{PlacementError, check_placement};
 pub use log::{GameLog, LogError, LoggedShot};
+pub use position::{PlacedBall, Position, PositionError};
 pub use race::Match;
 pub use racks::RackStyle;
 
