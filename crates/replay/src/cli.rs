@@ -44,6 +44,9 @@ pub enum Command {
     /// The success probability of one shot from every cell of a grid of cue-ball places,
     /// under a player's execution noise, with an SVG heat map; sharded.
     Study(crate::study::StudyArgs),
+    /// A position as a short code, to and from JSON (`encode FILE.json`, `decode CODE`).
+    #[command(subcommand)]
+    Position(crate::position::PositionCmd),
     /// Open the game on a recording (needs the game binary: `billiards replay FILE`).
     Replay {
         /// The recording.
@@ -347,6 +350,7 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Breaks(a) => return crate::breaks::run(a),
         Command::Soak(a) => return crate::soak::run(a),
         Command::Study(a) => return crate::study::run(a),
+        Command::Position(c) => crate::position::run(c),
         Command::Replay { file } => Err(format!(
             "{}: replay opens the game: run `billiards replay {}`",
             file.display(),

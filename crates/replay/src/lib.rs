@@ -1,11 +1,13 @@
 //! Headless tools for billiards recordings: the command line (`simulate`, `verify`, `export`;
-//! the batch commands `tournament`, `breaks`, `soak` and `study`, sharded by [`shard`]),
+//! the batch commands `tournament`, `breaks`, `soak` and `study`, sharded by [`shard`];
+//! `position`, position codes to and from JSON),
 //! a software top-view renderer and GIF/PNG export. No GPU, no Bevy: they run anywhere.
 
 pub mod breaks;
 pub mod cli;
 pub mod export;
 pub mod game;
+pub mod position;
 pub mod render;
 pub mod shard;
 pub mod snooker;
