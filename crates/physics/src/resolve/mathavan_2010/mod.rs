@@ -406,15 +406,28 @@ impl Impact {
             }
             predicted = None;
         }
-        let (mut hit, mut theta) = (None, 1.0);
+        let (mut hit, mut theta, mut found) = (None, 1.0, 0);
         // A step meant to end on a zero slip finds it like the other events: its rate along
         // the held direction need not stay constant (the other contact turns).
         let aimed = predicted.filter(|e| matches!(e, Event::SlipZero(_)));
         for e in plan.events.into_iter().chain([aimed]).flatten() {
-            if let Some(at) = self.locate(e, plan, &st)
-                && (hit.is_none() || at < theta)
-            {
-                (hit, theta) = (Some(e), at);
+            if let Some(at) = self.locate(e, plan, &st) {
+                found += 1;
+                if hit.is_none() || at < theta {
+                    (hit, theta) = (Some(e), at);
+                }
+            }
+        }
+        // Compression's end changes no rate (it only fixes the work restitution ends at, eq.
+        // 16): the step goes on past it, its work there from the dense output, unless another
+        // event or restitution's end falls within the step too.
+        if hit == Some(Event::Compressed) && theta < 1.0 && found == 1 && predicted.is_none() {
+            let wc = st.at_one(5, theta);
+            let target = (1.0 - self.e * self.e) * wc;
+            if st.y[5] - target > 1e-14 * wc {
+                (self.target, self.tol_w) = (Some(target), 1e-14 * wc);
+                self.d = (dirs == self.dirs).then_some(st.k4);
+                return (None, st.y);
             }
         }
         // At an event inside the step, the state from the dense output (3rd order, within
