@@ -161,6 +161,9 @@ struct Plan {
     events: [Option<Event>; 3],
     /// The rate at the step's start (the first stage).
     d: State,
+    /// The slips `(x_I, y'_I, x_C, y_C)` at the step's start and their rates there.
+    z0: [f64; 4],
+    dz1: [f64; 4],
     /// The step planned before a zero slip shortened it, should that step fail.
     h_free: f64,
 }
@@ -315,6 +318,8 @@ impl Impact {
             u0,
             events,
             d,
+            z0: [si[0], si[1], sc[0], sc[1]],
+            dz1: [ri[0], ri[1], rc[0], rc[1]],
         }
     }
 
@@ -368,8 +373,8 @@ impl Impact {
                     &self.y,
                     &plan.d,
                     h,
-                    setup.slips4(&self.y),
-                    setup.slip_rates4(&plan.d),
+                    plan.z0,
+                    plan.dz1,
                     #[inline(always)]
                     |z| setup.slip_rates_sliding(z, di, dc),
                     #[inline(always)]
