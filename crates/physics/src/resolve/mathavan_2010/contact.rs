@@ -146,19 +146,7 @@ impl Setup {
             && (gc != Grip::Stick || hypot([f[2], f[3]]) <= self.mu_s * n * slack)
     }
 
-    /// The slips `(x_I, y'_I, x_C, y_C)` of [`Self::slips`] in one array.
-    pub(super) fn slips4(&self, y: &State) -> [f64; 4] {
-        let (si, sc) = self.slips(y);
-        [si[0], si[1], sc[0], sc[1]]
-    }
-
-    /// The slips' rates of [`Self::slip_rates_of`] in one array.
-    pub(super) fn slip_rates4(&self, d: &State) -> [f64; 4] {
-        let (ri, rc) = self.slip_rates_of(d);
-        [ri[0], ri[1], rc[0], rc[1]]
-    }
-
-    /// The rates of the slips `z` (`slips4`) with both contacts sliding along their own slips
+    /// The rates of the slips `z = (x_I, y'_I, x_C, y_C)` with both contacts sliding along their own slips
     /// (`di`, `dc`: their grips' directions, for a slip within `zero`), and the friction
     /// `(a, b, p, q)` ([`Self::rate_of_friction`] gives the state's rate): the arithmetic of
     /// [`Self::friction_fixed`] without its cases, for the steps that need none (most). The

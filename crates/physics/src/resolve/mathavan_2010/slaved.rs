@@ -92,10 +92,13 @@ impl Setup {
         } else {
             0.5 * hi
         };
+        // `u(l)` once the iteration stops at `l` itself (not after a last step).
+        let mut at_l = None;
         for _ in 0..60 {
             let (ux, uy, ix, iy) = u_of(l);
             let g = ux * ux + uy * uy - 1.0;
             if g.abs() <= 1e-14 {
+                at_l = Some((ux, uy));
                 break; // |u| = 1 to rounding: no further step needed
             }
             if g > 0.0 {
@@ -115,7 +118,10 @@ impl Setup {
                 break;
             }
         }
-        let (ux, uy, _, _) = u_of(l);
+        let (ux, uy) = at_l.unwrap_or_else(|| {
+            let (ux, uy, _, _) = u_of(l);
+            (ux, uy)
+        });
         let inv = 1.0 / hypot([ux, uy]);
         let u = [ux * inv, uy * inv];
         let kappa = l - (b11 * u[1] * u[1] - b12 * u[0] * u[1] + b22 * u[0] * u[0]);
