@@ -8,7 +8,7 @@
 //! by `--shard K/M` as in [`crate::shard`]; the counts are whole numbers, so the merge of
 //! the shards equals one process's result exactly.
 
-use crate::cli::GameArg;
+use crate::args::GameArg;
 use crate::shard::{Batch, Shard, parse_shard};
 use billiards_ai::noise::stream;
 use billiards_physics::TableChoice;

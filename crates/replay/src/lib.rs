@@ -3,6 +3,7 @@
 //! `position`, position codes to and from JSON),
 //! a software top-view renderer and GIF/PNG export. No GPU, no Bevy: they run anywhere.
 
+pub mod args;
 pub mod breaks;
 pub mod cli;
 pub mod export;
@@ -10,6 +11,7 @@ pub mod game;
 pub mod position;
 pub mod render;
 pub mod shard;
+pub mod simulate;
 pub mod snooker;
 pub mod soak;
 pub mod study;

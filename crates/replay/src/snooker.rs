@@ -3,8 +3,8 @@
 //! recording (the log re-judged by [`FrameLog::check`]) and `tournament --game snooker`
 //! (frames on all cores: frames won, breaks, centuries, fouls, decision time).
 
-use crate::cli::SimulateArgs;
 use crate::shard::{Batch, Shard};
+use crate::simulate::SimulateArgs;
 use crate::tournament::{TournamentArgs, wilson};
 use billiards_ai::Level;
 use billiards_ai::noise::stream;

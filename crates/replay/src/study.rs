@@ -43,7 +43,7 @@ pub struct StudyArgs {
     #[arg(long)]
     pub target: Option<u8>,
     /// The pocket: head-left, head-right, side-left, side-right, foot-left, foot-right.
-    #[arg(long, value_parser = crate::cli::parse_pocket, default_value = "foot-left")]
+    #[arg(long, value_parser = crate::args::parse_pocket, default_value = "foot-left")]
     pub pocket: Pocket,
     /// The player whose execution noise the shot is struck with: easy, medium, hard,
     /// expert, perfect, greedy or one-ply.
@@ -59,7 +59,7 @@ pub struct StudyArgs {
     #[arg(long, default_value_t = 100)]
     pub samples: u64,
     /// Cells along the table and across it, `NXxNY`.
-    #[arg(long, value_parser = crate::cli::parse_size, default_value = "32x16")]
+    #[arg(long, value_parser = crate::args::parse_size, default_value = "32x16")]
     pub grid: (u32, u32),
     /// Seed of the noise.
     #[arg(long, default_value_t = 1)]
@@ -429,7 +429,7 @@ pub fn report(r: &StudyResult) -> String {
         "the {} into {} on a {} table, {} noise ({}), {} samples a cell: {} of {} cells \
          sampled, mean success {:.1} %\n",
         r.target,
-        crate::cli::pocket_arg(r.pocket),
+        crate::args::pocket_arg(r.pocket),
         r.table,
         r.player,
         r.noise.magnitude,
@@ -487,7 +487,7 @@ pub fn heat_map(r: &StudyResult, path: &Path) -> Result<(), String> {
         format!(
             "P(the {} into {}) from each cue-ball place, {} noise, {} samples a cell",
             r.target,
-            crate::cli::pocket_arg(r.pocket),
+            crate::args::pocket_arg(r.pocket),
             r.player,
             r.samples
         ),

@@ -23,7 +23,7 @@ pub struct TournamentArgs {
     /// The game: nine-ball, eight-ball or snooker (computer levels only; frames, breaks
     /// and centuries).
     #[arg(long, value_enum, default_value = "nine-ball")]
-    pub game: crate::cli::GameArg,
+    pub game: crate::args::GameArg,
     /// The two players, `A,B`: easy, medium, hard, expert, perfect, greedy or one-ply. A
     /// breaks the even games.
     #[arg(long, default_value = "hard,easy")]
