@@ -338,6 +338,30 @@ const DP_E: [f64; 7] = [
     -1.0 / 40.0,
 ];
 
+/// `tmp = y + c[0] k[0] + c[1] k[1] + ...`, element by element, the terms in order; a zero
+/// coefficient's term is skipped (as adding it could turn a -0 into +0).
+#[inline]
+fn combine<const N: usize>(tmp: &mut [f64], y: &[f64], c: [f64; N], k: [&[f64]; N]) {
+    if c.contains(&0.0) {
+        tmp.copy_from_slice(y);
+        for (c, k) in c.iter().zip(k) {
+            if *c != 0.0 {
+                for (t, x) in tmp.iter_mut().zip(k) {
+                    *t += c * x;
+                }
+            }
+        }
+        return;
+    }
+    for (i, (t, y)) in tmp.iter_mut().zip(y).enumerate() {
+        let mut acc = *y;
+        for (c, k) in c.iter().zip(k) {
+            acc += c * k[i];
+        }
+        *t = acc;
+    }
+}
+
 impl Chain<'_> {
     /// Compression of edge `e` in state `y` (m; negative while open).
     #[inline]
@@ -422,29 +446,39 @@ impl Chain<'_> {
         scales: (f64, f64),
     ) -> f64 {
         for s in 1..7 {
-            tmp.copy_from_slice(y);
-            for (j, kj) in k.iter().enumerate().take(s) {
-                let c = h * DP_A[s - 1][j];
-                if c != 0.0 {
-                    for (t, x) in tmp.iter_mut().zip(kj) {
-                        *t += c * x;
-                    }
-                }
+            let (done, rest) = k.split_at_mut(s);
+            let a = &DP_A[s - 1];
+            let c = |j: usize| h * a[j];
+            // Each stage in one pass, the terms added in the order the tableau gives them,
+            // skipping zero ones, so every element is the same sum as term by term.
+            macro_rules! stage {
+                ($($j:expr),*) => { combine(tmp, y, [$(c($j)),*], [$(&done[$j][..]),*]) };
             }
-            self.deriv(tmp, &mut k[s]);
+            // Row 6 has a zero in column 1 (the fifth-order weights).
+            match s {
+                1 => stage!(0),
+                2 => stage!(0, 1),
+                3 => stage!(0, 1, 2),
+                4 => stage!(0, 1, 2, 3),
+                5 => stage!(0, 1, 2, 3, 4),
+                _ => stage!(0, 2, 3, 4, 5),
+            }
+            self.deriv(tmp, &mut rest[0]);
         }
+        // The error estimate, element by element in the weights' order (zero ones skipped).
         let m = 4 * self.n;
-        let mut e = vec![0.0; m];
-        for (kj, w) in k.iter().zip(DP_E) {
-            if w != 0.0 {
-                for (x, y) in e.iter_mut().zip(&kj[..m]) {
-                    *x += w * y;
-                }
+        let w = [DP_E[0], DP_E[2], DP_E[3], DP_E[4], DP_E[5], DP_E[6]];
+        let ks = [&k[0], &k[2], &k[3], &k[4], &k[5], &k[6]];
+        let error = |i: usize| {
+            let mut e = 0.0;
+            for (w, kj) in w.iter().zip(ks) {
+                e += w * kj[i];
             }
-        }
-        let (eu, ev) = e.split_at(2 * self.n);
-        let worst = |e: &[f64]| e.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-        (h / TOLERANCE) * (worst(eu) / scales.0).max(worst(ev) / scales.1)
+            e.abs()
+        };
+        let worst = |r: std::ops::Range<usize>| r.map(error).fold(0.0f64, f64::max);
+        let (eu, ev) = (worst(0..2 * self.n), worst(2 * self.n..m));
+        (h / TOLERANCE) * (eu / scales.0).max(ev / scales.1)
     }
 
     /// Writes the impact's end velocities into `velocities` (those before), after sharing
