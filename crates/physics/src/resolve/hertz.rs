@@ -390,22 +390,26 @@ impl Chain<'_> {
         let (dv, dj) = rest.split_at_mut(2 * n);
         du.copy_from_slice(v);
         dv.fill(0.0);
+        // Per ball (x, y): one bounds check a ball, not one a component.
+        let (u, v) = (u.as_chunks::<2>().0, v.as_chunks::<2>().0);
+        let dv = dv.as_chunks_mut::<2>().0;
         for (e, force) in self.edges.iter().zip(dj.iter_mut()) {
-            let (a, b) = (2 * e.a, 2 * e.b);
-            let d = (u[a] - u[b]) * e.n.x + (u[a + 1] - u[b + 1]) * e.n.y - e.gap;
+            let (ua, ub) = (u[e.a], u[e.b]);
+            let d = (ua[0] - ub[0]) * e.n.x + (ua[1] - ub[1]) * e.n.y - e.gap;
             if d <= 0.0 {
                 *force = 0.0;
                 continue;
             }
-            let rate = (v[a] - v[b]) * e.n.x + (v[a + 1] - v[b + 1]) * e.n.y;
+            let (va, vb) = (v[e.a], v[e.b]);
+            let rate = (va[0] - vb[0]) * e.n.x + (va[1] - vb[1]) * e.n.y;
             let f = self.hertz.force(d, rate);
             *force = f;
             if f > 0.0 {
                 let (fx, fy) = (f * e.n.x * inv_m, f * e.n.y * inv_m);
-                dv[a] -= fx;
-                dv[a + 1] -= fy;
-                dv[b] += fx;
-                dv[b + 1] += fy;
+                dv[e.a][0] -= fx;
+                dv[e.a][1] -= fy;
+                dv[e.b][0] += fx;
+                dv[e.b][1] += fy;
             }
         }
     }
