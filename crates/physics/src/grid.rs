@@ -60,7 +60,7 @@ pub struct Grid {
 
 impl Grid {
     /// A grid over the rectangle of half extents `half` for `count` balls of radius `radius`:
-    /// about [`BALLS_PER_CELL`] balls per cell on average, cells never narrower than `4R`.
+    /// about one ball per cell on average (`BALLS_PER_CELL`), cells never narrower than `4R`.
     pub fn new(half: Vec2, radius: f64, count: usize) -> Self {
         Self::with_cells(half, radius, count, count >= MIN_BALLS_FOR_GRID)
     }
