@@ -78,8 +78,9 @@ drill("05-thin-cut.json", "Thin cut", "A thin cut, 60 degrees, of the 1 into the
 o = (0.15, -0.48)
 img = (target("side_left")[0], 2 * -(HY - R) - (HY + R / 2))
 ub = unit(o, img)
+# The cue ball comes in at a 35 degree cut, so it leaves the 1's way back from the rail.
 drill("06-bank.json", "Cross-side bank", "Bank the 1 off the near long rail into the far side pocket.",
-      "free_play", [(0, add(add(o, ub, -2 * R), (0.15, 1.0), 0.6)), (1, o)], [pot(1, "side_left", 1), NOFOUL])
+      "free_play", [(0, add(add(o, ub, -2 * R), rot(ub, 35), -0.6)), (1, o)], [pot(1, "side_left", 1), NOFOUL])
 
 # 7: a kick: the 2 blocks the straight way to the 1 (9-ball: the 1 first, WPA 6.2).
 drill("07-kick.json", "One-rail kick", "The 2 hides the 1: kick off a cushion and hit the 1 first, with a legal shot (9-ball: the 1 first, a rail after contact).",
