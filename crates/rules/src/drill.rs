@@ -95,14 +95,14 @@ impl Zone {
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Goal {
     /// Pocket `ball` (in `pocket` if named), after it has touched at least `cushions`
-    /// cushions (a bank: 1).
+    /// cushions (a bank: 1; a jaw is not counted here, so a rattle is no bank).
     Pocket {
         /// The ball.
         ball: u8,
         /// The pocket it must drop in (`None`: any).
         #[serde(default, skip_serializing_if = "Option::is_none")]
         pocket: Option<Pocket>,
-        /// Cushions (or jaws) it must touch before it drops.
+        /// Cushions it must touch before it drops.
         #[serde(default)]
         cushions: u32,
     },
@@ -243,9 +243,9 @@ pub enum DrillError {
 pub struct DrillShot {
     /// The rules' summary of its events.
     pub summary: ShotSummary,
-    /// Cushion (or jaw) contacts of the cue ball before its first contact with a ball.
+    /// Cushion contacts of the cue ball before its first contact with a ball (jaws apart).
     pub cue_cushions_before_contact: u32,
-    /// Cushion (or jaw) contacts of each ball before it was pocketed (or in the whole shot),
+    /// Cushion contacts (jaws apart) of each ball before it was pocketed (or in the shot),
     /// by number; balls without any are left out.
     pub cushions: Vec<(u8, u32)>,
     /// The balls on the table at rest after the shot, by number.
@@ -274,7 +274,8 @@ impl DrillShot {
 
     /// Adds one event after the strike (the lean solver's way, one event at a time).
     pub fn record(&mut self, kind: &EventKind, numbers: &[u8]) {
-        if let EventKind::Cushion { ball, .. } | EventKind::Jaw { ball, .. } = *kind {
+        // Cushion noses only: a ball rattled in the jaws on its way in is no bank.
+        if let EventKind::Cushion { ball, .. } = *kind {
             let n = numbers.get(ball).copied().unwrap_or(u8::MAX);
             if n == CUE && self.summary.first_contact.is_none() {
                 self.cue_cushions_before_contact += 1;

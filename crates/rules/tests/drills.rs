@@ -265,3 +265,45 @@ fn a_score_keeps_tries_successes_and_the_best() {
     let json = serde_json::to_string(&s).unwrap();
     assert_eq!(serde_json::from_str::<DrillScore>(&json).unwrap(), s);
 }
+
+/// A bank counts cushions, not jaws; a kick counts the cue ball's cushions before contact.
+#[test]
+fn cushions_are_counted_per_ball_jaws_apart() {
+    use billiards_physics::{Cushion, EventKind};
+    let numbers = [0, 1];
+    let mut s = DrillShot::default();
+    let cushion = |ball| EventKind::Cushion {
+        ball,
+        cushion: Cushion::Left,
+    };
+    s.record(&cushion(0), &numbers);
+    s.record(&EventKind::BallBall { a: 0, b: 1 }, &numbers);
+    s.record(&cushion(0), &numbers);
+    s.record(
+        &EventKind::Jaw {
+            ball: 1,
+            pocket: Pocket::SideLeft,
+        },
+        &numbers,
+    );
+    s.record(
+        &EventKind::Pocketed {
+            ball: 1,
+            pocket: Pocket::SideLeft,
+        },
+        &numbers,
+    );
+    assert_eq!(s.cue_cushions_before_contact, 1);
+    assert_eq!((s.cushions_of(0), s.cushions_of(1)), (2, 0));
+    assert_eq!(s.summary.first_contact, Some(1));
+    let bank = r#"[{ "kind": "pocket", "ball": 1, "cushions": 1 }, { "kind": "first_contact", "ball": 1, "cushions": 1 }]"#;
+    let d = Drill::from_json(&straight_drill(bank)).unwrap();
+    let a = d.judge(&[s.clone()]);
+    assert!(!a.success, "the jaw is no bank: {a:?}");
+    assert!(
+        a.reasons[0].contains("0 cushion(s)") && a.reasons[1].starts_with("met"),
+        "{a:?}"
+    );
+    s.cushions.push((1, 1));
+    assert!(d.judge(&[s]).success);
+}
