@@ -307,3 +307,29 @@ fn cushions_are_counted_per_ball_jaws_apart() {
     s.cushions.push((1, 1));
     assert!(d.judge(&[s]).success);
 }
+
+/// A drill's rules state: the cue ball as it lies, the ball on by the game (WPA 6.2, 3.4).
+#[test]
+fn a_drill_position_is_a_rack_in_progress() {
+    use billiards_rules::{CueBall, GameState, Seat};
+    let nine = GameState::in_progress(Game::NineBall, Seat::B, vec![9, 7, 8]);
+    assert_eq!(nine.on_table, vec![7, 8, 9]);
+    assert_eq!(nine.next.legal_first, vec![7]);
+    assert_eq!(
+        (nine.next.shooter, nine.next.cue_ball),
+        (Seat::B, CueBall::AsItLies)
+    );
+    assert!(!nine.next.break_shot);
+    let eight = GameState::in_progress(Game::EightBall, Seat::A, vec![3, 8, 12]);
+    assert_eq!(eight.next.legal_first, vec![3, 12], "open table: not the 8");
+    let free = GameState::in_progress(Game::FreePlay, Seat::A, vec![2, 1]);
+    assert_eq!(free.next.legal_first, vec![1, 2]);
+    // A drill round-trips through its JSON.
+    let text = std::fs::read_to_string(assets().join("10-position-zone.json")).unwrap();
+    let d = Drill::from_json(&text).unwrap();
+    assert_eq!(
+        Drill::from_json(&serde_json::to_string(&d).unwrap()).unwrap(),
+        d
+    );
+    assert_eq!(d.game_state().next.legal_first, vec![1, 2]);
+}
