@@ -80,3 +80,28 @@ fn position_zone() {
 fn long_pot() {
     solvable("11-long-pot.json", Level::Hard, Method::Goals);
 }
+
+/// Why the goal search: the rules' search pots the ball but knows nothing of the zone, so
+/// on the stop shot it leaves the cue ball elsewhere far more often than the drill's search.
+#[test]
+fn the_rules_search_does_not_play_for_a_drills_zone() {
+    use billiards_ai::Decision;
+    let d = load("01-stop-shot.json");
+    let params = drill::game_params();
+    let sim = d.simulation(params).unwrap();
+    let Decision::Shoot(plan) =
+        billiards_ai::decide(&d.game_state(), &sim, Level::Hard, 1).unwrap()
+    else {
+        panic!("a choice in free play");
+    };
+    let rules = (0..10)
+        .map(|k| drill::attempt(&d, params, Level::Hard, k, Some(plan.shot)).unwrap())
+        .filter(|a| a.success)
+        .count();
+    let goals = drill::session(&d, params, Level::Hard, 10, 1)
+        .unwrap()
+        .score
+        .successes;
+    eprintln!("stop shot: the rules' search {rules} of 10, the goal search {goals} of 10");
+    assert!(goals as usize >= rules + 5, "{rules} against {goals}");
+}
