@@ -14,6 +14,7 @@
 //! - [`placement`]: ball in hand, by the same search from the best few places;
 //! - [`twoply`]: the best few shots valued two plies deep, by a search of the next shot
 //!   from their noisy outcomes;
+//! - [`drill`]: the computer at a drill, by the rules' search or one scored by the drill;
 //! - [`level`]: skill levels (noise and budget); [`greedy`]: a baseline without simulation;
 //! - [`snooker`]: the computer at snooker ([`decide_snooker`]), the same search judged by the
 //!   WPBSA rules and valued in points, and a whole frame between two levels.
@@ -29,6 +30,7 @@
 //! `GameState::play`. A [`Decision::Choose`] goes to `GameState::choose`.
 
 pub mod candidates;
+pub mod drill;
 pub mod evaluate;
 pub mod greedy;
 pub mod level;

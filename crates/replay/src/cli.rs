@@ -45,6 +45,8 @@ pub enum Command {
     /// A position as a short code, to and from JSON (`encode FILE.json`, `decode CODE`).
     #[command(subcommand)]
     Position(crate::position::PositionCmd),
+    /// A drill played by the computer: each try's judgement and the score.
+    Drill(crate::drill::DrillArgs),
     /// Open the game on a recording (needs the game binary: `billiards replay FILE`).
     Replay {
         /// The recording.
@@ -88,6 +90,7 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Soak(a) => return crate::soak::run(a),
         Command::Study(a) => return crate::study::run(a),
         Command::Position(c) => crate::position::run(c),
+        Command::Drill(a) => crate::drill::run(a),
         Command::Replay { file } => Err(format!(
             "{}: replay opens the game: run `billiards replay {}`",
             file.display(),

@@ -1,11 +1,12 @@
 //! Headless tools for billiards recordings: the command line (`simulate`, `verify`, `export`;
 //! the batch commands `tournament`, `breaks`, `soak` and `study`, sharded by [`shard`];
-//! `position`, position codes to and from JSON),
+//! `position`, position codes to and from JSON; `drill`, a drill played by the computer),
 //! a software top-view renderer and GIF/PNG export. No GPU, no Bevy: they run anywhere.
 
 pub mod args;
 pub mod breaks;
 pub mod cli;
+pub mod drill;
 pub mod export;
 pub mod game;
 pub mod position;

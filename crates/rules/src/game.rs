@@ -405,6 +405,28 @@ impl GameState {
         }
     }
 
+    /// A rack in progress (a drill, a shared position): `on_table` the object balls left,
+    /// `shooter` at the table with the cue ball as it lies, no fouls, an open table in
+    /// 8-ball, the lowest ball on in 9-ball (WPA 6.2).
+    pub fn in_progress(game: Game, shooter: Seat, mut on_table: Vec<u8>) -> Self {
+        on_table.sort_unstable();
+        on_table.dedup();
+        let mut state = Self::new(game, shooter);
+        state.on_table = on_table;
+        state.next = match game {
+            Game::NineBall => crate::nine_ball::normal_next(&state, shooter, CueBall::AsItLies),
+            Game::EightBall => crate::eight_ball::normal_next(&state, shooter, CueBall::AsItLies),
+            Game::FreePlay => NextShot::plain(
+                shooter,
+                CueBall::AsItLies,
+                state.on_table.clone(),
+                CallRule::NotUsed,
+                0,
+            ),
+        };
+        state
+    }
+
     /// The group of `seat` (8-ball; `None` while the table is open).
     pub fn group(&self, seat: Seat) -> Option<Group> {
         match seat {

@@ -15,9 +15,11 @@
 //! - [`log`]: the rules side of a recording (calls, choices, verdicts), kept beside it;
 //! - [`breaks`]: one break judged by the rules and the counts over many (break statistics);
 //! - [`snooker`]: snooker frames and matches under the WPBSA rules, an API of its own;
-//! - [`position`]: a position (game, table, balls, physics, shot) as a short text code.
+//! - [`position`]: a position (game, table, balls, physics, shot) as a short text code;
+//! - [`drill`]: drills, a position with goals and tries, judged from the solver's record.
 
 pub mod breaks;
+pub mod drill;
 pub mod eight_ball;
 pub mod foul;
 pub mod game;
@@ -32,6 +34,7 @@ pub mod shot;
 pub mod shots;
 pub mod snooker;
 
+pub use drill::{Attempt, Drill, DrillError, DrillScore, DrillShot, Goal, Zone};
 pub use foul::{BallOn, Foul, Group, WinReason, pocket_name};
 pub use game::{
     Call, CallRule, Choice, CueBall, Game, GameState, NextShot, Outcome, RuleError, Seat, Verdict,
