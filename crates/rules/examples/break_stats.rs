@@ -285,9 +285,8 @@ type Change = (&'static str, String, Apply);
 /// The study's changes, each alone from the options given.
 fn changes() -> Vec<Change> {
     let mut c: Vec<Change> = vec![("base", "as given".into(), Box::new(|_, _| {}))];
-    let set = |k: &'static str, v: f64| -> Apply {
-        Box::new(move |o, _| o.set.push((k.into(), v)))
-    };
+    let set =
+        |k: &'static str, v: f64| -> Apply { Box::new(move |o, _| o.set.push((k.into(), v))) };
     for v in [8.0, 9.0, 10.0, 11.0, 12.0, 13.0, 14.0] {
         c.push((
             "cue ball speed",
@@ -310,7 +309,7 @@ fn changes() -> Vec<Change> {
         ));
     }
     for (k, label, vals) in [
-        ("young", "Young's modulus (Pa)", &[3e9, 9e9][..]),
+        ("young", "Young's modulus", &[3e9, 9e9][..]),
         ("poisson", "Poisson's ratio", &[0.30, 0.40]),
         (
             "e_ball",
@@ -334,7 +333,12 @@ fn changes() -> Vec<Change> {
         ),
     ] {
         for &v in vals {
-            c.push((label, format!("{k} = {v}"), set(k, v)));
+            let value = if k == "young" {
+                format!("{k} = {} GPa", v / 1e9)
+            } else {
+                format!("{k} = {v}")
+            };
+            c.push((label, value, set(k, v)));
         }
     }
     for (name, label) in [
@@ -525,10 +529,13 @@ fn main() {
         let rows = study(&o);
         if let Some(path) = &o.svg {
             let title = format!(
-                "9-ball break from the {}, {}–{} m/s, {} breaks a row: one change at a time",
+                "9-ball break from the {}, {} rack, {}–{} m/s, aim sd {}°, {} breaks a row: \
+                 one change at a time",
                 o.cue,
+                o.rack.name(),
                 o.speed.0,
                 o.speed.1,
+                o.aim_sd.to_degrees(),
                 o.breaks * o.seeds.max(1) as usize
             );
             std::fs::write(path, study_svg(&rows, &title)).expect("the SVG is written");
