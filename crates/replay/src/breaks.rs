@@ -54,8 +54,9 @@ pub struct BreaksArgs {
     /// Tip height as a fraction of the radius (negative: draw).
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub tip_height: f64,
-    /// A physical constant changed, `NAME=VALUE` (repeatable): mu_slide, mu_roll, e_ball,
-    /// mu_ball, e_cushion, mu_cushion, young, mu_ball_slip.
+    /// A physical constant of the game's physics (Mathavan 2010 cushion) changed,
+    /// `NAME=VALUE` (repeatable): mu_slide, mu_roll, e_ball, mu_ball, e_cushion, mu_cushion,
+    /// young, poisson, mu_ball_slip, cushion_height.
     #[arg(long = "set", value_parser = parse_set)]
     pub set: Vec<(String, f64)>,
     /// Every contact resolved pair by pair (no cluster impacts).
@@ -212,6 +213,8 @@ fn rows(a: &BreaksArgs) -> Result<Vec<(BreakSpec, RackStyle)>, String> {
                                 speed,
                                 aim_sd: a.aim_sd_deg.to_radians(),
                                 tip_height: a.tip_height,
+                                elevation: 0.0,
+                                nine_on_spot: false,
                             },
                             rack,
                         ));

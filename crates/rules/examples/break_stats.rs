@@ -28,10 +28,21 @@
 //! The default break: the cue ball in the break box (behind the head string, within one
 //! diamond of it and of the long axis: `x` in `[head string - L/8, head string]`, `|y| <= W/4`),
 //! aimed at the centre of the head ball, centre ball, speed uniform in 10–12 m/s. Physics: the
-//! game's defaults (spin model, Han 2005 cushion, 15 mm jaws, cluster impacts).
+//! game's defaults (spin model, Mathavan 2010 cushion with e 0.98 and mu 0.14 as the game's
+//! settings have it, 15 mm jaws, cluster impacts); `--cushion han|reflect|mathavan` changes it
+//! (Han 2005 with e 0.85, mu 0.2 is the solver's own `Params::default()`).
+//!
+//! More options: `--elevation-deg D` (cue elevation, 0–30°), `--nine-on-spot` (9-ball: the
+//! rack two rows nearer the head, the 9 on the foot spot), `--seeds K` (K streams of
+//! `--breaks` each, seeds S to S + K - 1), `--study` (the break study: 9-ball, one change at a
+//! time from the other options, one row each; docs/realism.md, "The break"), `--svg PATH`
+//! (with `--study`: its plot).
 
-use billiards_physics::{Table, TableChoice, table::INCH};
-use billiards_rules::breaks::{BreakSpec, BreakStats, Cue, SETTABLE, one_break, params, wilson};
+use billiards_physics::{CushionModel, Table, TableChoice, table::INCH};
+use billiards_rules::breaks::{
+    BreakSpec, BreakStats, Cue, GAME_CUSHION, SETTABLE, cushion_by_name, one_break, params_with,
+    wilson,
+};
 use billiards_rules::{Game, RackStyle};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -55,6 +66,18 @@ struct Options {
     tip_height: f64,
     /// Standard deviation of a Gaussian error of the aim, radians (0: exactly at the ball).
     aim_sd: f64,
+    /// The cushion model (default: the game's, Mathavan 2010).
+    cushion: CushionModel,
+    /// Cue elevation, radians.
+    elevation: f64,
+    /// 9-ball: the 9 on the foot spot instead of the 1.
+    nine_on_spot: bool,
+    /// Random streams a row (seeds `seed`, `seed + 1`, ...), `breaks` each.
+    seeds: u64,
+    /// Print the sensitivity study (one change at a time from these options).
+    study: bool,
+    /// Write the study's plot here (SVG).
+    svg: Option<String>,
 }
 
 fn options() -> Result<Options, String> {
@@ -72,6 +95,12 @@ fn options() -> Result<Options, String> {
         set: Vec::new(),
         tip_height: 0.0,
         aim_sd: 0.0,
+        cushion: GAME_CUSHION,
+        elevation: 0.0,
+        nine_on_spot: false,
+        seeds: 1,
+        study: false,
+        svg: None,
     };
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut it = args.iter();
@@ -83,6 +112,14 @@ fn options() -> Result<Options, String> {
             }
             "--suite" => {
                 o.suite = true;
+                continue;
+            }
+            "--study" => {
+                o.study = true;
+                continue;
+            }
+            "--nine-on-spot" => {
+                o.nine_on_spot = true;
                 continue;
             }
             _ => {}
@@ -130,6 +167,16 @@ fn options() -> Result<Options, String> {
                 }
                 o.set.push((k.into(), v.parse().map_err(|e| bad(&e))?));
             }
+            "--cushion" => o.cushion = cushion_by_name(value).map_err(|e| bad(&e))?,
+            "--elevation-deg" => {
+                let d: f64 = value.parse().map_err(|e| bad(&e))?;
+                if !(0.0..=30.0).contains(&d) {
+                    return Err(bad(&"expected 0 to 30 degrees"));
+                }
+                o.elevation = d.to_radians();
+            }
+            "--seeds" => o.seeds = value.parse().map_err(|e| bad(&e))?,
+            "--svg" => o.svg = Some(value.clone()),
             "--tip-height" => o.tip_height = value.parse().map_err(|e| bad(&e))?,
             "--aim-sd-deg" => {
                 let d: f64 = value.parse().map_err(|e| bad(&e))?;
@@ -156,7 +203,8 @@ struct Setup {
 }
 
 fn run(o: &Options, s: &Setup) -> BreakStats {
-    let params = params(o.pairwise, &o.set).expect("--set values in the physical ranges");
+    let params =
+        params_with(o.cushion, o.pairwise, &o.set).expect("--set values in the physical ranges");
     let spec = BreakSpec {
         game: s.game,
         table: s.table,
@@ -165,12 +213,16 @@ fn run(o: &Options, s: &Setup) -> BreakStats {
         speed: o.speed,
         aim_sd: s.aim_sd,
         tip_height: o.tip_height,
+        elevation: o.elevation,
+        nine_on_spot: o.nine_on_spot,
     };
-    // One stream for the whole row, as the published tables were made.
-    let mut rng = ChaCha8Rng::seed_from_u64(o.seed);
+    // One stream a seed for the whole row, as the published tables were made.
     let mut st = BreakStats::default();
-    for _ in 0..o.breaks {
-        st.add(&one_break(&spec, &params, &mut rng).expect("a break is played"));
+    for seed in o.seed..o.seed + o.seeds.max(1) {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        for _ in 0..o.breaks {
+            st.add(&one_break(&spec, &params, &mut rng).expect("a break is played"));
+        }
     }
     st
 }
@@ -224,6 +276,224 @@ fn default_table(game: Game) -> TableChoice {
     name.parse().expect("a table name")
 }
 
+/// What a change of the study does to the options and the setup.
+type Apply = Box<dyn Fn(&mut Options, &mut Setup)>;
+
+/// One change of the study: its group, its label and what it changes.
+type Change = (&'static str, String, Apply);
+
+/// The study's changes, each alone from the options given.
+fn changes() -> Vec<Change> {
+    let mut c: Vec<Change> = vec![("base", "as given".into(), Box::new(|_, _| {}))];
+    let set =
+        |k: &'static str, v: f64| -> Apply { Box::new(move |o, _| o.set.push((k.into(), v))) };
+    for v in [8.0, 9.0, 10.0, 11.0, 12.0, 13.0, 14.0] {
+        c.push((
+            "cue ball speed",
+            format!("{v} ± 0.5 m/s"),
+            Box::new(move |o, _| o.speed = (v - 0.5, v + 0.5)),
+        ));
+    }
+    for h in [0.1, -0.1, -0.2, -0.3] {
+        c.push((
+            "tip height",
+            format!("{h:+} R"),
+            Box::new(move |o, _| o.tip_height = h),
+        ));
+    }
+    for d in [3.0, 6.0, 10.0] {
+        c.push((
+            "cue elevation",
+            format!("{d}°"),
+            Box::new(move |o, _| o.elevation = f64::to_radians(d)),
+        ));
+    }
+    for (k, label, vals) in [
+        ("young", "Young's modulus", &[3e9, 9e9][..]),
+        ("poisson", "Poisson's ratio", &[0.30, 0.40]),
+        (
+            "e_ball",
+            "ball restitution (and Hertz damping)",
+            &[0.92, 0.98],
+        ),
+        ("mu_ball", "ball–ball friction", &[0.0, 0.03, 0.08]),
+        (
+            "mu_ball_slip",
+            "ball–ball friction, Alciatore's mu(v) x",
+            &[1.0],
+        ),
+        ("mu_slide", "cloth sliding friction", &[0.15, 0.25, 0.3]),
+        ("mu_roll", "cloth rolling resistance", &[0.005, 0.015]),
+        ("e_cushion", "cushion restitution", &[0.85, 0.9, 0.95]),
+        ("mu_cushion", "cushion friction", &[0.1, 0.2]),
+        (
+            "cushion_height",
+            "cushion nose height (of the diameter)",
+            &[0.6, 0.65],
+        ),
+    ] {
+        for &v in vals {
+            let value = if k == "young" {
+                format!("{k} = {} GPa", v / 1e9)
+            } else {
+                format!("{k} = {v}")
+            };
+            c.push((label, value, set(k, v)));
+        }
+    }
+    for (name, label) in [
+        ("han", "Han 2005, e 0.85, mu 0.2"),
+        ("reflect", "reflection, e 0.85"),
+    ] {
+        c.push((
+            "cushion model",
+            label.into(),
+            Box::new(move |o, _| o.cushion = cushion_by_name(name).expect("a cushion")),
+        ));
+    }
+    for (g, label) in [
+        (0.0, "frozen (template)"),
+        (0.05e-3, "0.05 mm slack (triangle)"),
+        (0.1e-3, "0.1 mm slack"),
+    ] {
+        c.push(("rack gaps", label.into(), Box::new(move |_, s| s.gap = g)));
+    }
+    c.push((
+        "rack",
+        "9 on the spot".into(),
+        Box::new(|o, _| o.nine_on_spot = true),
+    ));
+    for d in [0.125, 0.25] {
+        c.push((
+            "aim error",
+            format!("sd {d}°"),
+            Box::new(move |_, s| s.aim_sd = f64::to_radians(d)),
+        ));
+    }
+    c.push((
+        "pockets",
+        "WPA wide (4.625 in corners)".into(),
+        Box::new(|_, s| s.table = "9ft-wide".parse().expect("a table")),
+    ));
+    c
+}
+
+/// A row of the study: group, label, the counts.
+struct StudyRow {
+    group: &'static str,
+    label: String,
+    stats: BreakStats,
+}
+
+/// Runs the study: 9-ball on the options' table, each change alone.
+fn study(o: &Options) -> Vec<StudyRow> {
+    println!(
+        "| change | value | >= 1 ball (95 %) | balls/break | scratch (95 %) | 9 on the break (95 %) | \
+         success |"
+    );
+    println!("|---|---|---|---|---|---|---|");
+    let mut rows = Vec::new();
+    for (group, label, f) in changes() {
+        let mut oo = o.clone();
+        let mut s = Setup {
+            game: Game::NineBall,
+            table: o.table.unwrap_or(default_table(Game::NineBall)),
+            gap: o.gaps.as_ref().map_or(o.rack.gap(), |g| g[0]),
+            label: String::new(),
+            cue: o.cue,
+            aim_sd: o.aim_sd,
+        };
+        f(&mut oo, &mut s);
+        let st = run(&oo, &s);
+        let n = st.breaks.max(1) as f64;
+        let pct = |k: usize| 100.0 * k as f64 / n;
+        let ci = |k: usize| {
+            let (lo, hi) = wilson(k, st.breaks);
+            format!("{:.1} % ({lo:.1}–{hi:.1})", pct(k))
+        };
+        let (mean, half) = st.balls_per_break();
+        println!(
+            "| {group} | {label} | {} | {mean:.2} ± {half:.2} | {} | {} | {:.1} % |",
+            ci(st.with_ball),
+            ci(st.scratches),
+            ci(st.money_ball),
+            pct(st.success)
+        );
+        rows.push(StudyRow {
+            group,
+            label,
+            stats: st,
+        });
+    }
+    rows
+}
+
+/// The study as an SVG: each row's rate with its 95 % interval, the base's as a band, the
+/// target 66–85 % shaded.
+fn study_svg(rows: &[StudyRow], title: &str) -> String {
+    let (w, row_h, left, right, top) = (900.0, 16.0, 430.0, 40.0, 50.0);
+    let h = top + row_h * rows.len() as f64 + 40.0;
+    let (x0, x1) = (20.0, 100.0);
+    let x = |p: f64| left + (p - x0) / (x1 - x0) * (w - left - right);
+    let mut out = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" \
+         font-family=\"sans-serif\" font-size=\"11\">\n\
+         <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n\
+         <text x=\"{}\" y=\"18\" font-size=\"13\" text-anchor=\"middle\">{title}</text>\n",
+        w / 2.0
+    );
+    let y_end = top + row_h * rows.len() as f64;
+    out += &format!(
+        "<rect x=\"{:.1}\" y=\"{top}\" width=\"{:.1}\" height=\"{:.1}\" fill=\"#dfd\"/>\n",
+        x(66.0),
+        x(85.0) - x(66.0),
+        y_end - top
+    );
+    if let Some(base) = rows.first() {
+        let (lo, hi) = wilson(base.stats.with_ball, base.stats.breaks);
+        out += &format!(
+            "<rect x=\"{:.1}\" y=\"{top}\" width=\"{:.1}\" height=\"{:.1}\" fill=\"#ddd\" \
+             opacity=\"0.7\"/>\n",
+            x(lo),
+            x(hi) - x(lo),
+            y_end - top
+        );
+    }
+    for p in (20..=100).step_by(10) {
+        let px = x(p as f64);
+        out += &format!(
+            "<line x1=\"{px:.1}\" y1=\"{top}\" x2=\"{px:.1}\" y2=\"{y_end}\" stroke=\"#bbb\" \
+             stroke-width=\"0.5\"/>\n<text x=\"{px:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{p} %</text>\n",
+            y_end + 14.0
+        );
+    }
+    out += &format!(
+        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">breaks with a ball (95 % Wilson \
+         interval); green: the target 66–85 %; grey: the base's interval</text>\n",
+        x(60.0),
+        y_end + 30.0
+    );
+    for (i, r) in rows.iter().enumerate() {
+        let y = top + row_h * (i as f64 + 0.5);
+        let n = r.stats.breaks.max(1) as f64;
+        let p = 100.0 * r.stats.with_ball as f64 / n;
+        let (lo, hi) = wilson(r.stats.with_ball, r.stats.breaks);
+        out += &format!(
+            "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"end\">{}: {}</text>\n\
+             <line x1=\"{:.1}\" y1=\"{y:.1}\" x2=\"{:.1}\" y2=\"{y:.1}\" stroke=\"black\"/>\n\
+             <circle cx=\"{:.1}\" cy=\"{y:.1}\" r=\"3\" fill=\"#c00\"/>\n",
+            left - 8.0,
+            y + 4.0,
+            r.group,
+            r.label.replace('&', "and"),
+            x(lo),
+            x(hi),
+            x(p)
+        );
+    }
+    out + "</svg>\n"
+}
+
 fn main() {
     let o = match options() {
         Ok(o) => o,
@@ -233,18 +503,45 @@ fn main() {
         }
     };
     println!(
-        "{} breaks a row, seed {}, {}–{} m/s, cue ball {:?}, spin model with 15 mm jaws, {}",
+        "{} breaks a row, seed {}{}, {}–{} m/s, cue ball {:?}, tip {} R, elevation {:.1}°, \
+         aim sd {:.3}°, {:?}, spin model with 15 mm jaws, {}",
         o.breaks,
         o.seed,
+        if o.seeds > 1 {
+            format!(" to {}", o.seed + o.seeds - 1)
+        } else {
+            String::new()
+        },
         o.speed.0,
         o.speed.1,
         o.cue,
+        o.tip_height,
+        o.elevation.to_degrees(),
+        o.aim_sd.to_degrees(),
+        o.cushion,
         if o.pairwise {
             "contacts pair by pair"
         } else {
             "cluster impacts"
         }
     );
+    if o.study {
+        let rows = study(&o);
+        if let Some(path) = &o.svg {
+            let title = format!(
+                "9-ball break from the {}, {} rack, {}–{} m/s, aim sd {}°, {} breaks a row: \
+                 one change at a time",
+                o.cue,
+                o.rack.name(),
+                o.speed.0,
+                o.speed.1,
+                o.aim_sd.to_degrees(),
+                o.breaks * o.seeds.max(1) as usize
+            );
+            std::fs::write(path, study_svg(&rows, &title)).expect("the SVG is written");
+        }
+        return;
+    }
     header();
     let mut setups = Vec::new();
     if o.suite {

@@ -62,6 +62,8 @@ fn main() {
             speed: (10.0, 10.0),
             aim_sd: sd.to_radians(),
             tip_height: 0.0,
+            elevation: 0.0,
+            nine_on_spot: false,
         };
         let mut rng = ChaCha8Rng::seed_from_u64(1);
         let (mut down, mut head, mut side, mut foot, mut direct) = (0, 0, 0, 0, 0);

@@ -6,8 +6,9 @@
 //! cue ball's place ([`Cue`]), the speed (uniform in the spec's range) and, with an aim
 //! error, one standard normal. The same stream gives the same break, bit for bit.
 //!
-//! Physics: the game's defaults (spin model, Han 2005 cushion, 15 mm jaws, cluster impacts)
-//! unless [`params`] is told otherwise.
+//! Physics: the game's defaults (spin model, Mathavan 2010 cushion with e 0.98 and mu 0.14 as
+//! in `src/settings/physics.rs`, 15 mm jaws, cluster impacts) unless [`params`] is told
+//! otherwise ([`params_with`] takes another cushion).
 
 use crate::{Call, Foul, Game, GameState, Seat, summarise};
 use billiards_physics::{
@@ -73,7 +74,7 @@ impl FromStr for Cue {
 }
 
 /// The physical constants [`params`] may change.
-pub const SETTABLE: [&str; 8] = [
+pub const SETTABLE: [&str; 10] = [
     "mu_slide",
     "mu_roll",
     "e_ball",
@@ -81,16 +82,46 @@ pub const SETTABLE: [&str; 8] = [
     "e_cushion",
     "mu_cushion",
     "young",
+    "poisson",
     "mu_ball_slip",
+    "cushion_height",
 ];
 
-/// The game's physics with `set` applied (name, value; names from [`SETTABLE`]: `mu_ball`
+/// The game's cushion (`src/settings/physics.rs`: Mathavan et al. 2010 with their fitted
+/// e 0.98 and mu 0.14; docs/realism.md, "Cushion").
+pub const GAME_CUSHION: CushionModel = CushionModel::MATHAVAN_2010;
+
+/// A cushion model by name: `mathavan` (the game's, e 0.98, mu 0.14), `han` (Han 2005, e
+/// 0.85, mu 0.2: the solver's own default) or `reflect` (e 0.85).
+pub fn cushion_by_name(name: &str) -> Result<CushionModel, String> {
+    Ok(match name {
+        "mathavan" | "mathavan2010" => CushionModel::MATHAVAN_2010,
+        "han" | "han2005" => CushionModel::Han2005 { e: 0.85, mu: 0.2 },
+        "reflect" => CushionModel::Reflect { e: 0.85 },
+        _ => return Err(format!("{name:?}: expected mathavan, han or reflect")),
+    })
+}
+
+/// The game's physics ([`GAME_CUSHION`]) with `set` applied; see [`params_with`].
+pub fn params(pairwise: bool, set: &[(String, f64)]) -> Result<Params, String> {
+    params_with(GAME_CUSHION, pairwise, set)
+}
+
+/// The game's physics with the cushion `cushion` and `set` applied (name, value; names from [`SETTABLE`]: `mu_ball`
 /// makes ball friction a constant, `mu_ball_slip` is a factor on Alciatore's slip-dependent
 /// fit, 0 for the constant `mu_ball`), and with `pairwise` every contact resolved pair by
 /// pair (no cluster impacts). An unknown name or a value out of the physical ranges is an
-/// error.
-pub fn params(pairwise: bool, set: &[(String, f64)]) -> Result<Params, String> {
-    let mut model = SpinModel::default();
+/// error. `e_cushion` and `mu_cushion` set the chosen cushion's constants; `e_ball` also
+/// sets the Hertz damping of cluster impacts, which is calibrated to it.
+pub fn params_with(
+    cushion: CushionModel,
+    pairwise: bool,
+    set: &[(String, f64)],
+) -> Result<Params, String> {
+    let mut model = SpinModel {
+        cushion,
+        ..SpinModel::default()
+    };
     if pairwise {
         model.cluster = None;
     }
@@ -120,11 +151,25 @@ pub fn params(pairwise: bool, set: &[(String, f64)]) -> Result<Params, String> {
                     _ => BallFriction::Constant,
                 }
             }
-            ("e_cushion", CushionModel::Han2005 { e, .. } | CushionModel::Reflect { e }) => *e = v,
-            ("mu_cushion", CushionModel::Han2005 { mu, .. }) => *mu = v,
+            (
+                "e_cushion",
+                CushionModel::Han2005 { e, .. }
+                | CushionModel::Mathavan2010 { e, .. }
+                | CushionModel::Reflect { e },
+            ) => *e = v,
+            (
+                "mu_cushion",
+                CushionModel::Han2005 { mu, .. } | CushionModel::Mathavan2010 { mu, .. },
+            ) => *mu = v,
+            ("cushion_height", _) => model.cushion_height = v,
             ("young", _) => {
                 if let Some(h) = model.cluster.as_mut() {
                     h.young = v;
+                }
+            }
+            ("poisson", _) => {
+                if let Some(h) = model.cluster.as_mut() {
+                    h.poisson = v;
                 }
             }
             _ => {}
@@ -180,6 +225,13 @@ pub struct BreakSpec {
     pub aim_sd: f64,
     /// Tip height as a fraction of the radius (0: centre ball, negative: draw).
     pub tip_height: f64,
+    /// Cue elevation, radians (0: level; the strike keeps the ball on the table).
+    #[serde(default)]
+    pub elevation: f64,
+    /// 9-ball: the rack moved two rows towards the head so that the 9, not the 1, is on the
+    /// foot spot ("9 on the spot", a racking rule of some professional events).
+    #[serde(default)]
+    pub nine_on_spot: bool,
 }
 
 /// What one break did.
@@ -241,11 +293,7 @@ pub fn break_run(
 ) -> Result<Simulation, BreakError> {
     let err = |e: &dyn fmt::Display| BreakError(e.to_string());
     let table = spec.table.table().with_jaws(0.015);
-    let seed = rng.random();
-    let mut balls: Vec<BallSetup> = match spec.game {
-        Game::NineBall => crate::racks::nine_ball_spaced(&table, &params.ball, seed, spec.gap),
-        _ => crate::racks::eight_ball_spaced(&table, &params.ball, seed, spec.gap),
-    };
+    let mut balls = rack(spec, &table, params, rng.random());
     let cue = cue_position(&table, spec.cue, params.ball.radius, rng);
     balls[0].position = cue;
     let speed = rng.random_range(spec.speed.0..=spec.speed.1);
@@ -263,11 +311,28 @@ pub fn break_run(
             side: 0.0,
             height: spec.tip_height,
         },
+        elevation: spec.elevation,
         ..Shot::new(aim, speed)
     };
     sim.strike(0, shot).map_err(|e| err(&e))?;
     sim.run_to_rest().map_err(|e| err(&e))?;
     Ok(sim)
+}
+
+/// The rack of `spec` on `table` from `seed`, the cue ball first (on the head spot).
+pub fn rack(spec: &BreakSpec, table: &Table, params: &Params, seed: u64) -> Vec<BallSetup> {
+    let mut balls: Vec<BallSetup> = match spec.game {
+        Game::NineBall => crate::racks::nine_ball_spaced(table, &params.ball, seed, spec.gap),
+        _ => crate::racks::eight_ball_spaced(table, &params.ball, seed, spec.gap),
+    };
+    if spec.nine_on_spot && spec.game == Game::NineBall {
+        // The 9 is two rows behind the apex; rows are sqrt(3)/2 of a spacing apart.
+        let back = 3f64.sqrt() * (2.0 * params.ball.radius + spec.gap);
+        for b in balls.iter_mut().skip(1) {
+            b.position.x -= back;
+        }
+    }
+    balls
 }
 
 /// Counts over a set of breaks: whole numbers only, so sets add up in any order.
@@ -364,6 +429,8 @@ mod tests {
             speed: (10.0, 12.0),
             aim_sd: 0.0,
             tip_height: 0.0,
+            elevation: 0.0,
+            nine_on_spot: false,
         };
         let p = params(false, &[]).unwrap();
         let a = one_break(&spec, &p, &mut ChaCha8Rng::seed_from_u64(3)).unwrap();
@@ -374,5 +441,57 @@ mod tests {
         s.add(&a);
         assert_eq!(s.merged(s).breaks, 2);
         assert!(params(false, &[("nope".into(), 1.0)]).is_err());
+    }
+
+    fn cushion_of(p: &Params) -> CushionModel {
+        match p.model {
+            Model::Spin(m) => m.cushion,
+            Model::Paper(_) => panic!("the spin model"),
+        }
+    }
+
+    #[test]
+    fn the_break_uses_the_game_cushion_and_sets_its_constants() {
+        assert_eq!(cushion_of(&params(false, &[]).unwrap()), GAME_CUSHION);
+        let p = params(
+            false,
+            &[("e_cushion".into(), 0.9), ("mu_cushion".into(), 0.1)],
+        );
+        assert_eq!(
+            cushion_of(&p.unwrap()),
+            CushionModel::Mathavan2010 { e: 0.9, mu: 0.1 }
+        );
+        let han = cushion_by_name("han").unwrap();
+        assert_eq!(han, CushionModel::default());
+        assert_eq!(cushion_of(&params_with(han, false, &[]).unwrap()), han);
+        assert!(cushion_by_name("felt").is_err());
+        let p = params(false, &[("poisson".into(), 0.3)]).unwrap();
+        let Model::Spin(m) = p.model else { panic!() };
+        assert_eq!(m.cluster.unwrap().poisson, 0.3);
+    }
+
+    #[test]
+    fn nine_on_the_spot_puts_the_9_on_the_foot_spot() {
+        let mut spec = BreakSpec {
+            game: Game::NineBall,
+            table: "9ft".parse().unwrap(),
+            gap: 0.0,
+            cue: Cue::Box,
+            speed: (10.0, 12.0),
+            aim_sd: 0.0,
+            tip_height: 0.0,
+            elevation: 0.0,
+            nine_on_spot: false,
+        };
+        let table = spec.table.table();
+        let p = params(false, &[]).unwrap();
+        let at =
+            |balls: &[BallSetup], n: u8| balls.iter().find(|b| b.number == n).unwrap().position;
+        let normal = rack(&spec, &table, &p, 5);
+        assert!((at(&normal, 1) - table.foot_spot()).length() < 1e-12);
+        spec.nine_on_spot = true;
+        let moved = rack(&spec, &table, &p, 5);
+        assert!((at(&moved, 9) - table.foot_spot()).length() < 1e-12);
+        assert_eq!(normal.len(), moved.len());
     }
 }
