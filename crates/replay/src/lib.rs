@@ -1,5 +1,6 @@
 //! Headless tools for billiards recordings: the command line (`simulate`, `verify`, `export`;
-//! the batch commands `tournament`, `breaks`, `soak` and `study`, sharded by [`shard`]),
+//! the batch commands `tournament`, `breaks`, `soak` and `study`, sharded by [`shard`];
+//! `stress`, the many-ball table),
 //! a software top-view renderer and GIF/PNG export. No GPU, no Bevy: they run anywhere.
 
 pub mod breaks;
@@ -10,5 +11,6 @@ pub mod render;
 pub mod shard;
 pub mod snooker;
 pub mod soak;
+pub mod stress;
 pub mod study;
 pub mod tournament;
