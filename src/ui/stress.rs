@@ -72,7 +72,9 @@ fn rows(ui: &mut egui::Ui, state: &mut StressParam) {
         let button = egui::Button::new("Rack the stress table")
             .min_size(egui::vec2(BUTTON_WIDTH + 40.0, 0.0));
         if ui.add(button).clicked() {
-            if state.solver.as_ref().is_some_and(|s| s.in_progress()) {
+            // A table that will be refused asks nothing first: the refusal says why at once.
+            let builds = billiards_physics::racks::stress(&next.spec()).is_ok();
+            if builds && state.solver.as_ref().is_some_and(|s| s.in_progress()) {
                 state.confirm.0 = true;
             } else {
                 state.requests.write(StressRequested);
