@@ -13,6 +13,7 @@ pub mod replay;
 pub mod settings;
 pub mod sim;
 pub mod sound;
+pub mod stress;
 pub mod table;
 pub mod ui;
 pub mod view;
@@ -64,7 +65,12 @@ impl Plugin for GamePlugin {
             play::game::table_plugin,
             play::computer::plugin,
         ))
-        .add_plugins((config::plugin, view::graphics::plugin, view::plugin));
+        .add_plugins((
+            config::plugin,
+            view::graphics::plugin,
+            view::plugin,
+            stress::plugin,
+        ));
         #[cfg(feature = "sound")]
         app.add_plugins(sound::plugin);
         if let Some(file) = &self.options.replay {
@@ -72,6 +78,9 @@ impl Plugin for GamePlugin {
         }
         if let Some(game) = self.options.game {
             app.insert_resource(play::game::StartGame(game));
+        }
+        if let Some(balls) = self.options.stress {
+            app.insert_resource(stress::StartStress(balls));
         }
         if self.options.no_record {
             app.insert_resource(recording::RecordingsFolder(None));

@@ -31,6 +31,8 @@ pub struct LaunchOptions {
     pub replay: Option<PathBuf>,
     /// Start a match of this game (two players, race to 3) instead of free play.
     pub game: Option<crate::play::game::GameChoice>,
+    /// Start on the stress table with this many balls (frictionless, seed 1).
+    pub stress: Option<usize>,
 }
 
 /// Why the command line could not be understood.
@@ -71,6 +73,7 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                  [--game nine-ball|eight-ball|snooker|free-play] [--no-config]
                  [--size WxH] [--screenshot PATH [--settle SECONDS]]
                  [--check-layout PATH] [--open-sections] [--count-idle-frames SECONDS]
+                 [--stress BALLS]
 
   replay FILE         open a recording in the replay viewer
   --recordings DIR    save every game there, one file per rack (default: ./recordings)
@@ -79,6 +82,8 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                       is otherwise in the config directory: $XDG_CONFIG_HOME/billiards)
   --game GAME         start a match (two players, race to 3) of nine-ball, eight-ball
                       or snooker (best of 5 frames); free-play (the default) is the sandbox
+  --stress BALLS      start on the stress table (free play): BALLS balls on a table grown
+                      to hold them, frictionless; the panel's Stress table section changes it
 
   --screenshot PATH   wait until the scene has been drawn, save it as PNG to PATH, exit
   --settle SECONDS    how long every render pipeline must have been ready before the
@@ -179,6 +184,14 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                         }
                     });
                 }
+                "--stress" => {
+                    let value = args.next().ok_or(ArgsError::MissingValue("--stress"))?;
+                    // The count's own limits are the physics crate's, refused in the game.
+                    options.stress = Some(value.parse().map_err(|_| ArgsError::InvalidValue {
+                        flag: "--stress",
+                        value,
+                    })?);
+                }
                 "replay" if options.replay.is_none() => {
                     let file = args.next().ok_or(ArgsError::MissingValue("replay"))?;
                     options.replay = Some(PathBuf::from(file));
@@ -190,6 +203,9 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
         // The usage marks them exclusive: saving nowhere and saving to DIR.
         if options.no_record && options.recordings.is_some() {
             return Err(ArgsError::Conflict("--no-record", "--recordings"));
+        }
+        if options.stress.is_some() && options.game.is_some() {
+            return Err(ArgsError::Conflict("--stress", "--game"));
         }
         if options.screenshot.is_some() && options.count_idle_frames.is_some() {
             return Err(ArgsError::Conflict("--screenshot", "--count-idle-frames"));
@@ -224,6 +240,15 @@ mod tests {
 
     #[test]
     fn replay_and_recordings_are_read() {
+        assert_eq!(parse(&["--stress", "1000"]).unwrap().stress, Some(1000));
+        assert!(matches!(
+            parse(&["--stress", "many"]),
+            Err(ArgsError::InvalidValue {
+                flag: "--stress",
+                ..
+            })
+        ));
+        assert!(parse(&["--stress", "16", "--game", "snooker"]).is_err());
         let options = parse(&["replay", "game.json", "--recordings", "out"]).unwrap();
         assert_eq!(options.replay, Some(PathBuf::from("game.json")));
         assert_eq!(options.recordings, Some(PathBuf::from("out")));

@@ -3,7 +3,7 @@
 use std::time::SystemTime;
 
 use bevy::{prelude::*, window::RequestRedraw};
-use billiards_physics::{self as physics, Rack, recording::Recorder};
+use billiards_physics::{self as physics, Params, Rack, recording::Recorder};
 use billiards_rules::Game;
 
 use super::{messages::*, solver::*};
@@ -35,17 +35,48 @@ pub(super) fn follow_table_setup(
 }
 
 /// Clears the table and racks anew: a new solver and new ball entities.
+#[allow(clippy::too_many_arguments)]
 pub(super) fn rack_balls(
     mut commands: Commands,
-    mut requests: MessageReader<RackRequested>,
-    mut layouts: MessageReader<LayoutRequested>,
-    spec: Res<TableSpec>,
+    (mut requests, mut layouts, mut scenes): (
+        MessageReader<RackRequested>,
+        MessageReader<LayoutRequested>,
+        MessageReader<SceneRequested>,
+    ),
+    mut spec: ResMut<TableSpec>,
     (settings, setup): (Res<PhysicsSettings>, Res<TableSetup>),
+    solver: Option<Res<Solver>>,
     balls: Query<Entity, With<Ball>>,
     mut status: ResMut<SimStatus>,
 ) {
     let rack_request = requests.read().last().copied();
     let layout_request = layouts.read().last().cloned();
+    let scene_request = scenes.read().last().cloned();
+    if scene_request.is_none() && layout_request.is_none() && rack_request.is_none() {
+        return;
+    }
+    if let Some(scene) = scene_request {
+        let Ok(rec) = Recorder::new(scene.table, scene.params, scene.balls)
+            .inspect_err(|error| status.note = Some(format!("cannot rack: {error}")))
+        else {
+            return;
+        };
+        spec.set_if_neq(TableSpec::fitting(&scene.table));
+        install(
+            &mut commands,
+            rec,
+            &spec,
+            (Rack::PaperDefault, scene.name),
+            true,
+            &balls,
+            &mut status,
+        );
+        return;
+    }
+    // Leaving a scene's own table: back to the player's (a rules game sets its own first).
+    if solver.is_some_and(|s| s.scene) && layout_request.is_none() {
+        spec.set_if_neq(TableSpec::of(setup.table));
+    }
     let table = table_for(&spec, &settings);
     let params = params_for(&spec, &settings);
     let (layout, rack) = match (layout_request, rack_request) {
@@ -81,7 +112,21 @@ pub(super) fn rack_balls(
             return;
         }
     };
-    for entity in &balls {
+    install(&mut commands, rec, &spec, rack, false, &balls, &mut status);
+}
+
+/// Replaces the ball entities and the solver with `rec`'s; `rack` is the standard rack closest
+/// to it and the recording's name.
+fn install(
+    commands: &mut Commands,
+    rec: Recorder,
+    spec: &TableSpec,
+    rack: (Rack, &'static str),
+    scene: bool,
+    balls: &Query<Entity, With<Ball>>,
+    status: &mut SimStatus,
+) {
+    for entity in balls {
         commands.entity(entity).despawn();
     }
     let sim = rec.sim();
@@ -108,6 +153,7 @@ pub(super) fn rack_balls(
         name: rack.1,
         started: SystemTime::now(),
         undo: Vec::new(),
+        scene,
     });
     *status = SimStatus {
         at_rest: true,
@@ -124,18 +170,32 @@ pub fn snooker_layout(
     physics::snooker::layout(table, ball, physics::snooker::default_cue_position(&marks))
 }
 
-/// A settings change reaches the solver: moving balls continue under the new parameters.
+/// A settings change reaches the solver: moving balls continue under the new parameters. A
+/// whole scene keeps its own; a physics edit there is noted, not applied.
 pub(super) fn apply_physics_settings(
     settings: Res<PhysicsSettings>,
     spec: Res<TableSpec>,
     solver: Option<ResMut<Solver>>,
     mut status: ResMut<SimStatus>,
+    mut asked: Local<Option<Params>>,
 ) {
     let Some(mut solver) = solver else { return };
+    if !settings.is_changed() {
+        return;
+    }
     let params = params_for(&spec, &settings);
-    // Compare with what the solver has rather than trusting change detection alone: the
-    // clock settings (pause, time scale) change the resource too but not the physics.
-    if !settings.is_changed() || *solver.simulation().params() == params {
+    // The clock settings (pause, time scale) change the resource too but not the physics.
+    let edited = asked.replace(params).is_some_and(|before| before != params);
+    if solver.scene {
+        if edited {
+            status.note = Some(
+                "this table keeps its own physics: the settings apply from the next rack".into(),
+            );
+        }
+        return;
+    }
+    // Compare with what the solver has rather than trusting change detection alone.
+    if *solver.simulation().params() == params {
         return;
     }
     if let Err(error) = solver.rec.set_params(params) {

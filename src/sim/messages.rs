@@ -85,6 +85,22 @@ pub struct LayoutRequested {
     pub name: &'static str,
 }
 
+/// Asks for the table to be cleared and set up as a whole scene that brings its own table and
+/// parameters (the stress table, `crate::stress`): the table drawn is the scene's, and the
+/// Physics settings leave it alone until the next rack. Wins over a [`RackRequested`] or a
+/// [`LayoutRequested`] of the same frame.
+#[derive(Message, Debug, Clone, PartialEq)]
+pub struct SceneRequested {
+    /// The table.
+    pub table: physics::Table,
+    /// The parameters.
+    pub params: physics::Params,
+    /// The balls, the cue ball first.
+    pub balls: Vec<physics::BallSetup>,
+    /// What names the recording file: "stress".
+    pub name: &'static str,
+}
+
 /// What a rules game (`crate::play::game`) asks of the simulation: it takes over the cue ball after
 /// a scratch (so the free-play respot stays out of its way) and may refuse a shot (a choice
 /// or a call is pending). The default is free play: no referee.

@@ -43,6 +43,7 @@ use undo::undo_last_shot;
 pub fn plugin(app: &mut App) {
     app.add_message::<RackRequested>()
         .add_message::<LayoutRequested>()
+        .add_message::<SceneRequested>()
         .add_message::<ShotRequested>()
         .add_message::<StepRequested>()
         .add_message::<CueStruck>()

@@ -36,6 +36,9 @@ pub struct Solver {
     pub(super) started: SystemTime,
     /// The table before each shot since the rack, newest last (undo goes back one at a time).
     pub(super) undo: Vec<BeforeShot>,
+    /// A whole scene ([`SceneRequested`]): its own table and parameters, which the Physics
+    /// settings do not change.
+    pub(super) scene: bool,
 }
 
 impl Solver {
@@ -78,6 +81,11 @@ impl Solver {
     ) -> Result<(), physics::SetupError> {
         self.rec
             .place(id, at, physics::Vec2::ZERO, physics::Vec3::ZERO)
+    }
+
+    /// Whether this is a whole scene with its own table and parameters ([`SceneRequested`]).
+    pub fn is_scene(&self) -> bool {
+        self.scene
     }
 
     /// Whether anything has happened since the rack (a new rack or game then asks first).

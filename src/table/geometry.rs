@@ -183,6 +183,13 @@ impl TableSpec {
         }
     }
 
+    /// How many times the 8-ft table's outer length this table is, at least 1: what the camera
+    /// and the lamps scale by to frame a larger table (the stress table).
+    pub fn reach(&self) -> f32 {
+        let eight = Self::wpa_eight_foot().outer_half_extents().x;
+        (self.outer_half_extents().x / eight).max(1.0) as f32
+    }
+
     /// Whether this is the snooker table.
     pub fn is_snooker(&self) -> bool {
         self.kind == TableKind::Snooker

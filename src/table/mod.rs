@@ -159,7 +159,11 @@ fn spawn_table(
     commands.spawn((
         TablePart,
         Name::new("Floor"),
-        Mesh3d(meshes.add(Plane3d::default().mesh().size(12.0, 12.0))),
+        // Wider than the table, however large (the stress table).
+        Mesh3d(meshes.add(Plane3d::default().mesh().size(
+            (12.0f64).max(2.0 * outer.x + 4.0) as f32,
+            (12.0f64).max(2.0 * outer.y + 4.0) as f32,
+        ))),
         MeshMaterial3d(materials.add(StandardMaterial {
             base_color: Color::srgb(0.16, 0.10, 0.08),
             perceptual_roughness: 0.9,

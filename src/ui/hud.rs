@@ -15,6 +15,7 @@ use crate::{
     play::aim::AimPrediction,
     settings::{ClampReport, PhysicsSettings},
     sim::SimStatus,
+    stress::{ENERGY_RISE_WARNING, OVERLAP_WARNING, StressMonitor},
     table::balls::{Ball, Pocketed},
     view::{ViewInset, graphics::FrameRate, pipelines::PipelineProgress},
 };
@@ -32,6 +33,7 @@ pub struct HudParam<'w, 's> {
     aim: Res<'w, AimPrediction>,
     report: ResMut<'w, ClampReport>,
     pipelines: Option<Res<'w, PipelineProgress>>,
+    stress: Res<'w, StressMonitor>,
 }
 
 /// The HUD strip along the top of the 3D view.
@@ -156,6 +158,16 @@ fn table_state_lines(state: &HudParam, status: &SimStatus) -> Vec<HudLine> {
         (format!("shots: {}, pocketed: {list}", status.shots), None),
         (doing.to_owned(), None),
     ]
+    .into_iter()
+    .chain(
+        state
+            .stress
+            .active
+            .then(|| stress_lines(&state.stress))
+            .into_iter()
+            .flatten(),
+    )
+    .collect()
 }
 
 /// The solver and the frames, then the notes.
@@ -186,6 +198,24 @@ fn solver_lines(state: &HudParam, status: &SimStatus) -> Vec<HudLine> {
             None,
         ),
     ];
+    if state.stress.active {
+        let m = &state.stress;
+        let share = if m.frame_ms > 0.0 {
+            format!(" ({:.1} % of the frame)", 100.0 * m.solver_ms / m.frame_ms)
+        } else {
+            String::new()
+        };
+        lines.insert(
+            1,
+            (
+                format!(
+                    "stress: {:.0} events/s, solver {:.2} ms{share}, checks {:.2} ms",
+                    m.events_per_second, m.solver_ms, m.checks_ms
+                ),
+                Some(INFO),
+            ),
+        );
+    }
     if let Some(note) = &status.note {
         lines.push((note.clone(), Some(WARNING)));
     }
@@ -196,4 +226,43 @@ fn solver_lines(state: &HudParam, status: &SimStatus) -> Vec<HudLine> {
         lines.push((note.to_string(), Some(WARNING)));
     }
     lines
+}
+
+/// The stress table's live checks: the balls, the energy (it may only fall, and without
+/// friction stays) and the deepest overlap; its costs are in the solver's column.
+fn stress_lines(m: &StressMonitor) -> Vec<HudLine> {
+    let rise_bad = m.worst_energy_rise > ENERGY_RISE_WARNING;
+    let overlap_bad = m.worst_overlap > OVERLAP_WARNING;
+    vec![
+        (
+            format!(
+                "stress table: {} balls, {:.1} x {:.1} m",
+                m.on_table, m.table.0, m.table.1
+            ),
+            Some(INFO),
+        ),
+        (
+            format!(
+                "energy {:.3} J (from {:.3}), worst rise {:.0e}{}",
+                m.energy,
+                m.energy_start,
+                m.worst_energy_rise,
+                if rise_bad { ": it rose!" } else { ": ok" }
+            ),
+            rise_bad.then_some(WARNING),
+        ),
+        (
+            if m.worst_overlap > 0.0 {
+                format!(
+                    "overlap now {:.0e} m, worst {:.0e} m{}",
+                    m.overlap,
+                    m.worst_overlap,
+                    if overlap_bad { ": balls overlap!" } else { "" }
+                )
+            } else {
+                "overlap: none (a sweep each frame)".to_owned()
+            },
+            overlap_bad.then_some(WARNING),
+        ),
+    ]
 }

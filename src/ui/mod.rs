@@ -4,6 +4,7 @@
 //!
 //! - [`layout`]: shared sizes and colours;
 //! - [`settings`]: the panel's shot, physics, simulation and view sections;
+//! - [`stress`]: the Stress table section (ball count, friction, seed, table size);
 //! - [`recordings`]: the Recordings section (open a recording);
 //! - [`timeline`]: the replay timeline strip and the Export form;
 //! - [`hud`]: the HUD in the top-right corner;
@@ -22,6 +23,7 @@ pub mod layout;
 pub mod layout_check;
 pub mod recordings;
 pub mod settings;
+pub mod stress;
 pub mod timeline;
 
 use bevy::{
@@ -52,6 +54,7 @@ pub fn plugin(app: &mut App) {
         .init_resource::<timeline::ExportForm>()
         .init_resource::<game::NewGameForm>()
         .init_resource::<settings::RackConfirm>()
+        .init_resource::<stress::StressConfirm>()
         .init_resource::<settings::OpenSections>()
         .add_plugins(layout_check::plugin)
         .configure_sets(
@@ -298,6 +301,7 @@ fn left_panel(
     mut contexts: EguiContexts,
     mut state: settings::SettingsParam,
     mut recordings: recordings::RecordingsParam,
+    mut stress: stress::StressParam,
     mut inset: ResMut<ViewInset>,
     mut read_error: Local<Option<String>>,
 ) -> Result {
@@ -327,6 +331,7 @@ fn left_panel(
                         .auto_shrink(false)
                         .show(ui, |ui| {
                             settings::sections(ui, &mut state);
+                            stress::section(ui, &mut stress);
                             recordings::section(ui, &mut recordings);
                             settings::file_and_controls(ui, &mut state);
                         });
@@ -337,6 +342,7 @@ fn left_panel(
         })
         .inner;
     settings::rack_confirm_window(&ctx, &mut state);
+    stress::confirm_window(&ctx, &mut stress);
     settings::config_error_window(&ctx, &state, &mut read_error);
     // The 3D view takes the window right of the panel (src/view.rs).
     if inset.left != panel_width {

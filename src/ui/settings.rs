@@ -249,8 +249,8 @@ fn view_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
         ui.selectable_value(&mut mode, CameraMode::FollowCue, "follow cue (F)");
         if mode != state.orbit.mode {
             *state.orbit = match mode {
-                CameraMode::Top => OrbitCamera::top_view(),
-                CameraMode::Free => OrbitCamera::default(),
+                CameraMode::Top => OrbitCamera::top_view().scaled(state.orbit.reach),
+                CameraMode::Free => OrbitCamera::default().scaled(state.orbit.reach),
                 CameraMode::FollowCue => OrbitCamera {
                     mode,
                     ..*state.orbit
@@ -541,7 +541,12 @@ fn tip_picker(ui: &mut egui::Ui, tip: &mut billiards_physics::TipOffset) {
     );
 }
 
-fn section(ui: &mut egui::Ui, title: &str, open: bool, add_contents: impl FnOnce(&mut egui::Ui)) {
+pub(super) fn section(
+    ui: &mut egui::Ui,
+    title: &str,
+    open: bool,
+    add_contents: impl FnOnce(&mut egui::Ui),
+) {
     egui::CollapsingHeader::new(title)
         .default_open(open)
         .show(ui, add_contents);

@@ -8,6 +8,7 @@ use std::f32::consts::FRAC_PI_2;
 use crate::{
     input::InputSystems,
     table::balls::{Ball, Pocketed},
+    table::geometry::TableSpec,
 };
 use bevy::{
     input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit},
@@ -24,6 +25,7 @@ pub fn plugin(app: &mut App) {
             (
                 orbit_and_zoom.in_set(InputSystems::Pointer),
                 camera_keys.in_set(InputSystems::Keyboard),
+                frame_table.run_if(resource_changed::<TableSpec>),
                 follow_cue_ball,
                 ease_camera,
             )
@@ -65,6 +67,9 @@ pub struct OrbitCamera {
     pub distance: f32,
     /// Free orbit, top view or following the cue ball.
     pub mode: CameraMode,
+    /// The table's size against the 8-ft table's ([`TableSpec::reach`]): the views and the
+    /// zoom limit scale by it.
+    pub reach: f32,
 }
 
 impl Default for OrbitCamera {
@@ -77,6 +82,7 @@ impl Default for OrbitCamera {
             // Far enough that the near rail shows below the HUD strip, a 9-ft table too.
             distance: 3.45,
             mode: CameraMode::Free,
+            reach: 1.0,
         }
     }
 }
@@ -96,6 +102,17 @@ impl OrbitCamera {
             pitch: Self::PITCH_MIN,
             distance: 3.5,
             mode: CameraMode::Top,
+            reach: 1.0,
+        }
+    }
+
+    /// This view for a table `reach` times the 8-ft table: as far again, the focus too.
+    pub fn scaled(self, reach: f32) -> Self {
+        Self {
+            focus: self.focus * reach,
+            distance: self.distance * reach,
+            reach,
+            ..self
         }
     }
 
@@ -146,18 +163,21 @@ fn orbit_and_zoom(
             // Touchpads report pixels; about 40 make one wheel notch.
             MouseScrollUnit::Pixel => scroll.delta.y / 40.0,
         };
-        orbit.distance = (orbit.distance * (-0.12 * lines).exp())
-            .clamp(OrbitCamera::DISTANCE_MIN, OrbitCamera::DISTANCE_MAX);
+        orbit.distance = (orbit.distance * (-0.12 * lines).exp()).clamp(
+            OrbitCamera::DISTANCE_MIN,
+            OrbitCamera::DISTANCE_MAX * orbit.reach,
+        );
     }
 }
 
 /// T toggles the top view, F toggles following the cue ball, Home resets the view.
 fn camera_keys(keys: Res<ButtonInput<KeyCode>>, mut orbit: ResMut<OrbitCamera>) {
+    let reach = orbit.reach;
     if keys.just_pressed(KeyCode::KeyT) {
         *orbit = if orbit.mode == CameraMode::Top {
-            OrbitCamera::default()
+            OrbitCamera::default().scaled(reach)
         } else {
-            OrbitCamera::top_view()
+            OrbitCamera::top_view().scaled(reach)
         };
     }
     if keys.just_pressed(KeyCode::KeyF) {
@@ -167,12 +187,26 @@ fn camera_keys(keys: Res<ButtonInput<KeyCode>>, mut orbit: ResMut<OrbitCamera>) 
             CameraMode::FollowCue
         };
         if orbit.mode == CameraMode::Free {
-            orbit.focus = OrbitCamera::default().focus;
+            orbit.focus = OrbitCamera::default().scaled(reach).focus;
         }
     }
     if keys.just_pressed(KeyCode::Home) {
-        *orbit = OrbitCamera::default();
+        *orbit = OrbitCamera::default().scaled(reach);
     }
+}
+
+/// Another table: a larger one (the stress table) is framed whole from above, and back on a
+/// regulation table the usual view returns.
+fn frame_table(spec: Res<TableSpec>, mut orbit: ResMut<OrbitCamera>) {
+    let reach = spec.reach();
+    if reach == orbit.reach {
+        return;
+    }
+    *orbit = if reach > 1.0 {
+        OrbitCamera::top_view().scaled(reach)
+    } else {
+        OrbitCamera::default()
+    };
 }
 
 fn follow_cue_ball(

@@ -10,7 +10,39 @@ pub fn plugin(app: &mut App) {
             brightness: 250.0,
             ..default()
         })
-        .add_systems(Startup, spawn_lamps);
+        .add_systems(Startup, spawn_lamps)
+        .add_systems(
+            Update,
+            follow_table.run_if(resource_changed::<crate::table::geometry::TableSpec>),
+        );
+}
+
+/// One of the lamps, at `x` over a regulation table.
+#[derive(Component, Debug, Clone, Copy, PartialEq)]
+struct Lamp {
+    x: f32,
+}
+
+/// Light of one lamp (candela-like units of Bevy's spot light) over a regulation table.
+const LAMP_INTENSITY: f32 = 200_000.0;
+/// How far a lamp's light reaches over a regulation table.
+const LAMP_RANGE: f32 = 4.0;
+
+/// A larger table (the stress table) is lit all over: the lamps rise and spread with its size
+/// ([`crate::table::geometry::TableSpec::reach`]), brighter by its square so the cloth under
+/// them looks the same.
+fn follow_table(
+    spec: Res<crate::table::geometry::TableSpec>,
+    mut lamps: Query<(&Lamp, &mut SpotLight, &mut Transform)>,
+) {
+    let k = spec.reach();
+    for (lamp, mut light, mut transform) in &mut lamps {
+        let x = lamp.x * k;
+        *transform = Transform::from_xyz(x, LAMP_HEIGHT * k, 0.0)
+            .looking_at(Vec3::new(x, 0.0, 0.0), Vec3::X);
+        light.range = LAMP_RANGE * k;
+        light.intensity = LAMP_INTENSITY * k * k;
+    }
 }
 
 /// Height of the lamps above the cloth.
@@ -22,10 +54,11 @@ fn spawn_lamps(mut commands: Commands) {
     for x in [-0.55, 0.55] {
         commands.spawn((
             Name::new("Lamp"),
+            Lamp { x },
             SpotLight {
                 color: Color::srgb(1.0, 0.96, 0.88),
-                intensity: 200_000.0,
-                range: 4.0,
+                intensity: LAMP_INTENSITY,
+                range: LAMP_RANGE,
                 radius: 0.05,
                 shadow_maps_enabled: true,
                 outer_angle: 1.05,

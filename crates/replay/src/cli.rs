@@ -39,6 +39,9 @@ pub enum Command {
     Breaks(crate::breaks::BreaksArgs),
     /// The physics soak: seeded random scenes with every event checked; sharded.
     Soak(crate::soak::SoakArgs),
+    /// The stress table: up to 10,000 seeded balls on a larger table, run in 60 Hz frames:
+    /// events, events a second, the solver's cost per frame, energy and overlap checks.
+    Stress(crate::stress::StressArgs),
     /// The success probability of one shot from every cell of a grid of cue-ball places,
     /// under a player's execution noise, with an SVG heat map; sharded.
     Study(crate::study::StudyArgs),
@@ -88,6 +91,7 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Tournament(a) => return crate::tournament::run(a),
         Command::Breaks(a) => return crate::breaks::run(a),
         Command::Soak(a) => return crate::soak::run(a),
+        Command::Stress(a) => return crate::stress::run(a),
         Command::Study(a) => return crate::study::run(a),
         Command::Position(c) => crate::position::run(c),
         Command::Drill(a) => crate::drill::run(a),

@@ -1,6 +1,7 @@
 //! Headless tools for billiards recordings: the command line (`simulate`, `verify`, `export`;
 //! the batch commands `tournament`, `breaks`, `soak` and `study`, sharded by [`shard`];
-//! `position`, position codes to and from JSON; `drill`, a drill played by the computer),
+//! `position`, position codes to and from JSON; `drill`, a drill played by the computer;
+//! `stress`, the many-ball table),
 //! a software top-view renderer and GIF/PNG export. No GPU, no Bevy: they run anywhere.
 
 pub mod args;
@@ -15,5 +16,6 @@ pub mod shard;
 pub mod simulate;
 pub mod snooker;
 pub mod soak;
+pub mod stress;
 pub mod study;
 pub mod tournament;

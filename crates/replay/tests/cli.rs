@@ -666,3 +666,48 @@ fn simulate_a_snooker_frame_and_verify_rejudges_its_log() {
     );
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn stress_runs_many_balls_with_the_checks_and_refuses_what_cannot_fit() {
+    let (ok, out, err) = run(bin().args(["stress", "--balls", "300", "--time", "2", "--json"]));
+    assert!(ok, "{err}");
+    let r: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(r["balls"], 300);
+    assert_eq!(r["frames"], 120);
+    assert!(r["events"].as_u64().unwrap() > 100, "{out}");
+    assert!(r["events_per_second"].as_f64().unwrap() > 0.0);
+    // Frictionless and elastic: the energy stays; no two balls ever overlap.
+    let (e0, e1) = (
+        r["energy"][0].as_f64().unwrap(),
+        r["energy"][1].as_f64().unwrap(),
+    );
+    assert!(e0 > 1.0 && (e1 - e0).abs() < 1e-9 * e0, "{e0} -> {e1}");
+    assert_eq!(r["worst_overlap"], 0.0);
+    assert_eq!(r["at_rest"], false);
+
+    let (ok, out, err) = run(bin().args(["stress", "--balls", "50", "--friction", "--time", "30"]));
+    assert!(ok, "{err}");
+    assert!(out.contains("50 balls (with friction)"), "{out}");
+    assert!(out.contains("every ball at rest"), "{out}");
+
+    for (args, message) in [
+        (&["--balls", "0"][..], "needs at least 1 ball, got 0"),
+        (
+            &["--balls", "10001"],
+            "10001 balls is more than the stress scene's maximum of 10000",
+        ),
+        (
+            &["--balls", "2000", "--scale", "1"],
+            "2000 balls do not fit on a 2.34 x 1.17 m table",
+        ),
+        (&["--balls", "16", "--scale=-2"], "table scale -2 must be"),
+        (
+            &["--balls", "16", "--time", "0"],
+            "--time 0: simulated seconds",
+        ),
+    ] {
+        let (ok, out, err) = run(bin().arg("stress").args(args));
+        assert!(!ok, "{args:?} was accepted: {out}");
+        assert!(err.contains(message), "{args:?}: {err}");
+    }
+}
