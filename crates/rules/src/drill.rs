@@ -260,14 +260,8 @@ impl DrillShot {
             rest,
             ..Default::default()
         };
-        let mut struck = false;
-        for e in events {
-            match e.kind {
-                EventKind::Strike { .. } if struck => break,
-                EventKind::Strike { .. } => struck = true,
-                _ if !struck => {}
-                kind => s.record(&kind, numbers),
-            }
+        for kind in crate::shot::after_strike(events) {
+            s.record(&kind, numbers);
         }
         s
     }

@@ -95,16 +95,23 @@ impl ShotSummary {
 /// the placement of the cue ball, are ignored; a second strike ends the shot).
 pub fn summarise(events: &[Event], numbers: &[u8]) -> ShotSummary {
     let mut s = ShotSummary::default();
-    let mut struck = false;
-    for e in events {
-        match e.kind {
-            EventKind::Strike { .. } if struck => break,
-            EventKind::Strike { .. } => struck = true,
-            _ if !struck => {}
-            kind => s.record(&kind, numbers),
-        }
+    for kind in after_strike(events) {
+        s.record(&kind, numbers);
     }
     s
+}
+
+/// The kinds of a shot's events after its strike, up to the next strike (what came before
+/// the strike, such as the cue ball's placement, left out).
+pub(crate) fn after_strike(events: &[Event]) -> impl Iterator<Item = EventKind> + '_ {
+    let start = events
+        .iter()
+        .position(|e| matches!(e.kind, EventKind::Strike { .. }))
+        .map_or(events.len(), |i| i + 1);
+    events[start..]
+        .iter()
+        .map(|e| e.kind)
+        .take_while(|k| !matches!(k, EventKind::Strike { .. }))
 }
 
 impl ShotSummary {
