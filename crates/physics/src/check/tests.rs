@@ -3,7 +3,7 @@
 //! makes such histories, so they are forged into a real simulation's history after it is built
 //! (`Simulation::forge`, test builds only).
 //!
-//! Each test also fails with its check disabled: `tools/monitor-mutations.sh` disables each
+//! Each test also fails with its check disabled: `tools/monitor-mutations.py` disables each
 //! check in turn and expects its test to fail.
 
 use super::*;
