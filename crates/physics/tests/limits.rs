@@ -39,8 +39,11 @@ fn strike_accepts_the_limits_and_runs_them_to_rest() {
     for params in [Params::default(), spin_params()] {
         for speed in [0.0, MIN_SPEED, MAX_SPEED] {
             let mut sim = nine_ball(params);
-            sim.strike(0, Shot::new(0.0, speed)).unwrap();
-            check::run_to_rest_checked(&mut sim).unwrap();
+            sim.strike(0, Shot::new(0.0, speed))
+                .unwrap_or_else(|e| panic!("speed {speed} refused: {e}"));
+            let run = check::run_to_rest_checked(&mut sim);
+            assert!(run.is_ok(), "speed {speed}: {run:?}");
+            assert!(sim.is_at_rest(), "speed {speed}");
         }
     }
 }

@@ -8,17 +8,23 @@
 use billiards_physics::check::Tolerances;
 use billiards_physics::soak::{SoakConfig, soak};
 
+/// The variable `name` as a number, `default` when it is unset; a value that is not a number
+/// is refused rather than silently replaced.
 fn env(name: &str, default: u64) -> u64 {
-    std::env::var(name)
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(default)
+    match std::env::var(name) {
+        Ok(v) => v
+            .parse()
+            .unwrap_or_else(|_| panic!("{name}={v} is not a number")),
+        Err(_) => default,
+    }
 }
 
 #[test]
 fn quick_soak_breaks_no_invariant() {
+    let scenes = env("SOAK_SCENES", 2_000);
+    assert!(scenes > 0, "SOAK_SCENES=0 would check nothing");
     let cfg = SoakConfig {
-        scenes: env("SOAK_SCENES", 2_000),
+        scenes,
         first_seed: env("SOAK_FIRST_SEED", 0),
         threads: 0,
         tolerances: Tolerances::default(),
@@ -40,6 +46,13 @@ fn quick_soak_breaks_no_invariant() {
         r.most_events_seed
     );
     assert_eq!(r.scenes, cfg.scenes);
+    // Shots were played and the monitor saw their events.
+    assert!(
+        r.shots > 0 && c.events > 0,
+        "{} shots, {} events",
+        r.shots,
+        c.events
+    );
     let list: Vec<String> = r
         .failures
         .iter()

@@ -25,6 +25,8 @@ use crate::math::Vec2;
 use crate::sim::{SetupError, Simulation};
 
 mod measure;
+#[cfg(test)]
+mod tests;
 
 pub use measure::{deepest_overlap, kinetic_energy, outside_by};
 

@@ -236,3 +236,12 @@ pub(super) fn check_shot(id: BallId, number: u8, shot: &Shot, time: f64) -> Resu
     limits::check_clock(time)?;
     Ok(())
 }
+
+#[cfg(test)]
+impl super::Simulation {
+    /// The history and the balls' current segments, to write into: the invariant monitor's
+    /// tests forge histories and states the solver never makes (`check/tests.rs`).
+    pub(crate) fn forge(&mut self) -> (&mut crate::History, &mut [crate::Segment]) {
+        (&mut self.history, &mut self.segments)
+    }
+}
