@@ -17,6 +17,7 @@ use bevy::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::{
+    practice::{DrillBests, DrillList},
     settings::{GraphicsSettings, PhysicsSettings, TableSetup, ViewSettings},
     table::geometry::TableSpec,
 };
@@ -73,6 +74,8 @@ pub struct Config {
     pub graphics: GraphicsSettings,
     /// The table and the rack style.
     pub table: TableSetup,
+    /// The best session of each drill, by its file name (issue 39).
+    pub drills: DrillBests,
 }
 
 impl Config {
@@ -142,16 +145,25 @@ fn load_config(
     mut view: ResMut<ViewSettings>,
     mut graphics: ResMut<GraphicsSettings>,
     (mut table, spec): (ResMut<TableSetup>, Option<ResMut<TableSpec>>),
+    (drills, list): (Option<ResMut<DrillBests>>, Option<ResMut<DrillList>>),
 ) {
     let Some(path) = file.path.clone() else {
         return;
     };
+    // The player's own drills live beside the settings file (issue 47).
+    if let (Some(mut list), Some(dir)) = (list, path.parent()) {
+        list.user_folder = Some(dir.join("drills"));
+        list.reload();
+    }
     match read(&path) {
         Ok(Some(config)) => {
             *physics = config.physics;
             *view = config.view;
             *graphics = config.graphics;
             *table = config.table;
+            if let Some(mut drills) = drills {
+                *drills = config.drills.clone();
+            }
             // The first rack and the table's meshes already follow the kept table.
             if let Some(mut spec) = spec {
                 spec.set_if_neq(TableSpec::of(table.table));
@@ -179,8 +191,15 @@ fn save_config(
     view: Res<ViewSettings>,
     graphics: Res<GraphicsSettings>,
     table: Res<TableSetup>,
+    drills: Option<Res<DrillBests>>,
 ) {
-    if !(physics.is_changed() || view.is_changed() || graphics.is_changed() || table.is_changed()) {
+    let drills_changed = drills.as_ref().is_some_and(|d| d.is_changed());
+    if !(physics.is_changed()
+        || view.is_changed()
+        || graphics.is_changed()
+        || table.is_changed()
+        || drills_changed)
+    {
         return;
     }
     let Some(path) = file.path.clone() else {
@@ -191,6 +210,7 @@ fn save_config(
         view: *view,
         graphics: *graphics,
         table: *table,
+        drills: drills.map(|d| d.clone()).unwrap_or_default(),
     }
     .to_json();
     // Pausing, or a slider back where it was, changes nothing kept.

@@ -25,6 +25,16 @@ pub fn aim_unlocked(lock: Option<Res<AimLocked>>) -> bool {
     !lock.is_some_and(|l| l.0)
 }
 
+/// While set, the pointer on the table belongs to a tool (the Place tool moves balls with it)
+/// and does not aim. Set by [`crate::practice`] on entering and leaving the tool.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct PointerTool(pub bool);
+
+/// Run condition: no tool has the pointer (it may aim).
+pub fn no_pointer_tool(tool: Option<Res<PointerTool>>) -> bool {
+    !tool.is_some_and(|t| t.0)
+}
+
 /// Whether `button` is down this frame, counting a click whose press and release both fell
 /// in this frame: `ButtonInput::pressed` is already false then. A frame takes a second on a
 /// software renderer, so most quick clicks end within one; a click on the table must still

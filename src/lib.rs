@@ -8,6 +8,7 @@ pub mod input;
 pub mod mode;
 pub mod options;
 pub mod play;
+pub mod practice;
 pub mod recording;
 pub mod replay;
 pub mod settings;
@@ -70,6 +71,7 @@ impl Plugin for GamePlugin {
             view::graphics::plugin,
             view::plugin,
             stress::plugin,
+            practice::plugin,
         ));
         #[cfg(feature = "sound")]
         app.add_plugins(sound::plugin);
@@ -78,6 +80,12 @@ impl Plugin for GamePlugin {
         }
         if let Some(game) = self.options.game {
             app.insert_resource(play::game::StartGame(game));
+        }
+        if let Some(position) = &self.options.position {
+            app.insert_resource(practice::StartPosition(position.clone()));
+        }
+        if let Some(name) = &self.options.drill {
+            app.insert_resource(practice::StartDrill(name.clone()));
         }
         if let Some(balls) = self.options.stress {
             app.insert_resource(stress::StartStress(balls));

@@ -33,6 +33,11 @@ pub struct LaunchOptions {
     pub game: Option<crate::play::game::GameChoice>,
     /// Start on the stress table with this many balls (frictionless, seed 1).
     pub stress: Option<usize>,
+    /// Start from this position (`--position CODE`), decoded and checked.
+    pub position: Option<billiards_rules::Position>,
+    /// Start a session of this drill (`--drill NAME`: its file name in the drills list,
+    /// with or without `.json`).
+    pub drill: Option<String>,
 }
 
 /// Why the command line could not be understood.
@@ -51,6 +56,8 @@ pub enum ArgsError {
     UnknownArgument(String),
     /// Two flags that exclude each other were both given.
     Conflict(&'static str, &'static str),
+    /// `--position`'s code was refused: why.
+    Position(String),
 }
 
 impl fmt::Display for ArgsError {
@@ -60,6 +67,7 @@ impl fmt::Display for ArgsError {
             Self::InvalidValue { flag, value } => write!(f, "invalid value {value:?} for {flag}"),
             Self::UnknownArgument(arg) => write!(f, "unknown argument {arg:?}"),
             Self::Conflict(a, b) => write!(f, "{a} and {b} cannot be used together"),
+            Self::Position(why) => write!(f, "--position: {why}"),
         }
     }
 }
@@ -73,7 +81,7 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                  [--game nine-ball|eight-ball|snooker|free-play] [--no-config]
                  [--size WxH] [--screenshot PATH [--settle SECONDS]]
                  [--check-layout PATH] [--open-sections] [--count-idle-frames SECONDS]
-                 [--stress BALLS]
+                 [--stress BALLS] [--position CODE] [--drill NAME]
 
   replay FILE         open a recording in the replay viewer
   --recordings DIR    save every game there, one file per rack (default: ./recordings)
@@ -84,6 +92,10 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                       or snooker (best of 5 frames); free-play (the default) is the sandbox
   --stress BALLS      start on the stress table (free play): BALLS balls on a table grown
                       to hold them, frictionless; the panel's Stress table section changes it
+  --position CODE     start from a position code (the panel's Copy position makes one;
+                      billiards-cli position encode too): its balls, table, physics, shot
+  --drill NAME        start a session of a drill of the New game dialog's list, by its file
+                      name (04-cut-30, or user/NAME for one of your own)
 
   --screenshot PATH   wait until the scene has been drawn, save it as PNG to PATH, exit
   --settle SECONDS    how long every render pipeline must have been ready before the
@@ -192,6 +204,16 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                         value,
                     })?);
                 }
+                "--position" => {
+                    let code = args.next().ok_or(ArgsError::MissingValue("--position"))?;
+                    let position = billiards_rules::Position::decode(&code)
+                        .map_err(|e| ArgsError::Position(e.to_string()))?;
+                    options.position = Some(position);
+                }
+                "--drill" => {
+                    let name = args.next().ok_or(ArgsError::MissingValue("--drill"))?;
+                    options.drill = Some(name);
+                }
                 "replay" if options.replay.is_none() => {
                     let file = args.next().ok_or(ArgsError::MissingValue("replay"))?;
                     options.replay = Some(PathBuf::from(file));
@@ -206,6 +228,20 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
         }
         if options.stress.is_some() && options.game.is_some() {
             return Err(ArgsError::Conflict("--stress", "--game"));
+        }
+        for (flag, given) in [
+            ("--stress", options.stress.is_some()),
+            ("--game", options.game.is_some()),
+        ] {
+            if given && options.position.is_some() {
+                return Err(ArgsError::Conflict("--position", flag));
+            }
+            if given && options.drill.is_some() {
+                return Err(ArgsError::Conflict("--drill", flag));
+            }
+        }
+        if options.position.is_some() && options.drill.is_some() {
+            return Err(ArgsError::Conflict("--drill", "--position"));
         }
         if options.screenshot.is_some() && options.count_idle_frames.is_some() {
             return Err(ArgsError::Conflict("--screenshot", "--count-idle-frames"));
@@ -282,6 +318,48 @@ mod tests {
                 .unwrap()
                 .count_idle_frames,
             Some(Duration::from_secs(10))
+        );
+    }
+
+    /// Issue 39: `--position` opens a code's position; a damaged or cut code is refused at
+    /// the command line with the code's own reason, before a window opens.
+    #[test]
+    fn a_position_code_is_read_or_refused_with_its_reason() {
+        use billiards_physics::{BallSpec, Rack, Table};
+        use billiards_rules::{Game, PlacedBall, Position};
+        let table = Table::wpa_9ft().with_jaws(0.015);
+        let balls = Rack::NineBall
+            .layout(&table, &BallSpec::default())
+            .into_iter()
+            .map(|b| PlacedBall {
+                number: b.number,
+                position: b.position,
+            })
+            .collect();
+        let p = Position {
+            game: Game::NineBall,
+            table,
+            balls,
+            params: None,
+            shot: None,
+        };
+        let code = p.encode().unwrap();
+        assert_eq!(parse(&["--position", &code]).unwrap().position, Some(p));
+        let cut = &code[..code.len() - 5];
+        match parse(&["--position", cut]) {
+            // The command line says the code's own reason.
+            Err(ArgsError::Position(why)) => {
+                assert_eq!(why, Position::decode(cut).unwrap_err().to_string())
+            }
+            other => panic!("a cut code was not refused: {other:?}"),
+        }
+        assert!(matches!(
+            parse(&["--position", &code, "--game", "snooker"]),
+            Err(ArgsError::Conflict("--position", "--game"))
+        ));
+        assert_eq!(
+            parse(&["--position"]),
+            Err(ArgsError::MissingValue("--position"))
         );
     }
 

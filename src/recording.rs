@@ -11,7 +11,10 @@ use std::{
 
 use bevy::prelude::*;
 
-use crate::sim::{RackRequested, ShotFinished, ShotUndone, SimStatus, SimSystems, Solver};
+use crate::sim::{
+    LayoutRequested, RackRequested, SceneRequested, ShotFinished, ShotUndone, SimStatus,
+    SimSystems, Solver,
+};
 
 /// Registers the autosave.
 pub fn plugin(app: &mut App) {
@@ -19,16 +22,27 @@ pub fn plugin(app: &mut App) {
         .init_resource::<Autosave>()
         .add_systems(
             Update,
-            (
-                save_finished_shot.after(crate::sim::respot_after_scratch),
-                // Flow runs before Commands, where the rack replaces the game.
-                save_before_rack,
-            )
+            save_finished_shot
+                .after(crate::sim::respot_after_scratch)
                 .in_set(SimSystems::Flow),
         )
+        // After the flow and the tools that ask for a new table (they order themselves before
+        // it), before Commands, where the rack replaces the game.
+        .configure_sets(
+            Update,
+            SaveBeforeRack
+                .after(SimSystems::Flow)
+                .before(SimSystems::Commands),
+        )
+        .add_systems(Update, save_before_rack.in_set(SaveBeforeRack))
         // An undo is placements in the recording: saved as soon as it is made.
         .add_systems(Update, save_undo.after(SimSystems::Commands));
 }
+
+/// Where the game is saved before a rack, a layout or a scene replaces it: a system that asks
+/// for one after [`SimSystems::Flow`] runs before this set, so its request is seen.
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct SaveBeforeRack;
 
 /// Where recordings are written and listed. `None` turns the autosave off.
 #[derive(Resource, Debug, Clone, PartialEq, Eq)]
@@ -89,16 +103,22 @@ fn save_undo(
     }
 }
 
-/// Before a rack replaces the game, writes every input not yet in its file (a shot struck
-/// while paused, a placement, a settings change), so nothing the player did is lost.
+/// Before a rack, a layout (a new game, a position, a ball added or removed) or a scene
+/// replaces the game, writes every input not yet in its file (a shot struck while paused, a
+/// placement, a settings change), so nothing the player did is lost.
 fn save_before_rack(
-    mut racks: MessageReader<RackRequested>,
+    (mut racks, mut layouts, mut scenes): (
+        MessageReader<RackRequested>,
+        MessageReader<LayoutRequested>,
+        MessageReader<SceneRequested>,
+    ),
     folder: Res<RecordingsFolder>,
     solver: Option<Res<Solver>>,
     status: Res<SimStatus>,
     mut autosave: ResMut<Autosave>,
 ) {
-    if racks.read().count() == 0 {
+    let replaced = racks.read().count() + layouts.read().count() + scenes.read().count();
+    if replaced == 0 {
         return;
     }
     let (Some(folder), Some(solver)) = (&folder.0, solver) else {

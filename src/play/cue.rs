@@ -38,7 +38,8 @@ pub fn plugin(app: &mut App) {
             (
                 aim_with_mouse
                     .in_set(InputSystems::Pointer)
-                    .run_if(aim_unlocked),
+                    .run_if(aim_unlocked)
+                    .run_if(crate::input::no_pointer_tool),
                 cue_keys.in_set(InputSystems::Keyboard),
             )
                 .chain()

@@ -42,7 +42,7 @@ use billiards_replay::export::ExportOptions;
 pub use self::{
     balls::ReplayBall,
     jobs::{ExportFormat, ExportJob, ExportRequest, ExportScope, VerifyJob},
-    open::OpenRecording,
+    open::{OpenRecording, RulesLog},
 };
 use crate::{
     input::InputSystems,

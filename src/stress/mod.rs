@@ -50,7 +50,7 @@ pub fn plugin(app: &mut App) {
                     .before(SimSystems::Flow),
                 request_stress
                     .after(SimSystems::Flow)
-                    .before(SimSystems::Commands),
+                    .before(crate::recording::SaveBeforeRack),
             )
                 .run_if(in_state(GameMode::Play)),
         );

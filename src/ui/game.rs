@@ -1,6 +1,7 @@
 //! The game's windows: the HUD lines of a match in play (drawn inside the HUD), the
 //! new-game dialog, the verdict with its options, the call of a pocket and the end of a rack.
-//! They read [`Rules`] and the [`Turn`] and write [`TurnCommand`] / [`NewGameRequested`] only.
+//! They read [`Rules`] and the [`Turn`] and write [`TurnCommand`] / [`NewGameRequested`] (or,
+//! for a drill, [`DrillRequested`]) only.
 
 use bevy::prelude::*;
 use bevy_egui::{EguiContexts, egui};
@@ -11,6 +12,7 @@ use super::layout::{HUD_BUTTON_WIDTH, HudLine, INFO, PANEL_WIDTH, WARNING};
 use crate::{
     play::computer::{Computer, HintRequested},
     play::game::{GameChoice, NewGameRequested, Rules, Turn, TurnCommand, snooker},
+    practice::{DrillBests, DrillList, DrillRequested},
     settings::{TableSetup, rack_style_label, table_choices, table_label},
     sim::{Solver, clock_seed},
     view::camera::OrbitCamera,
@@ -31,6 +33,8 @@ pub struct NewGameForm {
     pub setup: Option<TableSetup>,
     /// Start was pressed over a game in progress: the dialog asks before ending it.
     pub confirm: bool,
+    /// In free play, the drill to start (its place in the [`DrillList`]).
+    pub drill: Option<usize>,
 }
 
 impl Default for NewGameForm {
@@ -42,6 +46,7 @@ impl Default for NewGameForm {
             computer: [None, Some(Level::Medium)],
             setup: None,
             confirm: false,
+            drill: None,
         }
     }
 }
@@ -60,6 +65,7 @@ pub fn remember_new_game(
             computer: r.computer,
             setup: Some(r.setup),
             confirm: false,
+            drill: None,
         };
     }
 }
@@ -77,6 +83,9 @@ pub struct GameParam<'w> {
     setup: Res<'w, TableSetup>,
     solver: Option<Res<'w, Solver>>,
     view: Res<'w, OrbitCamera>,
+    drills: Res<'w, DrillList>,
+    bests: Res<'w, DrillBests>,
+    drill_requests: MessageWriter<'w, DrillRequested>,
 }
 
 /// The HUD's buttons' labels, in their order (the layout check finds them by these).
@@ -257,7 +266,7 @@ pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result 
                     ui.label(format!(
                         "{}: {}",
                         game.name(verdict.shooter),
-                        verdict.reason()
+                        game.verdict_text(verdict)
                     ));
                     if let Some(group) = verdict.assigned {
                         ui.label(format!(
@@ -528,7 +537,10 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
                 });
         });
     }
-    if form.game != GameChoice::Pool(Game::FreePlay) {
+    if form.game == GameChoice::Pool(Game::FreePlay) {
+        drill_row(ui, form, &state.drills, &state.bests);
+    } else {
+        form.drill = None;
         if !snooker {
             ui.horizontal(|ui| {
                 ui.label("Rack:");
@@ -596,6 +608,9 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
         let clicked = ui.button(start).clicked();
         if clicked && in_progress && !form.confirm {
             form.confirm = true;
+        } else if clicked && let Some(index) = form.drill {
+            form.confirm = false;
+            state.drill_requests.write(DrillRequested { index });
         } else if clicked {
             form.confirm = false;
             let request = NewGameRequested {
@@ -613,6 +628,40 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
             state.commands.write(TurnCommand::CloseDialog);
         }
     });
+}
+
+/// Free play's drill choice: none, or a drill of the list with its best session. A refused
+/// file is listed, greyed, with why.
+fn drill_row(ui: &mut egui::Ui, form: &mut NewGameForm, drills: &DrillList, bests: &DrillBests) {
+    let label = |choice: Option<usize>| match choice.and_then(|k| drills.drills.get(k)) {
+        None => "none: free play".to_owned(),
+        Some((_, Ok(drill))) => drill.name.clone(),
+        Some((file, Err(_))) => file.clone(),
+    };
+    ui.horizontal(|ui| {
+        ui.label("Drill:");
+        egui::ComboBox::from_id_salt("new-game-drill")
+            .selected_text(label(form.drill))
+            .width(230.0)
+            .show_ui(ui, |ui| {
+                ui.selectable_value(&mut form.drill, None, label(None));
+                for (k, (file, drill)) in drills.drills.iter().enumerate() {
+                    let text = match (drill, bests.0.get(file)) {
+                        (Ok(d), Some(b)) => {
+                            format!("{}  (best {} of {})", d.name, b.successes, b.tries)
+                        }
+                        (Ok(d), None) => d.name.clone(),
+                        (Err(why), _) => format!("{file}: {why}"),
+                    };
+                    ui.add_enabled_ui(drill.is_ok(), |ui| {
+                        ui.selectable_value(&mut form.drill, Some(k), text);
+                    });
+                }
+            });
+    });
+    if let Some(Some((_, Ok(drill)))) = form.drill.map(|k| drills.drills.get(k)) {
+        ui.label(format!("{} ({} tries)", drill.description, drill.tries));
+    }
 }
 
 #[cfg(test)]

@@ -4,6 +4,7 @@
 //!
 //! - [`layout`]: shared sizes and colours;
 //! - [`settings`]: the panel's shot, physics, simulation and view sections;
+//! - [`practice`]: the Position section (placing balls, position codes) and the drill window;
 //! - [`stress`]: the Stress table section (ball count, friction, seed, table size);
 //! - [`recordings`]: the Recordings section (open a recording);
 //! - [`timeline`]: the replay timeline strip and the Export form;
@@ -21,6 +22,7 @@ pub mod game;
 pub mod hud;
 pub mod layout;
 pub mod layout_check;
+pub mod practice;
 pub mod recordings;
 pub mod settings;
 pub mod stress;
@@ -55,6 +57,7 @@ pub fn plugin(app: &mut App) {
         .init_resource::<game::NewGameForm>()
         .init_resource::<settings::RackConfirm>()
         .init_resource::<stress::StressConfirm>()
+        .init_resource::<practice::PositionForm>()
         .init_resource::<settings::OpenSections>()
         .add_plugins(layout_check::plugin)
         .configure_sets(
@@ -302,6 +305,7 @@ fn left_panel(
     mut state: settings::SettingsParam,
     mut recordings: recordings::RecordingsParam,
     mut stress: stress::StressParam,
+    mut practice: practice::PracticeParam,
     mut inset: ResMut<ViewInset>,
     mut read_error: Local<Option<String>>,
 ) -> Result {
@@ -331,6 +335,7 @@ fn left_panel(
                         .auto_shrink(false)
                         .show(ui, |ui| {
                             settings::sections(ui, &mut state);
+                            practice::section(ui, &mut practice);
                             stress::section(ui, &mut stress);
                             recordings::section(ui, &mut recordings);
                             settings::file_and_controls(ui, &mut state);
@@ -343,6 +348,7 @@ fn left_panel(
         .inner;
     settings::rack_confirm_window(&ctx, &mut state);
     stress::confirm_window(&ctx, &mut stress);
+    practice::drill_window(&ctx, &mut practice);
     settings::config_error_window(&ctx, &state, &mut read_error);
     // The 3D view takes the window right of the panel (src/view.rs).
     if inset.left != panel_width {

@@ -108,7 +108,17 @@ fn recordings(ui: &mut egui::Ui, param: &mut RecordingsParam) {
         }
     });
     if let Some(error) = &replay.error {
-        ui.colored_label(WARNING, error);
+        // A path has no spaces to wrap at: break it anywhere rather than run past the edge.
+        let mut job = egui::text::LayoutJob::single_section(
+            error.clone(),
+            egui::TextFormat {
+                font_id: egui::TextStyle::Body.resolve(ui.style()),
+                color: WARNING,
+                ..Default::default()
+            },
+        );
+        job.wrap.break_anywhere = true;
+        ui.label(job);
     }
     if let Some(open) = &replay.open {
         // The name on a line of its own: beside it the button ran past the panel's edge.

@@ -14,6 +14,7 @@ use bevy_egui::{
 
 use super::layout::{Edge, SUCCESS, TIMELINE_HEIGHT, WARNING, strip};
 use crate::{
+    practice::{PendingPosition, ShotAsPositionRequested},
     replay::{
         ExportFormat, ExportRequest, ExportScope, MAX_SPEED, MIN_SPEED, OpenRecording, Replay,
         ReplayCommand,
@@ -81,6 +82,7 @@ pub fn timeline_strip(
     mut contexts: EguiContexts,
     replay: Res<Replay>,
     mut commands: MessageWriter<ReplayCommand>,
+    (mut as_position, pending): (MessageWriter<ShotAsPositionRequested>, Res<PendingPosition>),
     mut inset: ResMut<ViewInset>,
 ) -> Result {
     let height = if replay.open.is_some() {
@@ -97,7 +99,13 @@ pub fn timeline_strip(
     let ctx = contexts.ctx_mut()?.clone();
     let place = (inset.left, Edge::Bottom, TIMELINE_HEIGHT);
     strip(&ctx, "replay timeline", place, |ui| {
-        timeline(ui, &replay, open, &mut commands);
+        timeline(
+            ui,
+            &replay,
+            open,
+            &mut commands,
+            (&mut as_position, &pending),
+        );
     });
     Ok(())
 }
@@ -107,6 +115,10 @@ fn timeline(
     replay: &Replay,
     open: &OpenRecording,
     commands: &mut MessageWriter<ReplayCommand>,
+    (as_position, pending): (
+        &mut MessageWriter<ShotAsPositionRequested>,
+        &PendingPosition,
+    ),
 ) {
     let t = replay.time;
     ui.horizontal(|ui| {
@@ -124,6 +136,16 @@ fn timeline(
                 .clicked()
             {
                 commands.write(ReplayCommand::Verify);
+            }
+            if ui
+                .button("Open shot as position")
+                .on_hover_text("the balls where this shot was struck, live, with its shot lined up")
+                .clicked()
+            {
+                as_position.write(ShotAsPositionRequested);
+            }
+            if let Some(why) = &pending.refused {
+                ui.colored_label(WARNING, why);
             }
         });
     });

@@ -32,7 +32,8 @@ pub fn run(cmd: PositionCmd) -> Result<(), String> {
             };
             let p: Position = serde_json::from_str(&text)
                 .map_err(|e| format!("{}: not a position: {e}", file.display()))?;
-            println!("{}", p.encode().map_err(|e| e.to_string())?);
+            let code = p.encode().map_err(|e| format!("{}: {e}", file.display()))?;
+            println!("{code}");
         }
         PositionCmd::Decode { code } => {
             let p = Position::decode(&code).map_err(|e| e.to_string())?;

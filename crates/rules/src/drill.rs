@@ -543,7 +543,11 @@ impl Drill {
                 {
                     return verdict(
                         false,
-                        format!("it dropped in the {}", crate::foul::pocket_name(p)),
+                        format!(
+                            "the {ball} went in the {}, not the {}",
+                            crate::foul::pocket_name(p),
+                            crate::foul::pocket_name(want)
+                        ),
                     );
                 }
                 let shot = shots.iter().find(|s| s.summary.pocket_of(ball).is_some());

@@ -291,6 +291,51 @@ impl Verdict {
     }
 }
 
+/// What a pool shot did, in words, for its verdict (issue 48: a made call and a missed
+/// call must not both read "legal"): the balls pocketed and where, in the order they
+/// dropped ("the 7 in the right side pocket, the 3 in the foot-left corner"), or "nothing
+/// pocketed"; and with a ball called (WPA 1.6), whether it went where called: "the 7 missed
+/// the called right side pocket", "the 7 went in the foot-left corner, not the called right
+/// side pocket".
+pub fn what_happened(summary: &ShotSummary, call: Call) -> String {
+    let name = |b: u8| {
+        if b == crate::shot::CUE {
+            "the cue ball".to_owned()
+        } else {
+            format!("the {b}")
+        }
+    };
+    let mut parts: Vec<String> = Vec::new();
+    if let Call::Ball { ball, pocket } = call {
+        match summary.pocket_of(ball) {
+            Some(p) if p == pocket => {}
+            Some(p) => parts.push(format!(
+                "the {ball} went in the {}, not the called {}",
+                crate::foul::pocket_name(p),
+                crate::foul::pocket_name(pocket)
+            )),
+            None => parts.push(format!(
+                "the {ball} missed the called {}",
+                crate::foul::pocket_name(pocket)
+            )),
+        }
+    }
+    let dropped: Vec<String> = summary
+        .pocketed
+        .iter()
+        .map(|&(b, p)| format!("{} in the {}", name(b), crate::foul::pocket_name(p)))
+        .collect();
+    if dropped.is_empty() {
+        if summary.first_contact.is_none() {
+            parts.push("no ball hit".to_owned());
+        }
+        parts.push("nothing pocketed".to_owned());
+    } else {
+        parts.push(dropped.join(", "));
+    }
+    parts.join("; ")
+}
+
 /// Why a shot or a choice was refused (nothing changes).
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum RuleError {

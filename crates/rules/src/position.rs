@@ -21,7 +21,10 @@
 //! other (as [`Simulation::new`] does), and says what is wrong.
 
 use crate::game::Game;
-use billiards_physics::{BallSetup, Params, PocketShape, Shot, Simulation, Table, TipOffset, Vec2};
+use billiards_physics::recording::{Action, Recording};
+use billiards_physics::{
+    BallSetup, History, Params, PocketShape, Shot, Simulation, Table, TipOffset, Vec2,
+};
 use serde::{Deserialize, Serialize};
 
 /// The version this build writes and reads.
@@ -82,8 +85,9 @@ pub enum PositionError {
     /// A version that never existed.
     #[error("the position code has an unknown version {0}")]
     BadVersion(u8),
-    /// A field holds a value no code of this version has.
-    #[error("the position code is not valid: {0}")]
+    /// A field holds a value no position may have (two balls of one number, a ball off the
+    /// table, a shot that is not a number): in a code or a JSON file alike.
+    #[error("the position is not valid: {0}")]
     Invalid(String),
     /// Bytes after the checksum's place.
     #[error("the position code has {0} bytes too many")]
@@ -249,6 +253,108 @@ impl Position {
         Ok(p)
     }
 
+    /// The balls of `sim` on the table now, by number and centre (pocketed balls left out),
+    /// with `sim`'s table and, if `with_params`, its physics.
+    pub fn of_simulation(sim: &Simulation, game: Game, with_params: bool) -> Self {
+        let balls = sim
+            .balls()
+            .zip(sim.numbers())
+            .filter(|(b, _)| b.motion.on_table())
+            .map(|(b, &number)| PlacedBall {
+                number,
+                position: b.position,
+            })
+            .collect();
+        Self {
+            game,
+            table: *sim.table(),
+            balls,
+            params: with_params.then(|| *sim.params()),
+            shot: None,
+        }
+    }
+
+    /// Shot `k` (from 1, as [`crate::Shots`] counts) of `recording` as a position: every
+    /// ball where it rested when the shot was struck (from `history`, the recording's
+    /// rebuilt events), the recording's table, the physics in force then (its last
+    /// parameter change before the strike) and the shot itself. A shot struck while balls
+    /// still rolled is refused: a position is set up at rest.
+    pub fn from_recording(
+        recording: &Recording,
+        history: &History,
+        k: usize,
+        game: Game,
+    ) -> Result<Self, PositionError> {
+        let invalid = |s: String| PositionError::Invalid(s);
+        let strikes: Vec<(f64, Shot)> = recording
+            .inputs
+            .iter()
+            .filter_map(|i| match i.action {
+                Action::Strike { shot, .. } => Some((i.time, shot)),
+                _ => None,
+            })
+            .collect();
+        let &(time, shot) = k
+            .checked_sub(1)
+            .and_then(|i| strikes.get(i))
+            .ok_or_else(|| {
+                invalid(format!(
+                    "the recording has no shot {k} (it has {})",
+                    strikes.len()
+                ))
+            })?;
+        let params = recording
+            .inputs
+            .iter()
+            .take_while(|i| i.time <= time)
+            .filter_map(|i| match i.action {
+                Action::SetParams { params } => Some(params),
+                _ => None,
+            })
+            .last()
+            .unwrap_or(recording.params);
+        let mut balls = Vec::new();
+        for (id, setup) in recording.balls.iter().enumerate() {
+            // The state just before the strike: the segment before `time` for the struck
+            // ball; a ball still moving then makes no position.
+            let before = history.state_at(id, time.next_down());
+            if !before.motion.on_table() {
+                continue;
+            }
+            // A ball that came to rest at the strike's own instant (the game strikes at the
+            // rest time) still has, one ulp before, a speed of about g mu ulp ~ 1e-16 m/s:
+            // moving means faster than a micrometre a second.
+            if before.velocity.length() > 1e-6 && time > 0.0 {
+                return Err(invalid(format!(
+                    "shot {k} was struck while the {} still moved",
+                    setup.number
+                )));
+            }
+            let at = history.state_at(id, time);
+            balls.push(PlacedBall {
+                number: setup.number,
+                position: at.position,
+            });
+        }
+        let p = Self {
+            game,
+            table: recording.table,
+            balls,
+            params: Some(params),
+            shot: Some(shot),
+        };
+        p.check()?;
+        Ok(p)
+    }
+
+    /// The balls as a simulation's setups, at rest.
+    pub fn setups(&self) -> Vec<BallSetup> {
+        self.balls
+            .iter()
+            .map(|b| BallSetup::at(b.number, b.position))
+            .collect()
+    }
+
     /// A position a simulation can start from: a valid table and physics, at most
     /// [`MAX_BALLS`] balls, each on the table and clear of the others, and a finite shot.
     pub fn check(&self) -> Result<(), PositionError> {
@@ -259,13 +365,18 @@ impl Position {
                 self.balls.len()
             )));
         }
+        // One ball of each number: a rack has one 5 (WPA 1.2, the balls), and the rules, the
+        // drills and the Place tool name balls by number.
+        let mut numbers: Vec<u8> = self.balls.iter().map(|b| b.number).collect();
+        numbers.sort_unstable();
+        if let Some(pair) = numbers.windows(2).find(|w| w[0] == w[1]) {
+            return Err(invalid(format!(
+                "two balls are numbered {} (each number once)",
+                pair[0]
+            )));
+        }
         let params = self.params.unwrap_or_default();
-        let setups: Vec<BallSetup> = self
-            .balls
-            .iter()
-            .map(|b| BallSetup::at(b.number, b.position))
-            .collect();
-        Simulation::new(self.table, params, &setups).map_err(|e| invalid(e.to_string()))?;
+        Simulation::new(self.table, params, &self.setups()).map_err(|e| invalid(e.to_string()))?;
         if let Some(s) = self.shot {
             let finite = [s.angle, s.speed, s.tip.side, s.tip.height, s.elevation]
                 .iter()

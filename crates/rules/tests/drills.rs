@@ -130,6 +130,15 @@ fn the_judge_reads_solver_shots() {
     );
     // Nothing played: nothing met.
     assert!(!d.judge(&[]).success);
+    // The 1 in the foot-left corner, not the foot-right the goal names: the reason says
+    // where it went and where it should have gone (issue 47).
+    let wrong = d.judge(&[shot(Some(1), &[(1, Pocket::FootLeft)], &[(0, (0.5, 0.0))])]);
+    assert!(!wrong.success);
+    assert_eq!(
+        wrong.reasons[0],
+        "missed: pocket the 1 in the foot-right corner \
+         (the 1 went in the foot-left corner, not the foot-right corner)"
+    );
 }
 
 #[test]

@@ -492,3 +492,30 @@ fn wpa_3_6_a_call_of_the_other_group_or_the_early_8_is_refused() {
         Err(RuleError::CallNotUsed(Game::EightBall, "push out"))
     );
 }
+
+/// Issue 48: the verdict says what went in and where, and whether a called ball went where
+/// it was called (WPA 1.6): a made call, a call that missed, a ball in another pocket and a
+/// shot that hit nothing read differently.
+#[test]
+fn what_happened_names_the_balls_the_pockets_and_the_call() {
+    let made = shot(Some(7), &[], &[(7, SideRight)]);
+    assert_eq!(
+        what_happened(&made, call(7, SideRight)),
+        "the 7 in the right side pocket"
+    );
+    let missed = shot(Some(7), &[7], &[]);
+    assert_eq!(
+        what_happened(&missed, call(7, SideRight)),
+        "the 7 missed the called right side pocket; nothing pocketed"
+    );
+    let elsewhere = shot(Some(7), &[], &[(7, FootLeft), (0, HeadRight)]);
+    assert_eq!(
+        what_happened(&elsewhere, call(7, SideRight)),
+        "the 7 went in the foot-left corner, not the called right side pocket; \
+         the 7 in the foot-left corner, the cue ball in the head-right corner"
+    );
+    assert_eq!(
+        what_happened(&shot(None, &[], &[]), Call::None),
+        "no ball hit; nothing pocketed"
+    );
+}

@@ -233,3 +233,78 @@ fn a_position_the_table_cannot_hold_is_refused_both_ways() {
     assert!(s.encode().is_err());
     assert!(matches!(rack().table.pockets, PocketShape::Jaws { .. }));
 }
+
+/// Issue 48: two balls of one number are refused, by the number, whether the position comes
+/// as JSON (`position encode`) or as a code forged with a valid checksum.
+#[test]
+fn two_balls_of_one_number_are_refused_both_ways() {
+    let mut p = rack();
+    let good = bytes(&p.encode().unwrap());
+    p.balls[2].number = p.balls[1].number;
+    let n = p.balls[1].number;
+    let e = p.encode().unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        format!("the position is not valid: two balls are numbered {n} (each number once)")
+    );
+    // The same in a code: the third ball's number byte set to the second's.
+    let mut body = good[..good.len() - 4].to_vec();
+    let (second, third) = (3 + 33 + 8 + 1 + 17, 3 + 33 + 8 + 1 + 2 * 17);
+    assert_eq!(body[second], n, "the code's layout: a number then x, y");
+    body[third] = n;
+    let e = Position::decode(&sealed(&body)).unwrap_err();
+    assert!(
+        e.to_string()
+            .contains(&format!("two balls are numbered {n}")),
+        "{e}"
+    );
+}
+
+/// Issue 39: a replay's shot opened as a position holds every ball where it rested when
+/// that shot was struck, the physics then in force and the shot itself; a shot that is not
+/// there is refused.
+#[test]
+fn a_recorded_shot_opens_as_the_position_it_was_struck_from() {
+    use billiards_physics::recording::Recorder;
+    let p = rack();
+    let mut rec = Recorder::new(p.table, Params::default(), p.setups()).unwrap();
+    let first = Shot {
+        angle: 0.1,
+        speed: 3.0,
+        tip: TipOffset::default(),
+        elevation: 0.0,
+    };
+    rec.strike(0, first).unwrap();
+    rec.run_to_rest().unwrap();
+    let resting: Vec<(u8, Vec2)> = rec
+        .sim()
+        .balls()
+        .zip(rec.sim().numbers())
+        .filter(|(b, _)| b.motion.on_table())
+        .map(|(b, &n)| (n, b.position))
+        .collect();
+    let second = Shot {
+        angle: -2.0,
+        speed: 1.5,
+        ..first
+    };
+    rec.strike(0, second).unwrap();
+    rec.run_to_rest().unwrap();
+    let recording = rec.recording();
+    let history = recording.history().unwrap();
+
+    let one = Position::from_recording(&recording, &history, 1, Game::FreePlay).unwrap();
+    assert_eq!(one.balls, p.balls, "shot 1 starts from the rack");
+    assert_eq!(one.shot, Some(first));
+    let two = Position::from_recording(&recording, &history, 2, Game::FreePlay).unwrap();
+    let got: Vec<(u8, Vec2)> = two.balls.iter().map(|b| (b.number, b.position)).collect();
+    assert_eq!(got, resting, "shot 2 starts where shot 1 left the balls");
+    assert_eq!(two.shot, Some(second));
+    assert_eq!(two.params, Some(Params::default()));
+    // And the code of it opens the same position.
+    assert_eq!(Position::decode(&two.encode().unwrap()).unwrap(), two);
+    for k in [0, 3] {
+        let e = Position::from_recording(&recording, &history, k, Game::FreePlay).unwrap_err();
+        assert!(e.to_string().contains(&format!("no shot {k}")), "{e}");
+    }
+}

@@ -143,6 +143,7 @@ pub(super) fn judge_shot(
         call,
         verdict: verdict.clone(),
     });
+    game.last_what = Some(billiards_rules::what_happened(&summary, call));
     game.last = Some(verdict);
     game.verdict_shown = true;
     save_rules_log(
@@ -268,6 +269,7 @@ pub(super) fn apply_commands(
             last: None,
             verdict_shown: false,
             last_foul: None,
+            last_what: None,
             choices: Vec::new(),
             seats: request.computer,
             rack_style: request.setup.rack_style,

@@ -141,6 +141,9 @@ pub struct GameInPlay {
     pub verdict_shown: bool,
     /// The last foul's reason, kept until a later foul.
     pub last_foul: Option<String>,
+    /// What the last shot did: the balls pocketed and where, a called ball's fate
+    /// ([`billiards_rules::what_happened`]).
+    pub last_what: Option<String>,
     /// Choices taken since the last shot (logged with the next one).
     pub(super) choices: Vec<Choice>,
     /// Each seat's computer level; `None`: a human.
@@ -150,6 +153,15 @@ pub struct GameInPlay {
 }
 
 impl GameInPlay {
+    /// The verdict and what the shot did: "legal: the 7 in the right side pocket", "foul:
+    /// the cue ball was pocketed; the 3 in the foot-left corner, the cue ball in ...".
+    pub fn verdict_text(&self, verdict: &Verdict) -> String {
+        match &self.last_what {
+            Some(what) => format!("{}: {what}", verdict.reason()),
+            None => verdict.reason(),
+        }
+    }
+
     /// Whether a human plays in this match (a verdict then waits for them to continue).
     pub fn has_human(&self) -> bool {
         self.seats.iter().any(Option::is_none)
@@ -304,7 +316,7 @@ impl GameInPlay {
             lines.push(format!(
                 "last shot ({}): {}",
                 self.name(verdict.shooter),
-                verdict.reason()
+                self.verdict_text(verdict)
             ));
         }
         if let Some(foul) = &self.last_foul {
@@ -319,7 +331,8 @@ fn ball_on_text(rack: &GameState, next: &NextShot) -> String {
         (_, []) => "none".to_owned(),
         (_, [one]) => format!("the {one}"),
         (Game::EightBall, _) if rack.group(next.shooter).is_none() => {
-            "any ball but the 8 (open table)".to_owned()
+            // The next line says "open table" (WPA 3.5); not twice.
+            "any ball but the 8".to_owned()
         }
         (Game::EightBall, _) => format!(
             "the {}",

@@ -1,0 +1,621 @@
+//! Drills in the game: the list (the `assets/drills/` folder, where a player adds a file, or
+//! the standard set built in), a session (the drill's position set up for each try, every
+//! attempt judged from the solver's own events by [`Drill::judge`], the tries counted) and
+//! the best session of each drill kept in the settings file.
+
+use std::{
+    collections::BTreeMap,
+    path::{Path, PathBuf},
+};
+
+use bevy::prelude::*;
+use billiards_physics::EventKind;
+use billiards_rules::{Attempt, Drill, DrillScore, DrillShot};
+use serde::{Deserialize, Serialize};
+
+use super::{
+    position::{Origin, PositionRequested},
+    state::Practice,
+};
+use crate::{
+    play::game::DialogOpen,
+    sim::{ShotFinished, SimStatus, Solver},
+};
+
+/// The standard drills, built in for a binary run away from its `assets` folder.
+const BUILT_IN: [(&str, &str); 11] = [
+    (
+        "01-stop-shot.json",
+        include_str!("../../assets/drills/01-stop-shot.json"),
+    ),
+    (
+        "02-draw-shot.json",
+        include_str!("../../assets/drills/02-draw-shot.json"),
+    ),
+    (
+        "03-follow-shot.json",
+        include_str!("../../assets/drills/03-follow-shot.json"),
+    ),
+    (
+        "04-cut-30.json",
+        include_str!("../../assets/drills/04-cut-30.json"),
+    ),
+    (
+        "05-thin-cut.json",
+        include_str!("../../assets/drills/05-thin-cut.json"),
+    ),
+    (
+        "06-bank.json",
+        include_str!("../../assets/drills/06-bank.json"),
+    ),
+    (
+        "07-kick.json",
+        include_str!("../../assets/drills/07-kick.json"),
+    ),
+    (
+        "08-run-out-789.json",
+        include_str!("../../assets/drills/08-run-out-789.json"),
+    ),
+    (
+        "09-safety.json",
+        include_str!("../../assets/drills/09-safety.json"),
+    ),
+    (
+        "10-position-zone.json",
+        include_str!("../../assets/drills/10-position-zone.json"),
+    ),
+    (
+        "11-long-pot.json",
+        include_str!("../../assets/drills/11-long-pot.json"),
+    ),
+];
+
+/// The drills the new-game dialog lists: the standard ones (by file name) then the player's
+/// own (by `user/` and file name), each a drill or why its file was refused (shown in the
+/// list, greyed out).
+#[derive(Resource, Debug)]
+pub struct DrillList {
+    /// Where the standard drills were read from (`None`: the built-in set).
+    pub folder: Option<PathBuf>,
+    /// The player's drills folder (`drills` beside the settings file), where "Save as
+    /// drill" writes; `None` without a settings file (`--no-config`).
+    pub user_folder: Option<PathBuf>,
+    /// Key (file name, `user/` before the player's own) and drill (or the error): the
+    /// standard ones in file-name order, then the player's.
+    pub drills: Vec<(String, Result<Drill, String>)>,
+}
+
+impl Default for DrillList {
+    /// The standard drills; the player's folder is the settings file's (`crate::config`
+    /// sets it when it reads the file; none with `--no-config`).
+    fn default() -> Self {
+        Self::load(drills_folder().as_deref(), None)
+    }
+}
+
+/// The key a drill of the player's folder is listed and scored by.
+pub const USER_PREFIX: &str = "user/";
+
+impl DrillList {
+    /// The drills of `folder`, or the built-in set without one (or if it cannot be read),
+    /// then those of the player's `user` folder (none if it is missing).
+    pub fn load(folder: Option<&Path>, user: Option<PathBuf>) -> Self {
+        let refused = |(name, d): (String, Result<Drill, billiards_rules::DrillError>)| {
+            (name, d.map_err(|e| e.to_string()))
+        };
+        let standard = folder.and_then(|dir| Drill::load_dir(dir).ok().map(|l| (dir, l)));
+        let mut list = match standard {
+            Some((dir, loaded)) => Self {
+                folder: Some(dir.to_path_buf()),
+                user_folder: None,
+                drills: loaded.into_iter().map(refused).collect(),
+            },
+            None => Self {
+                folder: None,
+                user_folder: None,
+                drills: BUILT_IN
+                    .iter()
+                    .map(|&(name, text)| {
+                        (
+                            name.to_owned(),
+                            Drill::from_json(text).map_err(|e| e.to_string()),
+                        )
+                    })
+                    .collect(),
+            },
+        };
+        if let Some(dir) = &user
+            && let Ok(loaded) = Drill::load_dir(dir)
+        {
+            list.drills.extend(
+                loaded
+                    .into_iter()
+                    .map(refused)
+                    .map(|(name, d)| (format!("{USER_PREFIX}{name}"), d)),
+            );
+        }
+        list.user_folder = user;
+        list
+    }
+
+    /// The list read again (a drill saved, a file added).
+    pub fn reload(&mut self) {
+        *self = Self::load(self.folder.as_deref(), self.user_folder.clone());
+    }
+}
+
+/// A file name for a drill called `name`: its letters and digits, lower case, words joined by
+/// '-', at most 40 characters ("drill" if none is left).
+pub fn file_name(name: &str) -> String {
+    let mut stem = String::new();
+    for c in name.chars() {
+        if c.is_ascii_alphanumeric() {
+            stem.push(c.to_ascii_lowercase());
+        } else if !stem.is_empty() && !stem.ends_with('-') {
+            stem.push('-');
+        }
+    }
+    let stem: String = stem.trim_end_matches('-').chars().take(40).collect();
+    let stem = stem.trim_end_matches('-');
+    format!("{}.json", if stem.is_empty() { "drill" } else { stem })
+}
+
+/// Writes `drill` into `folder` under [`file_name`] of its name (made if missing; a file of
+/// that name is replaced, as saving again under the same name means); the path written.
+pub fn save_drill(folder: &Path, drill: &Drill) -> Result<PathBuf, String> {
+    drill.check().map_err(|e| format!("not a drill: {e}"))?;
+    std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+    let path = folder.join(file_name(&drill.name));
+    let text = serde_json::to_string_pretty(drill).map_err(|e| e.to_string())?;
+    std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(path)
+}
+
+/// The `assets/drills` folder: beside the game's manifest when run by cargo, beside the
+/// binary, or in the current folder, whichever is there first.
+pub fn drills_folder() -> Option<PathBuf> {
+    let manifest = std::env::var_os("CARGO_MANIFEST_DIR").map(PathBuf::from);
+    let exe = std::env::current_exe()
+        .ok()
+        .and_then(|p| p.parent().map(Path::to_path_buf));
+    [manifest, exe, Some(PathBuf::from("."))]
+        .into_iter()
+        .flatten()
+        .map(|dir| dir.join("assets").join("drills"))
+        .find(|dir| dir.is_dir())
+}
+
+/// The best session of each drill, by file name: kept in the settings file.
+#[derive(Resource, Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(transparent)]
+pub struct DrillBests(pub BTreeMap<String, DrillScore>);
+
+impl DrillBests {
+    /// Keeps `session` for `drill` if it is better than the best so far
+    /// ([`DrillScore::better`]); returns whether it is the new best.
+    pub fn offer(&mut self, drill: &str, session: DrillScore) -> bool {
+        let kept = self.0.get(drill).copied();
+        let best = kept.map_or(session, |k| k.better(session));
+        self.0.insert(drill.to_owned(), best);
+        kept.is_none_or(|k| best != k)
+    }
+}
+
+/// The drill `--drill NAME` starts (a key of the [`DrillList`], `.json` optional).
+#[derive(Resource, Debug, Clone, PartialEq, Eq)]
+pub struct StartDrill(pub String);
+
+/// Startup: the drill of `--drill`, found in the list, or why not in the note.
+pub(super) fn start_drill_at_launch(
+    start: Option<Res<StartDrill>>,
+    list: Res<DrillList>,
+    mut requests: MessageWriter<DrillRequested>,
+    mut status: ResMut<SimStatus>,
+) {
+    let Some(start) = start else { return };
+    let name = start.0.trim_end_matches(".json");
+    match list
+        .drills
+        .iter()
+        .position(|(key, _)| key.trim_end_matches(".json") == name)
+    {
+        Some(index) => {
+            requests.write(DrillRequested { index });
+        }
+        None => {
+            let keys: Vec<&str> = list.drills.iter().map(|(k, _)| k.as_str()).collect();
+            status.note = Some(format!(
+                "--drill: no drill {name:?}; the list has {}",
+                keys.join(", ")
+            ));
+        }
+    }
+}
+
+/// Starts a session of the drill at `index` in the [`DrillList`].
+#[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct DrillRequested {
+    /// Its place in the list.
+    pub index: usize,
+}
+
+/// "Save as drill": the table as it stands, with these goals, into the player's drills
+/// folder.
+#[derive(Message, Debug, Clone, PartialEq)]
+pub struct SaveDrillRequested {
+    /// The drill's name (its file is named after it).
+    pub name: String,
+    /// Its goals.
+    pub goals: Vec<billiards_rules::Goal>,
+    /// Tries a session gives.
+    pub tries: u32,
+}
+
+/// What the player does in a session.
+#[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DrillCommand {
+    /// The balls back in the drill's position for the next try.
+    NextTry,
+    /// A new session of the same drill.
+    Restart,
+    /// Back to free play.
+    Leave,
+}
+
+/// A drill in session.
+#[derive(Resource, Debug, Clone, PartialEq)]
+pub struct DrillSession {
+    /// The drill's file name (its key in [`DrillBests`]).
+    pub file: String,
+    /// The drill.
+    pub drill: Drill,
+    /// This session's tally.
+    pub score: DrillScore,
+    /// The shots of the attempt in progress.
+    pub shots: Vec<DrillShot>,
+    /// The last attempt's judgement.
+    pub last: Option<Attempt>,
+    /// The last attempt is judged: the next try waits for the player.
+    pub judged: bool,
+    /// The session ended with a new best.
+    pub new_best: bool,
+}
+
+impl DrillSession {
+    /// Every try of the session taken.
+    pub fn over(&self) -> bool {
+        self.score.tries >= self.drill.tries
+    }
+
+    /// "try 3 of 10".
+    pub fn try_text(&self) -> String {
+        let k = (self.score.tries + u32::from(!self.judged)).min(self.drill.tries);
+        format!("try {k} of {}", self.drill.tries)
+    }
+}
+
+/// Starts the requested drill: its position on the table, the dialog closed, the session.
+pub(super) fn start_drill(
+    mut requests: MessageReader<DrillRequested>,
+    list: Res<DrillList>,
+    mut positions: MessageWriter<PositionRequested>,
+    mut commands: Commands,
+    mut next: ResMut<NextState<Practice>>,
+    mut dialog: ResMut<DialogOpen>,
+    mut status: ResMut<SimStatus>,
+) {
+    let Some(&DrillRequested { index }) = requests.read().last() else {
+        return;
+    };
+    let Some((file, Ok(drill))) = list.drills.get(index) else {
+        status.note = Some("that drill cannot be played (its file was refused)".to_owned());
+        return;
+    };
+    dialog.0 = false;
+    positions.write(PositionRequested {
+        position: drill.position.clone(),
+        origin: Origin::Drill,
+        own_physics: true,
+    });
+    status.note = Some(format!("drill: {}", drill.name));
+    commands.insert_resource(DrillSession {
+        file: file.clone(),
+        drill: drill.clone(),
+        score: DrillScore::default(),
+        shots: Vec::new(),
+        last: None,
+        judged: false,
+        new_best: false,
+    });
+    next.set(Practice::Drill);
+}
+
+/// After each shot of an attempt: the shot taken from the solver's events since its strike;
+/// when the attempt is over (one shot, or the end of the visit), judged and counted, and at
+/// the session's last try, the best kept.
+pub(super) fn judge_attempt(
+    mut finished: MessageReader<ShotFinished>,
+    session: Option<ResMut<DrillSession>>,
+    solver: Option<Res<Solver>>,
+    mut bests: ResMut<DrillBests>,
+    mut status: ResMut<SimStatus>,
+) {
+    if finished.read().count() == 0 {
+        return;
+    }
+    let (Some(mut session), Some(solver)) = (session, solver) else {
+        return;
+    };
+    if session.judged {
+        status.note = Some("this try is judged: Next try for another".to_owned());
+        return;
+    }
+    let sim = solver.simulation();
+    let events = sim.history().events();
+    let Some(first) = events
+        .iter()
+        .rposition(|e| matches!(e.kind, EventKind::Strike { .. }))
+    else {
+        return;
+    };
+    let shot = DrillShot::of(sim, first);
+    session.shots.push(shot);
+    if session.drill.continues(&session.shots) {
+        status.note = Some(format!(
+            "shot {} of the attempt: go on",
+            session.shots.len()
+        ));
+        return;
+    }
+    let attempt = session.drill.judge(&session.shots);
+    session.score.add(&attempt);
+    status.note = Some(format!(
+        "{}: score {:.0}",
+        if attempt.success { "made it" } else { "missed" },
+        attempt.score
+    ));
+    session.last = Some(attempt);
+    session.judged = true;
+    if session.over() {
+        let (file, score) = (session.file.clone(), session.score);
+        session.new_best = bests.offer(&file, score);
+    }
+}
+
+/// A new game, a rack from the panel, the stress table or a position not the drill's own ends
+/// the drill in session.
+pub(super) fn end_drill_on_new_table(
+    mut games: MessageReader<crate::play::game::NewGameRequested>,
+    mut racks: MessageReader<crate::sim::RackRequested>,
+    mut stress: MessageReader<crate::stress::StressRequested>,
+    mut positions: MessageReader<PositionRequested>,
+    session: Option<Res<DrillSession>>,
+    mut commands: Commands,
+    mut next: ResMut<NextState<Practice>>,
+) {
+    let other_position = positions.read().any(|p| p.origin != Origin::Drill);
+    let new_table =
+        games.read().count() + racks.read().count() + stress.read().count() > 0 || other_position;
+    if new_table && session.is_some() {
+        commands.remove_resource::<DrillSession>();
+        next.set(Practice::Off);
+    }
+}
+
+/// Enter is Next try once the attempt is judged.
+pub(super) fn drill_keys(
+    keys: Res<ButtonInput<KeyCode>>,
+    session: Option<Res<DrillSession>>,
+    mut commands: MessageWriter<DrillCommand>,
+) {
+    if keys.just_pressed(KeyCode::Enter) && session.is_some_and(|s| s.judged && !s.over()) {
+        commands.write(DrillCommand::NextTry);
+    }
+}
+
+/// The session's commands: the next try, a new session, leaving.
+pub(super) fn drill_commands(
+    mut requests: MessageReader<DrillCommand>,
+    session: Option<ResMut<DrillSession>>,
+    mut positions: MessageWriter<PositionRequested>,
+    mut commands: Commands,
+    mut next: ResMut<NextState<Practice>>,
+    mut status: ResMut<SimStatus>,
+) {
+    let Some(&command) = requests.read().last() else {
+        return;
+    };
+    let Some(mut session) = session else { return };
+    match command {
+        DrillCommand::Leave => {
+            commands.remove_resource::<DrillSession>();
+            next.set(Practice::Off);
+            status.note = Some("drill left: free play".to_owned());
+            return;
+        }
+        DrillCommand::Restart => {
+            session.score = DrillScore::default();
+            session.new_best = false;
+            session.last = None;
+        }
+        DrillCommand::NextTry if session.over() => {
+            status.note = Some("the session is over: Restart for another".to_owned());
+            return;
+        }
+        DrillCommand::NextTry => {}
+    }
+    session.shots.clear();
+    session.judged = false;
+    positions.write(PositionRequested {
+        position: session.drill.position.clone(),
+        origin: Origin::Drill,
+        own_physics: true,
+    });
+}
+
+/// "Save as drill": the table at rest (its balls, table, physics and the Shot section's
+/// shot) with the asked goals, written into the player's drills folder and listed at once.
+pub(super) fn save_as_drill(
+    mut requests: MessageReader<SaveDrillRequested>,
+    solver: Option<Res<Solver>>,
+    (rules, shot): (
+        Res<crate::play::game::Rules>,
+        Res<crate::settings::ShotSettings>,
+    ),
+    mut list: ResMut<DrillList>,
+    mut status: ResMut<SimStatus>,
+) {
+    let Some(request) = requests.read().last().cloned() else {
+        return;
+    };
+    let Some(solver) = solver else { return };
+    let outcome = (|| {
+        let folder = list
+            .user_folder
+            .clone()
+            .ok_or("there is no config folder to keep drills in")?;
+        let name = request.name.trim();
+        if name.is_empty() {
+            return Err("give the drill a name".to_owned());
+        }
+        let position = super::position::current_position(&solver, &rules, true, Some(&shot))?;
+        let goals: Vec<String> = request.goals.iter().map(|g| g.text()).collect();
+        let drill = Drill {
+            name: name.to_owned(),
+            description: format!("{}.", goals.join(", ")),
+            position,
+            goals: request.goals.clone(),
+            tries: request.tries.clamp(1, 100),
+            shots: 1,
+        };
+        save_drill(&folder, &drill)
+    })();
+    status.note = Some(match outcome {
+        Ok(path) => {
+            list.reload();
+            format!(
+                "drill saved as {} (New game, free play lists it)",
+                path.display()
+            )
+        }
+        Err(why) => format!("drill not saved: {why}"),
+    });
+}
+
+/// The drill's goals on the table: the pocket a ball must drop in ringed, the balls it
+/// names ringed, the cue ball's zone outlined.
+pub(super) fn draw_goals(
+    session: Option<Res<DrillSession>>,
+    spec: Res<crate::table::geometry::TableSpec>,
+    solver: Option<Res<Solver>>,
+    mut gizmos: Gizmos,
+) {
+    use billiards_rules::{Goal, Zone};
+    let Some(session) = session else { return };
+    let at = |p: bevy::math::DVec2| crate::table::geometry::to_world(p.extend(0.003));
+    let flat = Quat::from_rotation_x(std::f32::consts::FRAC_PI_2);
+    let gold = Color::srgb(1.0, 0.8, 0.1);
+    let zone_colour = Color::srgb(0.3, 0.9, 1.0);
+    let r = spec.ball_radius as f32;
+    let ball_at = |n: u8| {
+        solver.as_ref().and_then(|s| {
+            let sim = s.simulation();
+            sim.balls()
+                .zip(sim.numbers())
+                .find(|(b, k)| **k == n && b.motion.on_table())
+                .map(|(b, _)| crate::sim::to_dvec2(b.position))
+        })
+    };
+    for goal in &session.drill.goals {
+        let ball = match *goal {
+            Goal::Pocket { ball, pocket, .. } => {
+                if let Some(p) = pocket {
+                    let hole = spec.pocket(p);
+                    for k in [1.2, 1.35] {
+                        gizmos
+                            .circle(
+                                Isometry3d::new(at(hole.centre), flat),
+                                (k * hole.radius) as f32,
+                                gold,
+                            )
+                            .resolution(40);
+                    }
+                }
+                Some(ball)
+            }
+            Goal::FirstContact { ball, .. } | Goal::Hide { ball: Some(ball) } => Some(ball),
+            Goal::CueBallIn { zone } => {
+                let centre = at(crate::sim::to_dvec2(zone.centre()));
+                match zone {
+                    Zone::Circle { radius, .. } => {
+                        gizmos
+                            .circle(Isometry3d::new(centre, flat), radius as f32, zone_colour)
+                            .resolution(48);
+                    }
+                    Zone::Rect { min, max } => {
+                        let size = Vec2::new((max.x - min.x) as f32, (max.y - min.y) as f32);
+                        gizmos.rect(Isometry3d::new(centre, flat), size, zone_colour);
+                    }
+                }
+                None
+            }
+            _ => None,
+        };
+        if let Some(p) = ball.and_then(ball_at) {
+            gizmos
+                .circle(Isometry3d::new(at(p), flat), 1.3 * r, gold)
+                .resolution(32);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every standard drill is built in and loads; the folder's list is the same drills.
+    #[test]
+    fn the_standard_drills_load_from_the_folder_and_built_in() {
+        let built_in = DrillList::load(None, None);
+        assert_eq!(built_in.drills.len(), BUILT_IN.len());
+        assert!(built_in.drills.iter().all(|(_, d)| d.is_ok()));
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/drills");
+        let folder = DrillList::load(Some(&dir), None);
+        let names = |l: &DrillList| l.drills.iter().map(|d| d.0.clone()).collect::<Vec<_>>();
+        assert_eq!(
+            names(&folder),
+            names(&built_in),
+            "a drill file not built in"
+        );
+        for ((_, a), (_, b)) in folder.drills.iter().zip(&built_in.drills) {
+            assert_eq!(a.as_ref().unwrap(), b.as_ref().unwrap());
+        }
+    }
+
+    /// A drill's file name keeps its name's letters and digits, words joined by '-'.
+    #[test]
+    fn a_saved_drill_is_named_after_it() {
+        assert_eq!(file_name("My Cut, 30°!"), "my-cut-30.json");
+        assert_eq!(file_name("  "), "drill.json");
+        assert_eq!(
+            file_name(&"x".repeat(60)),
+            format!("{}.json", "x".repeat(40))
+        );
+    }
+
+    /// A session is kept only when it beats the best: a better success rate first.
+    #[test]
+    fn the_best_session_is_kept() {
+        let mut bests = DrillBests::default();
+        let s = |tries, successes, best| DrillScore {
+            tries,
+            successes,
+            best,
+        };
+        assert!(bests.offer("a", s(10, 3, 80.0)));
+        assert!(!bests.offer("a", s(10, 2, 99.0)));
+        assert_eq!(bests.0["a"], s(10, 3, 80.0));
+        assert!(bests.offer("a", s(10, 5, 60.0)));
+        assert_eq!(bests.0["a"], s(10, 5, 60.0));
+    }
+}
