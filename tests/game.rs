@@ -356,3 +356,47 @@ fn a_match_refuses_undo() {
     assert!(note.contains("practice"), "{note}");
     let _ = std::fs::remove_dir_all(&folder);
 }
+
+/// Issue 48: after a shot the HUD's last-shot line says what the shot did (the balls that
+/// dropped and where, or "nothing pocketed") after the verdict, and the verdict alone is
+/// never the whole line; the computer's seat is marked from the first line on.
+#[test]
+fn the_last_shot_says_what_went_in_and_the_computer_seat_is_marked() {
+    let folder = std::env::temp_dir().join(format!("billiards-what-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&folder);
+    let mut app = start(&folder, Game::NineBall, 1);
+    // The break, straight at the rack.
+    shoot(&mut app, 0.0, 7.0);
+    let game = rules(&app);
+    let what = game.last_what.clone().expect("what the break did");
+    let verdict = game.last.clone().unwrap();
+    assert!(
+        what.ends_with("nothing pocketed") || what.contains(" in the "),
+        "{what}"
+    );
+    let lines = game.hud_lines(turn(&app), &[]);
+    let expected = format!("last shot (Ann): {}: {what}", verdict.reason());
+    assert!(lines.contains(&expected), "{expected:?} not in {lines:?}");
+    let _ = std::fs::remove_dir_all(&folder);
+
+    let mut app = common::headless(game::plugin);
+    app.insert_resource(RecordingsFolder(None));
+    app.update();
+    app.world_mut().write_message(NewGameRequested {
+        game: Game::NineBall.into(),
+        players: ["Ann".to_owned(), "Bob".to_owned()],
+        race_to: 1,
+        seed: 7,
+        computer: [None, Some(billiards_ai::Level::Easy)],
+        setup: Default::default(),
+    });
+    app.update();
+    app.update();
+    let lines = rules(&app).hud_lines(turn(&app), &[]);
+    assert_eq!(
+        lines[0],
+        "9-ball, race to 1: Ann 0 - 0 Bob (computer)",
+        "{:?}",
+        rules(&app).seats
+    );
+}

@@ -86,6 +86,7 @@ pub struct GameParam<'w> {
     drills: Res<'w, DrillList>,
     bests: Res<'w, DrillBests>,
     drill_requests: MessageWriter<'w, DrillRequested>,
+    shot: Res<'w, crate::settings::ShotSettings>,
 }
 
 /// The HUD's buttons' labels, in their order (the layout check finds them by these).
@@ -110,6 +111,11 @@ pub fn human_to_shoot(state: &GameParam) -> bool {
 /// Whether the table is in free play (no match in play).
 pub fn free_play(state: &GameParam) -> bool {
     !state.rules.in_match()
+}
+
+/// A snooker frame is in play (its balls are named by colour, not number).
+pub fn snooker(state: &GameParam) -> bool {
+    state.rules.snooker.is_some()
 }
 
 /// The HUD's buttons, one row, each always in its place: disabled when it does not apply
@@ -229,23 +235,107 @@ fn split_lines(
     if let Some((hint_key, hint)) = &state.computer.hint
         && *hint_key == key
     {
-        first.push((hint.text(&state.view), Some(INFO)));
+        // A hint's odds are those of its own aim (issue 48: "61 % to succeed" stayed after
+        // the aim moved): once the player's aim or nomination leaves it, it says so.
+        let nominated = state.rules.snooker.as_ref().map(|g| g.nominated);
+        let text = if hint_left(hint, &state.shot, nominated) {
+            "hint: your aim has left the hint's shot (Hint again for its odds)".to_owned()
+        } else {
+            hint.text(&state.view)
+        };
+        first.push((text, Some(INFO)));
     }
     (first, second)
 }
 
+/// Whether the player's aim (angle, power, tip, elevation) or snooker nomination
+/// (`nominated`, `None` outside snooker) is no longer the hint's.
+pub fn hint_left(
+    hint: &crate::play::computer::Hint,
+    shot: &crate::settings::ShotSettings,
+    nominated: Option<Option<u8>>,
+) -> bool {
+    use crate::play::computer::{Decided, Hint};
+    use billiards_ai::snooker::SnookerDecision;
+    let Hint::Decided(decision) = hint else {
+        return false;
+    };
+    if let (Decided::Snooker(SnookerDecision::Shoot(plan)), Some(now)) = (decision, nominated)
+        && plan.nominated.is_some()
+        && plan.nominated != now
+    {
+        return true;
+    }
+    let Some((aim, _)) = decision.aim() else {
+        return false;
+    };
+    let turn = (shot.angle - aim.angle).rem_euclid(std::f64::consts::TAU);
+    // A thousandth of a radian (0.06 degree) or 1 cm/s: a key tap moves more than either.
+    let angle_moved = turn.min(std::f64::consts::TAU - turn) > 1e-3;
+    let tip_moved = (shot.tip.side - aim.tip.side).abs() > 1e-3
+        || (shot.tip.height - aim.tip.height).abs() > 1e-3;
+    angle_moved
+        || (shot.power - aim.speed).abs() > 0.01
+        || tip_moved
+        || (shot.elevation - aim.elevation.to_degrees()).abs() > 0.05
+}
+
+/// The height of the strip the table's view leaves free at the bottom for the docked
+/// verdict or end-of-rack window (0: none); the timeline strip reads it.
+#[derive(Resource, Debug, Clone, Copy, Default, PartialEq)]
+pub struct VerdictStrip(pub f32);
+
+/// The docked window's margin from the window's edge.
+const DOCK_MARGIN: f32 = 8.0;
+
+/// The strip's height before its window has been laid out once.
+const VERDICT_STRIP_MIN: f32 = 90.0;
+
 /// The windows of the phase: new game, verdict, calling, game over.
-pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result {
+pub fn game_windows(
+    mut contexts: EguiContexts,
+    mut state: GameParam,
+    mut strip: ResMut<VerdictStrip>,
+) -> Result {
     let ctx = contexts.ctx_mut()?.clone();
-    let Some(turn) = state.turn.as_ref().map(|t| *t.get()) else {
+    let turn = state.turn.as_ref().map(|t| *t.get());
+    // The verdict and the end of a rack sit in a strip the table's view leaves free at the
+    // bottom (issue 48: the verdict window covered balls on the cloth), as tall as the
+    // window was at its last pass; the new-game dialog, modal, sits over the table.
+    let docked = match turn {
+        Some(Turn::Verdict) => Some("Verdict"),
+        Some(Turn::GameOver) if state.rules.snooker.is_some() => Some("Frame over"),
+        Some(Turn::GameOver) => Some("Rack over"),
+        _ => None,
+    };
+    let height = docked.map_or(0.0, |title| {
+        ctx.memory(|m| m.area_rect(egui::Id::new(title)))
+            .map_or(VERDICT_STRIP_MIN, |r| {
+                (r.height() + 2.0 * DOCK_MARGIN).max(VERDICT_STRIP_MIN)
+            })
+    });
+    if (strip.0 - height).abs() >= 1.0 {
+        strip.0 = height;
+        ctx.request_repaint();
+    }
+    let Some(turn) = turn else {
         return Ok(());
     };
     let centre = |title: &str| {
-        egui::Window::new(title.to_owned())
+        let window = egui::Window::new(title.to_owned())
+            .id(egui::Id::new(title))
             .collapsible(false)
-            .resizable(false)
+            .resizable(false);
+        if docked == Some(title) {
+            // In the strip below the table's view, centred right of the panel.
+            window.anchor(
+                egui::Align2::CENTER_BOTTOM,
+                [PANEL_WIDTH / 2.0, -DOCK_MARGIN],
+            )
+        } else {
             // Centred on the 3D view, right of the panel (which is drawn over windows).
-            .anchor(egui::Align2::CENTER_BOTTOM, [PANEL_WIDTH / 2.0, -40.0])
+            window.anchor(egui::Align2::CENTER_BOTTOM, [PANEL_WIDTH / 2.0, -40.0])
+        }
     };
     match turn {
         Turn::NewGame => {
@@ -369,11 +459,7 @@ pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result 
         }
         Turn::Aiming | Turn::BallInHand if human_to_shoot(&state) => {
             if state.rules.snooker.is_some() {
-                let window = egui::Window::new("Nominate")
-                    .collapsible(true)
-                    .resizable(false)
-                    .anchor(egui::Align2::RIGHT_BOTTOM, [-10.0, -10.0]);
-                snooker_nominate(&ctx, window, &mut state);
+                snooker_nominate(&ctx, &mut state);
             }
         }
         Turn::Aiming | Turn::BallInHand | Turn::ShotInPlay => {}
@@ -383,7 +469,7 @@ pub fn game_windows(mut contexts: EguiContexts, mut state: GameParam) -> Result 
 
 /// Snooker, a human to play: the colour (or free ball) to nominate (2.12, 3.12; without one
 /// the ball hit first is taken as nominated), and the concession of the frame (2.1(a)).
-fn snooker_nominate(ctx: &egui::Context, window: egui::Window, state: &mut GameParam) {
+fn snooker_nominate(ctx: &egui::Context, state: &mut GameParam) {
     use billiards_rules::snooker::{BallOn, balls};
     let Some(game) = &state.rules.snooker else {
         return;
@@ -403,6 +489,23 @@ fn snooker_nominate(ctx: &egui::Context, window: egui::Window, state: &mut GameP
     } else {
         Vec::new()
     };
+    // Nothing to nominate on the break-off (issue 48: the window opened at the first stroke
+    // with nothing in it but the ball on, which the HUD says); later a collapsed "Frame"
+    // window keeps the concession at hand.
+    let first_stroke = game.log.strokes.is_empty();
+    if choices.is_empty() && first_stroke {
+        return;
+    }
+    let window = egui::Window::new(if choices.is_empty() {
+        "Frame"
+    } else {
+        "Nominate"
+    })
+    .id(egui::Id::new("snooker nominate"))
+    .collapsible(true)
+    .default_open(!choices.is_empty())
+    .resizable(false)
+    .anchor(egui::Align2::RIGHT_BOTTOM, [-10.0, -10.0]);
     window.show(ctx, |ui| {
         if choices.is_empty() {
             ui.label(format!("ball on: {}", next.on));

@@ -3,8 +3,10 @@
 //! computer's aim. Its buttons come first and keep their places in every state (disabled when
 //! they do not apply); then three columns of text: the match in play (`super::game`), the
 //! table (shots, pocketed balls, what it is doing) and the solver with the notes (the last
-//! one of the simulation, a miscue, a clamped value). A column that overflows scrolls; the
-//! strip never grows.
+//! one of the simulation, a miscue, a clamped value). The strip grows to hold its tallest
+//! column (issue 48: lines were cut mid-sentence in a foul, a call, the computer's turn), up
+//! to [`HUD_MAX_SHARE`] of the window, past which a column scrolls; the table's viewport
+//! starts below it ([`ViewInset::top`]).
 
 use bevy::{diagnostic::FrameCount, prelude::*};
 use bevy_egui::{EguiContexts, egui};
@@ -36,18 +38,42 @@ pub struct HudParam<'w, 's> {
     stress: Res<'w, StressMonitor>,
 }
 
+/// The most of the window's height the HUD takes; past it a column scrolls.
+pub const HUD_MAX_SHARE: f32 = 0.4;
+
+/// The HUD's height and what its lines need, for the layout check: every line of every
+/// column shows whole when `needed <= height`.
+#[derive(Resource, Debug, Clone, Copy, Default, PartialEq)]
+pub struct HudFit {
+    /// The strip's height now (logical pixels).
+    pub height: f32,
+    /// The height its tallest column needs.
+    pub needed: f32,
+}
+
+/// The strip's height for content that needs `needed` in a window `screen` high: at least
+/// [`HUD_HEIGHT`], at most [`HUD_MAX_SHARE`] of the window.
+pub fn hud_height(needed: f32, screen: f32) -> f32 {
+    let cap = (HUD_MAX_SHARE * screen).max(HUD_HEIGHT);
+    needed.clamp(HUD_HEIGHT, cap)
+}
+
 /// The HUD strip along the top of the 3D view.
 pub fn hud(
     mut contexts: EguiContexts,
     mut state: HudParam,
     mut game: super::game::GameParam,
-    mut inset: ResMut<ViewInset>,
+    (mut inset, mut fit): (ResMut<ViewInset>, ResMut<HudFit>),
 ) -> Result {
     let ctx = contexts.ctx_mut()?.clone();
     let status = state.status.clone();
-    let place = (inset.left, Edge::Top, HUD_HEIGHT);
+    // Sized by what the last pass needed: a growing HUD takes one more pass (asked for below).
+    let height = hud_height(fit.needed, ctx.viewport_rect().height());
+    let place = (inset.left, Edge::Top, height);
+    let mut needed = fit.needed;
     strip(&ctx, "hud", place, |ui| {
         let replay = *state.mode.get() == GameMode::Replay;
+        let strip_top = ui.min_rect().top();
         let (mut match_lines, table_lines) = if replay {
             let replay = "replaying a recording: the live game below waits";
             (vec![(replay.to_owned(), Some(INFO))], Vec::new())
@@ -66,33 +92,44 @@ pub fn hud(
         let height = ui.available_height();
         let width = ui.available_width();
         let widths = [0.36 * width, 0.30 * width];
+        // Above the columns: the buttons and the frame's margin below them.
+        let above = ui.cursor().top() - strip_top + 12.0;
         ui.horizontal_top(|ui| {
-            column(ui, "hud-match", widths[0], height, &match_lines);
+            let a = column(ui, "hud-match", widths[0], height, &match_lines);
             ui.separator();
             let mut table = table_lines;
-            table.extend(table_state_lines(&state, &status));
-            column(ui, "hud-table", widths[1], height, &table);
+            let snooker = super::game::snooker(&game);
+            table.extend(table_state_lines(&state, &status, (replay, snooker)));
+            let b = column(ui, "hud-table", widths[1], height, &table);
             ui.separator();
-            let solver = solver_lines(&state, &status);
+            let solver = solver_lines(&state, &status, replay);
             // The rest of the strip, whatever the separators took.
             let rest = ui.available_width();
             ui.vertical(|ui| {
                 ui.set_width(rest.max(40.0));
-                column(ui, "hud-solver", rest, height - 20.0, &solver);
-                if !state.report.notes.is_empty() && ui.small_button("dismiss").clicked() {
+                let dismiss = !state.report.notes.is_empty();
+                let c = column(ui, "hud-solver", rest, height - 20.0, &solver);
+                if dismiss && ui.small_button("dismiss").clicked() {
                     state.report.notes.clear();
                 }
+                needed = above + a.max(b).max(c + if dismiss { 20.0 } else { 0.0 });
             });
         });
     });
-    if inset.top != HUD_HEIGHT {
-        inset.top = HUD_HEIGHT;
+    // A change of a pixel or more resizes the strip at the next pass, drawn at once.
+    if (needed - fit.needed).abs() >= 1.0 {
+        ctx.request_repaint();
+    }
+    fit.set_if_neq(HudFit { height, needed });
+    if inset.top != height {
+        inset.top = height;
     }
     Ok(())
 }
 
-/// One column of lines, wrapped to `width`, scrolling past `height`.
-fn column(ui: &mut egui::Ui, id: &str, width: f32, height: f32, lines: &[HudLine]) {
+/// One column of lines, wrapped to `width`, scrolling past `height`; the height its lines
+/// need.
+fn column(ui: &mut egui::Ui, id: &str, width: f32, height: f32, lines: &[HudLine]) -> f32 {
     ui.vertical(|ui| {
         ui.set_width(width.max(40.0));
         egui::ScrollArea::vertical()
@@ -107,8 +144,11 @@ fn column(ui: &mut egui::Ui, id: &str, width: f32, height: f32, lines: &[HudLine
                         None => ui.label(text),
                     };
                 }
-            });
-    });
+            })
+            .content_size
+            .y
+    })
+    .inner
 }
 
 /// How to aim and shoot, in the HUD whenever a human may: a newcomer should not have to find
@@ -129,24 +169,14 @@ fn loading_line(progress: Option<&PipelineProgress>) -> Option<String> {
 }
 
 /// The table: shots, pocketed balls, what it is doing.
-fn table_state_lines(state: &HudParam, status: &SimStatus) -> Vec<HudLine> {
+fn table_state_lines(
+    state: &HudParam,
+    status: &SimStatus,
+    (replay, snooker): (bool, bool),
+) -> Vec<HudLine> {
     let mut pocketed: Vec<u8> = state.pocketed.iter().map(|b| b.number).collect();
     pocketed.sort_unstable();
-    let list = if pocketed.is_empty() {
-        "none".to_owned()
-    } else {
-        pocketed
-            .iter()
-            .map(|&n| {
-                if n == 0 {
-                    "cue".to_owned()
-                } else {
-                    n.to_string()
-                }
-            })
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
+    let list = pocketed_text(&pocketed, snooker);
     let doing = if state.physics.paused {
         "paused"
     } else if status.at_rest {
@@ -163,15 +193,53 @@ fn table_state_lines(state: &HudParam, status: &SimStatus) -> Vec<HudLine> {
         state
             .stress
             .active
+            // A replay's HUD is the recording's: the live stress table waits below it.
             .then(|| stress_lines(&state.stress))
+            .filter(|_| !replay)
             .into_iter()
             .flatten(),
     )
     .collect()
 }
 
+/// The balls pocketed, by name (issue 48: "pocketed: 12" read as a count): "the 3, the 12,
+/// the cue ball"; in snooker by colour, the reds counted ("2 reds, the pink"); "none".
+pub fn pocketed_text(numbers: &[u8], snooker: bool) -> String {
+    use billiards_rules::snooker::balls;
+    let mut names: Vec<String> = Vec::new();
+    if snooker {
+        let reds = numbers.iter().filter(|&&n| balls::is_red(n)).count();
+        match reds {
+            0 => {}
+            1 => names.push("a red".to_owned()),
+            k => names.push(format!("{k} reds")),
+        }
+        names.extend(
+            numbers
+                .iter()
+                .filter(|&&n| !balls::is_red(n))
+                .map(|&n| format!("the {}", balls::name(n))),
+        );
+    } else {
+        names.extend(
+            numbers
+                .iter()
+                .filter(|&&n| n != 0)
+                .map(|n| format!("the {n}")),
+        );
+        if numbers.contains(&0) {
+            names.push("the cue ball".to_owned());
+        }
+    }
+    if names.is_empty() {
+        "none".to_owned()
+    } else {
+        names.join(", ")
+    }
+}
+
 /// The solver and the frames, then the notes.
-fn solver_lines(state: &HudParam, status: &SimStatus) -> Vec<HudLine> {
+fn solver_lines(state: &HudParam, status: &SimStatus, replay: bool) -> Vec<HudLine> {
     // The frame number shows whether the window redraws at idle (it should not); the frame
     // time is the last frame's, from its input to this one.
     let fps = match state.rate.fps {
@@ -198,7 +266,7 @@ fn solver_lines(state: &HudParam, status: &SimStatus) -> Vec<HudLine> {
             None,
         ),
     ];
-    if state.stress.active {
+    if state.stress.active && !replay {
         let m = &state.stress;
         let share = if m.frame_ms > 0.0 {
             format!(" ({:.1} % of the frame)", 100.0 * m.solver_ms / m.frame_ms)
@@ -265,4 +333,36 @@ fn stress_lines(m: &StressMonitor) -> Vec<HudLine> {
             overlap_bad.then_some(WARNING),
         ),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    // Named from the crate root: a `super::` path reads as a use of `ui` in the layout test.
+    use crate::ui::hud::{HUD_MAX_SHARE, hud_height, pocketed_text};
+    use crate::ui::layout::HUD_HEIGHT;
+
+    /// Balls are named, never a bare number that reads as a count; snooker's reds are
+    /// counted and its colours named (issue 48).
+    #[test]
+    fn pocketed_balls_are_named() {
+        assert_eq!(pocketed_text(&[], false), "none");
+        assert_eq!(pocketed_text(&[12], false), "the 12");
+        assert_eq!(
+            pocketed_text(&[0, 3, 12], false),
+            "the 3, the 12, the cue ball"
+        );
+        // Snooker: 11 is a red, 20 the pink (WPBSA 3.1 numbering of the rules crate).
+        assert_eq!(pocketed_text(&[11], true), "a red");
+        assert_eq!(pocketed_text(&[2, 11, 20], true), "2 reds, the pink");
+    }
+
+    /// The HUD holds what its lines need, from its own height up to its share of the window.
+    #[test]
+    fn the_hud_grows_to_its_lines_within_its_share() {
+        assert_eq!(hud_height(0.0, 720.0), HUD_HEIGHT);
+        assert_eq!(hud_height(200.0, 720.0), 200.0);
+        assert_eq!(hud_height(1000.0, 720.0), HUD_MAX_SHARE * 720.0);
+        // A window too small for the share still gets the HUD's own height.
+        assert_eq!(hud_height(1000.0, 200.0), HUD_HEIGHT);
+    }
 }

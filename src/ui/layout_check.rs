@@ -60,6 +60,7 @@ pub fn text_problem(
 fn check_text(
     mut contexts: Query<(&EguiFullOutput, &mut bevy_egui::EguiContext), With<PrimaryEguiContext>>,
     report: Res<LayoutReport>,
+    hud: Option<Res<super::hud::HudFit>>,
 ) {
     let Ok((output, mut context)) = contexts.single_mut() else {
         return;
@@ -109,6 +110,15 @@ fn check_text(
             &mut problems,
             &mut places,
         );
+    }
+    // A HUD line hidden below the strip is cut too, though nothing is drawn of it (issue 48).
+    if let Some(hud) = hud
+        && hud.needed > hud.height + SLACK
+    {
+        problems.push(format!(
+            "HUD cut: its lines need {:.0} px, it has {:.0}",
+            hud.needed, hud.height
+        ));
     }
     let mut out = format!("texts checked: {texts}\n");
     places.sort();

@@ -58,6 +58,8 @@ pub fn plugin(app: &mut App) {
         .init_resource::<settings::RackConfirm>()
         .init_resource::<stress::StressConfirm>()
         .init_resource::<practice::PositionForm>()
+        .init_resource::<hud::HudFit>()
+        .init_resource::<game::VerdictStrip>()
         .init_resource::<settings::OpenSections>()
         .add_plugins(layout_check::plugin)
         .configure_sets(
@@ -103,7 +105,9 @@ pub fn plugin(app: &mut App) {
                 show_scene_image,
                 // The HUD and timeline strips start where the panel ends.
                 (left_panel, (hud::hud, timeline::timeline_strip)).chain(),
-                game::game_windows.run_if(in_state(GameMode::Play)),
+                game::game_windows
+                    .run_if(in_state(GameMode::Play))
+                    .before(timeline::timeline_strip),
             ),
         );
 }
@@ -348,7 +352,7 @@ fn left_panel(
         .inner;
     settings::rack_confirm_window(&ctx, &mut state);
     stress::confirm_window(&ctx, &mut stress);
-    practice::drill_window(&ctx, &mut practice);
+    practice::drill_window(&ctx, &mut practice, inset.top);
     settings::config_error_window(&ctx, &state, &mut read_error);
     // The 3D view takes the window right of the panel (src/view.rs).
     if inset.left != panel_width {

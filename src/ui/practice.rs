@@ -4,7 +4,7 @@
 use bevy::{ecs::system::SystemParam, prelude::*};
 use bevy_egui::egui;
 
-use super::layout::{BUTTON_WIDTH, HUD_HEIGHT, PATH_FIELD_WIDTH, SUCCESS, WARNING};
+use super::layout::{BUTTON_WIDTH, PATH_FIELD_WIDTH, SUCCESS, WARNING};
 use crate::{
     practice::{
         DrillBests, DrillCommand, DrillSession, EditRequested, Placing, PositionCode,
@@ -341,8 +341,8 @@ fn placing_rows(ui: &mut egui::Ui, state: &mut PracticeParam, at_rest: bool) {
 }
 
 /// The drill in session: its goals, the try, the last attempt's reasons, the tally and the
-/// best, and its buttons (Enter is Next try).
-pub fn drill_window(ctx: &egui::Context, state: &mut PracticeParam) {
+/// best, and its buttons (Enter is Next try); its top below the HUD's `hud_bottom`.
+pub fn drill_window(ctx: &egui::Context, state: &mut PracticeParam, hud_bottom: f32) {
     let Some(session) = state.session.as_deref() else {
         return;
     };
@@ -353,7 +353,8 @@ pub fn drill_window(ctx: &egui::Context, state: &mut PracticeParam) {
         .collapsible(true)
         .resizable(false)
         .default_width(300.0)
-        .anchor(egui::Align2::RIGHT_TOP, [-8.0, HUD_HEIGHT + 8.0])
+        // Below the HUD, however tall it has grown.
+        .anchor(egui::Align2::RIGHT_TOP, [-8.0, hud_bottom + 8.0])
         .show(ctx, |ui| {
             ui.label(&drill.description);
             for goal in &drill.goals {

@@ -83,12 +83,13 @@ pub fn timeline_strip(
     replay: Res<Replay>,
     mut commands: MessageWriter<ReplayCommand>,
     (mut as_position, pending): (MessageWriter<ShotAsPositionRequested>, Res<PendingPosition>),
-    mut inset: ResMut<ViewInset>,
+    (mut inset, verdict): (ResMut<ViewInset>, Res<super::game::VerdictStrip>),
 ) -> Result {
+    // Without a replay the bottom is the docked verdict's, if one is shown.
     let height = if replay.open.is_some() {
         TIMELINE_HEIGHT
     } else {
-        0.0
+        verdict.0
     };
     if inset.bottom != height {
         inset.bottom = height;

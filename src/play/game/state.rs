@@ -221,13 +221,18 @@ impl GameInPlay {
             Game::EightBall => "8-ball",
             Game::FreePlay => "free play",
         };
+        // The computer's seat marked from the start (issue 48), not only on its turn.
+        let seat = |s: Seat| match self.computer(s) {
+            Some(_) => format!("{} (computer)", play.name(s)),
+            None => play.name(s).to_owned(),
+        };
         let mut lines = vec![format!(
             "{game}, race to {}: {} {} - {} {}",
             play.race_to,
-            play.name(Seat::A),
+            seat(Seat::A),
             play.score[0],
             play.score[1],
-            play.name(Seat::B),
+            seat(Seat::B),
         )];
         let shooter = self.name(next.shooter);
         let doing = match turn {

@@ -172,14 +172,19 @@ impl SnookerInPlay {
         let f = &self.frame;
         let next = self.next();
         let striker = self.name(next.striker);
+        // The computer's seat marked from the start (issue 48), not only on its turn.
+        let seat = |s: Seat| match self.computer(s) {
+            Some(_) => format!("{} (computer)", self.name(s)),
+            None => self.name(s).to_owned(),
+        };
         let mut lines = vec![
             format!(
                 "snooker, best of {}: frames {} {} - {} {}",
                 self.frames.best_of,
-                self.name(Seat::A),
+                seat(Seat::A),
                 self.frames.frames[0],
                 self.frames.frames[1],
-                self.name(Seat::B),
+                seat(Seat::B),
             ),
             format!(
                 "score: {} {} - {} {}",
