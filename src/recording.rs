@@ -156,7 +156,7 @@ fn save_game(folder: &Path, solver: &Solver, shots: u32, autosave: &mut Autosave
 }
 
 /// Writes a rules log (`log`, JSON) beside the solver's recording in `folder`, at the path
-/// `beside` makes of the recording's (`NAME.game.json`, `NAME.snooker.json`): through a
+/// `beside` makes of the recording's (`NAME.game.json`, pool's and snooker's alike): through a
 /// temporary file and a rename, so a crash never leaves half a log. A failure is warned and
 /// put in the status note; the game goes on.
 pub fn save_rules_log(
@@ -222,8 +222,9 @@ pub fn list_recordings(folder: &Path) -> Vec<PathBuf> {
     let mut files: Vec<PathBuf> = entries
         .filter_map(|entry| entry.ok().map(|entry| entry.path()))
         .filter(|path| path.extension().is_some_and(|ext| ext == "json"))
-        // A game's rules log sits beside its recording (pool's and snooker's); it is not a
-        // recording.
+        // A game's rules log sits beside its recording (`NAME.game.json`, pool's and
+        // snooker's); it is not a recording. Older builds saved snooker's as
+        // `NAME.snooker.json`: those are skipped too, so old folders list as before.
         .filter(|path| {
             let name = path.to_string_lossy();
             !name.ends_with(".game.json") && !name.ends_with(".snooker.json")
