@@ -264,4 +264,34 @@ mod tests {
         );
         assert!(at(100, 999) < at(101, 0));
     }
+
+    /// The listing shows recordings only: every game's rules log (`NAME.game.json`, pool's
+    /// and snooker's) and a snooker log an older build saved (`NAME.snooker.json`) are skipped;
+    /// a recording whose rack is snooker (`..._snooker.json`) is listed.
+    #[test]
+    fn the_listing_skips_rules_logs_new_and_old() {
+        let dir = std::env::temp_dir().join(format!("billiards-list-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        for name in [
+            "a_9-ball.json",
+            "a_9-ball.game.json",
+            "b_snooker.json",
+            "b_snooker.game.json",
+            "c_snooker.json",
+            "c_snooker.snooker.json",
+            "notes.txt",
+        ] {
+            std::fs::write(dir.join(name), "{}").unwrap();
+        }
+        let listed: Vec<String> = list_recordings(&dir)
+            .iter()
+            .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(
+            listed,
+            ["c_snooker.json", "b_snooker.json", "a_9-ball.json"]
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 }

@@ -328,6 +328,21 @@ fn a_bad_file_shows_an_error_and_leaves_the_live_game() {
             .unwrap()
             .contains("missing.json")
     );
+    // A rules log opened by mistake is named as such, with the recording to open instead.
+    let log = folder.join("rack.game.json");
+    std::fs::write(
+        &log,
+        r#"{"version":1,"game":"nine_ball","rack_seed":1,"players":["A","B"],"breaker":"a","shots":[]}"#,
+    )
+    .unwrap();
+    command(&mut app, ReplayCommand::Open(log.clone()));
+    let error = app.world().resource::<Replay>().error.clone().unwrap();
+    assert!(
+        error.contains("is a rules log, not a recording: open the recording beside it")
+            && error.contains("rack.json"),
+        "{error}"
+    );
+    command(&mut app, ReplayCommand::Open(folder.join("missing.json")));
     // A new bad file brings the window back, with its own reason.
     let shown = app
         .world()

@@ -352,7 +352,11 @@ fn apply_command(world: &mut World, command: ReplayCommand) -> bool {
 /// Loads a recording and puts it on the table; on failure only [`Replay::error`] changes.
 fn open(world: &mut World, path: &Path) {
     let loaded = Recording::load(path)
-        .map_err(|error| error.to_string())
+        // A rules log opened by mistake is named as such, with its recording.
+        .map_err(|error| {
+            billiards_rules::RulesLog::mistaken_for_recording(path, "open")
+                .unwrap_or_else(|| error.to_string())
+        })
         .and_then(|recording| OpenRecording::new(path, recording));
     let opened = match loaded {
         Ok(opened) => opened,

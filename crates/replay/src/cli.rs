@@ -147,22 +147,7 @@ fn verify(file: &std::path::Path) -> Result<(), String> {
 /// mistake (by its content, or by its `.game.json` name) is named as such, with the recording
 /// to verify instead.
 fn not_a_recording(file: &std::path::Path, error: String) -> String {
-    let is_log = std::fs::read_to_string(file).is_ok_and(|text| RulesLog::is_log(&text));
-    let beside = RulesLog::recording_beside(file);
-    if !is_log && beside.is_none() {
-        return error;
-    }
-    match beside {
-        Some(recording) => format!(
-            "{} is a rules log, not a recording: verify the recording beside it, {}",
-            file.display(),
-            recording.display()
-        ),
-        None => format!(
-            "{} is a rules log, not a recording: verify the recording it was saved beside",
-            file.display()
-        ),
-    }
+    RulesLog::mistaken_for_recording(file, "verify").unwrap_or(error)
 }
 
 fn export_cmd(a: ExportArgs) -> Result<(), String> {

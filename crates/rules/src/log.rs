@@ -240,6 +240,26 @@ impl RulesLog {
         Self::from_json(text).is_ok()
     }
 
+    /// When the file at `path`, given where a recording was expected, is a rules log (by its
+    /// content, or by its `.game.json` / `.snooker.json` name), what to tell the player:
+    /// "X is a rules log, not a recording: `do_what` the recording beside it, Y". `None` when
+    /// it is not a log (the loader's own error is then the answer).
+    pub fn mistaken_for_recording(path: &Path, do_what: &str) -> Option<String> {
+        let is_log = std::fs::read_to_string(path).is_ok_and(|text| Self::is_log(&text));
+        let beside = Self::recording_beside(path);
+        if !is_log && beside.is_none() {
+            return None;
+        }
+        let what = format!("{} is a rules log, not a recording", path.display());
+        Some(match beside {
+            Some(recording) => format!(
+                "{what}: {do_what} the recording beside it, {}",
+                recording.display()
+            ),
+            None => format!("{what}: {do_what} the recording it was saved beside"),
+        })
+    }
+
     /// The recording a log at `log` belongs beside: `NAME.json` for `NAME.game.json` (or an
     /// old `NAME.snooker.json`); `None` when the name is neither.
     pub fn recording_beside(log: &Path) -> Option<PathBuf> {
