@@ -156,7 +156,7 @@ fn save_game(folder: &Path, solver: &Solver, shots: u32, autosave: &mut Autosave
 }
 
 /// Writes a rules log (`log`, JSON) beside the solver's recording in `folder`, at the path
-/// `beside` makes of the recording's (`NAME.game.json`, `NAME.snooker.json`): through a
+/// `beside` makes of the recording's (`NAME.game.json`, pool's and snooker's alike): through a
 /// temporary file and a rename, so a crash never leaves half a log. A failure is warned and
 /// put in the status note; the game goes on.
 pub fn save_rules_log(
@@ -222,8 +222,9 @@ pub fn list_recordings(folder: &Path) -> Vec<PathBuf> {
     let mut files: Vec<PathBuf> = entries
         .filter_map(|entry| entry.ok().map(|entry| entry.path()))
         .filter(|path| path.extension().is_some_and(|ext| ext == "json"))
-        // A game's rules log sits beside its recording (pool's and snooker's); it is not a
-        // recording.
+        // A game's rules log sits beside its recording (`NAME.game.json`, pool's and
+        // snooker's); it is not a recording. Older builds saved snooker's as
+        // `NAME.snooker.json`: those are skipped too, so old folders list as before.
         .filter(|path| {
             let name = path.to_string_lossy();
             !name.ends_with(".game.json") && !name.ends_with(".snooker.json")
@@ -262,5 +263,35 @@ mod tests {
             folder.join("2026-11-22_03-25-07.042_9-ball.json")
         );
         assert!(at(100, 999) < at(101, 0));
+    }
+
+    /// The listing shows recordings only: every game's rules log (`NAME.game.json`, pool's
+    /// and snooker's) and a snooker log an older build saved (`NAME.snooker.json`) are skipped;
+    /// a recording whose rack is snooker (`..._snooker.json`) is listed.
+    #[test]
+    fn the_listing_skips_rules_logs_new_and_old() {
+        let dir = std::env::temp_dir().join(format!("billiards-list-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        for name in [
+            "a_9-ball.json",
+            "a_9-ball.game.json",
+            "b_snooker.json",
+            "b_snooker.game.json",
+            "c_snooker.json",
+            "c_snooker.snooker.json",
+            "notes.txt",
+        ] {
+            std::fs::write(dir.join(name), "{}").unwrap();
+        }
+        let listed: Vec<String> = list_recordings(&dir)
+            .iter()
+            .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(
+            listed,
+            ["c_snooker.json", "b_snooker.json", "a_9-ball.json"]
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

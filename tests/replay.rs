@@ -300,6 +300,22 @@ fn a_bad_file_shows_an_error_and_leaves_the_live_game() {
     assert!(error.contains("broken.json"), "{error}");
     assert!(error.contains("not a valid recording"), "{error}");
     assert_eq!(balls::<With<Ball>>(&mut app), live);
+    // Said in a window over the table (src/ui/recordings.rs), not only in the panel below the
+    // fold: the window shows the reason until the player dismisses it.
+    assert_eq!(
+        app.world().resource::<Replay>().error_to_show(),
+        Some(error.as_str()),
+        "the window is up with the reason"
+    );
+    command(&mut app, ReplayCommand::DismissError);
+    assert_eq!(
+        app.world().resource::<Replay>().error_to_show(),
+        None,
+        "OK closes the window"
+    );
+    // The Recordings section keeps the reason.
+    assert_eq!(app.world().resource::<Replay>().error, Some(error));
+    assert_eq!(mode(&app), GameMode::Play);
 
     let missing = folder.join("missing.json");
     command(&mut app, ReplayCommand::Open(missing));
@@ -312,6 +328,28 @@ fn a_bad_file_shows_an_error_and_leaves_the_live_game() {
             .unwrap()
             .contains("missing.json")
     );
+    // A rules log opened by mistake is named as such, with the recording to open instead.
+    let log = folder.join("rack.game.json");
+    std::fs::write(
+        &log,
+        r#"{"version":1,"game":"nine_ball","rack_seed":1,"players":["A","B"],"breaker":"a","shots":[]}"#,
+    )
+    .unwrap();
+    command(&mut app, ReplayCommand::Open(log.clone()));
+    let error = app.world().resource::<Replay>().error.clone().unwrap();
+    assert!(
+        error.contains("is a rules log, not a recording: open the recording beside it")
+            && error.contains("rack.json"),
+        "{error}"
+    );
+    command(&mut app, ReplayCommand::Open(folder.join("missing.json")));
+    // A new bad file brings the window back, with its own reason.
+    let shown = app
+        .world()
+        .resource::<Replay>()
+        .error_to_show()
+        .map(str::to_owned);
+    assert!(shown.is_some_and(|e| e.contains("missing.json")));
     // The live game still plays.
     play_shot(&mut app, 0.0, 2.0);
     assert_eq!(app.world().resource::<SimStatus>().shots, 1);
@@ -428,6 +466,31 @@ fn the_command_line_file_opens_once_the_table_is_racked() {
     assert_eq!(balls::<With<Ball>>(&mut app), solver_balls(&app));
     assert!(!solver_balls(&app).is_empty());
     // Left behind when the test fails, for a look.
+    let _ = std::fs::remove_dir_all(&folder);
+}
+
+#[test]
+fn a_bad_command_line_file_is_said_in_a_window_over_free_play() {
+    // `billiards replay BAD.json`: free play opens, and the reason is up in a window
+    // (src/ui/recordings.rs `error_window` shows `Replay::error_to_show`).
+    let folder = temp_folder("start-bad");
+    let bad = folder.join("bad.json");
+    std::fs::write(&bad, "not json at all").unwrap();
+    let mut app = headless();
+    app.insert_resource(OpenAtStart(bad.clone()));
+    for _ in 0..3 {
+        app.update();
+    }
+    assert_eq!(mode(&app), GameMode::Play);
+    let shown = app
+        .world()
+        .resource::<Replay>()
+        .error_to_show()
+        .map(str::to_owned);
+    let shown = shown.expect("the window is up");
+    assert!(shown.contains("bad.json"), "{shown}");
+    command(&mut app, ReplayCommand::DismissError);
+    assert_eq!(app.world().resource::<Replay>().error_to_show(), None);
     let _ = std::fs::remove_dir_all(&folder);
 }
 

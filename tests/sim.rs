@@ -299,10 +299,19 @@ fn an_undo_puts_every_ball_back_and_the_recording_verifies_bit_for_bit() {
     let after_break = ecs_balls(&mut app);
     assert_ne!(before_break, after_break, "the break moved the balls");
 
+    let break_time = app.world().resource::<SimStatus>().sim_time;
+    assert!(break_time > 1.0, "the break ran {break_time} s");
+
     app.world_mut().write_message(UndoRequested);
     app.update();
     assert_eq!(ecs_balls(&mut app), before_break, "undo of a finished shot");
     assert!(app.world().resource::<SimStatus>().at_rest);
+    // The HUD's "simulated N s" goes back with the table: the undone break's time is gone.
+    assert_eq!(
+        app.world().resource::<SimStatus>().sim_time,
+        0.0,
+        "the simulated time of the rack, before the break"
+    );
 
     // The break again, taken back while the balls still run.
     shoot(&mut app, 0.02, 9.0);
@@ -310,16 +319,23 @@ fn an_undo_puts_every_ball_back_and_the_recording_verifies_bit_for_bit() {
         app.update();
     }
     assert!(!app.world().resource::<SimStatus>().at_rest);
+    let running = app.world().resource::<SimStatus>().sim_time;
+    assert!(running > 0.0, "the break runs");
     app.world_mut().write_message(UndoRequested);
     app.update();
     assert_eq!(ecs_balls(&mut app), before_break, "undo of a running shot");
     assert!(app.world().resource::<SimStatus>().at_rest);
+    assert_eq!(app.world().resource::<SimStatus>().sim_time, 0.0);
 
     // A last shot that stands, then nothing left to undo after two undos.
     shoot(&mut app, 0.01, 7.0);
     run_to_rest(&mut app, frame, 20_000);
     let solver = app.world().resource::<Solver>();
     assert_eq!(solver.undoable_shots(), 1);
+    // The game's clock counts only the shot that stands; the recorder's ran through all three.
+    let shown = app.world().resource::<SimStatus>().sim_time;
+    assert_eq!(shown, solver.game_time());
+    assert!(shown > 0.0 && shown < solver.simulation().time() - break_time + 1e-9);
     let recording = solver.recorder().recording();
     let strikes = Shots::of(&recording).len();
     assert_eq!(strikes, 3, "every strike stays in the recording");

@@ -172,7 +172,10 @@ fn a_miss_on_the_break_is_replaced_exactly() {
         })
         .expect("the frame's recording");
     let recording = Recording::load(&file).unwrap();
-    let text = std::fs::read_to_string(FrameLog::path_beside(&file)).unwrap();
+    // Saved under the one name every game's log has.
+    let log_file = FrameLog::path_beside(&file);
+    assert!(log_file.to_string_lossy().ends_with("_snooker.game.json"));
+    let text = std::fs::read_to_string(&log_file).unwrap();
     let log = FrameLog::from_json(&text).unwrap();
     assert_eq!(log.strokes.len(), 2);
     assert_eq!(log.strokes[1].choices, vec![Choice::Replace]);
@@ -190,6 +193,11 @@ fn a_miss_on_the_break_is_replaced_exactly() {
         .find(|e| matches!(e.kind, billiards_physics::EventKind::BallBall { .. }))
         .unwrap();
     assert_eq!(open.describe(hit), "cue ball hit pink");
+    // A frame saved by an older build, its log as `NAME.snooker.json`: the viewer still
+    // reads it.
+    std::fs::rename(&log_file, FrameLog::old_path_beside(&file)).unwrap();
+    let old = OpenRecording::new(&file, Recording::load(&file).unwrap()).unwrap();
+    assert_eq!(old.check_verdicts(), Some(Ok(2)));
 }
 
 /// A fair stroke that pots nothing passes the turn; a stroke that hits nothing is a foul of

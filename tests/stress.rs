@@ -5,11 +5,12 @@ mod common;
 
 use bevy::prelude::*;
 use billiards::{
-    settings::{PhysicsSettings, TableSetup},
+    settings::{PhysicsSettings, TableSetup, table_label},
     sim::{RackRequested, ShotRequested, SimStatus, Solver},
     stress::{self, StressMonitor, StressRequested, StressSettings},
     table::balls::Ball,
     table::geometry::TableSpec,
+    ui::settings::table_in_play,
 };
 use billiards_physics::{Rack, Table, racks::stress_scale};
 
@@ -74,6 +75,21 @@ fn the_scene_keeps_its_physics_and_a_standard_rack_brings_the_table_back() {
             ..default()
         },
     );
+    // The Play section names the stress table, not the pool table chosen before it (issue 48).
+    app.update();
+    let label = |app: &App| {
+        let setup = *app.world().resource::<TableSetup>();
+        table_in_play(
+            setup.table,
+            app.world().resource::<TableSpec>(),
+            app.world().resource::<StressMonitor>(),
+        )
+    };
+    let named = label(&app);
+    assert!(
+        named.starts_with("stress table: ") && named.ends_with(" m, 100 balls"),
+        "{named}"
+    );
     let params = *app.world().resource::<Solver>().simulation().params();
     app.world_mut().resource_mut::<PhysicsSettings>().mu_roll = 0.013;
     app.update();
@@ -95,9 +111,10 @@ fn the_scene_keeps_its_physics_and_a_standard_rack_brings_the_table_back() {
     let solver = app.world().resource::<Solver>();
     assert!(!solver.is_scene());
     assert_eq!(solver.simulation().ball_count(), 10);
-    // The checks stop with the stress table.
+    // The checks stop with the stress table; the panel names the pool table again.
     app.update();
     assert!(!app.world().resource::<StressMonitor>().active);
+    assert_eq!(label(&app), table_label(setup.table));
 }
 
 #[test]

@@ -120,6 +120,9 @@ pub enum ReplayCommand {
     /// Stop the running export after the frame it is on (a GIF is then not written; the PNG
     /// frames written so far stay).
     CancelExport,
+    /// The player has read why the last file could not be opened: the window saying so
+    /// closes ([`Replay::error_to_show`]); the Recordings section keeps the reason.
+    DismissError,
 }
 
 /// Opens this recording once the live game has been racked (`billiards replay FILE`).
@@ -139,6 +142,9 @@ pub struct Replay {
     pub speed: f64,
     /// Why the last recording could not be opened.
     pub error: Option<String>,
+    /// Whether the player dismissed the window showing [`Replay::error`] (set anew, false,
+    /// with each new error).
+    pub error_dismissed: bool,
     /// The last verification of the open recording.
     pub verdict: Option<Result<Verdict, String>>,
     /// The rules' verdicts re-judged with that verification (a rules game only): how many
@@ -157,6 +163,14 @@ pub struct Replay {
     live_table: Option<TableSpec>,
 }
 
+impl Replay {
+    /// Why the last file could not be opened, while the window saying so is up: `None` once
+    /// the player dismissed it ([`ReplayCommand::DismissError`]) or a file opened.
+    pub fn error_to_show(&self) -> Option<&str> {
+        self.error.as_deref().filter(|_| !self.error_dismissed)
+    }
+}
+
 impl Default for Replay {
     fn default() -> Self {
         Self {
@@ -165,6 +179,7 @@ impl Default for Replay {
             playing: false,
             speed: 1.0,
             error: None,
+            error_dismissed: false,
             verdict: None,
             rules_verdict: None,
             verifying: None,
@@ -260,6 +275,10 @@ fn apply_command(world: &mut World, command: ReplayCommand) -> bool {
             close(world);
             return false;
         }
+        ReplayCommand::DismissError => {
+            world.resource_mut::<Replay>().error_dismissed = true;
+            return false;
+        }
         _ => {}
     }
     let mut replay = world.resource_mut::<Replay>();
@@ -271,7 +290,9 @@ fn apply_command(world: &mut World, command: ReplayCommand) -> bool {
     let end = open.end_time();
     let jump = |target: Option<f64>| target.unwrap_or(time);
     match command {
-        ReplayCommand::Open(_) | ReplayCommand::Close => unreachable!("handled above"),
+        ReplayCommand::Open(_) | ReplayCommand::Close | ReplayCommand::DismissError => {
+            unreachable!("handled above")
+        }
         ReplayCommand::Play => {
             if time >= end {
                 replay.time = 0.0;
@@ -331,13 +352,20 @@ fn apply_command(world: &mut World, command: ReplayCommand) -> bool {
 /// Loads a recording and puts it on the table; on failure only [`Replay::error`] changes.
 fn open(world: &mut World, path: &Path) {
     let loaded = Recording::load(path)
-        .map_err(|error| error.to_string())
+        // A rules log opened by mistake is named as such, with its recording.
+        .map_err(|error| {
+            billiards_rules::RulesLog::mistaken_for_recording(path, "open")
+                .unwrap_or_else(|| error.to_string())
+        })
         .and_then(|recording| OpenRecording::new(path, recording));
     let opened = match loaded {
         Ok(opened) => opened,
         Err(error) => {
             warn!("replay not opened: {error}");
-            world.resource_mut::<Replay>().error = Some(error);
+            let mut replay = world.resource_mut::<Replay>();
+            replay.error = Some(error);
+            // Said in a window over the table until read (src/ui/recordings.rs).
+            replay.error_dismissed = false;
             return;
         }
     };

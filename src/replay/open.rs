@@ -7,7 +7,8 @@ use std::{
 };
 
 use billiards_physics::{Event, History, recording::Recording};
-use billiards_rules::{GameLog, Shots, snooker::FrameLog};
+pub use billiards_rules::RulesLog;
+use billiards_rules::Shots;
 
 use super::jobs::{ExportFormat, ExportScope};
 
@@ -22,19 +23,11 @@ pub struct OpenRecording {
     pub history: History,
     /// The shots: strike times and where the replay ends.
     pub shots: Shots,
-    /// The rules' log beside the file (`NAME.game.json`, or a snooker frame's
-    /// `NAME.snooker.json`): `None` for free play, an error text when it is there but cannot be
-    /// read (the recording still replays).
+    /// The rules' log beside the file (`NAME.game.json` for every game; a snooker frame saved
+    /// by an older build has `NAME.snooker.json`, still read so those recordings keep their
+    /// verdicts): `None` for free play, an error text when it is there but cannot be read (the
+    /// recording still replays).
     pub game: Option<Result<RulesLog, String>>,
-}
-
-/// The rules' log of a recorded game.
-#[derive(Debug, Clone, PartialEq)]
-pub enum RulesLog {
-    /// A rack of 8-ball or 9-ball.
-    Pool(GameLog),
-    /// A frame of snooker.
-    Snooker(FrameLog),
 }
 
 impl OpenRecording {
@@ -170,23 +163,8 @@ impl OpenRecording {
     }
 }
 
-/// The rules' log beside the recording at `path`, if there is one.
+/// The rules' log beside the recording at `path`, if there is one: `NAME.game.json` (either
+/// kind, told apart by content), or an old snooker `NAME.snooker.json`.
 fn read_log(path: &Path) -> Option<Result<RulesLog, String>> {
-    let read = |log_path: PathBuf, parse: fn(&str) -> Result<RulesLog, String>| {
-        std::fs::read_to_string(&log_path)
-            .map_err(|e| e.to_string())
-            .and_then(|text| parse(&text))
-            .map_err(|e| format!("{}: {e}", log_path.display()))
-    };
-    let pool = GameLog::path_beside(path);
-    let snooker = FrameLog::path_beside(path);
-    if pool.exists() {
-        Some(read(pool, |t| GameLog::from_json(t).map(RulesLog::Pool)))
-    } else if snooker.exists() {
-        Some(read(snooker, |t| {
-            FrameLog::from_json(t).map(RulesLog::Snooker)
-        }))
-    } else {
-        None
-    }
+    RulesLog::beside(path).map(|(_, log)| log)
 }

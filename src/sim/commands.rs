@@ -153,6 +153,7 @@ fn install(
         name: rack.1,
         started: SystemTime::now(),
         undo: Vec::new(),
+        undone_time: 0.0,
         scene,
     });
     *status = SimStatus {
@@ -266,6 +267,7 @@ pub(super) fn strike_cue_ball(
     let shot = request.shot();
     let before = BeforeShot {
         balls: solver.simulation().balls().collect(),
+        game_time: solver.game_time(),
         shot: request,
         shots: status.shots,
         ball_in_hand: status.ball_in_hand,

@@ -245,7 +245,8 @@ pub struct SimStatus {
     pub at_rest: bool,
     /// Shots taken since the last rack.
     pub shots: u32,
-    /// Simulated time since the last rack, seconds.
+    /// Simulated time since the last rack, seconds, less the time of shots taken back by
+    /// Undo ([`crate::sim::Solver::game_time`]).
     pub sim_time: f64,
     /// Events the solver resolved since the last strike (the strike itself not counted).
     pub events_this_shot: usize,

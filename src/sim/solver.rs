@@ -19,6 +19,8 @@ use crate::{
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct BeforeShot {
     pub(super) balls: Vec<BallState>,
+    /// The game's simulated time at the strike ([`Solver::game_time`]).
+    pub(super) game_time: f64,
     pub(super) shot: ShotRequested,
     pub(super) shots: u32,
     pub(super) ball_in_hand: Option<HandRule>,
@@ -36,6 +38,9 @@ pub struct Solver {
     pub(super) started: SystemTime,
     /// The table before each shot since the rack, newest last (undo goes back one at a time).
     pub(super) undo: Vec<BeforeShot>,
+    /// Simulated seconds taken back by undos: the recorder's clock runs on through an undone
+    /// shot (its strike stays in the recording), the game's time does not.
+    pub(super) undone_time: f64,
     /// A whole scene ([`SceneRequested`]): its own table and parameters, which the Physics
     /// settings do not change.
     pub(super) scene: bool,
@@ -45,6 +50,13 @@ impl Solver {
     /// The simulation, for reading.
     pub fn simulation(&self) -> &Simulation {
         self.rec.sim()
+    }
+
+    /// The game's simulated time since the rack, as the HUD shows it ([`SimStatus::sim_time`]):
+    /// the simulation's clock less the time of the shots taken back by Undo, so that an undo
+    /// shows the time of the table it restored.
+    pub fn game_time(&self) -> f64 {
+        self.simulation().time() - self.undone_time
     }
 
     /// The recorder: the game since the last rack, inputs and history.

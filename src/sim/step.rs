@@ -91,7 +91,8 @@ pub(super) fn advance_solver(world: &mut World) {
         {
             let mut status = world.resource_mut::<SimStatus>();
             status.at_rest = at_rest;
-            status.sim_time = solver.simulation().time();
+            // The game's time: Undo takes back the time of the shots it undoes.
+            status.sim_time = solver.game_time();
             status.events_this_shot += events.len();
             status.solver_seconds_last_frame = cost;
         }

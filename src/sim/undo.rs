@@ -50,6 +50,9 @@ pub(super) fn undo_last_shot(
         }
     }
     status.at_rest = solver.simulation().is_at_rest();
+    // The HUD's "simulated N s" goes back with the table: to the time of the strike undone.
+    solver.undone_time = solver.simulation().time() - before.game_time;
+    status.sim_time = solver.game_time();
     status.shots = before.shots;
     status.ball_in_hand = before.ball_in_hand;
     status.events_this_shot = 0;

@@ -354,6 +354,7 @@ fn left_panel(
     stress::confirm_window(&ctx, &mut stress);
     practice::drill_window(&ctx, &mut practice, inset.top);
     settings::config_error_window(&ctx, &state, &mut read_error);
+    recordings::error_window(&ctx, &mut recordings);
     // The 3D view takes the window right of the panel (src/view.rs).
     if inset.left != panel_width {
         inset.left = panel_width;

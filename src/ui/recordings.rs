@@ -1,6 +1,7 @@
 //! The "Recordings" section of the left panel: the recordings folder's files with an Open
 //! button each, a path field, why the last file could not be opened, the open replay and a
-//! running export. It only reads [`Replay`] and writes [`ReplayCommand`]s.
+//! running export; and the window that says over the table why a file could not be opened.
+//! It only reads [`Replay`] and writes [`ReplayCommand`]s.
 
 use std::path::PathBuf;
 
@@ -8,7 +9,7 @@ use bevy::{ecs::system::SystemParam, prelude::*};
 use bevy_egui::egui::{self, RichText};
 
 use super::{
-    layout::{PATH_FIELD_WIDTH, RECORDINGS_LIST_HEIGHT, WARNING},
+    layout::{HUD_HEIGHT, PANEL_WIDTH, PATH_FIELD_WIDTH, RECORDINGS_LIST_HEIGHT, WARNING},
     timeline::{ExportForm, export_section, export_status},
 };
 use crate::{
@@ -133,4 +134,39 @@ fn recordings(ui: &mut egui::Ui, param: &mut RecordingsParam) {
         Some(open) => export_section(ui, replay, open, export, commands),
         None => export_status(ui, replay),
     }
+}
+
+/// A file that could not be opened for replay (`billiards replay BAD.json`, a drop, the Open
+/// button) is said where it is seen, over the table, as a bad settings file is, until the
+/// player dismisses it (the Recordings section keeps the reason).
+pub fn error_window(ctx: &egui::Context, param: &mut RecordingsParam) {
+    let Some(error) = param.replay.error_to_show() else {
+        return;
+    };
+    egui::Window::new("Recording not opened")
+        .collapsible(false)
+        .resizable(false)
+        // Over the table, below the HUD strip, centred on the view right of the panel.
+        .anchor(
+            egui::Align2::CENTER_TOP,
+            [PANEL_WIDTH / 2.0, HUD_HEIGHT + 12.0],
+        )
+        .order(egui::Order::Foreground)
+        .show(ctx, |ui| {
+            ui.set_max_width(420.0);
+            // A path has no spaces to wrap at: break it anywhere rather than run off the edge.
+            let mut job = egui::text::LayoutJob::single_section(
+                error.to_owned(),
+                egui::TextFormat {
+                    font_id: egui::TextStyle::Body.resolve(ui.style()),
+                    color: WARNING,
+                    ..Default::default()
+                },
+            );
+            job.wrap.break_anywhere = true;
+            ui.label(job);
+            if ui.button("OK").clicked() {
+                param.commands.write(ReplayCommand::DismissError);
+            }
+        });
 }

@@ -5,7 +5,7 @@
 use crate::args::parse_size;
 use crate::export::{self, ExportOptions};
 use billiards_physics::recording::{Recording, Verdict};
-use billiards_rules::Shots;
+use billiards_rules::{RulesLog, Shots};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::PathBuf;
@@ -111,7 +111,7 @@ pub fn run(cli: Cli) -> ExitCode {
 }
 
 fn verify(file: &std::path::Path) -> Result<(), String> {
-    let rec = Recording::load(file).map_err(|e| e.to_string())?;
+    let rec = Recording::load(file).map_err(|e| not_a_recording(file, e.to_string()))?;
     match rec
         .verify()
         .map_err(|e| format!("{}: {e}", file.display()))?
@@ -121,9 +121,16 @@ fn verify(file: &std::path::Path) -> Result<(), String> {
                 "{}: reproduced bit for bit ({events} events)",
                 file.display()
             );
-            // The rules' log, when the game was played under rules (kept beside the file).
-            crate::game::check_log(file, &rec)?;
-            crate::snooker::check_log(file, &rec)
+            // The rules' log, when the game was played under rules (kept beside the file as
+            // `NAME.game.json`, or `NAME.snooker.json` by older builds).
+            match RulesLog::beside(file) {
+                None => Ok(()),
+                Some((_, Err(e))) => Err(e),
+                Some((path, Ok(RulesLog::Pool(log)))) => crate::game::check_log(&path, &log, &rec),
+                Some((path, Ok(RulesLog::Snooker(log)))) => {
+                    crate::snooker::check_log(&path, &log, &rec)
+                }
+            }
         }
         Verdict::Differs {
             index,
@@ -134,6 +141,13 @@ fn verify(file: &std::path::Path) -> Result<(), String> {
             file.display()
         )),
     }
+}
+
+/// Why `file` could not be verified, `error` being the loader's answer: a rules log given by
+/// mistake (by its content, or by its `.game.json` name) is named as such, with the recording
+/// to verify instead.
+fn not_a_recording(file: &std::path::Path, error: String) -> String {
+    RulesLog::mistaken_for_recording(file, "verify").unwrap_or(error)
 }
 
 fn export_cmd(a: ExportArgs) -> Result<(), String> {

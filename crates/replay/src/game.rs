@@ -193,15 +193,9 @@ fn save_log(recording: &Path, log: &GameLog) -> Result<(), String> {
     std::fs::rename(&tmp, &path).map_err(|e| format!("{}: {e}", path.display()))
 }
 
-/// `verify`: re-judges the shots of `rec` against the log beside `file`, if there is one.
-pub(crate) fn check_log(file: &Path, rec: &Recording) -> Result<(), String> {
-    let path = GameLog::path_beside(file);
-    if !path.exists() {
-        return Ok(());
-    }
-    let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let log: GameLog = serde_json::from_str(&text)
-        .map_err(|e| format!("{}: not a game log: {e}", path.display()))?;
+/// `verify`: re-judges the shots of `rec` against the game log `log`, read from `path` (the
+/// rules log beside the recording, [`billiards_rules::RulesLog::beside`]).
+pub(crate) fn check_log(path: &Path, log: &GameLog, rec: &Recording) -> Result<(), String> {
     let numbers: Vec<u8> = rec.balls.iter().map(|b| b.number).collect();
     let n = log
         .check(&rec.events, &numbers)

@@ -97,14 +97,9 @@ fn save_log(recording: &Path, log: &FrameLog) -> Result<(), String> {
     std::fs::rename(&tmp, &path).map_err(|e| format!("{}: {e}", path.display()))
 }
 
-/// `verify`: re-judges the strokes of `rec` against the frame log beside `file`, if any.
-pub fn check_log(file: &Path, rec: &Recording) -> Result<(), String> {
-    let path = FrameLog::path_beside(file);
-    if !path.exists() {
-        return Ok(());
-    }
-    let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let log = FrameLog::from_json(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+/// `verify`: re-judges the strokes of `rec` against the frame log `log`, read from `path`
+/// (the rules log beside the recording, [`billiards_rules::RulesLog::beside`]).
+pub fn check_log(path: &Path, log: &FrameLog, rec: &Recording) -> Result<(), String> {
     let n = log
         .check(rec)
         .map_err(|e| format!("{}: {e}", path.display()))?;

@@ -639,8 +639,10 @@ fn simulate_a_snooker_frame_and_verify_rejudges_its_log() {
         "{stdout}"
     );
     assert!(stdout.contains("stroke 1: "), "{stdout}");
-    let log = dir.join("frame.snooker.json");
+    // One name for every game's log: the frame's is `NAME.game.json`, as a rack's.
+    let log = dir.join("frame.game.json");
     assert!(log.exists());
+    assert!(!dir.join("frame.snooker.json").exists());
     let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
     assert!(ok, "{err}");
     assert!(stdout.contains("reproduced bit for bit"), "{stdout}");
@@ -655,6 +657,16 @@ fn simulate_a_snooker_frame_and_verify_rejudges_its_log() {
     std::fs::write(&log, json.to_string()).unwrap();
     let (ok, _, err) = run(bin().arg("verify").arg(&file));
     assert!(!ok && err.contains("stroke 1: logged"), "{err}");
+    // Kept under the name older builds gave it, the log is still found and re-judged.
+    std::fs::write(&log, &text).unwrap();
+    let old = dir.join("frame.snooker.json");
+    std::fs::rename(&log, &old).unwrap();
+    let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
+    assert!(ok, "{err}");
+    assert!(
+        stdout.contains("frame.snooker.json: ") && stdout.contains("re-judged identically"),
+        "{stdout}"
+    );
     // Pool's scripted shots are refused for snooker, with the reason.
     let (ok, _, err) = run(bin().args(["simulate", "--game", "snooker", "--shot", "0:3"]));
     assert!(!ok && err.contains("played by the computer"), "{err}");
@@ -710,4 +722,53 @@ fn stress_runs_many_balls_with_the_checks_and_refuses_what_cannot_fit() {
         assert!(!ok, "{args:?} was accepted: {out}");
         assert!(err.contains(message), "{args:?}: {err}");
     }
+}
+
+#[test]
+fn verify_given_a_rules_log_says_so_and_names_the_recording() {
+    let dir = temp("verify-log");
+    let file = dir.join("rack.json");
+    let (ok, _, err) = run(bin()
+        .args(["simulate", "--game", "nine-ball", "--rack-seed", "4"])
+        .args(["--shot", "0:8", "--out"])
+        .arg(&file));
+    assert!(ok, "{err}");
+    let log = dir.join("rack.game.json");
+    assert!(log.exists());
+    // The log itself, by its name and content.
+    let (ok, _, err) = run(bin().arg("verify").arg(&log));
+    let want = format!(
+        "{} is a rules log, not a recording: verify the recording beside it, {}",
+        log.display(),
+        file.display()
+    );
+    assert!(!ok && err.contains(&want), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    // A log under another name is known by its content.
+    let renamed = dir.join("copy.json");
+    std::fs::copy(&log, &renamed).unwrap();
+    let (ok, _, err) = run(bin().arg("verify").arg(&renamed));
+    assert!(
+        !ok && err.contains("copy.json is a rules log, not a recording"),
+        "{err}"
+    );
+    // A snooker frame's log, under its old name, likewise.
+    let frame = dir.join("frame.json");
+    let (ok, _, err) = run(bin()
+        .args(["simulate", "--game", "snooker", "--computer", "easy,easy"])
+        .args(["--rack-seed", "5", "--out"])
+        .arg(&frame));
+    assert!(ok, "{err}");
+    let old = dir.join("frame.snooker.json");
+    std::fs::rename(dir.join("frame.game.json"), &old).unwrap();
+    let (ok, _, err) = run(bin().arg("verify").arg(&old));
+    assert!(
+        !ok && err.contains("is a rules log, not a recording: verify the recording beside it")
+            && err.contains("frame.json"),
+        "{err}"
+    );
+    // The recording itself still verifies.
+    let (ok, _, err) = run(bin().arg("verify").arg(&file));
+    assert!(ok, "{err}");
+    std::fs::remove_dir_all(dir).ok();
 }

@@ -41,7 +41,7 @@ pub use game::{
     what_happened,
 };
 pub use hand::{PlacementError, check_placement};
-pub use log::{GameLog, LogError, LoggedShot};
+pub use log::{GameLog, LogError, LoggedShot, RulesLog};
 pub use position::{PlacedBall, Position, PositionError};
 pub use race::Match;
 pub use racks::RackStyle;

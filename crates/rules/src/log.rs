@@ -2,9 +2,13 @@
 //! before it, the call and the verdict. Saved beside a recording (`NAME.game.json` next to
 //! `NAME.json`), so `billiards-physics` stays free of rules and every existing recording
 //! still loads; [`GameLog::check`] re-judges the recording's shots and compares the verdicts.
+//!
+//! A snooker frame's log ([`FrameLog`]) has the same name beside its recording; [`RulesLog`]
+//! reads either kind, telling them apart by content.
 
 use crate::game::{Call, Choice, CueBall, Game, GameState, Outcome, RuleError, Seat, Verdict};
 use crate::shot::summarise;
+use crate::snooker::FrameLog;
 use billiards_physics::{Event, EventKind};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -183,6 +187,90 @@ impl GameLog {
     }
 }
 
+/// The rules' log of a recorded game, of either kind: both are saved as `NAME.game.json`
+/// beside the recording `NAME.json`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RulesLog {
+    /// A rack of 8-ball or 9-ball.
+    Pool(GameLog),
+    /// A frame of snooker.
+    Snooker(FrameLog),
+}
+
+impl RulesLog {
+    /// Reads a log of either kind from its JSON text. The kinds are told apart by content: a
+    /// pool log names its `game` (and rack seed), a frame log does not. Anything else (a
+    /// recording, another JSON file) is refused with the reason.
+    pub fn from_json(text: &str) -> Result<Self, String> {
+        let value: serde_json::Value =
+            serde_json::from_str(text).map_err(|e| format!("not a rules log: {e}"))?;
+        let Some(object) = value.as_object() else {
+            return Err("not a rules log: not a JSON object".into());
+        };
+        if object.contains_key("game") {
+            GameLog::from_json(text).map(RulesLog::Pool)
+        } else if object.contains_key("breaker") && object.contains_key("players") {
+            FrameLog::from_json(text).map(RulesLog::Snooker)
+        } else {
+            Err("not a rules log (it has no players nor breaker)".into())
+        }
+    }
+
+    /// The log beside the recording at `recording`, if there is one: `NAME.game.json`, or,
+    /// for a snooker frame saved by an older build, `NAME.snooker.json` (still read so that
+    /// those recordings keep their verdicts). `None` when neither file is there; the path
+    /// read and the log (or why it cannot be read: path and reason) otherwise.
+    pub fn beside(recording: &Path) -> Option<(PathBuf, Result<Self, String>)> {
+        let path = [
+            GameLog::path_beside(recording),
+            FrameLog::old_path_beside(recording),
+        ]
+        .into_iter()
+        .find(|path| path.exists())?;
+        let log = std::fs::read_to_string(&path)
+            .map_err(|e| e.to_string())
+            .and_then(|text| Self::from_json(&text))
+            .map_err(|e| format!("{}: {e}", path.display()));
+        Some((path, log))
+    }
+
+    /// Whether `text` is a rules log of either kind (a file given where a recording was
+    /// expected is then named as such).
+    pub fn is_log(text: &str) -> bool {
+        Self::from_json(text).is_ok()
+    }
+
+    /// When the file at `path`, given where a recording was expected, is a rules log (by its
+    /// content, or by its `.game.json` / `.snooker.json` name), what to tell the player:
+    /// "X is a rules log, not a recording: `do_what` the recording beside it, Y". `None` when
+    /// it is not a log (the loader's own error is then the answer).
+    pub fn mistaken_for_recording(path: &Path, do_what: &str) -> Option<String> {
+        let is_log = std::fs::read_to_string(path).is_ok_and(|text| Self::is_log(&text));
+        let beside = Self::recording_beside(path);
+        if !is_log && beside.is_none() {
+            return None;
+        }
+        let what = format!("{} is a rules log, not a recording", path.display());
+        Some(match beside {
+            Some(recording) => format!(
+                "{what}: {do_what} the recording beside it, {}",
+                recording.display()
+            ),
+            None => format!("{what}: {do_what} the recording it was saved beside"),
+        })
+    }
+
+    /// The recording a log at `log` belongs beside: `NAME.json` for `NAME.game.json` (or an
+    /// old `NAME.snooker.json`); `None` when the name is neither.
+    pub fn recording_beside(log: &Path) -> Option<PathBuf> {
+        let name = log.file_name()?.to_str()?;
+        let stem = name
+            .strip_suffix(".game.json")
+            .or_else(|| name.strip_suffix(".snooker.json"))?;
+        Some(log.with_file_name(format!("{stem}.json")))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -220,6 +308,22 @@ mod tests {
         let r = rec.recording();
         let numbers = r.balls.iter().map(|b| b.number).collect();
         (log, r.events, numbers)
+    }
+
+    #[test]
+    fn a_pool_log_reads_as_pool_and_names_its_recording() {
+        let (log, _, _) = played();
+        let text = serde_json::to_string(&log).unwrap();
+        assert_eq!(RulesLog::from_json(&text), Ok(RulesLog::Pool(log)));
+        assert!(RulesLog::is_log(&text));
+        assert_eq!(
+            RulesLog::recording_beside(Path::new("/tmp/rack.game.json")),
+            Some(PathBuf::from("/tmp/rack.json"))
+        );
+        assert_eq!(
+            RulesLog::recording_beside(Path::new("/tmp/rack.json")),
+            None
+        );
     }
 
     #[test]

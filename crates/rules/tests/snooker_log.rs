@@ -11,7 +11,7 @@ use billiards_rules::snooker::balls::{WHITE, is_colour};
 use billiards_rules::snooker::{
     BallOn, Choice, Frame, FrameLog, FrameLogError, LoggedStroke, Stroke,
 };
-use billiards_rules::{Seat, summarise};
+use billiards_rules::{GameLog, RulesLog, Seat, summarise};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::path::{Path, PathBuf};
@@ -216,8 +216,17 @@ fn a_colour_left_unspotted_in_the_recording_is_found() {
 
 #[test]
 fn the_log_lives_beside_the_recording() {
+    // One name for every game's log: a frame's is a pool game's `NAME.game.json`.
     assert_eq!(
         FrameLog::path_beside(Path::new("/tmp/frame.json")),
+        PathBuf::from("/tmp/frame.game.json")
+    );
+    assert_eq!(
+        FrameLog::path_beside(Path::new("/tmp/frame.json")),
+        GameLog::path_beside(Path::new("/tmp/frame.json"))
+    );
+    assert_eq!(
+        FrameLog::old_path_beside(Path::new("/tmp/frame.json")),
         PathBuf::from("/tmp/frame.snooker.json")
     );
     let other = r#"{"version":2,"players":["A","B"],"breaker":"a","strokes":[]}"#;
@@ -264,4 +273,59 @@ fn a_replace_swapping_two_balls_is_placed_without_an_overlap() {
         moves.len() > layout.len(),
         "one ball parked first: {moves:?}"
     );
+}
+
+/// A fresh empty folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!(
+        "billiards-snooker-log-{name}-{}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn a_frame_log_saved_as_game_json_is_found_and_read_as_a_frame() {
+    let (log, rec) = played(7, 4);
+    let dir = scratch("new");
+    let recording = dir.join("frame.json");
+    let path = FrameLog::path_beside(&recording);
+    assert!(path.to_string_lossy().ends_with("frame.game.json"));
+    std::fs::write(&path, serde_json::to_string_pretty(&log).unwrap()).unwrap();
+    let (found, read) = RulesLog::beside(&recording).expect("the log beside is found");
+    assert_eq!(found, path);
+    // Told apart from a pool log by content: read as the frame it is, and it re-judges.
+    match read.unwrap() {
+        RulesLog::Snooker(read) => {
+            assert_eq!(read, log);
+            assert_eq!(read.check(&rec).unwrap(), log.strokes.len());
+        }
+        other => panic!("read as {other:?}"),
+    }
+    assert_eq!(RulesLog::recording_beside(&path), Some(recording));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn an_old_snooker_json_log_is_still_read() {
+    let (log, _) = played(8, 3);
+    let dir = scratch("old");
+    let recording = dir.join("frame.json");
+    // As builds before the one-name change saved it.
+    let old = dir.join("frame.snooker.json");
+    std::fs::write(&old, serde_json::to_string(&log).unwrap()).unwrap();
+    let (found, read) = RulesLog::beside(&recording).expect("the old log is found");
+    assert_eq!(found, old);
+    assert_eq!(read.unwrap(), RulesLog::Snooker(log));
+    assert_eq!(RulesLog::recording_beside(&old), Some(recording.clone()));
+    // No log at all: nothing found.
+    std::fs::remove_file(&old).unwrap();
+    assert!(RulesLog::beside(&recording).is_none());
+    // Neither kind: refused with a reason, not taken for a log.
+    let err = RulesLog::from_json(r#"{"version":1,"balls":[]}"#).unwrap_err();
+    assert!(err.contains("not a rules log"), "{err}");
+    assert!(!RulesLog::is_log("[1, 2]"));
+    std::fs::remove_dir_all(&dir).unwrap();
 }

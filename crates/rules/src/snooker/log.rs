@@ -1,6 +1,7 @@
 //! The rules log of a snooker frame: the players, who broke, and per stroke the choices
 //! taken before it, the colour nominated and the verdict. Saved beside a recording
-//! (`NAME.snooker.json` next to `NAME.json`); [`FrameLog::check`] replays the recording,
+//! (`NAME.game.json` next to `NAME.json`, the one name every game's log has; older builds
+//! wrote `NAME.snooker.json`, still read: [`FrameLog::old_path_beside`]); [`FrameLog::check`] replays the recording,
 //! rebuilds the layouts at every strike and at rest, re-judges every stroke with
 //! [`Frame::play`] and compares the verdicts.
 //!
@@ -141,9 +142,17 @@ impl FrameLog {
         }
     }
 
-    /// Where the log of the recording at `recording` is kept: `NAME.snooker.json` beside
-    /// `NAME.json`.
+    /// Where the log of the recording at `recording` is kept: `NAME.game.json` beside
+    /// `NAME.json`, the name a pool game's log has too ([`crate::GameLog::path_beside`]);
+    /// readers tell the two apart by content ([`crate::RulesLog::from_json`]).
     pub fn path_beside(recording: &Path) -> PathBuf {
+        crate::GameLog::path_beside(recording)
+    }
+
+    /// Where builds before the one-name change kept a frame's log: `NAME.snooker.json`.
+    /// Readers still look there ([`crate::RulesLog::beside`]) so that recordings saved then
+    /// still open and verify with their verdicts; nothing writes it any more.
+    pub fn old_path_beside(recording: &Path) -> PathBuf {
         recording.with_extension("snooker.json")
     }
 
