@@ -191,10 +191,11 @@ fn recorded_break() -> PathBuf {
 
 /// Every text of the UI fits (item 5 of issue 15), read from egui's own layout by
 /// `--check-layout`: none elided, none cut at the side of its panel or window, none off the
-/// screen; at 1280x720 and 1920x1080, in free play with every panel section open, in a match
-/// (9-ball and snooker), in a drill (its window), in a replay (the timeline strip) and after a recording failed to open (the error). And the
-/// HUD's buttons keep their places in all five (issue 28, item 1: a click aimed at Hint opened
-/// the New game dialog when the buttons moved between states).
+/// screen, no HUD line below the HUD's strip (issue 48); at 1280x720 and 1920x1080, in free
+/// play with every panel section open, on the stress table, in a match (9-ball, 8-ball and
+/// snooker), in a drill (its window), in a replay (the timeline strip) and after a recording
+/// failed to open (the error). And the HUD's buttons keep their places in all of them (issue
+/// 28, item 1: a click aimed at Hint opened the New game dialog when the buttons moved).
 #[test]
 fn every_text_fits_at_both_sizes() {
     if !can_render() {
@@ -207,8 +208,12 @@ fn every_text_fits_at_both_sizes() {
         .join("a-folder-with-a-long-name-for-recordings")
         .join("2026-12-01_12-00-00.000_15-ball-that-does-not-exist.json");
     let missing = missing.to_string_lossy().into_owned();
-    let states: [&[&str]; 6] = [
+    let states: [&[&str]; 8] = [
         &["--open-sections"],
+        // The stress table's lines in the HUD (issue 48: the HUD grows to hold them).
+        &["--stress", "200"],
+        // 8-ball's groups and call lines.
+        &["--game", "eight-ball"],
         // A drill in session (its window, the Position section greyed) with every section
         // open (issue 47).
         &["--drill", "08-run-out-789", "--open-sections"],

@@ -279,9 +279,17 @@ pub(super) fn position_commands(
                 .and_then(|p| p.encode().map_err(|e| e.to_string()))
                 .map(|text| {
                     let kept = clipboard.set_text(&text);
+                    // The code itself is in the Position section's field: a 500-character
+                    // code filled the HUD when the note carried it (played under Xvfb).
+                    let size = text.len();
                     let note = match kept {
-                        Ok(()) => format!("position copied: {text}"),
-                        Err(why) => format!("{why}; the code is in the field: {text}"),
+                        Ok(()) => format!(
+                            "position copied: {size} characters on the clipboard and in the \
+                             Position section's field"
+                        ),
+                        Err(why) => format!(
+                            "{why}; the code ({size} characters) is in the Position section's field"
+                        ),
                     };
                     code.0 = text;
                     note

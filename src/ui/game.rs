@@ -316,6 +316,8 @@ pub fn game_windows(
     });
     if (strip.0 - height).abs() >= 1.0 {
         strip.0 = height;
+        // Laid out again at once (egui's multi-pass mode): no frame shows it over the table.
+        ctx.request_discard("the docked window changed its height");
         ctx.request_repaint();
     }
     let Some(turn) = turn else {

@@ -116,8 +116,11 @@ pub fn hud(
             });
         });
     });
-    // A change of a pixel or more resizes the strip at the next pass, drawn at once.
+    // A change of a pixel or more resizes the strip at the next pass: egui's multi-pass mode
+    // discards this one, so no frame shows the HUD cut (and the next frame if egui has no
+    // pass left this frame).
     if (needed - fit.needed).abs() >= 1.0 {
+        ctx.request_discard("the HUD's lines changed its height");
         ctx.request_repaint();
     }
     fit.set_if_neq(HudFit { height, needed });
