@@ -325,14 +325,8 @@ pub(super) fn apply_commands(
                 // The call follows the aim: the ball the aiming aid sends into a pocket, and
                 // that pocket, proposed for the player to confirm or change.
                 game.proposed = aim.as_ref().and_then(|aim| proposed_call(game.next(), aim));
-                if let Some(Call::Ball { ball, .. }) = game.proposed {
-                    game.call_ball = Some(ball);
-                } else if game.call_ball.is_none() {
-                    game.call_ball = match game.next().call {
-                        CallRule::EightPocket => Some(8),
-                        _ => game.next().legal_first.first().copied(),
-                    };
-                }
+                game.call_ball =
+                    preselected_ball(game.next(), game.proposed, aim.as_deref()).or(game.call_ball);
             }
             TurnCommand::CallBall(ball) => game.call_ball = Some(ball),
             TurnCommand::Call(call) => {
@@ -419,6 +413,29 @@ pub(super) fn follow_rules(
             status.ball_in_hand = hand;
         }
     }
+}
+
+/// The ball the call dialog opens on (issue 48: it chose the 1 while the aim was on the 6):
+/// the proposed call's ball, else the 8 when it must be called, else the ball the aim hits
+/// first if it may be called, else the lowest legal ball.
+fn preselected_ball(
+    next: &NextShot,
+    proposed: Option<Call>,
+    aim: Option<&AimPrediction>,
+) -> Option<u8> {
+    if let Some(Call::Ball { ball, .. }) = proposed {
+        return Some(ball);
+    }
+    if next.call == CallRule::EightPocket {
+        return Some(8);
+    }
+    let aimed = aim.and_then(|aim| match aim.contact {
+        Some((crate::play::aim::FirstContact::Ball { number }, _)) => Some(number),
+        _ => None,
+    });
+    aimed
+        .filter(|n| next.legal_first.contains(n))
+        .or_else(|| next.legal_first.first().copied())
 }
 
 /// The call the aim proposes: the first callable ball (the 8 when it is on, else a legal
@@ -517,8 +534,9 @@ fn snooker_command(
 mod tests {
     use crate::play::{
         aim::{AimPrediction, BallPath},
-        game::flow::proposed_call,
+        game::flow::{preselected_ball, proposed_call},
     };
+    use bevy::math::DVec2;
     use billiards_physics::Pocket;
     use billiards_rules::{Call, CallRule, CueBall, NextShot, Seat};
 
@@ -580,5 +598,28 @@ mod tests {
             None
         );
         assert_eq!(proposed_call(&next(CallRule::NotUsed, vec![3]), &aim), None);
+    }
+
+    /// Issue 48: with no pocket in the aim's paths, the dialog opens on the ball the aim
+    /// hits first (the 6), not the lowest (the 1); a ball that may not be called is passed
+    /// over for the lowest; the 8 when it must be called.
+    #[test]
+    fn the_call_dialog_opens_on_the_ball_aimed_at() {
+        use crate::play::aim::FirstContact;
+        let solids = next(CallRule::Optional, vec![1, 2, 3, 4, 5, 6, 7]);
+        let on = |number| AimPrediction {
+            contact: Some((FirstContact::Ball { number }, DVec2::ZERO)),
+            ..Default::default()
+        };
+        assert_eq!(preselected_ball(&solids, None, Some(&on(6))), Some(6));
+        assert_eq!(preselected_ball(&solids, None, Some(&on(12))), Some(1));
+        assert_eq!(preselected_ball(&solids, None, None), Some(1));
+        let proposed = Some(Call::Ball {
+            ball: 3,
+            pocket: Pocket::FootRight,
+        });
+        assert_eq!(preselected_ball(&solids, proposed, Some(&on(6))), Some(3));
+        let eight = next(CallRule::EightPocket, vec![8]);
+        assert_eq!(preselected_ball(&eight, None, Some(&on(6))), Some(8));
     }
 }
