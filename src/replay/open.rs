@@ -95,7 +95,7 @@ impl OpenRecording {
     }
 
     /// Re-judges the recorded shots with the rules and compares the logged verdicts
-    /// ([`GameLog::check`]): the number of verdicts confirmed, `None` for free play.
+    /// ([`billiards_rules::GameLog::check`]): the number of verdicts confirmed, `None` for free play.
     pub fn check_verdicts(&self) -> Option<Result<usize, String>> {
         let log = match self.game.as_ref()? {
             Ok(log) => log,
