@@ -14,14 +14,10 @@ use std::{
     time::Duration,
 };
 
-use bevy::{math::DVec2, prelude::*};
 use billiards::{
-    play::game,
-    practice::{self, PositionCode, PositionCommand, placing},
-    replay,
-    sim::{RackRequested, ShotRequested, SimStatus, Solver},
+    practice::{PositionCode, PositionCommand},
+    sim::SimStatus,
 };
-use billiards_physics::{Rack, Shot, TipOffset};
 
 /// An Xvfb server on the first free display from :91, ended when dropped.
 struct Xvfb(Child);
@@ -45,37 +41,25 @@ fn start_xvfb() -> Option<(Xvfb, String)> {
             .stderr(std::process::Stdio::null())
             .spawn()
             .ok()?;
-        let server = Xvfb(child);
-        // The socket appears once the server listens.
+        let mut server = Xvfb(child);
+        // The socket appears once the server listens; a server that exits instead (the
+        // display was taken) leaves the next number to try. However long a loaded machine
+        // takes, the wait is for one or the other, not for a time.
         let socket = format!("/tmp/.X11-unix/X{n}");
-        for _ in 0..200 {
+        loop {
             if Path::new(&socket).exists() {
                 return Some((server, format!(":{n}")));
             }
-            std::thread::sleep(Duration::from_millis(25));
+            if !matches!(server.0.try_wait(), Ok(None)) {
+                break;
+            }
+            std::thread::sleep(Duration::from_millis(10));
         }
     }
     None
 }
 
-fn app() -> App {
-    let mut app = common::headless((game::plugin, replay::plugin, practice::plugin));
-    app.update();
-    app.world_mut()
-        .write_message(RackRequested::standard(Rack::FifteenBall));
-    app.update();
-    app
-}
-
-fn layout(app: &App) -> Vec<(u8, DVec2)> {
-    let mut balls: Vec<(u8, DVec2)> =
-        placing::layout_now(app.world().resource::<Solver>().simulation())
-            .into_iter()
-            .map(|b| (b.number, DVec2::new(b.position.x, b.position.y)))
-            .collect();
-    balls.sort_by_key(|b| b.0);
-    balls
-}
+use common::{layout, practice_app as app, shoot_to_rest};
 
 /// The test's own name, for the child run.
 const NAME: &str = "a_code_copied_in_one_game_is_pasted_in_another_through_x";
@@ -118,16 +102,7 @@ fn a_code_copied_in_one_game_is_pasted_in_another_through_x() {
 
 fn copy_and_paste() {
     let mut first = app();
-    first.world_mut().write_message(ShotRequested::from(Shot {
-        angle: 0.03,
-        speed: 6.0,
-        tip: TipOffset::default(),
-        elevation: 0.0,
-    }));
-    first.update();
-    common::update_until(&mut first, |app| {
-        app.world().resource::<Solver>().simulation().is_at_rest()
-    });
+    shoot_to_rest(&mut first, 0.03, 6.0);
     let broken = layout(&first);
     first.world_mut().write_message(PositionCommand::Copy {
         with_params: true,

@@ -12,20 +12,12 @@ use billiards::{
         self, DrillCommand, DrillList, DrillRequested, DrillSession, EditRequested, Placing,
         PositionRequested, Practice, placing, position::Origin,
     },
-    replay,
     sim::{RackRequested, ShotRequested, SimStatus, Solver},
 };
 use billiards_physics::{EventKind, Rack, Shot, TipOffset};
 use billiards_rules::{DrillShot, Position};
 
-fn app() -> App {
-    let mut app = common::headless((game::plugin, replay::plugin, practice::plugin));
-    app.update();
-    app.world_mut()
-        .write_message(RackRequested::standard(Rack::FifteenBall));
-    app.update();
-    app
-}
+use common::{layout, practice_app as app, shoot_to_rest};
 
 fn practice_state(app: &App) -> Practice {
     *app.world().resource::<State<Practice>>().get()
@@ -33,17 +25,6 @@ fn practice_state(app: &App) -> Practice {
 
 fn at_rest(app: &App) -> bool {
     app.world().resource::<Solver>().simulation().is_at_rest()
-}
-
-/// Every ball's number and centre, by number.
-fn layout(app: &App) -> Vec<(u8, DVec2)> {
-    let mut balls: Vec<(u8, DVec2)> =
-        placing::layout_now(app.world().resource::<Solver>().simulation())
-            .into_iter()
-            .map(|b| (b.number, DVec2::new(b.position.x, b.position.y)))
-            .collect();
-    balls.sort_by_key(|b| b.0);
-    balls
 }
 
 fn drill_index(app: &App, file: &str) -> usize {
@@ -134,14 +115,7 @@ fn a_drill_attempt_is_judged_as_the_pure_solver_judges_it() {
 #[test]
 fn a_copied_position_opens_where_it_was() {
     let mut app = app();
-    app.world_mut().write_message(ShotRequested::from(Shot {
-        angle: 0.0,
-        speed: 6.0,
-        tip: TipOffset::default(),
-        elevation: 0.0,
-    }));
-    app.update();
-    common::update_until(&mut app, |app| at_rest(app));
+    shoot_to_rest(&mut app, 0.0, 6.0);
     let before = layout(&app);
     let code = {
         let rules = app.world().resource::<game::Rules>();
@@ -460,14 +434,7 @@ fn a_table_saved_as_a_drill_is_listed_and_plays() {
 fn copy_and_open_through_the_panel_commands() {
     use billiards::practice::{PositionCode, PositionCommand};
     let mut app = app();
-    app.world_mut().write_message(ShotRequested::from(Shot {
-        angle: 0.02,
-        speed: 5.0,
-        tip: TipOffset::default(),
-        elevation: 0.0,
-    }));
-    app.update();
-    common::update_until(&mut app, |app| at_rest(app));
+    shoot_to_rest(&mut app, 0.02, 5.0);
     let before = layout(&app);
     app.world_mut().write_message(PositionCommand::Copy {
         with_params: true,

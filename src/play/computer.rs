@@ -356,7 +356,6 @@ fn outcome(handle: JoinHandle<Result<Decided, AiError>>) -> Result<Decided, Stri
 
 impl Decided {
     /// The shot decided on and the cue ball's place in hand; `None` for a choice.
-    /// The decided shot and, with the ball in hand, where the cue ball goes.
     pub fn aim(&self) -> Option<(Shot, Option<Vec2>)> {
         match self {
             Decided::Pool(Decision::Shoot(plan)) => Some((plan.shot, plan.place)),

@@ -139,7 +139,7 @@ pub fn spot_error(sim: &Simulation, spec: &TableSpec, number: u8, p: DVec2) -> R
         .into_iter()
         .find(|&k| spec.pocket(k).centre.distance(p) < spec.pocket(k).radius)
     {
-        return Err(format!("over the {} pocket", pocket_name(pocket)));
+        return Err(format!("over the {}", billiards_rules::pocket_name(pocket)));
     }
     let blocker = sim
         .balls()
@@ -152,24 +152,12 @@ pub fn spot_error(sim: &Simulation, spec: &TableSpec, number: u8, p: DVec2) -> R
     Ok(())
 }
 
-/// "cue ball", "3".
+/// "cue ball", "3 ball".
 pub fn ball_name(number: u8) -> String {
     if number == 0 {
         "cue ball".to_owned()
     } else {
         format!("{number} ball")
-    }
-}
-
-fn pocket_name(p: billiards_physics::Pocket) -> &'static str {
-    use billiards_physics::Pocket::*;
-    match p {
-        HeadLeft => "head left",
-        HeadRight => "head right",
-        FootLeft => "foot left",
-        FootRight => "foot right",
-        SideLeft => "left side",
-        SideRight => "right side",
     }
 }
 

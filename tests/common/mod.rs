@@ -61,3 +61,49 @@ pub fn place(app: &mut App, at: bevy::math::DVec2) -> Result<(), sim::HandError>
     app.update();
     result
 }
+
+/// A headless game with the practice tools (and the rules and the replay they read), a
+/// 15-ball rack on the table.
+#[allow(dead_code, reason = "the practice and clipboard tests use it")]
+pub fn practice_app() -> App {
+    use billiards::{play::game, practice, replay};
+    let mut app = headless((game::plugin, replay::plugin, practice::plugin));
+    app.update();
+    app.world_mut().write_message(sim::RackRequested::standard(
+        billiards_physics::Rack::FifteenBall,
+    ));
+    app.update();
+    app
+}
+
+/// Every ball on the table: its number and centre, by number.
+#[allow(dead_code, reason = "the practice and clipboard tests use it")]
+pub fn layout(app: &App) -> Vec<(u8, bevy::math::DVec2)> {
+    let sim = app.world().resource::<sim::Solver>().simulation();
+    let mut balls: Vec<(u8, bevy::math::DVec2)> = billiards::practice::placing::layout_now(sim)
+        .into_iter()
+        .map(|b| (b.number, bevy::math::DVec2::new(b.position.x, b.position.y)))
+        .collect();
+    balls.sort_by_key(|b| b.0);
+    balls
+}
+
+/// Strikes the cue ball at `angle` (radians) with `speed` (m/s), no spin, and runs frames
+/// until every ball rests.
+#[allow(dead_code, reason = "the practice and clipboard tests use it")]
+pub fn shoot_to_rest(app: &mut App, angle: f64, speed: f64) {
+    app.world_mut()
+        .write_message(sim::ShotRequested::from(billiards_physics::Shot {
+            angle,
+            speed,
+            tip: Default::default(),
+            elevation: 0.0,
+        }));
+    app.update();
+    update_until(app, |app| {
+        app.world()
+            .resource::<sim::Solver>()
+            .simulation()
+            .is_at_rest()
+    });
+}
