@@ -76,3 +76,39 @@ pub const INFO: Color32 = Color32::from_rgb(120, 190, 255);
 
 /// A line of the HUD and its colour (`None`: the text colour).
 pub type HudLine = (String, Option<Color32>);
+
+/// A warning that may hold a path: wrapped to the width available, breaking a word with no
+/// space to wrap at (a path) anywhere rather than running past the edge.
+pub fn warning_label(ui: &mut egui::Ui, text: &str) {
+    let mut job = egui::text::LayoutJob::single_section(
+        text.to_owned(),
+        egui::TextFormat {
+            font_id: egui::TextStyle::Body.resolve(ui.style()),
+            color: WARNING,
+            ..Default::default()
+        },
+    );
+    job.wrap.break_anywhere = true;
+    ui.label(job);
+}
+
+/// A window over the table that says what went wrong with a file (`title`, `text`), below
+/// the HUD strip (`hud_bottom`), centred on the view right of the panel; true when its OK
+/// was clicked.
+pub fn warning_window(ctx: &egui::Context, title: &str, text: &str, hud_bottom: f32) -> bool {
+    let mut ok = false;
+    egui::Window::new(title)
+        .collapsible(false)
+        .resizable(false)
+        .anchor(
+            egui::Align2::CENTER_TOP,
+            [PANEL_WIDTH / 2.0, hud_bottom + 12.0],
+        )
+        .order(egui::Order::Foreground)
+        .show(ctx, |ui| {
+            ui.set_max_width(420.0);
+            warning_label(ui, text);
+            ok = ui.button("OK").clicked();
+        });
+    ok
+}

@@ -353,8 +353,9 @@ fn left_panel(
     settings::rack_confirm_window(&ctx, &mut state);
     stress::confirm_window(&ctx, &mut stress);
     practice::drill_window(&ctx, &mut practice, inset.top);
-    settings::config_error_window(&ctx, &state, &mut read_error);
-    recordings::error_window(&ctx, &mut recordings);
+    // Below the HUD, however tall it has grown (the last pass's height).
+    settings::config_error_window(&ctx, &state, &mut read_error, inset.top);
+    recordings::error_window(&ctx, &mut recordings, inset.top);
     // The 3D view takes the window right of the panel (src/view.rs).
     if inset.left != panel_width {
         inset.left = panel_width;

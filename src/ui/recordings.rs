@@ -9,7 +9,7 @@ use bevy::{ecs::system::SystemParam, prelude::*};
 use bevy_egui::egui::{self, RichText};
 
 use super::{
-    layout::{HUD_HEIGHT, PANEL_WIDTH, PATH_FIELD_WIDTH, RECORDINGS_LIST_HEIGHT, WARNING},
+    layout::{PATH_FIELD_WIDTH, RECORDINGS_LIST_HEIGHT},
     timeline::{ExportForm, export_section, export_status},
 };
 use crate::{
@@ -109,17 +109,7 @@ fn recordings(ui: &mut egui::Ui, param: &mut RecordingsParam) {
         }
     });
     if let Some(error) = &replay.error {
-        // A path has no spaces to wrap at: break it anywhere rather than run past the edge.
-        let mut job = egui::text::LayoutJob::single_section(
-            error.clone(),
-            egui::TextFormat {
-                font_id: egui::TextStyle::Body.resolve(ui.style()),
-                color: WARNING,
-                ..Default::default()
-            },
-        );
-        job.wrap.break_anywhere = true;
-        ui.label(job);
+        super::layout::warning_label(ui, error);
     }
     if let Some(open) = &replay.open {
         // The name on a line of its own: beside it the button ran past the panel's edge.
@@ -139,34 +129,11 @@ fn recordings(ui: &mut egui::Ui, param: &mut RecordingsParam) {
 /// A file that could not be opened for replay (`billiards replay BAD.json`, a drop, the Open
 /// button) is said where it is seen, over the table, as a bad settings file is, until the
 /// player dismisses it (the Recordings section keeps the reason).
-pub fn error_window(ctx: &egui::Context, param: &mut RecordingsParam) {
+pub fn error_window(ctx: &egui::Context, param: &mut RecordingsParam, hud_bottom: f32) {
     let Some(error) = param.replay.error_to_show() else {
         return;
     };
-    egui::Window::new("Recording not opened")
-        .collapsible(false)
-        .resizable(false)
-        // Over the table, below the HUD strip, centred on the view right of the panel.
-        .anchor(
-            egui::Align2::CENTER_TOP,
-            [PANEL_WIDTH / 2.0, HUD_HEIGHT + 12.0],
-        )
-        .order(egui::Order::Foreground)
-        .show(ctx, |ui| {
-            ui.set_max_width(420.0);
-            // A path has no spaces to wrap at: break it anywhere rather than run off the edge.
-            let mut job = egui::text::LayoutJob::single_section(
-                error.to_owned(),
-                egui::TextFormat {
-                    font_id: egui::TextStyle::Body.resolve(ui.style()),
-                    color: WARNING,
-                    ..Default::default()
-                },
-            );
-            job.wrap.break_anywhere = true;
-            ui.label(job);
-            if ui.button("OK").clicked() {
-                param.commands.write(ReplayCommand::DismissError);
-            }
-        });
+    if super::layout::warning_window(ctx, "Recording not opened", error, hud_bottom) {
+        param.commands.write(ReplayCommand::DismissError);
+    }
 }

@@ -10,7 +10,7 @@ use bevy::prelude::*;
 use bevy_egui::egui::{self, Color32, RichText};
 use billiards_physics::Rack;
 
-use super::layout::{BUTTON_WIDTH, HUD_HEIGHT, PANEL_WIDTH, TIP_PICKER_SIZE, WARNING};
+use super::layout::{BUTTON_WIDTH, TIP_PICKER_SIZE, WARNING};
 use crate::{
     config::{ConfigFile, reset_to_defaults},
     settings::{
@@ -451,29 +451,21 @@ fn physics_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
 
 /// A settings file that could not be read or written is said where it is seen, over the table,
 /// until the player has read it (the panel's "Settings file" section keeps the message).
-pub fn config_error_window(ctx: &egui::Context, state: &SettingsParam, read: &mut Option<String>) {
+pub fn config_error_window(
+    ctx: &egui::Context,
+    state: &SettingsParam,
+    read: &mut Option<String>,
+    hud_bottom: f32,
+) {
     let Some(error) = &state.config.error else {
         return;
     };
     if read.as_ref() == Some(error) {
         return;
     }
-    egui::Window::new("Settings file")
-        .collapsible(false)
-        .resizable(false)
-        // Over the table, below the HUD strip, centred on the view right of the panel.
-        .anchor(
-            egui::Align2::CENTER_TOP,
-            [PANEL_WIDTH / 2.0, HUD_HEIGHT + 12.0],
-        )
-        .order(egui::Order::Foreground)
-        .show(ctx, |ui| {
-            ui.set_max_width(420.0);
-            ui.colored_label(WARNING, error);
-            if ui.button("OK").clicked() {
-                *read = Some(error.clone());
-            }
-        });
+    if super::layout::warning_window(ctx, "Settings file", error, hud_bottom) {
+        *read = Some(error.clone());
+    }
 }
 
 /// The settings file (where it is, why it could not be read), the reset, and the list of
