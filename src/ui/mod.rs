@@ -139,60 +139,164 @@ fn find_pointer_on_ui(
     Ok(())
 }
 
-/// The pointer-button releases (and what follows them) held back for the next frame, by egui
-/// context.
-#[derive(Default)]
-struct HeldEvents(Vec<(Entity, Vec<egui::Event>)>);
+/// Where a pointer event was aimed: the interactive rectangles (buttons, sliders, headers,
+/// windows) under it in the layout the player saw, or `None` when that layout is not known.
+type Aim = Option<Vec<egui::Rect>>;
 
-/// Splits `events` (after the ones held back from the last frame, `held`) where a button is
-/// released that was pressed earlier in them: what comes from there on is returned, to be
-/// read next frame.
-fn split_at_click(held: Vec<egui::Event>, events: &mut Vec<egui::Event>) -> Vec<egui::Event> {
-    let mut all = held;
-    all.append(events);
-    let mut pressed = [false; egui::NUM_POINTER_BUTTONS];
-    let split = all.iter().position(|event| match *event {
-        egui::Event::PointerButton {
-            button, pressed: p, ..
-        } => {
-            let released_after_press = !p && pressed[button as usize];
-            pressed[button as usize] |= p;
-            released_after_press
-        }
-        _ => false,
-    });
-    let later = split.map_or_else(Vec::new, |k| all.split_off(k));
-    *events = all;
-    later
+/// An egui input event held back for a later frame, with where it was aimed.
+#[derive(Debug, Clone, PartialEq)]
+struct Held {
+    event: egui::Event,
+    /// For a button press: the targets under it in every layout the player may have seen
+    /// when pressing (`None`: those layouts differed there, so the press is dropped).
+    aim: Aim,
 }
 
-/// egui's slider senses drags only: a press and its release read in one frame (a click on a
-/// slow frame, a second under a software renderer) is no drag, and a click on a slider's
-/// rail did nothing (the time scale, played under Xvfb). The release of a button pressed in
-/// the same frame, and every event after it, is read one frame later, and that frame is asked
-/// for. Buttons take their click a frame later; nothing else changes.
+/// The click state of one egui context between frames.
+#[derive(Debug, Default)]
+struct ClickQueue {
+    /// Events not yet given to egui, oldest first.
+    held: Vec<Held>,
+    /// The interactive rectangles of the pass before the last one.
+    before: Option<Vec<egui::Rect>>,
+    /// Buttons whose press was dropped: their next release is dropped too.
+    dropping: [bool; egui::NUM_POINTER_BUTTONS],
+}
+
+/// The click queues, by egui context.
+#[derive(Default)]
+struct ClickQueues(Vec<(Entity, ClickQueue)>);
+
+/// Rectangles of `rects` containing `pos`, back to front.
+fn under(rects: &[egui::Rect], pos: egui::Pos2) -> Vec<egui::Rect> {
+    rects.iter().filter(|r| r.contains(pos)).copied().collect()
+}
+
+/// Whether two lists of targets are the same, to half a point.
+fn same_targets(a: &[egui::Rect], b: &[egui::Rect]) -> bool {
+    a.len() == b.len()
+        && a.iter()
+            .zip(b)
+            .all(|(a, b)| (a.min - b.min).length() <= 0.5 && (a.max - b.max).length() <= 0.5)
+}
+
+/// Tags newly read `events` with where they were aimed: a press arriving now was made while
+/// the last pass (`now`) or, if the press came while that pass was still being drawn, the
+/// one before it (`before`) was on screen; where they differ under the press, the player's
+/// target is unknown.
+fn tag_arrivals(events: Vec<egui::Event>, before: &[egui::Rect], now: &[egui::Rect]) -> Vec<Held> {
+    events
+        .into_iter()
+        .map(|event| {
+            let aim = match event {
+                egui::Event::PointerButton {
+                    pos, pressed: true, ..
+                } => {
+                    let (seen, last) = (under(before, pos), under(now, pos));
+                    same_targets(&seen, &last).then_some(last)
+                }
+                _ => Some(Vec::new()),
+            };
+            Held { event, aim }
+        })
+        .collect()
+}
+
+/// Takes from `queue` the events egui reads this frame, its last pass's interactive
+/// rectangles being `now`; what is left waits for the next frame. A frame reads at most one
+/// change of a button: it stops before the release of a button pressed in it (egui's slider
+/// senses drags only, so a press and release read in one frame did nothing on a slider's
+/// rail), and before a press after a release (the click's effect is drawn first). A press
+/// whose targets under it differ from those the player saw is dropped with its release: the
+/// layout moved under it (issue 48: a second click on a slow frame landed on what the
+/// first had opened). Returns the events and how many presses were dropped.
+fn take_for_frame(queue: &mut ClickQueue, now: &[egui::Rect]) -> (Vec<egui::Event>, usize) {
+    let mut out = Vec::new();
+    let mut dropped = 0;
+    let mut pressed = [false; egui::NUM_POINTER_BUTTONS];
+    let mut released = false;
+    let mut rest = std::mem::take(&mut queue.held).into_iter();
+    for held in rest.by_ref() {
+        if let egui::Event::PointerButton {
+            button,
+            pressed: down,
+            pos,
+            ..
+        } = held.event
+        {
+            let b = button as usize;
+            if down {
+                if released {
+                    queue.held.push(held);
+                    break;
+                }
+                let aimed = held
+                    .aim
+                    .as_deref()
+                    .is_some_and(|aim| same_targets(aim, &under(now, pos)));
+                if !aimed {
+                    queue.dropping[b] = true;
+                    dropped += 1;
+                    continue;
+                }
+                pressed[b] = true;
+            } else {
+                if std::mem::take(&mut queue.dropping[b]) {
+                    continue;
+                }
+                if pressed[b] {
+                    queue.held.push(held);
+                    break;
+                }
+                released = true;
+            }
+        }
+        out.push(held.event);
+    }
+    queue.held.extend(rest);
+    (out, dropped)
+}
+
+/// Gives egui each frame the input events it should read then ([`take_for_frame`]): one
+/// change of a pointer button a frame, and no click on a layout the player had not seen.
+/// While events wait, the next frame is asked for.
 fn split_one_frame_clicks(
-    mut inputs: Query<(Entity, &mut EguiInput)>,
-    mut held: Local<HeldEvents>,
+    mut inputs: Query<(Entity, &mut EguiInput, &mut bevy_egui::EguiContext)>,
+    mut queues: Local<ClickQueues>,
     mut redraw: MessageWriter<RequestRedraw>,
 ) {
-    let mut next = Vec::new();
-    for (entity, mut input) in &mut inputs {
-        let from_last = held
-            .0
-            .iter_mut()
-            .find(|(e, _)| *e == entity)
-            .map(|(_, events)| std::mem::take(events))
-            .unwrap_or_default();
-        let later = split_at_click(from_last, &mut input.events);
-        if !later.is_empty() {
-            next.push((entity, later));
+    let mut waiting = false;
+    for (entity, mut input, mut context) in &mut inputs {
+        let index = match queues.0.iter().position(|(e, _)| *e == entity) {
+            Some(index) => index,
+            None => {
+                queues.0.push((entity, ClickQueue::default()));
+                queues.0.len() - 1
+            }
+        };
+        let queue = &mut queues.0[index].1;
+        let now = context.get_mut().interactive_rects_last_pass();
+        let before = queue
+            .before
+            .replace(now.clone())
+            .unwrap_or_else(|| now.clone());
+        let arrivals = tag_arrivals(std::mem::take(&mut input.events), &before, &now);
+        queue.held.extend(arrivals);
+        // A pass that moved something is followed by one that did not, so that an idle
+        // window's last two passes agree and a later click is not taken for one on a
+        // moving layout.
+        waiting |= !same_targets(&before, &now);
+        let (events, dropped) = take_for_frame(queue, &now);
+        if dropped > 0 {
+            debug!("{dropped} click(s) dropped: the layout under them changed");
         }
+        input.events = events;
+        waiting |= !queue.held.is_empty();
     }
-    if !next.is_empty() {
+    queues.0.retain(|(e, _)| inputs.contains(*e));
+    if waiting {
         redraw.write(RequestRedraw);
     }
-    held.0 = next;
 }
 
 /// egui's own limit on how long a click's button may be held (`InputOptions`), seconds.
@@ -456,59 +560,152 @@ mod tests {
         }
     }
 
-    /// A click on a slider's rail moves it once the release is held back a frame
-    /// (`split_at_click`), and not when egui reads press and release in one frame.
+    /// Runs frames of `ui` (in an area at (100, 100), egui's clock at 1 s a frame from
+    /// `time`) the way the game does: `batches[k]` arrive before frame k and go through
+    /// [`super::take_for_frame`]; then frames until nothing waits. The number of frames run.
+    fn frames(
+        ctx: &egui::Context,
+        time: &mut f64,
+        batches: Vec<Vec<Event>>,
+        mut ui: impl FnMut(&mut egui::Ui),
+    ) -> usize {
+        // A click held over frames of a second (as `allow_slow_clicks` allows in the game).
+        ctx.options_mut(|o| o.input_options.max_click_duration = 10.0);
+        let mut queue = super::ClickQueue::default();
+        let mut batches = batches.into_iter();
+        let mut count = 0;
+        loop {
+            let arrived = batches.next();
+            if arrived.is_none() && queue.held.is_empty() {
+                return count;
+            }
+            let now = ctx.interactive_rects_last_pass();
+            let before = queue
+                .before
+                .replace(now.clone())
+                .unwrap_or_else(|| now.clone());
+            let arrivals = super::tag_arrivals(arrived.unwrap_or_default(), &before, &now);
+            queue.held.extend(arrivals);
+            let (events, _) = super::take_for_frame(&mut queue, &now);
+            *time += 1.0;
+            timed_pass(ctx, Some(*time), events, &mut ui);
+            count += 1;
+        }
+    }
+
+    /// A click on a slider's rail moves it once the release is read a frame after the press
+    /// (`take_for_frame`), and not when egui reads press and release in one frame.
     #[test]
     fn a_click_on_a_slider_rail_moves_it_when_split() {
-        let run = |ctx: &egui::Context, time: f64, events: Vec<Event>, value: &mut f64| {
-            timed_pass(ctx, Some(time), events, |ui| {
-                ui.add(egui::Slider::new(value, 0.0..=4.0).show_value(false));
-            })
-        };
         // 90 % along the rail (the slider is 100 points wide by default).
         let at = pos2(190.0, 109.0);
         for split in [false, true] {
             let ctx = egui::Context::default();
-            let mut value = 1.0;
-            run(&ctx, 1.0, Vec::new(), &mut value);
-            run(&ctx, 2.0, vec![Event::PointerMoved(at)], &mut value);
-            let mut events = vec![button(at, true), button(at, false)];
-            let later = if split {
-                super::split_at_click(Vec::new(), &mut events)
-            } else {
-                Vec::new()
+            let mut value: f64 = 1.0;
+            let mut slider = |ui: &mut egui::Ui| {
+                ui.add(egui::Slider::new(&mut value, 0.0..=4.0).show_value(false));
             };
-            run(&ctx, 3.0, events, &mut value);
-            let mut next = Vec::new();
-            let held = super::split_at_click(later, &mut next);
-            assert!(held.is_empty());
-            run(&ctx, 4.0, next, &mut value);
+            let mut time = 0.0;
+            let settle = vec![Vec::new(), vec![Event::PointerMoved(at)], Vec::new()];
+            frames(&ctx, &mut time, settle, &mut slider);
+            let click = vec![button(at, true), button(at, false)];
+            if split {
+                assert_eq!(frames(&ctx, &mut time, vec![click], &mut slider), 2);
+            } else {
+                timed_pass(&ctx, Some(time + 1.0), click, &mut slider);
+            }
             let moved = (value - 3.6).abs() < 0.2;
             assert_eq!(moved, split, "split {split}: value {value}");
         }
     }
 
-    /// Only a release after a press of the same button in the same frame is held back, with
-    /// what follows it; held events come first next frame.
+    /// A frame reads one change of a button: a release after its press waits a frame, and
+    /// so does a press after a release; other events keep their order around them.
     #[test]
-    fn only_a_release_after_its_press_is_held_back() {
+    fn one_change_of_a_button_a_frame() {
         let p = pos2(1.0, 1.0);
-        let mut events = vec![button(p, false), Event::PointerMoved(p), button(p, true)];
-        assert!(super::split_at_click(Vec::new(), &mut events).is_empty());
-        assert_eq!(events.len(), 3);
-        let mut events = vec![
+        let mut queue = super::ClickQueue::default();
+        let events = vec![
             button(p, true),
             Event::PointerMoved(p),
             button(p, false),
             Event::Text("a".to_owned()),
+            button(p, true),
+            button(p, false),
         ];
-        let later = super::split_at_click(Vec::new(), &mut events);
-        assert_eq!(events, vec![button(p, true), Event::PointerMoved(p)]);
-        assert_eq!(later, vec![button(p, false), Event::Text("a".to_owned())]);
-        let mut next = vec![Event::PointerMoved(p)];
-        assert!(super::split_at_click(later, &mut next).is_empty());
-        assert_eq!(next[0], button(p, false));
-        assert_eq!(next.len(), 3);
+        queue.held = super::tag_arrivals(events, &[], &[]);
+        let (first, _) = super::take_for_frame(&mut queue, &[]);
+        assert_eq!(first, vec![button(p, true), Event::PointerMoved(p)]);
+        let (second, _) = super::take_for_frame(&mut queue, &[]);
+        assert_eq!(second, vec![button(p, false), Event::Text("a".to_owned())]);
+        let (third, _) = super::take_for_frame(&mut queue, &[]);
+        assert_eq!(third, vec![button(p, true)]);
+        let (fourth, dropped) = super::take_for_frame(&mut queue, &[]);
+        assert_eq!((fourth, dropped), (vec![button(p, false)], 0));
+        assert!(queue.held.is_empty());
+    }
+
+    /// Issue 48: two clicks made on one slow frame, the first opening a header, the second
+    /// aimed at a button the opened header pushes down. The second lands on neither that
+    /// button (moved) nor what took its place (the player never saw it): it is dropped. Two
+    /// clicks on a layout that does not move both land.
+    #[test]
+    fn a_click_on_a_layout_the_player_had_not_seen_is_dropped() {
+        let (header, below) = (pos2(130.0, 108.0), pos2(130.0, 132.0));
+        let mut clicked: Vec<&str> = Vec::new();
+        let mut ui = |ui: &mut egui::Ui| {
+            egui::CollapsingHeader::new("Physics").show(ui, |ui| {
+                if ui.button("Inside").clicked() {
+                    clicked.push("Inside");
+                }
+                ui.add_space(60.0);
+            });
+            if ui.button("Below").clicked() {
+                clicked.push("Below");
+            }
+        };
+        let ctx = egui::Context::default();
+        ctx.all_styles_mut(|s| s.animation_time = 0.0);
+        let mut time = 0.0;
+        frames(&ctx, &mut time, vec![Vec::new(); 3], &mut ui);
+        let rects = ctx.interactive_rects_last_pass();
+        assert!(
+            rects.iter().any(|r| r.contains(below)),
+            "Below is at {below:?}"
+        );
+        let both = vec![vec![
+            Event::PointerMoved(header),
+            button(header, true),
+            button(header, false),
+            Event::PointerMoved(below),
+            button(below, true),
+            button(below, false),
+        ]];
+        frames(&ctx, &mut time, both, &mut ui);
+        // The header opened: where "Below" was is now inside its body.
+        let moved = ctx.interactive_rects_last_pass();
+        assert!(moved.len() > rects.len(), "the header did not open");
+        assert!(clicked.is_empty(), "clicked {clicked:?}");
+
+        // The same two clicks on "Below" alone: nothing moves, both land.
+        let mut count = 0;
+        let mut still = |ui: &mut egui::Ui| {
+            if ui.button("Below").clicked() {
+                count += 1;
+            }
+        };
+        let ctx = egui::Context::default();
+        frames(&ctx, &mut time, vec![Vec::new(); 3], &mut still);
+        let at = pos2(110.0, 108.0);
+        let twice = vec![vec![
+            Event::PointerMoved(at),
+            button(at, true),
+            button(at, false),
+            button(at, true),
+            button(at, false),
+        ]];
+        frames(&ctx, &mut time, twice, &mut still);
+        assert_eq!(count, 2);
     }
 
     /// A click whose press and release egui reads in two frames 2 s apart (the press woke
