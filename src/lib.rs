@@ -65,6 +65,7 @@ impl Plugin for GamePlugin {
             play::game::plugin,
             play::game::table_plugin,
             play::computer::plugin,
+            play::script::plugin,
         ))
         .add_plugins((
             config::plugin,
@@ -79,7 +80,16 @@ impl Plugin for GamePlugin {
             app.insert_resource(replay::OpenAtStart(file.clone()));
         }
         if let Some(game) = self.options.game {
-            app.insert_resource(play::game::StartGame(game));
+            app.insert_resource(play::game::StartGame {
+                game,
+                computer: self.options.computer,
+                seed: self.options.seed,
+            });
+        }
+        if !self.options.script.is_empty() {
+            app.insert_resource(play::script::LaunchScript(
+                self.options.script.iter().copied().collect(),
+            ));
         }
         if let Some(position) = &self.options.position {
             app.insert_resource(practice::StartPosition(position.clone()));

@@ -38,6 +38,12 @@ pub struct LaunchOptions {
     /// Start a session of this drill (`--drill NAME`: its file name in the drills list,
     /// with or without `.json`).
     pub drill: Option<String>,
+    /// The player's moves to play at launch (`--script`), parsed.
+    pub script: Vec<crate::play::script::Step>,
+    /// The second seat is the computer's, at this level (`--computer`, with `--game`).
+    pub computer: Option<billiards_ai::Level>,
+    /// The first rack's seed (`--seed`, with `--game`).
+    pub seed: Option<u64>,
 }
 
 /// Why the command line could not be understood.
@@ -58,6 +64,10 @@ pub enum ArgsError {
     Conflict(&'static str, &'static str),
     /// `--position`'s code was refused: why.
     Position(String),
+    /// `--script` could not be read: why.
+    Script(String),
+    /// A flag that needs another one was given without it.
+    Needs(&'static str, &'static str),
 }
 
 impl fmt::Display for ArgsError {
@@ -68,6 +78,8 @@ impl fmt::Display for ArgsError {
             Self::UnknownArgument(arg) => write!(f, "unknown argument {arg:?}"),
             Self::Conflict(a, b) => write!(f, "{a} and {b} cannot be used together"),
             Self::Position(why) => write!(f, "--position: {why}"),
+            Self::Script(why) => write!(f, "--script: {why}"),
+            Self::Needs(a, b) => write!(f, "{a} needs {b}"),
         }
     }
 }
@@ -82,6 +94,7 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                  [--size WxH] [--screenshot PATH [--settle SECONDS]]
                  [--check-layout PATH] [--open-sections] [--count-idle-frames SECONDS]
                  [--stress BALLS] [--position CODE] [--drill NAME]
+                 [--computer] [--seed N] [--script STEPS]
 
   replay FILE         open a recording in the replay viewer
   --recordings DIR    save every game there, one file per rack (default: ./recordings)
@@ -96,6 +109,14 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                       billiards-cli position encode too): its balls, table, physics, shot
   --drill NAME        start a session of a drill of the New game dialog's list, by its file
                       name (04-cut-30, or user/NAME for one of your own)
+  --computer          with --game: the computer plays the second seat (medium)
+  --seed N            with --game: the first rack's seed (racks repeat; default: the clock)
+  --script STEPS      play these moves at launch, each when the game asks for it, ';'
+                      between them: shoot DEG SPEED (degrees from the long axis, m/s),
+                      continue, call BALL POCKET (head-left ... foot-right), nominate
+                      BALL, choose K (the K-th choice offered), move BALL X Y (metres
+                      from the centre); a screenshot waits
+                      until they are played and the balls rest
 
   --screenshot PATH   wait until the scene has been drawn, save it as PNG to PATH, exit
   --settle SECONDS    how long every render pipeline must have been ready before the
@@ -218,6 +239,19 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                     let file = args.next().ok_or(ArgsError::MissingValue("replay"))?;
                     options.replay = Some(PathBuf::from(file));
                 }
+                "--script" => {
+                    let steps = args.next().ok_or(ArgsError::MissingValue("--script"))?;
+                    options.script =
+                        crate::play::script::parse(&steps).map_err(ArgsError::Script)?;
+                }
+                "--computer" => options.computer = Some(billiards_ai::Level::Medium),
+                "--seed" => {
+                    let value = args.next().ok_or(ArgsError::MissingValue("--seed"))?;
+                    options.seed = Some(value.parse().map_err(|_| ArgsError::InvalidValue {
+                        flag: "--seed",
+                        value,
+                    })?);
+                }
                 "-h" | "--help" => options.show_help = true,
                 _ => return Err(ArgsError::UnknownArgument(arg)),
             }
@@ -243,6 +277,14 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
         if options.position.is_some() && options.drill.is_some() {
             return Err(ArgsError::Conflict("--drill", "--position"));
         }
+        for (flag, given) in [
+            ("--computer", options.computer.is_some()),
+            ("--seed", options.seed.is_some()),
+        ] {
+            if given && options.game.is_none() {
+                return Err(ArgsError::Needs(flag, "--game"));
+            }
+        }
         if options.screenshot.is_some() && options.count_idle_frames.is_some() {
             return Err(ArgsError::Conflict("--screenshot", "--count-idle-frames"));
         }
@@ -256,6 +298,35 @@ mod tests {
 
     fn parse(args: &[&str]) -> Result<LaunchOptions, ArgsError> {
         LaunchOptions::from_args(args.iter().map(|s| s.to_string()))
+    }
+
+    #[test]
+    fn a_script_a_computer_and_a_seed() {
+        let options = parse(&[
+            "--game",
+            "nine-ball",
+            "--computer",
+            "--seed",
+            "7",
+            "--script",
+            "shoot 90 0.6; continue",
+        ])
+        .unwrap();
+        assert_eq!(options.script.len(), 2);
+        assert_eq!(options.computer, Some(billiards_ai::Level::Medium));
+        assert_eq!(options.seed, Some(7));
+        assert_eq!(
+            parse(&["--computer"]),
+            Err(ArgsError::Needs("--computer", "--game"))
+        );
+        assert!(matches!(
+            parse(&["--script", "shoot fast"]),
+            Err(ArgsError::Script(_))
+        ));
+        assert!(matches!(
+            parse(&["--game", "snooker", "--seed", "x"]),
+            Err(ArgsError::InvalidValue { flag: "--seed", .. })
+        ));
     }
 
     #[test]

@@ -189,13 +189,126 @@ fn recorded_break() -> PathBuf {
     path
 }
 
+/// The states the layout check visits: the arguments that reach each (a launch script
+/// plays the moves a player would: issue 48) and a text that shows it was reached.
+fn layout_states(recording: &str, missing: &str) -> Vec<(Vec<String>, &'static str)> {
+    let states: [(&[&str], &str); 16] = [
+        (&["--open-sections"], "free play"),
+        // The stress table's lines in the HUD (issue 48: the HUD grows to hold them).
+        (&["--stress", "200"], "stress table"),
+        // 8-ball's groups and call lines.
+        (&["--game", "eight-ball"], "8-ball, race to 3"),
+        // A drill in session (its window, the Position section greyed) with every section
+        // open (issue 47).
+        (&["--drill", "08-run-out-789", "--open-sections"], "Drill"),
+        (&["--game", "nine-ball"], "9-ball, race to 3"),
+        // Snooker's longer HUD lines (frames, score, break, points remaining).
+        (&["--game", "snooker"], "points remaining"),
+        (&["replay", recording], "replaying a recording"),
+        (&["replay", missing], "does-not-exist"),
+        // Free play: the cue ball from the head spot into the head-left corner.
+        (
+            &["--script", "shoot 135 2"],
+            "scratch: the cue ball is back",
+        ),
+        // A foul in each game: the break sent to the side cushion, no ball hit.
+        (
+            &[
+                "--game",
+                "nine-ball",
+                "--seed",
+                "1",
+                "--script",
+                "shoot 90 0.6",
+            ],
+            "last foul: the cue ball hit no ball",
+        ),
+        (
+            &[
+                "--game",
+                "eight-ball",
+                "--seed",
+                "1",
+                "--script",
+                "shoot 90 0.6",
+            ],
+            "re-rack and break",
+        ),
+        (
+            &[
+                "--game",
+                "snooker",
+                "--seed",
+                "1",
+                "--script",
+                "shoot 90 0.6",
+            ],
+            "put Player 1 back in",
+        ),
+        // 8-ball: a call set after the break (seed 1: the breaker scratches).
+        (
+            &[
+                "--game",
+                "eight-ball",
+                "--seed",
+                "1",
+                "--script",
+                "shoot 0 11; continue; call 1 foot-left",
+            ],
+            "call: the 1 in the foot-left corner",
+        ),
+        // Snooker: a red potted from the D into the baulk-left corner, then the nomination.
+        (
+            &[
+                "--game",
+                "snooker",
+                "--seed",
+                "1",
+                "--script",
+                "move 0 -1.15 0.12; move 1 -1.2773 0.2743; shoot 129.5 2; continue",
+            ],
+            "Nominate a colour",
+        ),
+        // Snooker: the cue ball rolled behind the brown, no ball hit; played on, a free ball.
+        (
+            &[
+                "--game",
+                "snooker",
+                "--seed",
+                "1",
+                "--script",
+                "move 0 -1.30 0.12; move 18 -1.22 0.12; shoot 180 0.2; choose 1",
+            ],
+            "Free ball: nominate one",
+        ),
+        // The computer's turn: Player 1 fouls, the computer has ball in hand.
+        (
+            &[
+                "--game",
+                "nine-ball",
+                "--computer",
+                "--seed",
+                "1",
+                "--script",
+                "shoot 90 0.6; continue",
+            ],
+            "Player 2 (computer)",
+        ),
+    ];
+    states
+        .iter()
+        .map(|(args, seen)| (args.iter().map(|a| a.to_string()).collect(), *seen))
+        .collect()
+}
+
 /// Every text of the UI fits (item 5 of issue 15), read from egui's own layout by
 /// `--check-layout`: none elided, none cut at the side of its panel or window, none off the
-/// screen, no HUD line below the HUD's strip (issue 48); at 1280x720 and 1920x1080, in free
-/// play with every panel section open, on the stress table, in a match (9-ball, 8-ball and
-/// snooker), in a drill (its window), in a replay (the timeline strip) and after a recording
-/// failed to open (the error). And the HUD's buttons keep their places in all of them (issue
-/// 28, item 1: a click aimed at Hint opened the New game dialog when the buttons moved).
+/// screen, no HUD line below the HUD's strip (issue 48); at 1280x720 and 1920x1080, in every
+/// state of [`layout_states`]: free play with every panel section open, the stress table, a
+/// match of each game, a drill, a replay, a recording that failed to open, a scratch, a foul
+/// in each game, an 8-ball call, a snooker nomination and free ball, the computer's turn. And
+/// the HUD's buttons keep their places in all of them (issue 28, item 1: a click aimed at
+/// Hint opened the New game dialog when the buttons moved).
 #[test]
 fn every_text_fits_at_both_sizes() {
     if !can_render() {
@@ -203,33 +316,18 @@ fn every_text_fits_at_both_sizes() {
     }
     let recording = recorded_break();
     let recording = recording.to_string_lossy().into_owned();
-    // A file that cannot be opened: its error, with a long path, shows in the panel.
+    // A file that cannot be opened: its error, with a long path, shows in a window.
     let missing = env::temp_dir()
         .join("a-folder-with-a-long-name-for-recordings")
         .join("2026-12-01_12-00-00.000_15-ball-that-does-not-exist.json");
     let missing = missing.to_string_lossy().into_owned();
-    let states: [&[&str]; 8] = [
-        &["--open-sections"],
-        // The stress table's lines in the HUD (issue 48: the HUD grows to hold them).
-        &["--stress", "200"],
-        // 8-ball's groups and call lines.
-        &["--game", "eight-ball"],
-        // A drill in session (its window, the Position section greyed) with every section
-        // open (issue 47).
-        &["--drill", "08-run-out-789", "--open-sections"],
-        &["--game", "nine-ball"],
-        // Snooker's longer HUD lines (frames, score, break, points remaining).
-        &["--game", "snooker"],
-        &["replay", &recording],
-        &["replay", &missing],
-    ];
     let mut failures = Vec::new();
     for size in [(1280, 720), (1920, 1080)] {
         let mut first_places: Option<Vec<String>> = None;
-        for state in states {
+        for (state, seen) in layout_states(&recording, &missing) {
             let report = temp_file("layout.txt");
             let shot = temp_file("layout.png");
-            let mut args = state.to_vec();
+            let mut args: Vec<&str> = state.iter().map(String::as_str).collect();
             let (report_arg, shot_arg) = (
                 report.to_string_lossy().into_owned(),
                 shot.to_string_lossy().into_owned(),
@@ -240,7 +338,6 @@ fn every_text_fits_at_both_sizes() {
             let text = std::fs::read_to_string(&report).expect("the layout report is written");
             let _ = std::fs::remove_file(&report);
             let _ = std::fs::remove_file(&shot);
-            eprintln!("{size:?} {state:?}: {text}");
             let checked: usize = text
                 .lines()
                 .next()
@@ -248,10 +345,25 @@ fn every_text_fits_at_both_sizes() {
                 .and_then(|n| n.parse().ok())
                 .expect("the report starts with a count");
             assert!(checked > 40, "too few texts seen: {text}");
-            let (places, problems): (Vec<&str>, Vec<&str>) =
-                text.lines().skip(1).partition(|l| l.starts_with("place: "));
-            failures.extend(problems.iter().map(|l| format!("{size:?} {state:?}: {l}")));
-            let places: Vec<String> = places.iter().map(|l| l.to_string()).collect();
+            let mut places = Vec::new();
+            let mut texts = Vec::new();
+            for line in text.lines().skip(1) {
+                if line.starts_with("place: ") {
+                    places.push(line.to_owned());
+                } else if let Some(words) = line.strip_prefix("text: ") {
+                    texts.push(words);
+                } else {
+                    eprintln!("{size:?} {state:?}: {line}");
+                    failures.push(format!("{size:?} {state:?}: {line}"));
+                }
+            }
+            // The state asked for is the state checked.
+            assert!(
+                texts.iter().any(|t| t.contains(seen)),
+                "{size:?} {state:?}: no text with {seen:?} in:\n{}",
+                texts.join("\n")
+            );
+            eprintln!("{size:?} {state:?}: {checked} texts, {seen:?} seen");
             assert_eq!(places.len(), 5, "the HUD's five buttons: {places:?}");
             match &first_places {
                 None => first_places = Some(places),

@@ -6,3 +6,4 @@ pub mod computer;
 pub mod cue;
 pub mod game;
 pub mod key_repeat;
+pub mod script;

@@ -108,11 +108,14 @@ pub fn hud(
             ui.vertical(|ui| {
                 ui.set_width(rest.max(40.0));
                 let dismiss = !state.report.notes.is_empty();
-                let c = column(ui, "hud-solver", rest, height - 20.0, &solver);
+                // Room for the dismiss button only when it is shown: reserved always, it
+                // cut the last line of a scratch note that the height below said fitted.
+                let button = if dismiss { 20.0 } else { 0.0 };
+                let c = column(ui, "hud-solver", rest, height - button, &solver);
                 if dismiss && ui.small_button("dismiss").clicked() {
                     state.report.notes.clear();
                 }
-                needed = above + a.max(b).max(c + if dismiss { 20.0 } else { 0.0 });
+                needed = above + a.max(b).max(c + button);
             });
         });
     });

@@ -2,7 +2,8 @@
 //! render test): every text drawn must be whole, on screen and not cut by its clip rectangle
 //! at the sides. Problems (or none) are written to the file after every egui pass, then the
 //! place of each HUD button's label (`place: LABEL at X,Y`), which must not move between
-//! states (issue 28, item 1).
+//! states (issue 28, item 1), then every text drawn (`text: …`), by which the render test
+//! knows the state it checked is the one it asked for.
 
 use std::path::PathBuf;
 
@@ -70,6 +71,8 @@ fn check_text(
     let mut texts = 0;
     let mut problems = Vec::new();
     let mut places = Vec::new();
+    let mut words_seen = Vec::new();
+    #[allow(clippy::too_many_arguments)]
     fn visit(
         shape: &Shape,
         clip: Rect,
@@ -77,15 +80,17 @@ fn check_text(
         texts: &mut usize,
         problems: &mut Vec<String>,
         places: &mut Vec<String>,
+        words_seen: &mut Vec<String>,
     ) {
         match shape {
             Shape::Vec(shapes) => {
                 for shape in shapes {
-                    visit(shape, clip, screen, texts, problems, places);
+                    visit(shape, clip, screen, texts, problems, places, words_seen);
                 }
             }
             Shape::Text(text) if text.angle == 0.0 && !text.galley.is_empty() => {
                 *texts += 1;
+                words_seen.push(format!("text: {}", text.galley.text().replace('\n', " ")));
                 let rect = text.galley.rect.translate(text.pos.to_vec2());
                 let words = text.galley.text();
                 if let Some(problem) = text_problem(words, rect, clip, text.galley.elided, screen) {
@@ -109,6 +114,7 @@ fn check_text(
             &mut texts,
             &mut problems,
             &mut places,
+            &mut words_seen,
         );
     }
     // A HUD line hidden below the strip is cut too, though nothing is drawn of it (issue 48).
@@ -122,7 +128,7 @@ fn check_text(
     }
     let mut out = format!("texts checked: {texts}\n");
     places.sort();
-    for line in problems.into_iter().chain(places) {
+    for line in problems.into_iter().chain(places).chain(words_seen) {
         out.push_str(&line);
         out.push('\n');
     }

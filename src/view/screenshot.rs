@@ -25,6 +25,11 @@ pub struct ScreenshotPlugin {
     pub settle: Duration,
 }
 
+/// While set, the capture waits: something asked at launch is still under way (a launch
+/// script's moves, `crate::play::script`).
+#[derive(Resource, Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct CaptureHeld(pub bool);
+
 /// Frames drawn with every pipeline ready before the capture: the first such frame can still
 /// lack egui's new glyphs (one more frame after a texture change, [`crate::ui`]), and the swap
 /// chain may lag a frame.
@@ -37,6 +42,7 @@ impl Plugin for ScreenshotPlugin {
     fn build(&self, app: &mut App) {
         // Keep updating even though nothing moves and the window may be unfocused.
         app.insert_resource(WinitSettings::continuous())
+            .init_resource::<CaptureHeld>()
             .insert_resource(Capture {
                 path: self.path.clone(),
                 settle: self.settle,
@@ -75,6 +81,7 @@ fn capture_when_drawn(
     time: Res<Time<Real>>,
     progress: Res<PipelineProgress>,
     mut capture: ResMut<Capture>,
+    held: Res<CaptureHeld>,
     mut exit: MessageWriter<AppExit>,
 ) {
     let CapturePhase::WaitingForPipelines {
@@ -88,7 +95,7 @@ fn capture_when_drawn(
     let now = time.elapsed();
     let (total, waiting) = progress.counts();
     // A new pipeline appearing restarts the wait: it may belong to something not yet drawn.
-    let ready = total > 0 && waiting == 0 && total == pipelines;
+    let ready = total > 0 && waiting == 0 && total == pipelines && !held.0;
     let (ready_since, ready_frames) = if ready {
         (ready_since.or(Some(now)), ready_frames + 1)
     } else {
@@ -131,9 +138,14 @@ fn capture_when_drawn(
         return;
     }
     if now > TIMEOUT {
-        error!(
-            "render pipelines still compiling after {TIMEOUT:?} ({waiting} of {total}): giving up"
-        );
+        if held.0 {
+            error!("the launch script still waits after {TIMEOUT:?}: giving up");
+        } else {
+            error!(
+                "render pipelines still compiling after {TIMEOUT:?} ({waiting} of {total}): \
+                 giving up"
+            );
+        }
         exit.write(AppExit::from_code(3));
         return;
     }

@@ -336,6 +336,27 @@ pub fn what_happened(summary: &ShotSummary, call: Call) -> String {
     parts.join("; ")
 }
 
+/// A verdict's reason followed by what the shot did ([`what_happened`]), without saying
+/// twice what the reason says: "foul: the cue ball hit no ball" needs no "no ball hit", and
+/// "no ball pocketed and 0 balls to a rail" no "nothing pocketed" (issue 48, played: "foul:
+/// the cue ball hit no ball: no ball hit; nothing pocketed").
+pub fn verdict_words(reason: &str, what: &str) -> String {
+    let no_hit = reason.contains("hit no ball") || reason.contains("no ball hit");
+    // A cue ball that hit nothing pocketed nothing (a scratch would be named, not this).
+    let no_hit_anywhere = no_hit || what.split("; ").any(|p| p == "no ball hit");
+    let said = |part: &str| match part {
+        "no ball hit" => no_hit,
+        "nothing pocketed" => reason.contains("no ball pocketed") || no_hit_anywhere,
+        _ => false,
+    };
+    let rest: Vec<&str> = what.split("; ").filter(|p| !said(p)).collect();
+    if rest.is_empty() {
+        reason.to_owned()
+    } else {
+        format!("{reason}: {}", rest.join("; "))
+    }
+}
+
 /// Why a shot or a choice was refused (nothing changes).
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum RuleError {

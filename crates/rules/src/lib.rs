@@ -38,7 +38,7 @@ pub use drill::{Attempt, Drill, DrillError, DrillScore, DrillShot, Goal, Zone};
 pub use foul::{BallOn, Foul, Group, WinReason, pocket_name};
 pub use game::{
     Call, CallRule, Choice, CueBall, Game, GameState, NextShot, Outcome, RuleError, Seat, Verdict,
-    what_happened,
+    verdict_words, what_happened,
 };
 pub use hand::{PlacementError, check_placement};
 pub use log::{GameLog, LogError, LoggedShot, RulesLog};

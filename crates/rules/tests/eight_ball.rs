@@ -519,3 +519,32 @@ fn what_happened_names_the_balls_the_pockets_and_the_call() {
         "no ball hit; nothing pocketed"
     );
 }
+
+/// Issue 48: the verdict does not say twice what its reason says.
+#[test]
+fn a_verdict_does_not_repeat_its_reason() {
+    use billiards_rules::verdict_words;
+    let nothing = "no ball hit; nothing pocketed";
+    assert_eq!(
+        verdict_words("foul: the cue ball hit no ball", nothing),
+        "foul: the cue ball hit no ball"
+    );
+    assert_eq!(
+        verdict_words(
+            "foul: illegal break: no ball pocketed and 0 balls to a rail, 4 needed",
+            nothing
+        ),
+        "foul: illegal break: no ball pocketed and 0 balls to a rail, 4 needed: no ball hit"
+    );
+    assert_eq!(
+        verdict_words("legal", "the 7 in the right side pocket"),
+        "legal: the 7 in the right side pocket"
+    );
+    assert_eq!(
+        verdict_words(
+            "foul: the 5 was hit first",
+            "the 7 missed the called right side pocket; nothing pocketed"
+        ),
+        "foul: the 5 was hit first: the 7 missed the called right side pocket; nothing pocketed"
+    );
+}

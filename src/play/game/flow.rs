@@ -352,11 +352,11 @@ pub(super) fn start_game_at_launch(
 ) {
     if let Some(start) = start {
         new_games.write(NewGameRequested {
-            game: start.0,
+            game: start.game,
             players: ["Player 1".to_owned(), "Player 2".to_owned()],
             race_to: 3,
-            seed: clock_seed(),
-            computer: [None, None],
+            seed: start.seed.unwrap_or_else(clock_seed),
+            computer: [None, start.computer],
             setup: *setup,
         });
     }

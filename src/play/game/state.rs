@@ -157,7 +157,7 @@ impl GameInPlay {
     /// the cue ball was pocketed; the 3 in the foot-left corner, the cue ball in ...".
     pub fn verdict_text(&self, verdict: &Verdict) -> String {
         match &self.last_what {
-            Some(what) => format!("{}: {what}", verdict.reason()),
+            Some(what) => billiards_rules::verdict_words(&verdict.reason(), what),
             None => verdict.reason(),
         }
     }
@@ -357,7 +357,14 @@ fn choices_text(choices: &[Choice]) -> String {
 
 /// The game to start at launch (`--game`), two players, race to 3.
 #[derive(Resource, Debug, Clone, Copy, PartialEq, Eq)]
-pub struct StartGame(pub GameChoice);
+pub struct StartGame {
+    /// The game.
+    pub game: GameChoice,
+    /// The second seat's computer level (`--computer`); `None`: two humans.
+    pub computer: Option<Level>,
+    /// The first rack's seed (`--seed`); `None`: from the clock.
+    pub seed: Option<u64>,
+}
 
 /// Whether the new-game dialog is open.
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
