@@ -260,8 +260,10 @@ fn play_computer_turn(
     if *turn.get() == Turn::Verdict && !seat.choosing {
         // A human at the table reads the verdict (a foul of theirs, ball in hand) and says
         // when: it stays until they continue. Between two computers it goes on after a moment.
+        // The match's own line already reads "NAME to shoot next: continue" (issue 48, played:
+        // a second line said the same).
         if seat.has_human {
-            computer.doing = Some(format!("{} waits for you to continue", seat.name));
+            computer.doing = None;
             return;
         }
         let since = match &computer.turn {

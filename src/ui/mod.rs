@@ -90,6 +90,12 @@ pub fn plugin(app: &mut App) {
         )
         .add_systems(
             PostUpdate,
+            redraw_after_layout_change
+                .after(EguiPostUpdateSet::EndPass)
+                .before(EguiPostUpdateSet::PostProcessOutput),
+        )
+        .add_systems(
+            PostUpdate,
             record_repaint_causes
                 .run_if(resource_exists::<RepaintCauses>)
                 .after(EguiPostUpdateSet::EndPass),
@@ -282,10 +288,6 @@ fn split_one_frame_clicks(
             .unwrap_or_else(|| now.clone());
         let arrivals = tag_arrivals(std::mem::take(&mut input.events), &before, &now);
         queue.held.extend(arrivals);
-        // A pass that moved something is followed by one that did not, so that an idle
-        // window's last two passes agree and a later click is not taken for one on a
-        // moving layout.
-        waiting |= !same_targets(&before, &now);
         let (events, dropped) = take_for_frame(queue, &now);
         if dropped > 0 {
             debug!("{dropped} click(s) dropped: the layout under them changed");
@@ -295,6 +297,29 @@ fn split_one_frame_clicks(
     }
     queues.0.retain(|(e, _)| inputs.contains(*e));
     if waiting {
+        redraw.write(RequestRedraw);
+    }
+}
+
+/// A pass that moved something the pointer can act on is followed by one more frame: the
+/// idle window's last two passes then agree, and a click long after the change is not taken
+/// for one made while the layout moved ([`tag_arrivals`]; played: the New game button did
+/// nothing after a drop-down had been closed with Escape, no frame having followed).
+fn redraw_after_layout_change(
+    mut contexts: Query<(Entity, &mut bevy_egui::EguiContext)>,
+    mut last: Local<Vec<(Entity, Vec<egui::Rect>)>>,
+    mut redraw: MessageWriter<RequestRedraw>,
+) {
+    let mut changed = false;
+    let mut next = Vec::new();
+    for (entity, mut context) in &mut contexts {
+        let rects = context.get_mut().interactive_rects_last_pass();
+        let before = last.iter().find(|(e, _)| *e == entity).map(|(_, r)| r);
+        changed |= before.is_none_or(|before| !same_targets(before, &rects));
+        next.push((entity, rects));
+    }
+    *last = next;
+    if changed {
         redraw.write(RequestRedraw);
     }
 }
