@@ -212,6 +212,10 @@ pub struct Impact {
 /// a frozen 15-ball break takes about 60 steps.
 pub const TOLERANCE: f64 = 3e-7;
 
+/// `sqrt(2/5)`: a spin error `dw` weighs as a velocity error `sqrt(2/5) R dw`, the speed
+/// of the same kinetic energy (`I = 2/5 m R^2`).
+const SPIN_ERROR: f64 = 0.632_455_532_033_675_9;
+
 /// Largest number of accepted steps before an impact is cut short (it is then left as it
 /// stands: momentum kept, energy not raised; the event loop meets any pair still approaching).
 pub const MAX_STEPS: usize = 200_000;
@@ -478,8 +482,8 @@ impl Chain<'_> {
         let worst = |r: std::ops::Range<usize>| r.map(error).fold(0.0f64, f64::max);
         let (eu, mut ev) = (worst(0..2 * self.n), worst(2 * self.n..m));
         if let Some(t) = &self.tangential {
-            // A spin's error as the speed it gives the ball's surface, R w.
-            ev = ev.max(t.radius * worst(m..7 * self.n));
+            // A spin's error as the speed of the same kinetic energy, sqrt(2/5) R w.
+            ev = ev.max(SPIN_ERROR * t.radius * worst(m..7 * self.n));
         }
         (h / TOLERANCE) * (eu / scales.0).max(ev / scales.1)
     }

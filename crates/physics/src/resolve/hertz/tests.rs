@@ -129,9 +129,9 @@ fn friction(mu: f64) -> Option<(crate::resolve::PairFriction, f64)> {
 
 /// Two balls alone in an impact with friction against the exact impulse law of an isolated
 /// pair ([`crate::resolve::frictional_spheres`]): a stun cut at 30 degrees (the contact
-/// slides throughout: the two laws agree to the integrator's tolerance) and at 3 degrees
-/// (the slip stops during the contact: the regularised law creeps at about `v_eps`, and the
-/// throw impulse differs by under 2 %), with side spin; with follow at 15 degrees within
+/// slides throughout, and the regularised law gives `1 - v_eps^2 / (2 s^2)` of Coulomb's
+/// force: the throw within 0.5 %), at 3 degrees and at 30 degrees with side spin (the slip
+/// stops during the contact: within 1e-4); with follow at 15 degrees within
 /// 6 %: there the slip has a vertical part, which the integrated law stops at its own rate
 /// (5 F_z / m, the cloth taking the vertical force) while the pair law stops the whole slip
 /// along its first direction at the horizontal rate 7 F / m. The normal impulse within the
@@ -142,8 +142,8 @@ fn a_lone_pair_with_friction_throws_as_the_exact_impulse_law() {
     let h = hertz(0.95);
     let law = crate::resolve::PairFriction::constant(0.05);
     for (deg, spin, tol) in [
-        (30.0f64, Vec3::ZERO, 1e-4),
-        (3.0, Vec3::ZERO, 2e-2),
+        (30.0f64, Vec3::ZERO, 5e-3),
+        (3.0, Vec3::ZERO, 1e-4),
         (30.0, Vec3::new(0.0, 0.0, 60.0), 1e-4),
         (15.0, Vec3::new(0.0, 3.0 / R, 0.0), 6e-2),
     ] {
