@@ -19,6 +19,10 @@
 //! along the pairs' fixed normals, from their gaps, so gaps that close within the contact make
 //! the cluster respond as one body, and the velocities it returns leave every pair open and
 //! not approaching along those normals.
+//!
+//! Each contact's friction on the slip of its contact points is a force in the same
+//! equations ([`Tangential`], a regularised Coulomb law), so spins and throw come out of the
+//! one integration, every contact's forces from one state ([`impact_with_friction`]).
 
 use crate::math::{Vec2, Vec3};
 use crate::params::{BallSpec, HertzContact};
