@@ -159,7 +159,10 @@ fn main() {
         c.events as f64 / report.seconds
     );
     println!("worst overlap       {:e} m", c.worst_overlap);
-    println!("worst energy gain   {:e} (relative)", c.worst_energy_gain);
+    println!(
+        "worst energy gain   {:e} (relative; seed {})",
+        c.worst_energy_gain, report.worst_energy_gain_seed
+    );
     println!("worst momentum err  {:e} (relative)", c.worst_momentum);
     println!("longest burst       {} events within 1 ns", c.longest_burst);
     println!(

@@ -436,6 +436,8 @@ pub struct SoakReport {
     pub most_events: usize,
     /// Seed of the shot with the most events.
     pub most_events_seed: u64,
+    /// Seed of the scene with the largest relative energy gain (`check.worst_energy_gain`).
+    pub worst_energy_gain_seed: u64,
     /// Every failing scene, by seed.
     pub failures: Vec<Failure>,
     /// Wall-clock time, seconds.
@@ -474,6 +476,9 @@ pub fn soak(cfg: &SoakConfig, done: Option<&AtomicU64>) -> SoakReport {
                         match run(seed, cfg.tolerances) {
                             Ok(s) => {
                                 local.shots += s.shots;
+                                if s.check.worst_energy_gain > local.check.worst_energy_gain {
+                                    local.worst_energy_gain_seed = seed;
+                                }
                                 local.check.merge(&s.check);
                                 if s.most_events > local.most_events {
                                     local.most_events = s.most_events;
@@ -490,6 +495,9 @@ pub fn soak(cfg: &SoakConfig, done: Option<&AtomicU64>) -> SoakReport {
                 let mut r = report.lock().expect("no worker panics while holding it");
                 r.scenes += local.scenes;
                 r.shots += local.shots;
+                if local.check.worst_energy_gain > r.check.worst_energy_gain {
+                    r.worst_energy_gain_seed = local.worst_energy_gain_seed;
+                }
                 r.check.merge(&local.check);
                 if local.most_events > r.most_events {
                     r.most_events = local.most_events;
