@@ -5,13 +5,16 @@
 //! ```sh
 //! cargo run --release -p billiards-physics --example soak -- --scenes 100000
 //! cargo run --release -p billiards-physics --example soak -- --seed 1234   # replay one
+//! cargo run --release -p billiards-physics --example soak -- --clusters --scenes 100000
 //! ```
 //!
 //! Options: `--scenes N` (default 10000), `--first-seed S` (default 0), `--threads T`
-//! (default: all cores), `--seed S` (run only scene S and print it in full).
+//! (default: all cores), `--seed S` (run only scene S and print it in full), `--clusters`
+//! (frozen and near-frozen racks broken at break speeds and at a crawl instead:
+//! [`billiards_physics::soak::cluster_scenario`]; with `--seed`, replays that scene).
 
 use billiards_physics::check::Tolerances;
-use billiards_physics::soak::{SoakConfig, run_scenario_traced, scenario, soak};
+use billiards_physics::soak::{SoakConfig, cluster_scenario, run_scenario_traced, scenario, soak};
 use std::io::Write;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::{Duration, Instant};
@@ -28,12 +31,18 @@ fn arg(args: &[String], name: &str) -> Option<u64> {
 }
 
 fn usage(msg: &str) -> ! {
-    eprintln!("{msg}\nusage: soak [--scenes N] [--first-seed S] [--threads T] | --seed S");
+    eprintln!(
+        "{msg}\nusage: soak [--clusters] [--scenes N] [--first-seed S] [--threads T] | --seed S"
+    );
     std::process::exit(2)
 }
 
-fn replay(seed: u64) -> ! {
-    let s = scenario(seed);
+fn replay(seed: u64, clusters: bool) -> ! {
+    let s = if clusters {
+        cluster_scenario(seed)
+    } else {
+        scenario(seed)
+    };
     println!("seed {seed}: {} scene, model {}", s.kind, s.model);
     println!("table {:?}", s.table);
     println!("params {:?}", s.params);
@@ -95,19 +104,28 @@ fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     for a in &args {
         if a.starts_with("--")
-            && !["--scenes", "--first-seed", "--threads", "--seed"].contains(&a.as_str())
+            && ![
+                "--scenes",
+                "--first-seed",
+                "--threads",
+                "--seed",
+                "--clusters",
+            ]
+            .contains(&a.as_str())
         {
             usage(&format!("unknown option {a}"));
         }
     }
+    let clusters = args.iter().any(|a| a == "--clusters");
     if let Some(seed) = arg(&args, "--seed") {
-        replay(seed);
+        replay(seed, clusters);
     }
     let cfg = SoakConfig {
         scenes: arg(&args, "--scenes").unwrap_or(10_000),
         first_seed: arg(&args, "--first-seed").unwrap_or(0),
         threads: arg(&args, "--threads").unwrap_or(0) as usize,
         tolerances: Tolerances::default(),
+        clusters,
     };
     let done = AtomicU64::new(0);
     let finished = AtomicBool::new(false);
@@ -141,7 +159,10 @@ fn main() {
         c.events as f64 / report.seconds
     );
     println!("worst overlap       {:e} m", c.worst_overlap);
-    println!("worst energy gain   {:e} (relative)", c.worst_energy_gain);
+    println!(
+        "worst energy gain   {:e} (relative; seed {})",
+        c.worst_energy_gain, report.worst_energy_gain_seed
+    );
     println!("worst momentum err  {:e} (relative)", c.worst_momentum);
     println!("longest burst       {} events within 1 ns", c.longest_burst);
     println!(

@@ -18,6 +18,9 @@ use rand_chacha::ChaCha8Rng;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicU64, Ordering};
 
+mod clusters;
+pub use clusters::cluster_scenario;
+
 /// Every model configuration the stability invariants are checked for, by name. Each is run
 /// with [`crate::Prediction::Exact`] (the paper's linear prediction is a comparison mode, not
 /// subject to them). Adding a model here puts it under every stress test and the soak.
@@ -375,7 +378,16 @@ pub struct Failure {
 
 /// Runs scene `seed`, turning a violation or a panic into a [`Failure`].
 pub fn run_seed(seed: u64, tol: Tolerances) -> Result<SceneStats, Failure> {
-    let s = scenario(seed);
+    run_drawn(scenario(seed), tol)
+}
+
+/// Runs cluster scene `seed` ([`cluster_scenario`]), as [`run_seed`].
+pub fn run_cluster_seed(seed: u64, tol: Tolerances) -> Result<SceneStats, Failure> {
+    run_drawn(cluster_scenario(seed), tol)
+}
+
+fn run_drawn(s: Scenario, tol: Tolerances) -> Result<SceneStats, Failure> {
+    let seed = s.seed;
     let fail = |what: String| Failure {
         seed,
         model: s.model,
@@ -407,6 +419,8 @@ pub struct SoakConfig {
     pub threads: usize,
     /// Tolerances of the checks.
     pub tolerances: Tolerances,
+    /// Run the cluster scenes ([`cluster_scenario`]) instead of [`scenario`]'s.
+    pub clusters: bool,
 }
 
 /// A soak's results.
@@ -422,6 +436,8 @@ pub struct SoakReport {
     pub most_events: usize,
     /// Seed of the shot with the most events.
     pub most_events_seed: u64,
+    /// Seed of the scene with the largest relative energy gain (`check.worst_energy_gain`).
+    pub worst_energy_gain_seed: u64,
     /// Every failing scene, by seed.
     pub failures: Vec<Failure>,
     /// Wall-clock time, seconds.
@@ -452,9 +468,17 @@ pub fn soak(cfg: &SoakConfig, done: Option<&AtomicU64>) -> SoakReport {
                     for i in from..to {
                         let seed = cfg.first_seed.wrapping_add(i);
                         local.scenes += 1;
-                        match run_seed(seed, cfg.tolerances) {
+                        let run = if cfg.clusters {
+                            run_cluster_seed
+                        } else {
+                            run_seed
+                        };
+                        match run(seed, cfg.tolerances) {
                             Ok(s) => {
                                 local.shots += s.shots;
+                                if s.check.worst_energy_gain > local.check.worst_energy_gain {
+                                    local.worst_energy_gain_seed = seed;
+                                }
                                 local.check.merge(&s.check);
                                 if s.most_events > local.most_events {
                                     local.most_events = s.most_events;
@@ -471,6 +495,9 @@ pub fn soak(cfg: &SoakConfig, done: Option<&AtomicU64>) -> SoakReport {
                 let mut r = report.lock().expect("no worker panics while holding it");
                 r.scenes += local.scenes;
                 r.shots += local.shots;
+                if local.check.worst_energy_gain > r.check.worst_energy_gain {
+                    r.worst_energy_gain_seed = local.worst_energy_gain_seed;
+                }
                 r.check.merge(&local.check);
                 if local.most_events > r.most_events {
                     r.most_events = local.most_events;

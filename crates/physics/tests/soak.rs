@@ -28,6 +28,7 @@ fn quick_soak_breaks_no_invariant() {
         first_seed: env("SOAK_FIRST_SEED", 0),
         threads: 0,
         tolerances: Tolerances::default(),
+        clusters: false,
     };
     let r = soak(&cfg, None);
     let c = &r.check;
@@ -62,6 +63,49 @@ fn quick_soak_breaks_no_invariant() {
         list.is_empty(),
         "{} failing scenes (replay each with `cargo run --release -p billiards-physics \
          --example soak -- --seed N`):\n{}",
+        list.len(),
+        list.join("\n")
+    );
+}
+
+/// Frozen and near-frozen racks broken at break speeds and at a crawl, some spinning
+/// ([`billiards_physics::soak::cluster_scenario`]): `SOAK_CLUSTER_SCENES` (default 300) scenes
+/// without a violation, and cluster impacts among them.
+#[test]
+fn quick_cluster_soak_breaks_no_invariant() {
+    let scenes = env("SOAK_CLUSTER_SCENES", 300);
+    assert!(scenes > 0, "SOAK_CLUSTER_SCENES=0 would check nothing");
+    let cfg = SoakConfig {
+        scenes,
+        first_seed: 0,
+        threads: 0,
+        tolerances: Tolerances::default(),
+        clusters: true,
+    };
+    let r = soak(&cfg, None);
+    assert_eq!(r.scenes, cfg.scenes);
+    assert!(r.check.events > 0);
+    // The scenes are what they say: most of their first shots make cluster impacts.
+    let with_clusters = (0..20)
+        .filter(|&seed| {
+            let s = billiards_physics::soak::cluster_scenario(seed);
+            let mut sim = billiards_physics::Simulation::new(s.table, s.params, &s.balls)
+                .expect("a valid scene");
+            sim.strike(0, s.shots[0]).expect("a valid shot");
+            sim.run_to_rest().expect("it comes to rest");
+            sim.cluster_impacts() > 0
+        })
+        .count();
+    assert!(with_clusters >= 14, "{with_clusters} of 20 first shots");
+    let list: Vec<String> = r
+        .failures
+        .iter()
+        .map(|f| format!("seed {} ({} {}): {}", f.seed, f.kind, f.model, f.what))
+        .collect();
+    assert!(
+        list.is_empty(),
+        "{} failing cluster scenes (replay each with `cargo run --release -p \
+         billiards-physics --example soak -- --clusters --seed N`):\n{}",
         list.len(),
         list.join("\n")
     );

@@ -470,13 +470,18 @@ fn a_scratch_respots_the_cue_ball_by_the_rules_crate() {
 fn simulate_a_nine_ball_game_prints_verdicts_and_verify_rejudges_them() {
     let dir = temp("nine");
     let file = dir.join("rack.json");
+    // Rack seed 1: a break at 9 m/s that pockets nothing (seed 4 did until the cluster
+    // impact's friction moved inside the impact, issue 49: it now pockets the 9).
     let (ok, stdout, err) = run(bin()
-        .args(["simulate", "--game", "nine-ball", "--rack-seed", "4"])
+        .args(["simulate", "--game", "nine-ball", "--rack-seed", "1"])
         .args(["--shot", "0:9", "--shot", "10:2", "--call", "2:push-out"])
         .args(["--choice", "pass", "--shot", "45:2", "--out"])
         .arg(&file));
     assert!(ok, "{err}");
-    assert!(stdout.contains("shot 1: A (break): legal; B to shoot (push out allowed)"));
+    assert!(
+        stdout.contains("shot 1: A (break): legal; B to shoot (push out allowed)"),
+        "{stdout}"
+    );
     assert!(
         stdout.contains("shot 2: B (push out): legal push out"),
         "{stdout}"

@@ -1,9 +1,17 @@
 //! The break changes continuously with the rack's gaps (issue 23): 9-ball on a 9-ft table,
 //! the default break (cue ball in the break box, 10–12 m/s, full on the 1), the same 300
-//! seeded breaks of a frozen rack and of racks with gaps of up to 2e-9 m and 0.1 mm. With
+//! seeded breaks of a frozen rack and of racks with gaps of up to 2e-9 m and 0.02 mm. With
 //! cluster impacts the shares of breaks that pocket a ball have overlapping 95 % intervals
 //! (Wilson); resolved pair by pair they do not (73 % frozen, 46 % at 0.1 mm in
 //! `break_stats`).
+//!
+//! Since the cluster impact integrates the contacts' friction with their normal forces
+//! (issue 49) the break is continuous at zero gap but not flat beyond it: gaps of 20 to 100
+//! micrometres (a slack of 1e-5 to 5e-5 m), a tenth of a break contact's compression,
+//! change which contacts are loaded while others slip, and the rate falls from 64–67 % to
+//! 44–50 % (`break_stats --cushion han --gaps-mm 0,0.01,0.02,0.05,0.1`, 1,000 breaks a row,
+//! the same at every regularisation speed from 3e-3 to 3e-2 of the approach). Before, when
+//! the friction was applied pair by pair after the normal impulses, it was flat to 0.05 mm.
 
 use billiards_physics::{Model, Params, Shot, Simulation, SpinModel, Table, Vec2};
 use billiards_rules::racks::nine_ball_spaced;
@@ -58,7 +66,7 @@ fn overlap(a: usize, b: usize) -> bool {
 
 #[test]
 fn frozen_and_gapped_racks_pocket_a_ball_as_often_within_sampling_noise() {
-    let made: Vec<usize> = [0.0, 1e-9, 0.05e-3]
+    let made: Vec<usize> = [0.0, 1e-9, 1e-5]
         .iter()
         .map(|&g| breaks_with_a_ball(g, true))
         .collect();

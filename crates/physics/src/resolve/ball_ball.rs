@@ -81,47 +81,6 @@ pub fn frictional_spheres(
     ))
 }
 
-/// The tangential part of [`frictional_spheres`] for a normal impulse `jn` per unit mass
-/// (m/s) already applied along `n` (unit, from `a` to `b`): a friction impulse opposing the
-/// slip of the contact points, at most `mu jn` and never more than stops the slip (so it
-/// keeps momentum and never adds energy). A cluster impact applies it to each pair with the
-/// normal impulse that pair carried.
-pub fn friction_impulse(
-    a: &BallState,
-    b: &BallState,
-    n: Vec2,
-    jn: f64,
-    mu: super::PairFriction,
-    radius: f64,
-) -> (BallState, BallState) {
-    let n3 = n.extend();
-    let (wa, wb) = (a.angular_velocity, b.angular_velocity);
-    let ca = a.velocity.extend() + wa.cross(n3 * radius);
-    let cb = b.velocity.extend() + wb.cross(n3 * -radius);
-    let rel = ca - cb;
-    let slip = rel - n3 * rel.dot(n3);
-    let slip_speed = slip.length();
-    let mu = mu.at(slip_speed);
-    if !(slip_speed > 0.0 && mu > 0.0 && jn > 0.0) {
-        return (*a, *b);
-    }
-    let jt = (mu * jn).min(slip_speed / 7.0);
-    let j = slip * (-jt / slip_speed);
-    let dw = n3.cross(j) * (2.5 / radius);
-    (
-        BallState {
-            velocity: a.velocity + j.xy(),
-            angular_velocity: wa + dw,
-            ..*a
-        },
-        BallState {
-            velocity: b.velocity - j.xy(),
-            angular_velocity: wb + dw,
-            ..*b
-        },
-    )
-}
-
 /// Post-contact velocities of two equal-mass balls in a resting contact along the unit normal
 /// `n` (from `a` towards `b`): touching, approaching slowly or pressed together by a relative
 /// normal acceleration `pressing` (m/s^2, `>= 0`).

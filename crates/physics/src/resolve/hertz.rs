@@ -19,9 +19,18 @@
 //! along the pairs' fixed normals, from their gaps, so gaps that close within the contact make
 //! the cluster respond as one body, and the velocities it returns leave every pair open and
 //! not approaching along those normals.
+//!
+//! Each contact's friction on the slip of its contact points is a force in the same
+//! equations ([`Tangential`], a regularised Coulomb law), so spins and throw come out of the
+//! one integration, every contact's forces from one state ([`impact_with_friction`]).
 
-use crate::math::Vec2;
+use crate::math::{Vec2, Vec3};
 use crate::params::{BallSpec, HertzContact};
+
+mod dopri;
+mod tangential;
+use dopri::{DP_A, DP_E, combine};
+pub use tangential::{SLIP_SCALE, Tangential};
 
 /// An elastic Hertz impact at approach speed `v` lasts `HERTZ_TIME * d_max / v`, `d_max` its
 /// largest compression (Landau & Lifshitz, section 9).
@@ -207,22 +216,53 @@ pub struct Impact {
 /// a frozen 15-ball break takes about 60 steps.
 pub const TOLERANCE: f64 = 3e-7;
 
+/// `sqrt(2/5)`: a spin error `dw` weighs as a velocity error `sqrt(2/5) R dw`, the speed
+/// of the same kinetic energy (`I = 2/5 m R^2`).
+const SPIN_ERROR: f64 = 0.632_455_532_033_675_9;
+
 /// Largest number of accepted steps before an impact is cut short (it is then left as it
 /// stands: momentum kept, energy not raised; the event loop meets any pair still approaching).
 pub const MAX_STEPS: usize = 200_000;
 
-/// Integrates one impact of a cluster: `velocities` (m/s, in the table plane) change by the
-/// Hertz forces of `edges` until every edge is open and no edge approaches. Cloth friction
-/// and spin are left out during the impact (a quarter of a millisecond). The integrator is
-/// Dormand–Prince 5(4) with step control to [`TOLERANCE`]; open stretches are crossed in one
-/// exact jump. Momentum is kept to rounding (the drift of thousands of steps is shared back
-/// out); if the integrator's error raised the kinetic energy, the velocities relative to the
-/// centre of mass are scaled down to the energy before, so it never rises.
+/// Integrates one impact of a cluster of smooth balls: `velocities` (m/s, in the table
+/// plane) change by the Hertz forces of `edges` alone ([`impact_with_friction`] without
+/// friction and with no spin).
 pub fn impact(hertz: &Hertz, velocities: &mut [Vec2], edges: &[Edge]) -> Impact {
+    let mut spins = vec![Vec3::ZERO; velocities.len()];
+    impact_with_friction(hertz, None, velocities, &mut spins, edges)
+}
+
+/// Integrates one impact of a cluster: `velocities` (m/s, in the table plane) and `spins`
+/// (rad/s) change by the Hertz forces of `edges` and, with `friction`, by the contacts'
+/// friction ([`Tangential`], its regularisation speed [`SLIP_SCALE`] times the fastest
+/// approach), until every edge is open and no edge approaches. Every force of a stage comes
+/// from that stage's one state, so the order of the balls and edges does not matter (to
+/// rounding). Cloth friction is left out during the impact (a quarter of a millisecond; see
+/// [`Tangential`]). The integrator is Dormand–Prince 5(4) with step control to
+/// [`TOLERANCE`]; open stretches are crossed in one exact jump. Momentum is kept to rounding
+/// (the drift of thousands of steps is shared back out); if the integrator's error raised the
+/// kinetic energy (rotational included), the velocities relative to the centre of mass and
+/// the spins are scaled down to the energy before, so it never rises.
+pub fn impact_with_friction(
+    hertz: &Hertz,
+    friction: Option<(crate::resolve::PairFriction, f64)>,
+    velocities: &mut [Vec2],
+    spins: &mut [Vec3],
+    edges: &[Edge],
+) -> Impact {
+    assert_eq!(velocities.len(), spins.len(), "one spin a ball");
+    let vmax = edges
+        .iter()
+        .map(|e| (velocities[e.a] - velocities[e.b]).dot(e.n))
+        .fold(0.0f64, f64::max);
+    let tangential = friction
+        .filter(|(f, _)| f.constant > 0.0 || f.law != crate::params::BallFriction::Constant)
+        .map(|(f, radius)| Tangential::new(f, radius, vmax));
     let chain = Chain {
         hertz,
         edges,
         n: velocities.len(),
+        tangential,
     };
     let (n, m) = (chain.n, edges.len());
     let mut out = Impact {
@@ -230,21 +270,22 @@ pub fn impact(hertz: &Hertz, velocities: &mut [Vec2], edges: &[Edge]) -> Impact 
         onset: vec![f64::INFINITY; m],
         ..Impact::default()
     };
-    let vmax = edges
-        .iter()
-        .map(|e| (velocities[e.a] - velocities[e.b]).dot(e.n))
-        .fold(0.0f64, f64::max);
     if vmax.is_nan() || vmax <= 0.0 {
         return out;
     }
     let scales = (hertz.max_compression(vmax), vmax);
     let tref = hertz.duration(vmax);
-    // State: displacements u (2n), velocities v (2n), impulses J (m).
-    let dim = 4 * n + m;
+    // State: displacements u (2n), velocities v (2n), spins w (3n), normal impulses J (m).
+    let dim = 7 * n + m;
     let mut y = vec![0.0; dim];
     for (i, v) in velocities.iter().enumerate() {
         y[2 * n + 2 * i] = v.x;
         y[2 * n + 2 * i + 1] = v.y;
+    }
+    for (i, w) in spins.iter().enumerate() {
+        y[4 * n + 3 * i] = w.x;
+        y[4 * n + 3 * i + 1] = w.y;
+        y[4 * n + 3 * i + 2] = w.z;
     }
     let mut k = vec![vec![0.0; dim]; 7];
     let mut tmp = vec![0.0; dim];
@@ -282,9 +323,9 @@ pub fn impact(hertz: &Hertz, velocities: &mut [Vec2], edges: &[Edge]) -> Impact 
         };
         h = (h * grow).min(tref / 8.0);
     }
-    out.impulse.copy_from_slice(&y[4 * n..]);
+    out.impulse.copy_from_slice(&y[7 * n..]);
     out.duration = t;
-    out.energy_trimmed = chain.finish(&y, &out.impulse, velocities);
+    out.energy_trimmed = chain.finish(&y, &out.impulse, velocities, spins);
     out
 }
 
@@ -294,72 +335,8 @@ struct Chain<'a> {
     edges: &'a [Edge],
     /// Number of balls.
     n: usize,
-}
-
-// Dormand–Prince 5(4) (Hairer, Norsett & Wanner, Solving ODE I, table II.5.2); the system is
-// autonomous, so the nodes c_i are not needed. Row 6 is the fifth-order solution (FSAL).
-const DP_A: [[f64; 6]; 6] = [
-    [0.2, 0.0, 0.0, 0.0, 0.0, 0.0],
-    [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
-    [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0, 0.0, 0.0, 0.0],
-    [
-        19372.0 / 6561.0,
-        -25360.0 / 2187.0,
-        64448.0 / 6561.0,
-        -212.0 / 729.0,
-        0.0,
-        0.0,
-    ],
-    [
-        9017.0 / 3168.0,
-        -355.0 / 33.0,
-        46732.0 / 5247.0,
-        49.0 / 176.0,
-        -5103.0 / 18656.0,
-        0.0,
-    ],
-    [
-        35.0 / 384.0,
-        0.0,
-        500.0 / 1113.0,
-        125.0 / 192.0,
-        -2187.0 / 6784.0,
-        11.0 / 84.0,
-    ],
-];
-/// Fifth- minus fourth-order weights: the local error estimate.
-const DP_E: [f64; 7] = [
-    71.0 / 57600.0,
-    0.0,
-    -71.0 / 16695.0,
-    71.0 / 1920.0,
-    -17253.0 / 339200.0,
-    22.0 / 525.0,
-    -1.0 / 40.0,
-];
-
-/// `tmp = y + c[0] k[0] + c[1] k[1] + ...`, element by element, the terms in order; a zero
-/// coefficient's term is skipped (as adding it could turn a -0 into +0).
-#[inline]
-fn combine<const N: usize>(tmp: &mut [f64], y: &[f64], c: [f64; N], k: [&[f64]; N]) {
-    if c.contains(&0.0) {
-        tmp.copy_from_slice(y);
-        for (c, k) in c.iter().zip(k) {
-            if *c != 0.0 {
-                for (t, x) in tmp.iter_mut().zip(k) {
-                    *t += c * x;
-                }
-            }
-        }
-        return;
-    }
-    for (i, (t, y)) in tmp.iter_mut().zip(y).enumerate() {
-        let mut acc = *y;
-        for (c, k) in c.iter().zip(k) {
-            acc += c * k[i];
-        }
-        *t = acc;
-    }
+    /// The contacts' friction (`None`: smooth balls, spins untouched).
+    tangential: Option<Tangential>,
 }
 
 impl Chain<'_> {
@@ -377,7 +354,7 @@ impl Chain<'_> {
 
     /// Whether any edge pushes, from a derivative `dy` (its impulse rates are the forces).
     fn pushing(&self, dy: &[f64]) -> bool {
-        dy[4 * self.n..].iter().any(|&f| f > 0.0)
+        dy[7 * self.n..].iter().any(|&f| f > 0.0)
     }
 
     /// The time derivative `dy` of state `y`.
@@ -385,14 +362,20 @@ impl Chain<'_> {
         let n = self.n;
         let inv_m = 1.0 / self.hertz.mass;
         let (u, rest) = y.split_at(2 * n);
-        let v = &rest[..2 * n];
+        let (v, rest) = rest.split_at(2 * n);
+        let w = &rest[..3 * n];
         let (du, rest) = dy.split_at_mut(2 * n);
-        let (dv, dj) = rest.split_at_mut(2 * n);
+        let (dv, rest) = rest.split_at_mut(2 * n);
+        let (dw, dj) = rest.split_at_mut(3 * n);
         du.copy_from_slice(v);
         dv.fill(0.0);
+        dw.fill(0.0);
         // Per ball (x, y): one bounds check a ball, not one a component.
         let (u, v) = (u.as_chunks::<2>().0, v.as_chunks::<2>().0);
+        let (w, dw) = (w.as_chunks::<3>().0, dw.as_chunks_mut::<3>().0);
         let dv = dv.as_chunks_mut::<2>().0;
+        // Torque factor R / I = 5 / (2 m R) (I = 2/5 m R^2).
+        let spin_of = self.tangential.map_or(0.0, |t| 2.5 * inv_m / t.radius);
         for (e, force) in self.edges.iter().zip(dj.iter_mut()) {
             let (ua, ub) = (u[e.a], u[e.b]);
             let d = (ua[0] - ub[0]) * e.n.x + (ua[1] - ub[1]) * e.n.y - e.gap;
@@ -410,6 +393,26 @@ impl Chain<'_> {
                 dv[e.a][1] -= fy;
                 dv[e.b][0] += fx;
                 dv[e.b][1] += fy;
+                if let Some(law) = &self.tangential {
+                    // Friction from this same state (tangential.rs): F_t along
+                    // t = (-n_y, n_x), F_z vertical, on a; -F on b; the torque R n x F on both.
+                    let (wa, wb) = (w[e.a], w[e.b]);
+                    let ws = [wa[0] + wb[0], wa[1] + wb[1], wa[2] + wb[2]];
+                    let dvab = [va[0] - vb[0], va[1] - vb[1]];
+                    let (ft, fz) = law.force(f, law.slip([e.n.x, e.n.y], dvab, ws));
+                    let (tx, ty) = (-e.n.y, e.n.x);
+                    let (lx, ly) = (ft * tx * inv_m, ft * ty * inv_m);
+                    dv[e.a][0] += lx;
+                    dv[e.a][1] += ly;
+                    dv[e.b][0] -= lx;
+                    dv[e.b][1] -= ly;
+                    // dw = 5 / (2 m R) (F_t z - F_z t), the same for both balls.
+                    let dwv = [-fz * tx * spin_of, -fz * ty * spin_of, ft * spin_of];
+                    for i in 0..3 {
+                        dw[e.a][i] += dwv[i];
+                        dw[e.b][i] += dwv[i];
+                    }
+                }
             }
         }
     }
@@ -481,17 +484,31 @@ impl Chain<'_> {
             e.abs()
         };
         let worst = |r: std::ops::Range<usize>| r.map(error).fold(0.0f64, f64::max);
-        let (eu, ev) = (worst(0..2 * self.n), worst(2 * self.n..m));
+        let (eu, mut ev) = (worst(0..2 * self.n), worst(2 * self.n..m));
+        if let Some(t) = &self.tangential {
+            // A spin's error as the speed of the same kinetic energy, sqrt(2/5) R w.
+            ev = ev.max(SPIN_ERROR * t.radius * worst(m..7 * self.n));
+        }
         (h / TOLERANCE) * (eu / scales.0).max(ev / scales.1)
     }
 
-    /// Writes the impact's end velocities into `velocities` (those before), after sharing
-    /// out the momentum drift and trimming any energy gain among the balls that were pushed;
+    /// Writes the impact's end velocities and spins into `velocities` and `spins` (those
+    /// before), after sharing out the momentum drift and trimming any gain of kinetic energy
+    /// (`sum m v^2 / 2 + I w^2 / 2`, `I = 2/5 m R^2`) among the balls that were pushed;
     /// returns the relative energy trimmed.
-    fn finish(&self, y: &[f64], impulse: &[f64], velocities: &mut [Vec2]) -> f64 {
+    fn finish(
+        &self,
+        y: &[f64],
+        impulse: &[f64],
+        velocities: &mut [Vec2],
+        spins: &mut [Vec3],
+    ) -> f64 {
         let n = self.n;
         let mut v1: Vec<Vec2> = (0..n)
             .map(|i| Vec2::new(y[2 * n + 2 * i], y[2 * n + 2 * i + 1]))
+            .collect();
+        let mut w1: Vec<Vec3> = (0..n)
+            .map(|i| Vec3::new(y[4 * n + 3 * i], y[4 * n + 3 * i + 1], y[4 * n + 3 * i + 2]))
             .collect();
         let mut moved = vec![false; n];
         for (e, &j) in self.edges.iter().zip(impulse) {
@@ -510,24 +527,34 @@ impl Chain<'_> {
         for i in (0..n).filter(|&i| moved[i]) {
             v1[i] -= drift;
         }
-        let ke = |v: &[Vec2]| {
+        // Twice the kinetic energy over m: v^2 + (2/5) R^2 w^2.
+        let rot = self.tangential.map_or(0.0, |t| 0.4 * t.radius * t.radius);
+        let ke = |v: &[Vec2], w: &[Vec3]| {
             (0..n)
                 .filter(|&i| moved[i])
-                .map(|i| v[i].length_squared())
+                .map(|i| v[i].length_squared() + rot * w[i].dot(w[i]))
                 .sum::<f64>()
         };
-        let (ke0, ke1) = (ke(velocities), ke(&v1));
+        let (ke0, ke1) = (ke(velocities, spins), ke(&v1, &w1));
         let mut trimmed = 0.0;
         if ke1 > ke0 {
+            // Scaling the velocities about their mean and the spins by s keeps the momentum:
+            // the energy is count vc^2 + s^2 (ke1 - count vc^2).
             let vc = total(&v1) * (1.0 / count);
             let kc = count * vc.length_squared();
             let s = ((ke0 - kc).max(0.0) / (ke1 - kc)).sqrt() * (1.0 - 4.0 * f64::EPSILON);
             for i in (0..n).filter(|&i| moved[i]) {
                 v1[i] = vc + (v1[i] - vc) * s;
+                if rot > 0.0 {
+                    w1[i] = w1[i] * s;
+                }
             }
             trimmed = (ke1 - ke0) / ke0;
         }
         velocities.copy_from_slice(&v1);
+        if self.tangential.is_some() {
+            spins.copy_from_slice(&w1);
+        }
         trimmed
     }
 }

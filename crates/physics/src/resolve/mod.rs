@@ -10,9 +10,7 @@ pub mod mathavan_2010;
 mod resting;
 mod throw;
 
-pub use ball_ball::{
-    equal_mass_restitution, friction_impulse, frictional_spheres, resting_contact, unpress,
-};
+pub use ball_ball::{equal_mass_restitution, frictional_spheres, resting_contact, unpress};
 pub use ball_cushion::{SETTLE_SPEED, han_2005, reflect, resting_reflect, settle};
 pub use mathavan_2010::{Mathavan2010, mathavan_2010};
 pub use resting::{

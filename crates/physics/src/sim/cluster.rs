@@ -1,11 +1,12 @@
 //! Impacts that reach a cluster: a ball–ball contact whose balls have neighbours closer than
 //! the distance one contact closes is resolved over the whole connected cluster at once, with
-//! Hertz forces over the impact's finite duration ([`crate::resolve::hertz`]).
+//! Hertz forces over the impact's finite duration and the contacts' friction integrated with
+//! them ([`crate::resolve::hertz`], [`crate::resolve::hertz::Tangential`]).
 
 use super::Simulation;
 use crate::ball::{BallId, BallState};
 use crate::event::EventKind;
-use crate::math::Vec2;
+use crate::math::{Vec2, Vec3};
 use crate::motion;
 use crate::params::{HertzContact, Model};
 use crate::resolve;
@@ -127,9 +128,10 @@ impl Simulation {
         (cluster.members.len() > 2).then_some(cluster)
     }
 
-    /// Resolves `cluster` as one impact now: Hertz forces integrated over its duration, then
-    /// each pair's friction impulse in the order their contacts began (no normal is
-    /// randomized: the perturbation draws nothing here). Records one
+    /// Resolves `cluster` as one impact now: Hertz forces and each contact's friction
+    /// integrated together over its duration, every force of a stage from one state, so the
+    /// order the balls are listed in does not matter (no normal is randomized: the
+    /// perturbation draws nothing here). Records one
     /// [`EventKind::BallBall`] per pair that carried an impulse (the starting pair first),
     /// each with its balls' states after the whole impact, and marks them as one impact.
     pub(super) fn cluster_impact(&mut self, cluster: &Cluster) {
@@ -147,10 +149,38 @@ impl Simulation {
             .map(|&id| self.segments[id].state_at(t))
             .collect();
         let mut velocities: Vec<Vec2> = states.iter().map(|s| s.velocity).collect();
-        let impact = hertz::impact(&hertz, &mut velocities, &cluster.edges);
-        for (s, v) in states.iter_mut().zip(&velocities) {
-            s.velocity = *v;
+        let mut spins: Vec<Vec3> = states.iter().map(|s| s.angular_velocity).collect();
+        // The edges in an order the balls' labels do not decide (by their contact points),
+        // so each ball's forces are summed in the same order however the balls are listed:
+        // a relabelled cluster gives the same impact to rounding of a few sums, not of
+        // thousands of steps.
+        let mut by_place: Vec<usize> = (0..cluster.edges.len()).collect();
+        let place = |k: usize| {
+            let e = &cluster.edges[k];
+            states[e.a].position + states[e.b].position
+        };
+        by_place.sort_by(|&x, &y| {
+            let (p, q) = (place(x), place(y));
+            p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y))
+        });
+        let edges: Vec<Edge> = by_place.iter().map(|&k| cluster.edges[k]).collect();
+        let sorted = hertz::impact_with_friction(
+            &hertz,
+            Some((friction, r)),
+            &mut velocities,
+            &mut spins,
+            &edges,
+        );
+        let mut impact = sorted.clone();
+        for (i, &k) in by_place.iter().enumerate() {
+            impact.impulse[k] = sorted.impulse[i];
+            impact.onset[k] = sorted.onset[i];
         }
+        for ((s, v), w) in states.iter_mut().zip(&velocities).zip(&spins) {
+            s.velocity = *v;
+            s.angular_velocity = *w;
+        }
+        // The events are recorded in this order (it decides nothing in the physics).
         let mut order: Vec<usize> = (0..cluster.edges.len())
             .filter(|&k| impact.impulse[k] > 0.0)
             .collect();
@@ -162,14 +192,6 @@ impl Simulation {
                 .expect("onsets are not NaN")
                 .then(x.cmp(&y))
         });
-        for &k in &order {
-            let e = cluster.edges[k];
-            let jn = impact.impulse[k] / self.params.ball.mass;
-            let (sa, sb) =
-                resolve::friction_impulse(&states[e.a], &states[e.b], e.n, jn, friction, r);
-            states[e.a] = sa;
-            states[e.b] = sb;
-        }
         let mut changed = vec![false; cluster.members.len()];
         for &k in &order {
             let e = cluster.edges[k];

@@ -481,7 +481,9 @@ mod tests {
         }
         let (table, params, balls) = racks::frictionless_gas(16);
         scenes.push((table, params, balls, None));
-        for seed in 0..40 {
+        // 60 soak scenes: enough that their events pass the count below whichever way
+        // their breaks go (the cluster impact's friction changed them in 2026-12).
+        for seed in 0..60 {
             let s = soak::scenario(seed);
             scenes.push((s.table, s.params, s.balls, s.shots.first().copied()));
         }
