@@ -1,5 +1,5 @@
 //! Why a shot was a foul and why a game ended, each with a sentence a player can read; and
-//! the fouls every pool game shares ([`common_fouls`]).
+//! the fouls every pool game shares (`common_fouls`).
 
 use crate::shot::ShotSummary;
 use billiards_physics::Pocket;
