@@ -1,9 +1,13 @@
 //! Argument types and parsers the subcommands share (racks, games, models, shots, calls,
-//! pockets, sizes): here, not in the dispatcher (`cli.rs`), so every arrow points one way.
+//! pockets, sizes), and the options of `simulate` and `tournament`, which their dispatchers
+//! hand on to `game.rs` and `snooker.rs`: here, not in the dispatchers (`cli.rs`,
+//! `simulate.rs`, `tournament.rs`), so every arrow points one way.
 
+use crate::shard::{Shard, parse_shard};
 use billiards_physics::*;
 use billiards_rules::{Call, Choice, Game};
 use clap::ValueEnum;
+use std::path::PathBuf;
 
 /// Standard racks.
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -159,4 +163,119 @@ pub(crate) fn parse_size(s: &str) -> Result<(u32, u32), String> {
         w.parse().map_err(|e| format!("width: {e}"))?,
         h.parse().map_err(|e| format!("height: {e}"))?,
     ))
+}
+
+/// `simulate` options.
+#[derive(clap::Args, Debug)]
+pub struct SimulateArgs {
+    /// A scene file (JSON, see crates/physics/README.md); its shots are played first.
+    #[arg(long, conflicts_with = "rack")]
+    pub scene: Option<PathBuf>,
+    /// A standard rack on the table of `--table`.
+    #[arg(long, value_enum, default_value = "fifteen-ball")]
+    pub rack: RackArg,
+    /// The table: `7ft`, `8ft` or `9ft` (WPA playing areas 78 x 39, 92 x 46, 100 x 50 in),
+    /// optionally `-wide` (4.625 in corner, 5.125 in side mouths) or `-tight` (4 in corner)
+    /// pockets instead of the WPA 4.5 in and 5 in; saved in the recording.
+    #[arg(long, default_value = "8ft", conflicts_with = "scene")]
+    pub table: TableChoice,
+    /// How a game's rack is racked: `template` (every ball frozen) or `triangle` (the small
+    /// seeded gaps of a hand-racked triangle).
+    #[arg(long, default_value = "triangle", requires = "game")]
+    pub rack_style: billiards_rules::RackStyle,
+    /// The physics model (with a rack).
+    #[arg(long, value_enum, default_value = "spin")]
+    pub model: ModelArg,
+    /// Ball–ball friction (spin model; overrides a scene file's).
+    #[arg(long, value_enum)]
+    pub ball_friction: Option<BallFrictionArg>,
+    /// Cushion model with its published constants (spin model; overrides a scene file's).
+    #[arg(long, value_enum)]
+    pub cushion: Option<CushionArg>,
+    /// Effective end mass of the shaft in kg, for squirt (spin model; TP A-31): about 0.008
+    /// for a standard shaft, 0.004 for a low-deflection one. Without it, no squirt.
+    #[arg(long, value_parser = parse_end_mass)]
+    pub end_mass: Option<f64>,
+    /// A shot of the cue ball, `ANGLE_DEG:SPEED[:SIDE:HEIGHT]`; repeat for several shots,
+    /// each played once everything rests. SPEED in m/s: 0 or from 1e-10 to 100 (a hard break
+    /// is 12); ANGLE_DEG any finite; SIDE and HEIGHT in ball radii, within the miscue limit.
+    #[arg(long = "shot", value_parser = parse_shot)]
+    pub shots: Vec<Shot>,
+    /// Cue elevation in degrees for every `--shot` and batch break, from 0 (level, the
+    /// default) to 30; with side english the cue ball swerves towards it (spin model). A
+    /// scene file's shots keep their own `elevation` (radians).
+    #[arg(long, value_parser = parse_elevation, default_value = "0")]
+    pub elevation: f64,
+    /// Seed of the collision-normal randomization (off if absent).
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Write the recording here (rewritten atomically after every shot).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Print the summary as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// Batch mode: play this many random break shots from the start position, in parallel,
+    /// and report the best (most balls pocketed).
+    #[arg(long)]
+    pub batch: Option<usize>,
+    /// Worker threads for batch mode (default: all cores).
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Play a game under its rules: its seeded rack (not `--rack`), every shot judged, the
+    /// verdicts printed and, with `--out`, logged beside the recording (`NAME.game.json`).
+    #[arg(long, value_enum, conflicts_with_all = ["scene", "batch"])]
+    pub game: Option<GameArg>,
+    /// Seed of the game's rack (default: `--seed`, else 0).
+    #[arg(long, requires = "game")]
+    pub rack_seed: Option<u64>,
+    /// The two players' names, `NAME,NAME`; the first breaks.
+    #[arg(long, default_value = "A,B", requires = "game")]
+    pub players: String,
+    /// A call for shot K: `K:BALL:POCKET` (8-ball; pockets head-left, head-right, side-left,
+    /// side-right, foot-left, foot-right), `K:safety` (8-ball) or `K:push-out` (9-ball).
+    #[arg(long = "call", value_parser = parse_call, requires = "game")]
+    pub calls: Vec<(usize, Call)>,
+    /// Choices to take when the rules offer some, in order: `shoot`, `pass`, `spot-eight`
+    /// (default: the first offered). Re-racks are not supported here (one rack a recording).
+    #[arg(long = "choice", value_parser = parse_choice, requires = "game")]
+    pub choices: Vec<Choice>,
+    /// Snooker: the computer levels of the two players, `A,B` (easy, medium, hard, expert,
+    /// perfect); the frame's draws come from `--rack-seed`.
+    #[arg(long, default_value = "hard,hard", requires = "game")]
+    pub computer: String,
+}
+
+/// `tournament` options.
+#[derive(clap::Args, Debug)]
+pub struct TournamentArgs {
+    /// The game: nine-ball, eight-ball or snooker (computer levels only; frames, breaks
+    /// and centuries).
+    #[arg(long, value_enum, default_value = "nine-ball")]
+    pub game: GameArg,
+    /// The two players, `A,B`: easy, medium, hard, expert, perfect, greedy or one-ply. A
+    /// breaks the even games.
+    #[arg(long, default_value = "hard,easy")]
+    pub players: String,
+    /// Games in the whole tournament (every shard counts the same).
+    #[arg(long, default_value_t = 200)]
+    pub games: u64,
+    /// Seed of the whole tournament: game `g`'s rack and draws come from it and `g`.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Play only slice K of M (`K/M`, 1 <= K <= M).
+    #[arg(long, value_parser = parse_shard, conflicts_with = "merge")]
+    pub shard: Option<Shard>,
+    /// Combine these results files (written by `--out`) instead of playing.
+    #[arg(long, num_args = 1..)]
+    pub merge: Vec<PathBuf>,
+    /// Write the results as JSON here.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// The table: `7ft`, `8ft` or `9ft`, optionally `-wide` or `-tight` pockets.
+    #[arg(long, default_value = "8ft")]
+    pub table: billiards_physics::TableChoice,
+    /// How the racks are racked: `template` (frozen) or `triangle` (small seeded gaps).
+    #[arg(long, default_value = "triangle")]
+    pub rack_style: billiards_rules::RackStyle,
 }

@@ -1,7 +1,8 @@
 //! `simulate --game`: a rack played under the rules with scripted shots, each verdict
 //! printed, and the rules' log ([`GameLog`]) written beside the recording; `verify` checks it.
 
-use crate::simulate::{ShotSummary, SimulateArgs, respot_cue_ball, setup};
+use crate::args::SimulateArgs;
+use crate::setup::{ShotSummary, respot_cue_ball, setup};
 use billiards_physics::recording::{Recorder, Recording};
 use billiards_physics::{Vec2, Vec3};
 use billiards_rules::{

@@ -3,9 +3,9 @@
 //! recording (the log re-judged by [`FrameLog::check`]) and `tournament --game snooker`
 //! (frames on all cores: frames won, breaks, centuries, fouls, decision time).
 
+use crate::args::{SimulateArgs, TournamentArgs};
 use crate::shard::{Batch, Shard};
-use crate::simulate::SimulateArgs;
-use crate::tournament::{TournamentArgs, wilson};
+use crate::stats::wilson;
 use billiards_ai::Level;
 use billiards_ai::noise::stream;
 use billiards_ai::snooker::play::{FrameRecord, play_frame};

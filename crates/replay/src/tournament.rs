@@ -4,7 +4,10 @@
 //! the JSON of the slices (`--out`) into one report, the same as one process's but for the
 //! decision times ([`crate::shard`]).
 
-use crate::shard::{Batch, Shard, parse_shard};
+pub use crate::args::TournamentArgs;
+pub use crate::stats::wilson;
+
+use crate::shard::{Batch, Shard};
 use billiards_ai::Player;
 use billiards_ai::noise::stream;
 use billiards_ai::play::{RackRecord, Venue, play_rack_at};
@@ -14,42 +17,7 @@ use rand::Rng;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
-use std::path::PathBuf;
 use std::process::ExitCode;
-
-/// `tournament` options.
-#[derive(clap::Args, Debug)]
-pub struct TournamentArgs {
-    /// The game: nine-ball, eight-ball or snooker (computer levels only; frames, breaks
-    /// and centuries).
-    #[arg(long, value_enum, default_value = "nine-ball")]
-    pub game: crate::args::GameArg,
-    /// The two players, `A,B`: easy, medium, hard, expert, perfect, greedy or one-ply. A
-    /// breaks the even games.
-    #[arg(long, default_value = "hard,easy")]
-    pub players: String,
-    /// Games in the whole tournament (every shard counts the same).
-    #[arg(long, default_value_t = 200)]
-    pub games: u64,
-    /// Seed of the whole tournament: game `g`'s rack and draws come from it and `g`.
-    #[arg(long, default_value_t = 0)]
-    pub seed: u64,
-    /// Play only slice K of M (`K/M`, 1 <= K <= M).
-    #[arg(long, value_parser = parse_shard, conflicts_with = "merge")]
-    pub shard: Option<Shard>,
-    /// Combine these results files (written by `--out`) instead of playing.
-    #[arg(long, num_args = 1..)]
-    pub merge: Vec<PathBuf>,
-    /// Write the results as JSON here.
-    #[arg(long)]
-    pub out: Option<PathBuf>,
-    /// The table: `7ft`, `8ft` or `9ft`, optionally `-wide` or `-tight` pockets.
-    #[arg(long, default_value = "8ft")]
-    pub table: billiards_physics::TableChoice,
-    /// How the racks are racked: `template` (frozen) or `triangle` (small seeded gaps).
-    #[arg(long, default_value = "triangle")]
-    pub rack_style: billiards_rules::RackStyle,
-}
 
 /// A tournament's results (or one shard's).
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -303,15 +271,4 @@ pub fn report(r: &Results) -> String {
         out += &format!("{draws} games without a winner\n");
     }
     out
-}
-
-/// Wilson's 95 % score interval of `k` successes in `n`.
-pub fn wilson(k: usize, n: usize) -> (f64, f64) {
-    if n == 0 {
-        return (0.0, 1.0);
-    }
-    let (n, p, z) = (n as f64, k as f64 / n as f64, 1.96);
-    let centre = (p + z * z / (2.0 * n)) / (1.0 + z * z / n);
-    let half = z * (p * (1.0 - p) / n + z * z / (4.0 * n * n)).sqrt() / (1.0 + z * z / n);
-    (centre - half, centre + half)
 }

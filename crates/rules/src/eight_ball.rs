@@ -3,12 +3,10 @@
 //! ways to lose the rack with the 8 (3.8). There is no three-foul rule (6.14: "some games
 //! such as eight ball do not include this rule").
 
-use crate::foul::{BallOn, Foul, Group, WinReason};
-use crate::game::{
-    Call, CallRule, Choice, CueBall, Game, GameState, NextShot, Outcome, Pending, RuleError, Seat,
-    Verdict, common_fouls,
-};
+use crate::foul::{BallOn, Foul, Group, WinReason, common_fouls};
 use crate::shot::ShotSummary;
+use crate::state::{Game, GameState, Pending, RuleError};
+use crate::turn::{Call, CallRule, Choice, CueBall, NextShot, Outcome, Seat, Verdict};
 
 /// What `shooter` must hit first: open table, own group, or the 8 (WPA 3.5, 3.6).
 fn ball_on(state: &GameState, shooter: Seat) -> (BallOn, Vec<u8>) {

@@ -1,5 +1,7 @@
-//! Why a shot was a foul and why a game ended, each with a sentence a player can read.
+//! Why a shot was a foul and why a game ended, each with a sentence a player can read; and
+//! the fouls every pool game shares (`common_fouls`).
 
+use crate::shot::ShotSummary;
 use billiards_physics::Pocket;
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -169,6 +171,36 @@ pub fn pocket_name(p: Pocket) -> &'static str {
         Pocket::FootLeft => "foot-left corner",
         Pocket::FootRight => "foot-right corner",
     }
+}
+
+/// The common fouls of a shot (WPA 6.1, 6.2, 6.3), the scratch first; `on` is what the cue
+/// ball had to hit first and `allowed` the balls that satisfy it. `rails` is false for a push
+/// out, which needs no contact and no rail (WPA 2.4).
+pub(crate) fn common_fouls(
+    shot: &ShotSummary,
+    on: BallOn,
+    allowed: &[u8],
+    contact_and_rail: bool,
+) -> Vec<Foul> {
+    let mut fouls = Vec::new();
+    if shot.scratch() {
+        fouls.push(Foul::Scratch);
+    }
+    if !contact_and_rail {
+        return fouls;
+    }
+    match shot.first_contact {
+        None => fouls.push(Foul::NoBallHit),
+        Some(hit) => {
+            if !allowed.contains(&hit) {
+                fouls.push(Foul::WrongBallFirst { hit, on });
+            }
+            if shot.pocketed_object_balls().next().is_none() && !shot.rail_after_contact() {
+                fouls.push(Foul::NoRail);
+            }
+        }
+    }
+    fouls
 }
 
 #[cfg(test)]

@@ -9,6 +9,8 @@
 //! - [`racks`]: 8-ball and 9-ball racks with a real rack's small random gaps, from a seed;
 //! - [`game`]: one rack of 8-ball, 9-ball (WPA rules) or free play: [`GameState::play`]
 //!   judges a shot and returns its [`Verdict`] and the [`NextShot`];
+//! - [`state`]: the state of one rack ([`GameState`]), which each game's rules move on;
+//! - [`turn`]: the words of one turn ([`Seat`], [`Call`], [`NextShot`], [`Verdict`]);
 //! - [`hand`]: whether a ball-in-hand placement is allowed;
 //! - [`foul`]: fouls and the ends of games, with sentences a player can read;
 //! - [`race`]: a match, race to N racks;
@@ -33,6 +35,8 @@ pub mod respot;
 pub mod shot;
 pub mod shots;
 pub mod snooker;
+pub mod state;
+pub mod turn;
 
 pub use drill::{Attempt, Drill, DrillError, DrillScore, DrillShot, Goal, Zone};
 pub use foul::{BallOn, Foul, Group, WinReason, pocket_name};

@@ -3,12 +3,10 @@
 //! (2.6); a push out right after a legal break (2.4); ball in hand anywhere after a foul
 //! (2.7, 1.5); three fouls in a row lose the rack (2.8, 6.14).
 
-use crate::foul::{BallOn, Foul, WinReason};
-use crate::game::{
-    Call, CallRule, Choice, CueBall, Game, GameState, NextShot, Outcome, Pending, RuleError, Seat,
-    Verdict, common_fouls,
-};
+use crate::foul::{BallOn, Foul, WinReason, common_fouls};
 use crate::shot::ShotSummary;
+use crate::state::{Game, GameState, Pending, RuleError};
+use crate::turn::{Call, CallRule, Choice, CueBall, NextShot, Outcome, Seat, Verdict};
 
 /// The next shot of an ordinary turn: hit the lowest ball first, no call.
 pub(crate) fn normal_next(state: &GameState, shooter: Seat, cue_ball: CueBall) -> NextShot {

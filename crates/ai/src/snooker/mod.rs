@@ -22,69 +22,22 @@
 //! sample indices: the same seed gives the same decision on any number of threads.
 
 pub mod budget;
+mod context;
+mod decision;
 pub mod play;
 mod sample;
 mod search;
 mod strokes;
 pub mod value;
 
+use crate::AiError;
 use crate::level::Level;
-use crate::noise::{self, Noise};
-use crate::{AiError, ShotKind};
-use billiards_physics::{Params, Shot, Simulation, Vec2};
-use billiards_rules::snooker::{Choice, Frame};
+use billiards_physics::Simulation;
+use billiards_rules::snooker::Frame;
 
 pub use budget::{SnookerBudget, SnookerTwoPly};
+pub use decision::{SnookerDecision, SnookerPlan};
 pub use search::decide_snooker_with;
-
-/// What the computer does next at snooker.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum SnookerDecision {
-    /// Take one of the choices the rules offer ([`Frame::choose`]).
-    Choose {
-        /// The choice.
-        choice: Choice,
-        /// The search's value of the table the choice leads to, in points for the chooser.
-        estimate: f64,
-    },
-    /// Play this stroke.
-    Shoot(SnookerPlan),
-}
-
-/// A stroke decided on.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct SnookerPlan {
-    /// The strike meant (angle, speed, tip), before execution noise.
-    pub shot: Shot,
-    /// Cue ball in hand: where to put it first (inside the D, clear of every ball).
-    pub place: Option<Vec2>,
-    /// The colour nominated after a red (2.12) or the free ball (3.12): pass it as
-    /// `Stroke::nominated`.
-    pub nominated: Option<u8>,
-    /// What the stroke tries.
-    pub kind: ShotKind,
-    /// Estimated probability of a fair pot.
-    pub success: f64,
-    /// Estimated probability of a foul.
-    pub foul: f64,
-    /// The search's mean value of the stroke, in points for the striker.
-    pub value: f64,
-    /// Noisy samples behind the estimates of this stroke.
-    pub samples: usize,
-    /// Noisy simulations the whole decision ran.
-    pub simulations: usize,
-    /// Solver events those simulations processed.
-    pub events: usize,
-}
-
-impl SnookerPlan {
-    /// The shot as a player of execution noise `noise` strikes it, from the stream of
-    /// `seed` (a function of the seed only), as [`crate::Plan::executed`].
-    pub fn executed(&self, noise: Noise, params: &Params, seed: u64) -> Shot {
-        noise.apply(self.shot, params, &mut noise::stream(seed, u64::MAX, 0))
-    }
-}
 
 /// The computer's decision at `level` for what `frame` asks next, on the resting table
 /// `sim` (the snooker table, `Params::snooker()`, colours of the last verdict spotted, a

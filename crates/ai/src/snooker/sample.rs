@@ -1,9 +1,11 @@
 //! Noisy samples of the candidates at snooker, each judged by `Frame::play` on a clone and
 //! scored, and the second ply's outcomes searched for the next stroke.
 
-use super::SnookerDecision;
 use super::budget::SnookerBudget;
-use super::search::{Cand, Snook, decide_snooker_with};
+use super::context::Snook;
+use super::decision::SnookerDecision;
+use super::search::decide_snooker_with;
+use super::strokes::Cand;
 use crate::evaluate::Stats;
 use crate::noise::stream;
 use crate::quiet::final_layout;

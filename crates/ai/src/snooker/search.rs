@@ -3,39 +3,20 @@
 //! `value.rs`.
 
 use super::budget::{SnookerBudget, SnookerTwoPly};
+use super::context::Snook;
+use super::decision::{SnookerDecision, SnookerPlan};
+use super::strokes::Cand;
 use super::value::d_places;
-use super::{SnookerDecision, SnookerPlan};
 use crate::AiError;
-use crate::candidates::Candidate;
 use crate::evaluate::{Stats, best_candidate};
 use crate::noise::Noise;
-use billiards_physics::{BallId, BallSetup, Simulation, Vec2};
-use billiards_rules::Seat;
+use billiards_physics::{BallSetup, Simulation, Vec2};
 use billiards_rules::snooker::balls::WHITE;
 use billiards_rules::snooker::{Choice, Frame};
 use rayon::prelude::*;
 
 /// Below this chance of a fair pot, safeties are searched too.
 const SAFETY_BELOW: f64 = 0.6;
-
-/// A candidate stroke and the ball it nominates.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Cand {
-    pub(super) cand: Candidate,
-    pub(super) nominated: Option<u8>,
-}
-
-/// What one search shares: the frame, the table at rest and the noise it plans under.
-pub(super) struct Snook<'a> {
-    pub(super) frame: &'a Frame,
-    pub(super) base: Simulation,
-    pub(super) cue: BallId,
-    pub(super) noise: Noise,
-    pub(super) seed: u64,
-    pub(super) me: Seat,
-    /// The striker needs snookers: a pot gains him nothing.
-    pub(super) needs: bool,
-}
 
 /// [`super::decide_snooker`] planned under `noise` with `budget`.
 pub fn decide_snooker_with(

@@ -2,7 +2,7 @@
 //! with the nomination that goes with them, and safeties.
 
 use super::budget::SnookerBudget;
-use super::search::{Cand, Snook};
+use super::context::Snook;
 use super::value::worth;
 use crate::candidates::{Candidate, Layout, ShotKind, combo_aims, direct_aims, expand, rail_aims};
 use crate::evaluate::{Mode, Search};
@@ -27,6 +27,13 @@ fn first_hit(layout: &Layout, dir: Vec2) -> Option<u8> {
         })
         .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)))
         .map(|(_, n)| n)
+}
+
+/// A candidate stroke and the ball it nominates.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Cand {
+    pub(super) cand: Candidate,
+    pub(super) nominated: Option<u8>,
 }
 
 impl Snook<'_> {

@@ -2,7 +2,7 @@
 //! and the position it leaves (the next player's analytic chance at the balls on, weighted by
 //! their worth), and where to put the cue ball in hand in the D.
 
-use super::search::Snook;
+use super::context::Snook;
 use crate::candidates::{Layout, best_open, each_direct_aim};
 use crate::noise::Noise;
 use crate::position::aim_probability;

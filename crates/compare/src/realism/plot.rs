@@ -1,6 +1,9 @@
 //! The realism plots, SVG only: `throw.svg`, `cushion.svg`, `squirt.svg` and `swerve.svg`.
 
-use super::{CushionCurve, Spin, data, solver_throw, tp_a14_throw};
+use super::cushion::CushionCurve;
+use super::data;
+use super::swerve::{END_MASSES, HALF_TIP, SWERVE_ELEVATIONS, SWERVE_SPEED, swerve_path};
+use super::throw::{Spin, solver_throw, tp_a14_throw};
 use billiards_physics::{BallFriction, SpinModel};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -136,7 +139,7 @@ fn draw_swerve(path: &Path) -> Result<(), Box<dyn Error>> {
     let panels = root.split_evenly((1, 2));
     let shafts = [
         ("no squirt (end_mass None, the default)", None),
-        ("standard shaft, 8 g (squirt)", Some(super::END_MASSES[0].1)),
+        ("standard shaft, 8 g (squirt)", Some(END_MASSES[0].1)),
     ];
     for (area, (name, end_mass)) in panels.iter().zip(shafts) {
         let model = SpinModel {
@@ -145,8 +148,8 @@ fn draw_swerve(path: &Path) -> Result<(), Box<dyn Error>> {
         };
         let mut curves = Vec::new();
         let mut marks = Vec::new();
-        for (k, &deg) in super::SWERVE_ELEVATIONS.iter().enumerate() {
-            let p = super::swerve_path(model, deg, super::HALF_TIP, super::SWERVE_SPEED)?;
+        for (k, &deg) in SWERVE_ELEVATIONS.iter().enumerate() {
+            let p = swerve_path(model, deg, HALF_TIP, SWERVE_SPEED)?;
             curves.push(Curve {
                 label: format!("elevation {deg:.0} deg"),
                 colour: COLOURS[k],
@@ -166,7 +169,7 @@ fn draw_swerve(path: &Path) -> Result<(), Box<dyn Error>> {
         }
         let title = format!(
             "Swerve: half-tip right english, {} m/s, {name}",
-            super::SWERVE_SPEED
+            SWERVE_SPEED
         );
         draw_panel_at(
             area,
@@ -188,7 +191,7 @@ fn draw_squirt(path: &Path) -> Result<(), Box<dyn Error>> {
     let root = SVGBackend::new(path, (800, 550)).into_drawing_area();
     root.fill(&WHITE)?;
     let ball = billiards_physics::BallSpec::default().mass;
-    let curves = super::END_MASSES
+    let curves = END_MASSES
         .iter()
         .enumerate()
         .map(|(k, &(name, m))| Curve {

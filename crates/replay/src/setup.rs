@@ -1,0 +1,135 @@
+//! What every `simulate` run shares, free shots, a game (`game.rs`) or a frame: the table,
+//! physics, balls and shots its options set up, the cue ball's respot after a scratch, and a
+//! shot's summary. Apart from the dispatcher (`simulate.rs`), which the games need not import
+//! back (issue 50).
+
+use crate::args::*;
+use billiards_physics::recording::Recorder;
+use billiards_physics::scene::Scene;
+use billiards_physics::*;
+use billiards_rules::Verdict as RulesVerdict;
+use serde::Serialize;
+
+/// The command line's shots, at the cue elevation of `--elevation`.
+pub(crate) fn command_line_shots(a: &SimulateArgs) -> impl Iterator<Item = Shot> + '_ {
+    a.shots.iter().map(|s| Shot {
+        elevation: a.elevation,
+        ..*s
+    })
+}
+
+/// One shot's outcome.
+#[derive(Serialize, Debug)]
+pub struct ShotSummary {
+    /// The shot.
+    pub shot: Shot,
+    /// Events it produced.
+    pub events: usize,
+    /// Numbers of the balls it pocketed.
+    pub pocketed: Vec<u8>,
+    /// Seconds of simulated time until everything rested.
+    pub time_to_rest: f64,
+    /// The rules' verdict (with `--game`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub verdict: Option<RulesVerdict>,
+}
+
+/// The table, physics, balls and shots of `a`: a scene file's, or a standard rack's.
+pub(crate) fn setup(
+    a: &SimulateArgs,
+) -> Result<(Table, Params, Vec<BallSetup>, Vec<Shot>), String> {
+    let randomization = a.seed.map(|seed| Randomization {
+        spread: 0.005,
+        seed,
+    });
+    if let Some(path) = &a.scene {
+        let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let scene = Scene::from_json(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+        let params = with_choices(
+            Params {
+                randomization: randomization.or(scene.params.randomization),
+                ..scene.params
+            },
+            a,
+        )?;
+        let shots = scene
+            .shots
+            .iter()
+            .map(|s| s.shot)
+            .chain(command_line_shots(a))
+            .collect();
+        return Ok((scene.table, params, scene.balls(), shots));
+    }
+    let model = match a.model {
+        ModelArg::Paper => Model::Paper(PaperModel::default()),
+        ModelArg::Spin => Model::Spin(SpinModel::default()),
+    };
+    let table = match a.model {
+        ModelArg::Paper => a.table.table(),
+        ModelArg::Spin => a.table.table().with_jaws(0.015),
+    };
+    let params = with_choices(
+        Params {
+            model,
+            randomization,
+            ..Params::default()
+        },
+        a,
+    )?;
+    let rack = match a.rack {
+        RackArg::PaperDefault => Rack::PaperDefault,
+        RackArg::FifteenBall => Rack::FifteenBall,
+        RackArg::Tight => Rack::Tight,
+        RackArg::NineBall => Rack::NineBall,
+    };
+    Ok((
+        table,
+        params,
+        rack.layout(&table, &params.ball),
+        command_line_shots(a).collect(),
+    ))
+}
+
+/// `params` with the model choices of the command line applied: they need the spin model.
+fn with_choices(params: Params, a: &SimulateArgs) -> Result<Params, String> {
+    if a.ball_friction.is_none() && a.cushion.is_none() && a.end_mass.is_none() {
+        return Ok(params);
+    }
+    let Model::Spin(mut m) = params.model else {
+        return Err(
+            "--ball-friction, --cushion and --end-mass need the spin model (--model spin)".into(),
+        );
+    };
+    if let Some(kg) = a.end_mass {
+        m.end_mass = Some(kg);
+    }
+    if let Some(friction) = a.ball_friction {
+        m.ball_friction = match friction {
+            BallFrictionArg::Constant => BallFriction::Constant,
+            BallFrictionArg::SpeedDependent => BallFriction::ALCIATORE,
+        };
+    }
+    if let Some(cushion) = a.cushion {
+        m.cushion = match cushion {
+            CushionArg::Han2005 => CushionModel::default(),
+            CushionArg::Mathavan2010 => CushionModel::MATHAVAN_2010,
+            CushionArg::Reflect => CushionModel::Reflect { e: 0.85 },
+        };
+    }
+    Ok(Params {
+        model: Model::Spin(m),
+        ..params
+    })
+}
+
+/// After a scratch the cue ball goes back on the head string: the rule of
+/// [`billiards_rules::respot`], the same as the game's.
+pub(crate) fn respot_cue_ball(rec: &mut Recorder) -> Result<(), String> {
+    if rec.sim().ball(0).motion.on_table() {
+        return Ok(());
+    }
+    let spot = billiards_rules::cue_ball_spot(rec.sim(), 0)
+        .ok_or("no free place on the head string for the cue ball")?;
+    rec.place(0, spot, Vec2::ZERO, Vec3::ZERO)
+        .map_err(|e| e.to_string())
+}
