@@ -54,6 +54,12 @@ fn quick_soak_breaks_no_invariant() {
         r.shots,
         c.events
     );
+    assert_no_failures(&r, "");
+}
+
+/// Fails with every failing scene of `r`, each with the command that replays it (the soak
+/// example with `flags` before `--seed N`).
+fn assert_no_failures(r: &billiards_physics::soak::SoakReport, flags: &str) {
     let list: Vec<String> = r
         .failures
         .iter()
@@ -62,7 +68,7 @@ fn quick_soak_breaks_no_invariant() {
     assert!(
         list.is_empty(),
         "{} failing scenes (replay each with `cargo run --release -p billiards-physics \
-         --example soak -- --seed N`):\n{}",
+         --example soak -- {flags}--seed N`):\n{}",
         list.len(),
         list.join("\n")
     );
@@ -97,16 +103,5 @@ fn quick_cluster_soak_breaks_no_invariant() {
         })
         .count();
     assert!(with_clusters >= 14, "{with_clusters} of 20 first shots");
-    let list: Vec<String> = r
-        .failures
-        .iter()
-        .map(|f| format!("seed {} ({} {}): {}", f.seed, f.kind, f.model, f.what))
-        .collect();
-    assert!(
-        list.is_empty(),
-        "{} failing cluster scenes (replay each with `cargo run --release -p \
-         billiards-physics --example soak -- --clusters --seed N`):\n{}",
-        list.len(),
-        list.join("\n")
-    );
+    assert_no_failures(&r, "--clusters ");
 }
