@@ -1,4 +1,5 @@
-//! Per-ball state and its closed-form motion between events.
+//! Per-ball state and its closed-form motion between events, and a ball as a simulation
+//! starts from ([`BallSetup`]).
 
 use crate::math::{Vec2, Vec3};
 use crate::table::Pocket;
@@ -6,6 +7,41 @@ use serde::{Deserialize, Serialize};
 
 /// Index of a ball in a [`crate::Simulation`] (0 is the cue ball in every standard setup).
 pub type BallId = usize;
+
+/// A ball as given to [`crate::Simulation::new`].
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BallSetup {
+    /// Number painted on the ball (0 for the cue ball).
+    pub number: u8,
+    /// Centre, metres.
+    pub position: Vec2,
+    /// Velocity, m/s.
+    #[serde(default)]
+    pub velocity: Vec2,
+    /// Angular velocity, rad/s (ignored by the paper's model, which has no spin).
+    #[serde(default)]
+    pub spin: Vec3,
+}
+
+impl BallSetup {
+    /// A ball at rest.
+    pub fn at(number: u8, position: Vec2) -> Self {
+        Self {
+            number,
+            position,
+            velocity: Vec2::ZERO,
+            spin: Vec3::ZERO,
+        }
+    }
+
+    /// A ball moving with `velocity` and no spin.
+    pub fn moving(number: u8, position: Vec2, velocity: Vec2) -> Self {
+        Self {
+            velocity,
+            ..Self::at(number, position)
+        }
+    }
+}
 
 /// A ball's motion state. Set explicitly at every event, never re-derived from a float
 /// comparison inside the event loop (see the reference's robustness lessons).

@@ -4,6 +4,17 @@ use crate::ball::{BallId, BallState, Motion};
 use crate::table::{Cushion, Pocket};
 use serde::{Deserialize, Serialize};
 
+/// Where the cue tip strikes, as fractions of the ball's radius from its centre, seen from
+/// behind the cue.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct TipOffset {
+    /// Right of centre is positive (right english).
+    pub side: f64,
+    /// Above centre is positive (follow), below negative (draw).
+    pub height: f64,
+}
+
 /// A cue strike: direction and speed given to the cue ball (the paper's cue, 2.3).
 #[derive(Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Shot {
@@ -13,7 +24,7 @@ pub struct Shot {
     pub speed: f64,
     /// Where the tip strikes (spin model only).
     #[serde(default)]
-    pub tip: crate::resolve::cue::TipOffset,
+    pub tip: TipOffset,
     /// Elevation of the cue above the table, radians, from 0 (level) to
     /// [`crate::limits::MAX_ELEVATION`] (spin model only; absent from old files: level).
     #[serde(default, skip_serializing_if = "is_level")]

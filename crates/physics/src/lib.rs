@@ -37,6 +37,7 @@ macro_rules! clone_reusing {
 }
 
 pub mod ball;
+pub mod bounds;
 pub mod check;
 pub mod detect;
 pub mod event;
@@ -58,7 +59,7 @@ pub mod soak;
 pub mod table;
 
 pub use ball::{BallId, BallState, Motion, Segment};
-pub use event::{Event, EventKind, Shot};
+pub use event::{Event, EventKind, Shot, TipOffset};
 pub use history::History;
 pub use limits::LimitError;
 pub use math::{Vec2, Vec3};
@@ -67,7 +68,7 @@ pub use params::{
     Prediction, Randomization, SpinModel,
 };
 pub use racks::Rack;
-pub use resolve::cue::{Miscue, TipOffset};
+pub use resolve::cue::Miscue;
 pub use sim::{Advance, BallSetup, SetupError, SimError, Simulation};
 pub use snooker::SnookerMarks;
 pub use table::{

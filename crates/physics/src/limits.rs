@@ -18,9 +18,9 @@
 //! | parameters | [`crate::Params::validate`]; `max_events` at least 1 |
 
 use crate::ball::BallId;
+use crate::ball::BallSetup;
 use crate::event::Shot;
 use crate::math::{Vec2, Vec3};
-use crate::sim::BallSetup;
 
 /// Fastest shot or ball, m/s. A hard break is 11–13 m/s; the soak plays shots up to 100 m/s
 /// and the probe's breaks keep every invariant up to 1e10 m/s (the first failure is near

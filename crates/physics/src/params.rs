@@ -5,6 +5,12 @@ use serde::{Deserialize, Serialize};
 /// Standard gravity, m/s^2.
 pub const G: f64 = 9.80665;
 
+/// WPBSA Official Rules (November 2019) 1.2: snooker ball diameter 52.5 mm.
+pub const SNOOKER_BALL_DIAMETER: f64 = 0.0525;
+/// Snooker ball mass, kg. 1.2 fixes no mass, only that balls of a set weigh the same within 0.5 g
+/// (3 g a set); 142 g is the mass of a tournament set of 52.5 mm phenolic balls.
+pub const SNOOKER_BALL_MASS: f64 = 0.142;
+
 /// Ball size and mass (WPA: 2.25 in diameter; the paper writes "radius").
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct BallSpec {
@@ -16,11 +22,11 @@ pub struct BallSpec {
 
 impl BallSpec {
     /// The snooker ball: 52.5 mm (WPBSA Official Rules, November 2019, 1.2), 142 g
-    /// ([`crate::snooker::SNOOKER_BALL_MASS`]: 1.2 fixes no mass).
+    /// ([`SNOOKER_BALL_MASS`]: 1.2 fixes no mass).
     pub fn snooker() -> Self {
         Self {
-            radius: 0.5 * crate::snooker::SNOOKER_BALL_DIAMETER,
-            mass: crate::snooker::SNOOKER_BALL_MASS,
+            radius: 0.5 * SNOOKER_BALL_DIAMETER,
+            mass: SNOOKER_BALL_MASS,
         }
     }
 }

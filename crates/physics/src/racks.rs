@@ -1,9 +1,9 @@
 //! Standard layouts. Ball 0 is always the cue ball, on the head spot (a quarter of the length
 //! from the head cushion, centred: the paper's figure 1).
 
+use crate::ball::BallSetup;
 use crate::math::Vec2;
 use crate::params::BallSpec;
-use crate::sim::BallSetup;
 use crate::table::{INCH, Table};
 use rand::{Rng, SeedableRng};
 

@@ -7,27 +7,21 @@
 //! Coordinates as everywhere in the crate: the bottom (baulk) cushion is the head at `-x`, the
 //! top cushion the foot at `+x`; left is `+y` looking from baulk to the top.
 
+use crate::ball::BallSetup;
 use crate::math::Vec2;
 use crate::params::BallSpec;
-use crate::sim::BallSetup;
 use crate::table::Table;
 use serde::{Deserialize, Serialize};
 
-/// 1.1(a): the playing area within the cushion faces, 3569 mm long.
-pub const SNOOKER_LENGTH: f64 = 3.569;
-/// 1.1(a): the playing area within the cushion faces, 1778 mm wide.
-pub const SNOOKER_WIDTH: f64 = 1.778;
+pub use crate::params::{SNOOKER_BALL_DIAMETER, SNOOKER_BALL_MASS};
+pub use crate::table::{SNOOKER_LENGTH, SNOOKER_WIDTH};
+
 /// 1.1(d): the baulk-line, 737 mm from the face of the bottom cushion.
 pub const BAULK_LINE: f64 = 0.737;
 /// 1.1(e): the radius of the "D", 292 mm.
 pub const D_RADIUS: f64 = 0.292;
 /// 1.1(f)(i): the black spot, 324 mm from the face of the top cushion.
 pub const BLACK_SPOT_FROM_TOP: f64 = 0.324;
-/// 1.2: ball diameter 52.5 mm.
-pub const SNOOKER_BALL_DIAMETER: f64 = 0.0525;
-/// Ball mass, kg. 1.2 fixes no mass, only that balls of a set weigh the same within 0.5 g
-/// (3 g a set); 142 g is the mass of a tournament set of 52.5 mm phenolic balls.
-pub const SNOOKER_BALL_MASS: f64 = 0.142;
 /// The gap left between the pink and the apex red ("as close as possible without touching",
 /// 3.2(a)), and between neighbouring reds of the triangle: 0.1 mm.
 pub const REDS_CLEARANCE: f64 = 1e-4;

@@ -6,6 +6,12 @@ use serde::{Deserialize, Serialize};
 /// Metres per inch; inches appear only where the WPA specifies them.
 pub const INCH: f64 = 0.0254;
 
+/// WPBSA Official Rules (November 2019) 1.1(a): the snooker playing area within the cushion
+/// faces, 3569 mm long ([`crate::snooker`] re-exports it with the table's marks).
+pub const SNOOKER_LENGTH: f64 = 3.569;
+/// 1.1(a): the snooker playing area within the cushion faces, 1778 mm wide.
+pub const SNOOKER_WIDTH: f64 = 1.778;
+
 /// Radius of the rounded cushion ends of [`Table::snooker_12ft`], metres: 1 in, the
 /// knuckle of a snooker cushion being broader than a pool jaw's 15 mm. With the 4 1/8 in
 /// middle mouths a 52.5 mm ball can still reach the opening line between the jaws.
@@ -319,8 +325,8 @@ impl Table {
     /// with the cushions ending in jaws of [`SNOOKER_JAW_RADIUS`].
     pub fn snooker_12ft() -> Self {
         Self {
-            length: crate::snooker::SNOOKER_LENGTH,
-            width: crate::snooker::SNOOKER_WIDTH,
+            length: SNOOKER_LENGTH,
+            width: SNOOKER_WIDTH,
             corner_mouth: 3.5 * INCH,
             side_mouth: 4.125 * INCH,
             pockets: PocketShape::Jaws {

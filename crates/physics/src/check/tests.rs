@@ -7,10 +7,10 @@
 //! check in turn and expects its test to fail.
 
 use super::*;
+use crate::ball::BallSetup;
 use crate::ball::Motion;
 use crate::math::Vec3;
 use crate::params::Params;
-use crate::sim::BallSetup;
 use crate::table::{Cushion, Pocket, Table};
 
 fn radius() -> f64 {

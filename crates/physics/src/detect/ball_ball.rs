@@ -1,8 +1,9 @@
 //! Ball–ball time of impact: the smallest non-negative root of a quartic.
 
 use super::cull::misses;
+use super::kinematics::Kinematics;
 use super::straight::straight_contact;
-use super::{Kinematics, RESTING_DEPTH, RESTING_SPEED, SEPARATION};
+use super::tolerances::{RESTING_DEPTH, RESTING_SPEED, SEPARATION};
 use crate::ball::Segment;
 use crate::math::Vec2;
 use crate::poly::{ContactTolerance, Poly, first_contact};

@@ -1,6 +1,7 @@
 //! Ball–cushion time of impact: the smallest valid root of a quadratic.
 
-use super::{Kinematics, RESTING_DEPTH, RESTING_SPEED, SEPARATION};
+use super::kinematics::Kinematics;
+use super::tolerances::{RESTING_DEPTH, RESTING_SPEED, SEPARATION};
 use crate::ball::Segment;
 use crate::math::Vec2;
 use crate::poly::{ContactTolerance, Poly, first_contact};

@@ -1,9 +1,9 @@
 //! Ball–jaw time of impact: a ball meeting the rounded end of a cushion at a pocket (a fixed
 //! circle), the ball–ball quartic with one body still.
 
-use super::Kinematics;
 use super::ball_ball::contact_quartic;
 use super::cull::misses;
+use super::kinematics::Kinematics;
 use crate::ball::Segment;
 use crate::math::Vec2;
 

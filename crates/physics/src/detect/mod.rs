@@ -5,48 +5,13 @@ mod ball_ball;
 mod ball_cushion;
 mod ball_jaw;
 pub(crate) mod cull;
+mod kinematics;
 mod straight;
+mod tolerances;
 
 pub use ball_ball::{ball_ball, ball_ball_kept, segments_apart};
 pub use ball_cushion::{ball_cushion, ball_line, cushion_contact, line_contact};
 pub use ball_jaw::ball_jaw;
 pub use cull::{MISS_ABSOLUTE_MARGIN, MISS_RELATIVE_MARGIN, MISS_ROUNDING, misses};
-
-/// Approach speed (m/s) below which touching bodies count as resting against each other rather
-/// than colliding. Far above rounding noise in velocities (about 1e-15 m/s at break speeds),
-/// far below any speed that moves a ball measurably.
-pub const RESTING_SPEED: f64 = 1e-10;
-
-/// Depth (m) to which bodies resting against each other may sink into one another (or a ball
-/// into a cushion or jaw) before the contact is resolved as a resting contact (see
-/// [`crate::resolve::resting_contact`]), which makes the pair hop apart by about this much.
-///
-/// Without it, two bodies pressed together by their accelerations (the paper's model
-/// decelerates each ball along its own velocity, so neighbours moving in slightly different
-/// directions push into each other; a spinning ball curves into a rail) touch again every
-/// `2 RESTING_SPEED / a` seconds: a Zeno cascade of millions of events; and bodies drifting
-/// into each other slower than [`RESTING_SPEED`] would sink without bound. With it, a pair
-/// pressed at `a` m/s^2 touches about `sqrt(a / (8 RESTING_DEPTH))` times a second. Far below
-/// the 1e-9 m the stress tests allow.
-pub const RESTING_DEPTH: f64 = 2e-10;
-
-/// Gap (m) a resting contact opens between bodies pressed together: they leave it at
-/// `sqrt(2 a RESTING_HOP)` for a pressing acceleration `a` (the speed turned from their
-/// tangential motion, never added), so a pressed pair touches `sqrt(a / (8 RESTING_HOP))`
-/// times a second. Hopping by [`RESTING_DEPTH`] alone, balls wedged in a pocket mouth by a
-/// sliding neighbour touched ~50,000 times a second per contact and a jam could exceed the
-/// event cap (soak seeds 38383, 43317). A tenth of a micrometre is below the elastic
-/// compression of two balls pressed by their own weight, and far below anything visible.
-pub const RESTING_HOP: f64 = 1e-7;
-
-/// Distance (m) by which touching bodies must separate before a new contact can start.
-pub const SEPARATION: f64 = 1e-15;
-
-/// How a time of impact is predicted (see [`crate::Prediction`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kinematics {
-    /// With each ball's real constant acceleration.
-    Exact,
-    /// As if each ball kept its current velocity (the paper's linear prediction).
-    Linear,
-}
+pub use kinematics::Kinematics;
+pub use tolerances::{RESTING_DEPTH, RESTING_HOP, RESTING_SPEED, SEPARATION};

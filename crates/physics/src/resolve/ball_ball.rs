@@ -34,7 +34,7 @@ pub fn frictional_spheres(
     b: &BallState,
     n: Vec2,
     e: f64,
-    mu: super::PairFriction,
+    mu: super::friction::PairFriction,
     radius: f64,
 ) -> Option<(BallState, BallState)> {
     let approach = (a.velocity - b.velocity).dot(n);

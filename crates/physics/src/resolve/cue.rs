@@ -1,19 +1,8 @@
 //! The cue strike (spin model): a cue, level or elevated, hitting the ball at a tip offset.
 
+pub use crate::event::TipOffset;
 use crate::math::{Vec2, Vec3};
 use crate::params::SpinModel;
-use serde::{Deserialize, Serialize};
-
-/// Where the cue tip strikes, as fractions of the ball's radius from its centre, seen from
-/// behind the cue.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct TipOffset {
-    /// Right of centre is positive (right english).
-    pub side: f64,
-    /// Above centre is positive (follow), below negative (draw).
-    pub height: f64,
-}
 
 /// The tip offset is beyond the miscue limit.
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]

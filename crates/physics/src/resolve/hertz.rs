@@ -245,7 +245,7 @@ pub fn impact(hertz: &Hertz, velocities: &mut [Vec2], edges: &[Edge]) -> Impact 
 /// the spins are scaled down to the energy before, so it never rises.
 pub fn impact_with_friction(
     hertz: &Hertz,
-    friction: Option<(crate::resolve::PairFriction, f64)>,
+    friction: Option<(crate::resolve::friction::PairFriction, f64)>,
     velocities: &mut [Vec2],
     spins: &mut [Vec3],
     edges: &[Edge],

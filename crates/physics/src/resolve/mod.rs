@@ -5,6 +5,7 @@
 mod ball_ball;
 mod ball_cushion;
 pub mod cue;
+mod friction;
 pub mod hertz;
 pub mod mathavan_2010;
 mod resting;
@@ -12,6 +13,7 @@ mod throw;
 
 pub use ball_ball::{equal_mass_restitution, frictional_spheres, resting_contact, unpress};
 pub use ball_cushion::{SETTLE_SPEED, han_2005, reflect, resting_reflect, settle};
+pub use friction::PairFriction;
 pub use mathavan_2010::{Mathavan2010, mathavan_2010};
 pub use resting::{
     FixedBody, InstantContacts, is_resting, keep_rolling, resting_on_fixed_body, resting_pair,
@@ -20,7 +22,7 @@ pub use throw::{contact_slip_speed, speed_dependent_spheres};
 
 use crate::ball::BallState;
 use crate::math::{Vec2, Vec3};
-use crate::params::{BallFriction, BallSpec, CushionModel, Model, Randomization, SpinModel};
+use crate::params::{BallSpec, CushionModel, Model, Randomization, SpinModel};
 use cue::{Miscue, TipOffset};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -167,40 +169,6 @@ pub enum BallLaw {
         /// Ball–ball friction.
         mu: PairFriction,
     },
-}
-
-/// The ball–ball friction of one model: its constant `mu_ball` and how the coefficient
-/// depends on the contact's slip speed ([`BallFriction`]).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PairFriction {
-    /// The model's constant coefficient, used by [`BallFriction::Constant`].
-    pub constant: f64,
-    /// Constant, or speed-dependent (Alciatore TP A-14).
-    pub law: BallFriction,
-}
-
-impl PairFriction {
-    /// The same coefficient `mu` at every slip speed.
-    pub fn constant(mu: f64) -> Self {
-        Self {
-            constant: mu,
-            law: BallFriction::Constant,
-        }
-    }
-
-    /// The spin model's ball–ball friction.
-    pub fn of(m: &SpinModel) -> Self {
-        Self {
-            constant: m.mu_ball,
-            law: m.ball_friction,
-        }
-    }
-
-    /// The coefficient at slip speed `v` (m/s).
-    #[inline]
-    pub fn at(&self, v: f64) -> f64 {
-        self.law.mu(self.constant, v)
-    }
 }
 
 impl BallLaw {

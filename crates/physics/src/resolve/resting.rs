@@ -3,7 +3,8 @@
 //! touching again in a Zeno cascade of ever smaller bounces; a slow spinning ball settles
 //! against a cushion or jaw instead ([`super::settle`]).
 
-use super::{resting_contact, resting_reflect, unpress};
+use super::ball_ball::{resting_contact, unpress};
+use super::ball_cushion::resting_reflect;
 use crate::ball::{BallId, BallState, Motion};
 use crate::detect::{RESTING_DEPTH, RESTING_HOP};
 use crate::math::{Vec2, Vec3};

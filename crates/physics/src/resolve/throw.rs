@@ -1,7 +1,8 @@
 //! Ball–ball friction that depends on the sliding speed at the contact (Alciatore, TP A-14
 //! "The effects of cut angle, speed, and spin on object ball throw", with the fit of TP A-28).
 
-use super::frictional_spheres;
+use super::ball_ball::frictional_spheres;
+use super::friction::PairFriction;
 use crate::ball::BallState;
 use crate::math::Vec2;
 use crate::params::BallFriction;
@@ -31,7 +32,7 @@ pub fn speed_dependent_spheres(
     radius: f64,
 ) -> Option<(BallState, BallState)> {
     // `frictional_spheres` evaluates the coefficient at the same starting slip speed.
-    let friction = super::PairFriction {
+    let friction = PairFriction {
         constant: 0.0,
         law: friction,
     };

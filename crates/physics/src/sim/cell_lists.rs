@@ -6,7 +6,7 @@
 //! partner's event re-solves only its pairs and its next crossing.
 
 use super::pending::{Pending, PendingKind, earlier, rank};
-use super::predict::Scene;
+use super::scene::Scene;
 use crate::ball::BallId;
 use crate::detect::{self, Kinematics};
 use crate::grid::{Grid, Side};

@@ -4,20 +4,14 @@
 //! them ([`crate::resolve::hertz`], [`crate::resolve::hertz::Tangential`]).
 
 use super::Simulation;
+use super::reach::MAX_CLUSTER;
 use crate::ball::{BallId, BallState};
 use crate::event::EventKind;
 use crate::math::{Vec2, Vec3};
 use crate::motion;
-use crate::params::{HertzContact, Model};
+use crate::params::Model;
 use crate::resolve;
 use crate::resolve::hertz::{self, Edge, Hertz};
-
-/// Slowest approach (m/s) that makes a cluster impact; slower contacts are resolved pair by
-/// pair (their balls move less than a micrometre before stopping, so their order is moot).
-pub const CLUSTER_MIN_SPEED: f64 = 1e-3;
-
-/// Most balls in one cluster impact; a larger connected cluster is resolved pair by pair.
-pub const MAX_CLUSTER: usize = 64;
 
 /// The balls and pairs of one cluster.
 #[derive(Clone, Debug, Default)]
@@ -26,29 +20,6 @@ pub(super) struct Cluster {
     pub members: Vec<BallId>,
     /// Pairs closer than the reach, as local indices, with their normals and gaps.
     pub edges: Vec<Edge>,
-}
-
-/// The cluster distance: balls whose surfaces are closer than this to a ball of a contact
-/// whose pair approaches at `approach` (m/s, along their normal) take part in it (`None`
-/// without a cluster model, or when the contact is too slow or resting: `depth` is how far
-/// the pair is into each other, `pressing` their relative normal acceleration, as in
-/// [`resolve::is_resting`]).
-pub fn cluster_reach(
-    model: &Model,
-    ball: &crate::params::BallSpec,
-    approach: f64,
-    depth: f64,
-    pressing: f64,
-) -> Option<f64> {
-    let Model::Spin(m) = model else { return None };
-    let material: HertzContact = m.cluster?;
-    if approach.is_nan()
-        || approach <= CLUSTER_MIN_SPEED
-        || resolve::is_resting(depth, approach, pressing)
-    {
-        return None;
-    }
-    Some(Hertz::elastic(&material, ball).reach(approach))
 }
 
 impl Simulation {

@@ -7,7 +7,7 @@
 //! game's aim preview) stays as cheap as it was.
 
 use super::Simulation;
-use super::predict::Scene;
+use super::scene::Scene;
 use crate::ball::BallId;
 
 impl Simulation {

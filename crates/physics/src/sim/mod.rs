@@ -13,18 +13,23 @@ use crate::params::{Model, ParamError, Params, SpinModel};
 use crate::resolve::{self, FixedBody, FixedContact, InstantContacts, Laws, NormalPerturbation};
 use crate::table::{Cushion, Pocket, PocketShape, Table};
 use pending::{Pending, PendingKind};
-use predict::{Bodies, Predictions, Scene, StrategyChoice};
+use predict::{Predictions, StrategyChoice};
+use scene::{Bodies, Scene};
 
 mod cell_lists;
 mod cluster;
 mod deferred;
+#[cfg(test)]
+mod forge;
 mod pair_table;
 mod path_box;
 mod pending;
 mod predict;
+mod reach;
+mod scene;
 mod setup;
 
-pub use cluster::{CLUSTER_MIN_SPEED, MAX_CLUSTER, cluster_reach};
+pub use reach::{CLUSTER_MIN_SPEED, MAX_CLUSTER, cluster_reach};
 pub use setup::{BallSetup, PLACEMENT_TOLERANCE, SetupError, SimError};
 
 /// What one [`Simulation::advance`] did.
@@ -516,7 +521,7 @@ impl Simulation {
             let da = self.segments[b].acceleration - self.segments[a].acceleration;
             let pressing = -da.dot(n) - dv.perp_dot(n).powi(2) / d.length().max(f64::MIN_POSITIVE);
             let depth = 2.0 * self.params.ball.radius - d.length();
-            let reach = cluster::cluster_reach(
+            let reach = reach::cluster_reach(
                 &self.params.model,
                 &self.params.ball,
                 -dv.dot(n),

@@ -4,7 +4,7 @@
 //! balls), and every other ball takes its best from its row of the table.
 
 use super::pending::{Pending, PendingKind, earlier, rank};
-use super::predict::Scene;
+use super::scene::Scene;
 use crate::ball::BallId;
 use crate::detect::{
     self,

@@ -1,56 +1,21 @@
-//! What a simulation starts from: the balls as given, the checks they must pass (one set,
-//! shared by [`Simulation::new`] and [`Simulation::place`]) and the errors they report.
+//! What a simulation starts from: the balls as given ([`BallSetup`], which the ball module
+//! owns), the checks they must pass (one set, shared by
+//! [`Simulation::new`](crate::Simulation::new) and
+//! [`Simulation::place`](crate::Simulation::place)) and the errors they report.
 
 use crate::ball::BallId;
 use crate::event::Shot;
 use crate::limits::{self, LimitError};
-use crate::math::{Vec2, Vec3};
+use crate::math::Vec2;
 use crate::params::ParamError;
 use crate::resolve;
 use crate::table::{Table, TableError};
-use serde::{Deserialize, Serialize};
 
-#[cfg(doc)]
-use super::Simulation;
+pub use crate::ball::BallSetup;
 
 /// How far two balls may overlap, or a ball cross a cushion line, in a valid starting layout
 /// (metres): exactly touching layouts computed in floating point land within rounding of it.
 pub const PLACEMENT_TOLERANCE: f64 = 1e-9;
-
-/// A ball as given to [`Simulation::new`].
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct BallSetup {
-    /// Number painted on the ball (0 for the cue ball).
-    pub number: u8,
-    /// Centre, metres.
-    pub position: Vec2,
-    /// Velocity, m/s.
-    #[serde(default)]
-    pub velocity: Vec2,
-    /// Angular velocity, rad/s (ignored by the paper's model, which has no spin).
-    #[serde(default)]
-    pub spin: Vec3,
-}
-
-impl BallSetup {
-    /// A ball at rest.
-    pub fn at(number: u8, position: Vec2) -> Self {
-        Self {
-            number,
-            position,
-            velocity: Vec2::ZERO,
-            spin: Vec3::ZERO,
-        }
-    }
-
-    /// A ball moving with `velocity` and no spin.
-    pub fn moving(number: u8, position: Vec2, velocity: Vec2) -> Self {
-        Self {
-            velocity,
-            ..Self::at(number, position)
-        }
-    }
-}
 
 /// Why a simulation could not be built or changed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -143,10 +108,11 @@ fn ball_name(index: BallId, number: u8) -> String {
     }
 }
 
-/// Checks one ball (index `id`) as given to [`Simulation::new`] or [`Simulation::place`]: its
+/// Checks one ball (index `id`) as given to [`Simulation::new`](crate::Simulation::new) or
+/// [`Simulation::place`](crate::Simulation::place): its
 /// position, velocity and spin are finite, its speed and spin within the input contract
 /// ([`crate::limits`]), and its centre where the solver itself may leave a ball
-/// ([`crate::check::outside_by`]: inside the cushion lines, or in a pocket mouth between the
+/// ([`crate::bounds::outside_by`]: inside the cushion lines, or in a pocket mouth between the
 /// jaws) up to [`PLACEMENT_TOLERANCE`]. Every state the solver produces passes.
 pub(super) fn check_ball(
     id: BallId,
@@ -174,7 +140,7 @@ pub(super) fn check_ball(
         }
     }
     limits::check_motion(velocity, spin, radius).map_err(|e| e.for_ball(id, number))?;
-    if crate::check::outside_by(table, radius, position) > PLACEMENT_TOLERANCE {
+    if crate::bounds::outside_by(table, radius, position) > PLACEMENT_TOLERANCE {
         return Err(SetupError::OutsideTable {
             ball: id,
             number,
@@ -229,19 +195,11 @@ pub(super) fn check_layout(balls: &[BallSetup], r: f64, table: &Table) -> Result
     Ok(())
 }
 
-/// Checks a shot of ball `id` (numbered `number`) as given to [`Simulation::strike`] at
+/// Checks a shot of ball `id` (numbered `number`) as given to
+/// [`Simulation::strike`](crate::Simulation::strike) at
 /// `time`: the shot and the clock within the input contract ([`crate::limits`]).
 pub(super) fn check_shot(id: BallId, number: u8, shot: &Shot, time: f64) -> Result<(), SetupError> {
     limits::check_shot(shot).map_err(|e| e.for_ball(id, number))?;
     limits::check_clock(time)?;
     Ok(())
-}
-
-#[cfg(test)]
-impl super::Simulation {
-    /// The history and the balls' current segments, to write into: the invariant monitor's
-    /// tests forge histories and states the solver never makes (`check/tests.rs`).
-    pub(crate) fn forge(&mut self) -> (&mut crate::History, &mut [crate::Segment]) {
-        (&mut self.history, &mut self.segments)
-    }
 }

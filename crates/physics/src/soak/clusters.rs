@@ -1,7 +1,7 @@
 //! Soak scenes made for cluster impacts: frozen and near-frozen racks broken at break speeds
 //! and at a crawl, some with every ball spinning, under the spin model with cluster impacts.
 
-use super::{SOAK_EVENT_CAP, Scenario, log_uniform, scenario, tip};
+use super::scenes::{SOAK_EVENT_CAP, Scenario, log_uniform, scenario, tip};
 use crate::event::Shot;
 use crate::math::{Vec2, Vec3};
 use crate::params::{Model, Params, SpinModel};

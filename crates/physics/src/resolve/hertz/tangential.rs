@@ -53,7 +53,7 @@
 //! the cloth's friction before and after the impact.
 
 use crate::params::BallFriction;
-use crate::resolve::PairFriction;
+use crate::resolve::friction::PairFriction;
 
 /// The regularisation speed `v_eps` of the slip law, as a fraction of the impact's fastest
 /// approach speed (see the module's documentation for why 3e-2).

@@ -123,8 +123,8 @@ fn a_gap_the_contact_closes_makes_the_middle_ball_pass_the_load_on() {
 
 const R: f64 = 0.028575;
 
-fn friction(mu: f64) -> Option<(crate::resolve::PairFriction, f64)> {
-    Some((crate::resolve::PairFriction::constant(mu), R))
+fn friction(mu: f64) -> Option<(crate::resolve::friction::PairFriction, f64)> {
+    Some((crate::resolve::friction::PairFriction::constant(mu), R))
 }
 
 /// Two balls alone in an impact with friction against the exact impulse law of an isolated
@@ -140,7 +140,7 @@ fn friction(mu: f64) -> Option<(crate::resolve::PairFriction, f64)> {
 fn a_lone_pair_with_friction_throws_as_the_exact_impulse_law() {
     use crate::ball::BallState;
     let h = hertz(0.95);
-    let law = crate::resolve::PairFriction::constant(0.05);
+    let law = crate::resolve::friction::PairFriction::constant(0.05);
     for (deg, spin, tol) in [
         (30.0f64, Vec3::ZERO, 5e-3),
         (3.0, Vec3::ZERO, 1e-4),

@@ -512,5 +512,5 @@ pub fn mathavan_2010(
     }
     mathavan_2010_with(v, w, n, m, radius, Accuracy::DEFAULT)
         .map(|(v, w, _)| (v, w))
-        .or_else(|| super::han_2005(v, w, n, m.e, m.mu_cushion, radius, m.height))
+        .or_else(|| super::ball_cushion::han_2005(v, w, n, m.e, m.mu_cushion, radius, m.height))
 }
