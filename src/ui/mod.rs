@@ -88,9 +88,10 @@ pub fn plugin(app: &mut App) {
                 .after(EguiPostUpdateSet::ProcessOutput)
                 .before(EguiPostUpdateSet::PostProcessOutput),
         )
+        .init_resource::<PassRects>()
         .add_systems(
             PostUpdate,
-            redraw_after_layout_change
+            record_pass_rects
                 .after(EguiPostUpdateSet::EndPass)
                 .before(EguiPostUpdateSet::PostProcessOutput),
         )
@@ -163,15 +164,51 @@ struct Held {
 struct ClickQueue {
     /// Events not yet given to egui, oldest first.
     held: Vec<Held>,
-    /// The interactive rectangles of the pass before the last one.
-    before: Option<Vec<egui::Rect>>,
     /// Buttons whose press was dropped: their next release is dropped too.
     dropping: [bool; egui::NUM_POINTER_BUTTONS],
+}
+
+impl ClickQueue {
+    /// The events egui reads this frame, `arrived` having come in since the last one and
+    /// `passes` being the rectangles of the last two passes ([`tag_arrivals`],
+    /// [`take_for_frame`]); and how many presses were dropped.
+    fn next_frame(
+        &mut self,
+        arrived: Vec<egui::Event>,
+        passes: &Passes,
+    ) -> (Vec<egui::Event>, usize) {
+        self.held
+            .extend(tag_arrivals(arrived, &passes.before, &passes.last));
+        take_for_frame(self, &passes.last)
+    }
 }
 
 /// The click queues, by egui context.
 #[derive(Default)]
 struct ClickQueues(Vec<(Entity, ClickQueue)>);
+
+/// The interactive rectangles of an egui context's last two passes.
+#[derive(Debug, Default, Clone, PartialEq)]
+struct Passes {
+    /// The pass before the last.
+    before: Vec<egui::Rect>,
+    /// The last pass.
+    last: Vec<egui::Rect>,
+}
+
+impl Passes {
+    /// Records the rectangles of the pass just ended; whether they differ from the last's.
+    fn record(&mut self, rects: Vec<egui::Rect>) -> bool {
+        let changed = !same_targets(&self.last, &rects);
+        self.before = std::mem::replace(&mut self.last, rects);
+        changed
+    }
+}
+
+/// Each egui context's [`Passes`], recorded once a frame after its pass
+/// ([`record_pass_rects`]) and read by the next frame's input ([`split_one_frame_clicks`]).
+#[derive(Resource, Debug, Default)]
+struct PassRects(Vec<(Entity, Passes)>);
 
 /// Rectangles of `rects` containing `pos`, back to front.
 fn under(rects: &[egui::Rect], pos: egui::Pos2) -> Vec<egui::Rect> {
@@ -267,12 +304,14 @@ fn take_for_frame(queue: &mut ClickQueue, now: &[egui::Rect]) -> (Vec<egui::Even
 /// change of a pointer button a frame, and no click on a layout the player had not seen.
 /// While events wait, the next frame is asked for.
 fn split_one_frame_clicks(
-    mut inputs: Query<(Entity, &mut EguiInput, &mut bevy_egui::EguiContext)>,
+    mut inputs: Query<(Entity, &mut EguiInput)>,
+    passes: Res<PassRects>,
     mut queues: Local<ClickQueues>,
     mut redraw: MessageWriter<RequestRedraw>,
 ) {
     let mut waiting = false;
-    for (entity, mut input, mut context) in &mut inputs {
+    let none = Passes::default();
+    for (entity, mut input) in &mut inputs {
         let index = match queues.0.iter().position(|(e, _)| *e == entity) {
             Some(index) => index,
             None => {
@@ -281,14 +320,12 @@ fn split_one_frame_clicks(
             }
         };
         let queue = &mut queues.0[index].1;
-        let now = context.get_mut().interactive_rects_last_pass();
-        let before = queue
-            .before
-            .replace(now.clone())
-            .unwrap_or_else(|| now.clone());
-        let arrivals = tag_arrivals(std::mem::take(&mut input.events), &before, &now);
-        queue.held.extend(arrivals);
-        let (events, dropped) = take_for_frame(queue, &now);
+        let passes = passes
+            .0
+            .iter()
+            .find(|(e, _)| *e == entity)
+            .map_or(&none, |(_, p)| p);
+        let (events, dropped) = queue.next_frame(std::mem::take(&mut input.events), passes);
         if dropped > 0 {
             debug!("{dropped} click(s) dropped: the layout under them changed");
         }
@@ -301,24 +338,29 @@ fn split_one_frame_clicks(
     }
 }
 
-/// A pass that moved something the pointer can act on is followed by one more frame: the
-/// idle window's last two passes then agree, and a click long after the change is not taken
-/// for one made while the layout moved ([`tag_arrivals`]; played: the New game button did
-/// nothing after a drop-down had been closed with Escape, no frame having followed).
-fn redraw_after_layout_change(
+/// Records each context's interactive rectangles after its pass ([`PassRects`]). A pass that
+/// moved something the pointer can act on is followed by one more frame: the idle window's
+/// last two passes then agree, and a click long after the change is not taken for one made
+/// while the layout moved ([`tag_arrivals`]; played: the New game button did nothing after
+/// a drop-down had been closed with Escape, no frame having followed).
+fn record_pass_rects(
     mut contexts: Query<(Entity, &mut bevy_egui::EguiContext)>,
-    mut last: Local<Vec<(Entity, Vec<egui::Rect>)>>,
+    mut recorded: ResMut<PassRects>,
     mut redraw: MessageWriter<RequestRedraw>,
 ) {
     let mut changed = false;
-    let mut next = Vec::new();
     for (entity, mut context) in &mut contexts {
         let rects = context.get_mut().interactive_rects_last_pass();
-        let before = last.iter().find(|(e, _)| *e == entity).map(|(_, r)| r);
-        changed |= before.is_none_or(|before| !same_targets(before, &rects));
-        next.push((entity, rects));
+        let index = match recorded.0.iter().position(|(e, _)| *e == entity) {
+            Some(index) => index,
+            None => {
+                recorded.0.push((entity, Passes::default()));
+                recorded.0.len() - 1
+            }
+        };
+        changed |= recorded.0[index].1.record(rects);
     }
-    *last = next;
+    recorded.0.retain(|(e, _)| contexts.contains(*e));
     if changed {
         redraw.write(RequestRedraw);
     }
@@ -597,6 +639,9 @@ mod tests {
         // A click held over frames of a second (as `allow_slow_clicks` allows in the game).
         ctx.options_mut(|o| o.input_options.max_click_duration = 10.0);
         let mut queue = super::ClickQueue::default();
+        let mut passes = super::Passes::default();
+        passes.record(ctx.interactive_rects_last_pass());
+        passes.record(ctx.interactive_rects_last_pass());
         let mut batches = batches.into_iter();
         let mut count = 0;
         loop {
@@ -604,16 +649,10 @@ mod tests {
             if arrived.is_none() && queue.held.is_empty() {
                 return count;
             }
-            let now = ctx.interactive_rects_last_pass();
-            let before = queue
-                .before
-                .replace(now.clone())
-                .unwrap_or_else(|| now.clone());
-            let arrivals = super::tag_arrivals(arrived.unwrap_or_default(), &before, &now);
-            queue.held.extend(arrivals);
-            let (events, _) = super::take_for_frame(&mut queue, &now);
+            let (events, _) = queue.next_frame(arrived.unwrap_or_default(), &passes);
             *time += 1.0;
             timed_pass(ctx, Some(*time), events, &mut ui);
+            passes.record(ctx.interactive_rects_last_pass());
             count += 1;
         }
     }
