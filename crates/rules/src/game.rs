@@ -22,7 +22,7 @@
 
 pub use crate::state::{Game, GameState, RuleError};
 pub use crate::turn::{
-    Call, CallRule, Choice, CueBall, NextShot, Outcome, Seat, Verdict, verdict_words, what_happened,
+    Call, CallRule, Choice, CueBall, NextShot, Outcome, Seat, Verdict, what_happened,
 };
 
 use crate::shot::ShotSummary;

@@ -42,7 +42,7 @@ pub use drill::{Attempt, Drill, DrillError, DrillScore, DrillShot, Goal, Zone};
 pub use foul::{BallOn, Foul, Group, WinReason, pocket_name};
 pub use game::{
     Call, CallRule, Choice, CueBall, Game, GameState, NextShot, Outcome, RuleError, Seat, Verdict,
-    verdict_words, what_happened,
+    what_happened,
 };
 pub use hand::{PlacementError, check_placement};
 pub use log::{GameLog, LogError, LoggedShot, RulesLog};

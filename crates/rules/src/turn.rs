@@ -239,8 +239,11 @@ impl Verdict {
 /// dropped ("the 7 in the right side pocket, the 3 in the foot-left corner"), or "nothing
 /// pocketed"; and with a ball called (WPA 1.6), whether it went where called: "the 7 missed
 /// the called right side pocket", "the 7 went in the foot-left corner, not the called right
-/// side pocket".
-pub fn what_happened(summary: &ShotSummary, call: Call) -> String {
+/// side pocket". What the verdict's `fouls` already say is left out (issue 48, played:
+/// "foul: the cue ball hit no ball: no ball hit; nothing pocketed"): a cue ball that hit no
+/// ball ([`Foul::NoBallHit`]) pocketed nothing, and [`Foul::NoRail`] and
+/// [`Foul::IllegalBreak`] say that no ball was pocketed; the words may then be empty.
+pub fn what_happened(summary: &ShotSummary, call: Call, fouls: &[Foul]) -> String {
     let name = |b: u8| {
         if b == crate::shot::CUE {
             "the cue ball".to_owned()
@@ -268,34 +271,18 @@ pub fn what_happened(summary: &ShotSummary, call: Call) -> String {
         .iter()
         .map(|&(b, p)| format!("{} in the {}", name(b), crate::foul::pocket_name(p)))
         .collect();
-    if dropped.is_empty() {
-        if summary.first_contact.is_none() {
+    let said = |f: fn(&Foul) -> bool| fouls.iter().any(f);
+    let no_hit = summary.first_contact.is_none();
+    if !dropped.is_empty() {
+        parts.push(dropped.join(", "));
+    } else if !said(|f| matches!(f, Foul::NoBallHit)) {
+        if no_hit {
             parts.push("no ball hit".to_owned());
         }
-        parts.push("nothing pocketed".to_owned());
-    } else {
-        parts.push(dropped.join(", "));
+        // A cue ball that hit nothing pocketed nothing: saying both is saying it twice.
+        if !no_hit && !said(|f| matches!(f, Foul::NoRail | Foul::IllegalBreak { .. })) {
+            parts.push("nothing pocketed".to_owned());
+        }
     }
     parts.join("; ")
-}
-
-/// A verdict's reason followed by what the shot did ([`what_happened`]), without saying
-/// twice what the reason says: "foul: the cue ball hit no ball" needs no "no ball hit", and
-/// "no ball pocketed and 0 balls to a rail" no "nothing pocketed" (issue 48, played: "foul:
-/// the cue ball hit no ball: no ball hit; nothing pocketed").
-pub fn verdict_words(reason: &str, what: &str) -> String {
-    let no_hit = reason.contains("hit no ball") || reason.contains("no ball hit");
-    // A cue ball that hit nothing pocketed nothing (a scratch would be named, not this).
-    let no_hit_anywhere = no_hit || what.split("; ").any(|p| p == "no ball hit");
-    let said = |part: &str| match part {
-        "no ball hit" => no_hit,
-        "nothing pocketed" => reason.contains("no ball pocketed") || no_hit_anywhere,
-        _ => false,
-    };
-    let rest: Vec<&str> = what.split("; ").filter(|p| !said(p)).collect();
-    if rest.is_empty() {
-        reason.to_owned()
-    } else {
-        format!("{reason}: {}", rest.join("; "))
-    }
 }

@@ -500,51 +500,47 @@ fn wpa_3_6_a_call_of_the_other_group_or_the_early_8_is_refused() {
 fn what_happened_names_the_balls_the_pockets_and_the_call() {
     let made = shot(Some(7), &[], &[(7, SideRight)]);
     assert_eq!(
-        what_happened(&made, call(7, SideRight)),
+        what_happened(&made, call(7, SideRight), &[]),
         "the 7 in the right side pocket"
     );
     let missed = shot(Some(7), &[7], &[]);
     assert_eq!(
-        what_happened(&missed, call(7, SideRight)),
+        what_happened(&missed, call(7, SideRight), &[]),
         "the 7 missed the called right side pocket; nothing pocketed"
     );
     let elsewhere = shot(Some(7), &[], &[(7, FootLeft), (0, HeadRight)]);
     assert_eq!(
-        what_happened(&elsewhere, call(7, SideRight)),
+        what_happened(&elsewhere, call(7, SideRight), &[]),
         "the 7 went in the foot-left corner, not the called right side pocket; \
          the 7 in the foot-left corner, the cue ball in the head-right corner"
     );
+    // A cue ball that hit nothing pocketed nothing: said once.
     assert_eq!(
-        what_happened(&shot(None, &[], &[]), Call::None),
-        "no ball hit; nothing pocketed"
+        what_happened(&shot(None, &[], &[]), Call::None, &[]),
+        "no ball hit"
     );
 }
 
-/// Issue 48: the verdict does not say twice what its reason says.
+/// Issue 48: what a shot did leaves out what its fouls already say (WPA 6.2, 2.3 / 3.3).
 #[test]
-fn a_verdict_does_not_repeat_its_reason() {
-    use billiards_rules::verdict_words;
-    let nothing = "no ball hit; nothing pocketed";
+fn what_happened_does_not_repeat_the_fouls() {
+    let nothing = shot(None, &[], &[]);
+    assert_eq!(what_happened(&nothing, Call::None, &[Foul::NoBallHit]), "");
+    let illegal_break = [Foul::IllegalBreak { to_rail: 0 }];
     assert_eq!(
-        verdict_words("foul: the cue ball hit no ball", nothing),
-        "foul: the cue ball hit no ball"
+        what_happened(&nothing, Call::None, &illegal_break),
+        "no ball hit"
     );
+    let soft = shot(Some(1), &[], &[]);
+    assert_eq!(what_happened(&soft, Call::None, &illegal_break), "");
+    assert_eq!(what_happened(&soft, Call::None, &[Foul::NoRail]), "");
+    // A foul that says nothing of pocketing keeps "nothing pocketed".
+    let wrong = [Foul::WrongBallFirst {
+        hit: 5,
+        on: BallOn::Lowest(1),
+    }];
     assert_eq!(
-        verdict_words(
-            "foul: illegal break: no ball pocketed and 0 balls to a rail, 4 needed",
-            nothing
-        ),
-        "foul: illegal break: no ball pocketed and 0 balls to a rail, 4 needed: no ball hit"
-    );
-    assert_eq!(
-        verdict_words("legal", "the 7 in the right side pocket"),
-        "legal: the 7 in the right side pocket"
-    );
-    assert_eq!(
-        verdict_words(
-            "foul: the 5 was hit first",
-            "the 7 missed the called right side pocket; nothing pocketed"
-        ),
-        "foul: the 5 was hit first: the 7 missed the called right side pocket; nothing pocketed"
+        what_happened(&soft, call(7, SideRight), &wrong),
+        "the 7 missed the called right side pocket; nothing pocketed"
     );
 }

@@ -143,7 +143,11 @@ pub(super) fn judge_shot(
         call,
         verdict: verdict.clone(),
     });
-    game.last_what = Some(billiards_rules::what_happened(&summary, call));
+    game.last_what = Some(billiards_rules::what_happened(
+        &summary,
+        call,
+        &verdict.fouls,
+    ));
     game.last = Some(verdict);
     game.verdict_shown = true;
     save_rules_log(

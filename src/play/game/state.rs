@@ -157,8 +157,8 @@ impl GameInPlay {
     /// the cue ball was pocketed; the 3 in the foot-left corner, the cue ball in ...".
     pub fn verdict_text(&self, verdict: &Verdict) -> String {
         match &self.last_what {
-            Some(what) => billiards_rules::verdict_words(&verdict.reason(), what),
-            None => verdict.reason(),
+            Some(what) if !what.is_empty() => format!("{}: {what}", verdict.reason()),
+            _ => verdict.reason(),
         }
     }
 
