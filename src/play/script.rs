@@ -13,12 +13,12 @@
 use std::collections::VecDeque;
 
 use bevy::prelude::*;
-use billiards_physics::{BallSetup, Pocket, Vec2};
+use billiards_physics::{Pocket, Vec2};
 use billiards_rules::Call;
 
 use super::game::{Rules, Turn, TurnCommand};
 use crate::{
-    sim::{LayoutRequested, Referee, ShotRequested, SimStatus, SimSystems, Solver},
+    sim::{LayoutRequested, Referee, ShotRequested, SimStatus, SimSystems, Solver, layout_now},
     view::screenshot::CaptureHeld,
 };
 
@@ -143,25 +143,25 @@ fn play_script(
     (status, referee, rules): (Res<SimStatus>, Res<Referee>, Res<Rules>),
     turn: Option<Res<State<Turn>>>,
     solver: Option<Res<Solver>>,
-    (mut rested, mut finished): (Local<u32>, Local<bool>),
+    (mut rested, mut world): (Local<u32>, Commands),
     mut shots: MessageWriter<ShotRequested>,
     (mut commands, mut layouts): (MessageWriter<TurnCommand>, MessageWriter<LayoutRequested>),
     held: Option<ResMut<CaptureHeld>>,
 ) {
     let at_rest = status.at_rest && solver.as_ref().is_some_and(|s| s.simulation().is_at_rest());
     *rested = if at_rest { *rested + 1 } else { 0 };
-    // Once the last step's balls rest, the capture may go: what the computer does next (its
-    // turn is a state to see) does not hold it.
-    *finished |= script.0.is_empty() && *rested >= REST_FRAMES;
+    // Once the last step's balls rest, the script is done and the capture may go: what the
+    // computer does next (its turn is a state to see) does not hold it.
+    let finished = script.0.is_empty() && *rested >= REST_FRAMES;
     if let Some(mut held) = held {
-        held.0 = !*finished;
+        held.0 = !finished;
     }
-    let Some(&step) = script.0.front() else {
+    if finished {
+        world.remove_resource::<LaunchScript>();
+    }
+    let Some(&step) = script.0.front().filter(|_| *rested >= REST_FRAMES) else {
         return;
     };
-    if *rested < REST_FRAMES {
-        return;
-    }
     let turn = turn.map(|t| *t.get());
     let human_to_play = rules.to_play().is_none_or(|(level, _)| level.is_none());
     let done = match step {
@@ -216,13 +216,7 @@ fn play_script(
         }
         Step::Move { ball, at } => {
             let Some(solver) = solver else { return };
-            let sim = solver.simulation();
-            let mut balls: Vec<BallSetup> = sim
-                .balls()
-                .zip(sim.numbers())
-                .filter(|(b, _)| b.motion.on_table())
-                .map(|(b, &n)| BallSetup::at(n, b.position))
-                .collect();
+            let mut balls = layout_now(solver.simulation());
             match balls.iter_mut().find(|b| b.number == ball) {
                 Some(b) => {
                     b.position = Vec2::new(at.x, at.y);

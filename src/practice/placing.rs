@@ -14,7 +14,7 @@ use billiards_physics::{BallSetup, Simulation};
 use super::{position::POSITION_NAME, state::Practice};
 use crate::{
     play::{cue::PointerInput, game::Rules},
-    sim::{LayoutRequested, SimStatus, Solver, to_dvec2},
+    sim::{LayoutRequested, SimStatus, Solver, layout_now, to_dvec2},
     table::balls::{Ball, BallMotion, Pocketed},
     table::geometry::{TableSpec, to_world},
 };
@@ -159,15 +159,6 @@ pub fn ball_name(number: u8) -> String {
     } else {
         format!("{number} ball")
     }
-}
-
-/// The balls on the table now, by number, as setups at rest.
-pub fn layout_now(sim: &Simulation) -> Vec<BallSetup> {
-    sim.balls()
-        .zip(sim.numbers())
-        .filter(|(b, _)| b.motion.on_table())
-        .map(|(b, &n)| BallSetup::at(n, b.position))
-        .collect()
 }
 
 /// The numbers the Place tool may add: those of 0 to [`MAX_NUMBER`] not on the table.

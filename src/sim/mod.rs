@@ -29,7 +29,7 @@ pub use messages::*;
 pub use respot::{
     HandError, move_ball_in_hand, place_ball_in_hand, respot_after_scratch, respot_ball,
 };
-pub use solver::{JAW_RADIUS, Solver, ball_motion, params_for, table_for, to_dvec2};
+pub use solver::{JAW_RADIUS, Solver, ball_motion, layout_now, params_for, table_for, to_dvec2};
 
 use commands::{
     apply_physics_settings, follow_table_setup, place_edited_balls, rack_balls, strike_cue_ball,

@@ -187,6 +187,16 @@ pub fn params_for(spec: &TableSpec, settings: &PhysicsSettings) -> Params {
     }
 }
 
+/// The balls on the table now, by number, as setups at rest (what a layout edit starts
+/// from: the Place tool, a launch script's `move`).
+pub fn layout_now(sim: &physics::Simulation) -> Vec<physics::BallSetup> {
+    sim.balls()
+        .zip(sim.numbers())
+        .filter(|(b, _)| b.motion.on_table())
+        .map(|(b, &n)| physics::BallSetup::at(n, b.position))
+        .collect()
+}
+
 /// A solver vector as a Bevy one.
 pub fn to_dvec2(v: physics::Vec2) -> DVec2 {
     DVec2::new(v.x, v.y)

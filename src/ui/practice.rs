@@ -177,7 +177,7 @@ fn save_drill_rows(ui: &mut egui::Ui, state: &mut PracticeParam) {
         .solver
         .as_ref()
         .map(|s| {
-            crate::practice::placing::layout_now(s.simulation())
+            crate::sim::layout_now(s.simulation())
                 .iter()
                 .map(|b| b.number)
                 .filter(|&n| n != 0)

@@ -80,7 +80,7 @@ pub fn practice_app() -> App {
 #[allow(dead_code, reason = "the practice and clipboard tests use it")]
 pub fn layout(app: &App) -> Vec<(u8, bevy::math::DVec2)> {
     let sim = app.world().resource::<sim::Solver>().simulation();
-    let mut balls: Vec<(u8, bevy::math::DVec2)> = billiards::practice::placing::layout_now(sim)
+    let mut balls: Vec<(u8, bevy::math::DVec2)> = sim::layout_now(sim)
         .into_iter()
         .map(|b| (b.number, bevy::math::DVec2::new(b.position.x, b.position.y)))
         .collect();
