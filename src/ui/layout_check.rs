@@ -90,9 +90,9 @@ fn check_text(
             }
             Shape::Text(text) if text.angle == 0.0 && !text.galley.is_empty() => {
                 *texts += 1;
-                words_seen.push(format!("text: {}", text.galley.text().replace('\n', " ")));
                 let rect = text.galley.rect.translate(text.pos.to_vec2());
                 let words = text.galley.text();
+                words_seen.push(format!("text: {}", words.replace('\n', " ")));
                 if let Some(problem) = text_problem(words, rect, clip, text.galley.elided, screen) {
                     problems.push(problem);
                 }

@@ -68,7 +68,16 @@ pub(crate) fn judge_stroke(
         &mut status,
     );
     if !verdict.fair() {
-        game.last_foul = Some(verdict.text.clone());
+        // From the fouls, not the verdict's sentence, whose "foul: " would read "last foul:
+        // foul: ..." (issue 48).
+        let fouls: Vec<String> = verdict.fouls.iter().map(ToString::to_string).collect();
+        game.last_foul = Some(format!(
+            "{}{}: {} points to {}",
+            fouls.join("; "),
+            if verdict.miss { " (and a miss)" } else { "" },
+            verdict.penalty,
+            game.name(verdict.striker.other())
+        ));
     }
     let spots = verdict.spots.clone();
     let in_hand = verdict.next.as_ref().is_some_and(|n| n.in_hand);

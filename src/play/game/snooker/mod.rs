@@ -246,16 +246,7 @@ impl SnookerInPlay {
             lines.push(format!("last stroke: {}", verdict.text));
         }
         if let Some(foul) = &self.last_foul {
-            // The verdict's own "foul: " would read "last foul: foul: ..." (issue 48).
-            let line = match (
-                foul.strip_prefix("foul and a miss: "),
-                foul.strip_prefix("foul: "),
-            ) {
-                (Some(rest), _) => format!("last foul: {rest} (and a miss)"),
-                (None, Some(rest)) => format!("last foul: {rest}"),
-                (None, None) => format!("last foul: {foul}"),
-            };
-            lines.push(line);
+            lines.push(format!("last foul: {foul}"));
         }
         lines
     }
