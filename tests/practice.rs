@@ -27,6 +27,30 @@ fn at_rest(app: &App) -> bool {
     app.world().resource::<Solver>().simulation().is_at_rest()
 }
 
+/// Starts the drill of `file` and runs the frames that set it up: the session's drill and
+/// its balls (number and centre, the cue ball first), checked to be on the table.
+fn start_drill(app: &mut App, file: &str) -> (billiards_rules::Drill, Vec<(u8, DVec2)>) {
+    let index = drill_index(app, file);
+    app.world_mut().write_message(DrillRequested { index });
+    for _ in 0..3 {
+        app.update();
+    }
+    assert_eq!(practice_state(app), Practice::Drill, "{file}");
+    let drill = app.world().resource::<DrillSession>().drill.clone();
+    let start: Vec<(u8, DVec2)> = drill
+        .position
+        .balls
+        .iter()
+        .map(|b| (b.number, DVec2::new(b.position.x, b.position.y)))
+        .collect();
+    assert_eq!(
+        layout(app),
+        start,
+        "{file}: the drill's balls, where it has them"
+    );
+    (drill, start)
+}
+
 fn drill_index(app: &App, file: &str) -> usize {
     let list = app.world().resource::<DrillList>();
     list.drills.iter().position(|(f, _)| f == file).unwrap()
@@ -39,20 +63,7 @@ fn drill_index(app: &App, file: &str) -> usize {
 #[test]
 fn a_drill_attempt_is_judged_as_the_pure_solver_judges_it() {
     let mut app = app();
-    let index = drill_index(&app, "01-stop-shot.json");
-    app.world_mut().write_message(DrillRequested { index });
-    for _ in 0..3 {
-        app.update();
-    }
-    assert_eq!(practice_state(&app), Practice::Drill);
-    let drill = app.world().resource::<DrillSession>().drill.clone();
-    let start: Vec<(u8, DVec2)> = drill
-        .position
-        .balls
-        .iter()
-        .map(|b| (b.number, DVec2::new(b.position.x, b.position.y)))
-        .collect();
-    assert_eq!(layout(&app), start, "the drill's balls, where it has them");
+    let (drill, start) = start_drill(&mut app, "01-stop-shot.json");
     let params = *app.world().resource::<Solver>().simulation().params();
 
     let (cue, one) = (start[0].1, start[1].1);
@@ -302,20 +313,7 @@ fn each_standard_drill_loads_plays_and_scores() {
         .collect();
     assert_eq!(files.len(), 11, "{files:?}");
     for file in files {
-        let index = drill_index(&app, &file);
-        app.world_mut().write_message(DrillRequested { index });
-        for _ in 0..3 {
-            app.update();
-        }
-        assert_eq!(practice_state(&app), Practice::Drill, "{file}");
-        let drill = app.world().resource::<DrillSession>().drill.clone();
-        let start: Vec<(u8, DVec2)> = drill
-            .position
-            .balls
-            .iter()
-            .map(|b| (b.number, DVec2::new(b.position.x, b.position.y)))
-            .collect();
-        assert_eq!(layout(&app), start, "{file}: the drill's balls");
+        let (drill, start) = start_drill(&mut app, &file);
         let cue = start[0].1;
         let target = drill.object_balls()[0];
         let at = start.iter().find(|b| b.0 == target).unwrap().1;
