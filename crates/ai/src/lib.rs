@@ -16,6 +16,9 @@
 //!   from their noisy outcomes;
 //! - [`drill`]: the computer at a drill, by the rules' search or one scored by the drill;
 //! - [`level`]: skill levels (noise and budget); [`greedy`]: a baseline without simulation;
+//! - [`any_game`]: the computer at any game through the one game interface
+//!   ([`billiards_rules::GameRules`]): one search, valued from the rules' judgements;
+//!   [`any_match`]: a whole match of any game between two levels;
 //! - [`snooker`]: the computer at snooker ([`decide_snooker`]), the same search judged by the
 //!   WPBSA rules and valued in points, and a whole frame between two levels.
 //!
@@ -29,6 +32,8 @@
 //! the events (`billiards_rules::summarise`) and pass them with [`Plan::call`] to
 //! `GameState::play`. A [`Decision::Choose`] goes to `GameState::choose`.
 
+pub mod any_game;
+pub mod any_match;
 pub mod candidates;
 pub mod drill;
 pub mod evaluate;
