@@ -44,6 +44,7 @@ pub mod placement;
 pub mod play;
 pub mod position;
 pub mod quiet;
+pub mod rounds;
 mod search;
 pub mod snooker;
 pub mod twoply;
