@@ -156,7 +156,8 @@ pub fn play_match(
                 game.score_line()
             ));
             if end.match_over {
-                run.winner = Some(end.winner);
+                // A one-player game (a drill session) names its player, not a try's winner.
+                run.winner = game.match_winner().or(Some(end.winner));
                 break;
             }
             let balls = game.next_game().map_err(|e| e.0)?;

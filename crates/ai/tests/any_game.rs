@@ -37,3 +37,30 @@ fn the_same_seed_plays_the_same_match() {
     let (a, b) = (run("nine-ball", 9), run("nine-ball", 9));
     assert_eq!(a, b);
 }
+
+/// A drill is a one-player game behind the same interface: the computer plays a session of
+/// every standard drill to its end, each try judged by the drill's goals.
+#[test]
+fn every_standard_drill_is_a_session_played_through_the_interface() {
+    use billiards_rules::Drill;
+    use billiards_rules::drill_game::DrillGame;
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/drills");
+    let drills = Drill::load_dir(&dir).unwrap();
+    assert!(drills.len() >= 10, "{} drills", drills.len());
+    let params = Params {
+        model: Model::Spin(SpinModel::default()),
+        ..Params::default()
+    };
+    for loaded in drills {
+        let mut drill = loaded.1.unwrap();
+        drill.tries = 3;
+        let name = drill.name.clone();
+        let mut game = DrillGame::new(drill, "A".to_owned(), params.ball).unwrap();
+        let levels = [Level::Medium, Level::Medium];
+        let r = play_match(&mut game, &params, levels, 1, 100, &mut |_| {}).unwrap();
+        assert_eq!(r.games, 3, "{name}: three tries judged: {}", r.score_line);
+        assert_eq!(r.winner, Some(billiards_rules::Seat::A), "{name}");
+        assert_eq!(game.score.tries, 3, "{name}");
+        assert!(r.score_line.contains("of 3 tries made"), "{}", r.score_line);
+    }
+}

@@ -21,11 +21,13 @@
 //! - [`drill`]: drills, a position with goals and tries, judged from the solver's record;
 //! - [`interface`]: the one interface every game implements ([`GameRules`]), with pool's
 //!   games behind it in [`pool`] and snooker's in [`snooker::rules`];
+//! - [`drill_game`]: a drill session behind the interface, a one-player game of tries;
 //! - [`catalog`]: every game, found by its command-line id and started behind the interface.
 
 pub mod breaks;
 pub mod catalog;
 pub mod drill;
+pub mod drill_game;
 pub mod eight_ball;
 pub mod foul;
 pub mod game;
