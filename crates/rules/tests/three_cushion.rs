@@ -4,7 +4,9 @@
 //! Art. 83 three cushions), driven by hand-built event lists and by the solver on the carom
 //! table.
 
-use billiards_physics::{BallId, BallState, Cushion, Event, EventKind, Shot, Table, Vec2};
+use billiards_physics::{
+    BallId, BallState, Cushion, Event, EventKind, Shot, Simulation, Table, Vec2,
+};
 use billiards_rules::three_cushion::{
     Ball, Foul, Outcome, Rules, STARTING_SPOT_OFFSET, ThreeCushionError, ThreeCushionGame,
 };
@@ -483,4 +485,102 @@ fn strokes_the_rules_cannot_judge_are_refused_with_a_reason() {
     };
     assert!(ThreeCushionGame::new(bad, &Table::carom_match(), R).is_err());
     assert!(ThreeCushionGame::new(Rules::default(), &Table::carom_match(), 0.2).is_err());
+}
+
+// ---- The solver on the carom table -------------------------------------------------------
+
+/// The paper's model with the carom ball: no spin, so a path is straight between mirror
+/// rebounds (e = 1) and a plan drawn with reflections is the path the solver takes.
+fn paper_carom() -> billiards_physics::Params {
+    billiards_physics::Params {
+        model: billiards_physics::Model::Paper(billiards_physics::PaperModel::default()),
+        ..billiards_physics::Params::carom()
+    }
+}
+
+/// The balls at `at` (by id) placed by hand, then `cue` struck with `shot` and run to rest:
+/// the stroke's events as the game receives them.
+fn solver_stroke(at: [Vec2; 3], cue: BallId, shot: Shot) -> Vec<Event> {
+    let setups: Vec<_> = (0..3)
+        .map(|i| billiards_physics::BallSetup::at(i as u8, at[i]))
+        .collect();
+    let mut sim = Simulation::new(Table::carom_match(), paper_carom(), &setups).unwrap();
+    sim.strike(cue, shot).unwrap();
+    sim.run_to_rest().unwrap();
+    let mut events: Vec<Event> = (0..3).map(|i| placed(i, at[i])).collect();
+    events.extend_from_slice(sim.history().events());
+    events
+}
+
+/// The aim from `from` that reaches `to` after rebounding off `cushions` in that order
+/// (mirror images of `to` across the cushion lines the centre meets, last cushion first),
+/// and the direction the ball arrives in.
+fn bank(from: Vec2, to: Vec2, cushions: &[Cushion]) -> (f64, Vec2) {
+    let t = Table::carom_match();
+    let (bx, by) = (0.5 * t.length - R, 0.5 * t.width - R);
+    let mirror = |p: Vec2, c: Cushion| match c {
+        Cushion::Head => Vec2::new(-2.0 * bx - p.x, p.y),
+        Cushion::Foot => Vec2::new(2.0 * bx - p.x, p.y),
+        Cushion::Left => Vec2::new(p.x, 2.0 * by - p.y),
+        Cushion::Right => Vec2::new(p.x, -2.0 * by - p.y),
+    };
+    let image = cushions.iter().rev().fold(to, |p, &c| mirror(p, c));
+    let d = (image - from).normalized().unwrap();
+    let arrive = cushions.iter().fold(d, |d, c| match c {
+        Cushion::Head | Cushion::Foot => Vec2::new(-d.x, d.y),
+        Cushion::Left | Cushion::Right => Vec2::new(d.x, -d.y),
+    });
+    (d.angle(), arrive)
+}
+
+/// B's planned stroke: the yellow from `from` off `cushions` to `ghost`, where it cuts the
+/// white thinly (its centre 80 degrees off the path) and runs on (the paper model keeps the
+/// tangential part) 0.4 m into the red. The layout by id, and the shot.
+fn planned(from: Vec2, ghost: Vec2, cushions: &[Cushion]) -> ([Vec2; 3], Shot) {
+    let (angle, d) = bank(from, ghost, cushions);
+    let cut = 80f64.to_radians();
+    let n = Vec2::from_angle(d.angle() + cut);
+    let white = ghost + n * (2.0 * R);
+    let on = (d - n * d.dot(n)).normalized().unwrap();
+    let red = ghost + on * 0.4;
+    ([white, from, red], Shot::new(angle, 6.0))
+}
+
+/// A's opening in the solver: the white from its starting spot full at the red, hard enough
+/// to reach it: the red first and directly, then the white stops dead (equal masses): no
+/// point, no foul, B to play.
+fn solver_opening() -> ThreeCushionGame {
+    let mut g = game(Rules::default());
+    let at = [Ball::White, Ball::Yellow, Ball::Red].map(|b| g.position(b));
+    let aim = (at[2] - at[0]).angle();
+    let v = g
+        .play(&solver_stroke(at, WHITE, Shot::new(aim, 2.5)))
+        .unwrap();
+    assert!(v.fouls.is_empty() && !v.point, "{v:?}");
+    assert_eq!(v.next.unwrap().striker, Seat::B);
+    g
+}
+
+#[test]
+fn umb_article_83_a_planned_three_cushion_point_scores_in_the_solver() {
+    let mut g = solver_opening();
+    let cushions = [Cushion::Foot, Cushion::Left, Cushion::Head];
+    let (at, shot) = planned(Vec2::new(-0.9, -0.3), Vec2::new(-0.6, 0.2), &cushions);
+    let v = g.play(&solver_stroke(at, YELLOW, shot)).unwrap();
+    assert!(v.point, "{}", v.reason);
+    assert_eq!((v.cushions, v.scores), (3, [0, 1]));
+    assert!(v.reason.contains("the white and the red"), "{}", v.reason);
+    assert_eq!(v.next.unwrap().striker, Seat::B);
+}
+
+#[test]
+fn umb_article_83_a_planned_two_cushion_carom_does_not_score_in_the_solver() {
+    let mut g = solver_opening();
+    let cushions = [Cushion::Foot, Cushion::Left];
+    let (at, shot) = planned(Vec2::new(-0.9, -0.3), Vec2::new(-0.6, 0.2), &cushions);
+    let v = g.play(&solver_stroke(at, YELLOW, shot)).unwrap();
+    assert!(!v.point, "{}", v.reason);
+    assert_eq!(v.cushions, 2);
+    assert!(v.reason.contains("only 2 cushions"), "{}", v.reason);
+    assert_eq!((v.scores, v.next.unwrap().striker), ([0, 0], Seat::A));
 }
