@@ -256,7 +256,12 @@ pub fn decide_three_cushion(
     // Round one: every scoring shot, a few samples; round two: the best, more samples.
     let first: Vec<(usize, u64)> = scoring
         .par_iter()
-        .map(|&i| (i, carom.sample(shots[i], i as u64, 0, budget.samples, noise, seed)))
+        .map(|&i| {
+            (
+                i,
+                carom.sample(shots[i], i as u64, 0, budget.samples, noise, seed),
+            )
+        })
         .collect();
     let mut ranked = first.clone();
     ranked.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
