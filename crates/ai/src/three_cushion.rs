@@ -96,7 +96,7 @@ struct Carom {
 }
 
 /// How one simulated shot ended for the striker.
-#[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 enum Judged {
     /// A point.
     Point,
