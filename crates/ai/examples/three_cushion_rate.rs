@@ -1,6 +1,6 @@
 //! The computer's success rate at three-cushion: the opening position and 20 seeded random
 //! three-ball layouts on the carom match table (the default physics with the carom ball),
-//! one decision each under a level's execution noise, each decision then played 20 times
+//! one decision each under a level's execution noise, each decision then played 50 times
 //! with that noise and judged by the UMB rules.
 //!
 //! ```sh
@@ -17,7 +17,7 @@ use rand::{Rng, SeedableRng};
 use std::time::Instant;
 
 /// Executions of each decision.
-const TRIES: u64 = 20;
+const TRIES: u64 = 50;
 
 /// Layout `seed`: three balls uniformly on the cloth, at least a ball's width (plus 1 cm)
 /// apart, the white to play.
