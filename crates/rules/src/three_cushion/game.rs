@@ -18,8 +18,9 @@ const STRUCK_WHERE_KEPT: f64 = 1e-3;
 pub struct Rules {
     /// The distance: points that win (UMB matches are played to 40 or 50; 40 here).
     pub target: u32,
-    /// The equalising inning: when the player who started reaches the distance, the other
-    /// plays one more inning, and a draw if they reach it too. UMB group matches are played
+    /// The equalising inning (UMB Art. 29, end of the match): when the player who started
+    /// reaches the distance, the other plays one more inning, and a draw if they reach it
+    /// too, so both have had as many innings. UMB group matches are played
     /// with it; since December 2019 knock-out matches are not (UMB news, "New UMB 3-Cushion
     /// Events Rules Changes", 17 Dec 2019).
     pub equal_innings: bool,
