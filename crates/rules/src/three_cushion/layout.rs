@@ -107,10 +107,11 @@ impl Spots {
     }
 
     /// Art. 27 (balls in contact), the striker's third choice: the cue ball and the ball(s) it
-    /// is frozen to are set up again on their spots (the red on the top spot, the cue ball on the
-    /// bottom spot, the other white on the centre spot). If a ball that stays
-    /// occupies the spot of a ball being placed, that ball goes on the spot of the one
-    /// occupying it (as the KNBB's text of the rule says). An error if `cue` touches no ball.
+    /// is frozen to are set up again on their spots (the red on the top spot, the cue ball on
+    /// the bottom spot, the other white on the centre spot). If a ball that stays occupies the
+    /// spot of a ball being placed, that ball goes on the spot of the one occupying it (the
+    /// Dutch text of the rule, winterswijksebiljartbond.nl, "Vastliggende ballen bij
+    /// 3-banden"). An error if `cue` touches no ball.
     pub fn respot_frozen(
         &self,
         positions: [Vec2; 3],
