@@ -17,6 +17,7 @@
 //! - [`log`]: the rules side of a recording (calls, choices, verdicts), kept beside it;
 //! - [`breaks`]: one break judged by the rules and the counts over many (break statistics);
 //! - [`snooker`]: snooker frames and matches under the WPBSA rules, an API of its own;
+//! - [`three_cushion`]: three-cushion carom under the UMB rules, an API of its own;
 //! - [`position`]: a position (game, table, balls, physics, shot) as a short text code;
 //! - [`drill`]: drills, a position with goals and tries, judged from the solver's record;
 //! - [`interface`]: the one interface every game implements ([`GameRules`]), with pool's
@@ -44,6 +45,7 @@ pub mod shot;
 pub mod shots;
 pub mod snooker;
 pub mod state;
+pub mod three_cushion;
 pub mod turn;
 
 pub use drill::{Attempt, Drill, DrillError, DrillScore, DrillShot, Goal, Zone};
