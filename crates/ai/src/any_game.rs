@@ -17,7 +17,7 @@
 use crate::candidates::{Layout, direct_aims, rail_aims};
 use crate::level::Level;
 use crate::noise::{Noise, stream};
-use billiards_physics::{Event, Shot, Simulation, TipOffset, Vec2};
+use billiards_physics::{Event, PocketShape, Shot, Simulation, TipOffset, Vec2};
 use billiards_rules::{
     CueBallPlace, Declaration, GameRules, Judgement, Need, Seat, StrokeRecord, Turn,
 };
@@ -64,19 +64,19 @@ fn effort(level: Level) -> Effort {
         Level::Easy => Effort {
             samples: 4,
             finalists: 4,
-            fan: 36,
+            fan: 90,
             places: 2,
         },
         Level::Medium => Effort {
             samples: 6,
             finalists: 6,
-            fan: 72,
+            fan: 180,
             places: 3,
         },
         Level::Hard | Level::Expert | Level::Perfect => Effort {
             samples: 10,
             finalists: 8,
-            fan: 144,
+            fan: 360,
             places: 4,
         },
     }
@@ -142,17 +142,18 @@ fn try_stroke(
         sim.place(id, at, Vec2::ZERO, Default::default()).ok()?;
     }
     let before = layout_of(&sim);
+    // A history from here on: the stroke's events start with its strike, as the rules read
+    // them (a lean run yields no strike event).
+    sim.set_record_history(true);
     sim.strike(id, c.shot).ok()?;
-    let mut events: Vec<Event> = Vec::new();
-    while let Some(e) = sim.step_event() {
-        events.push(e);
-    }
+    sim.run_to_rest().ok()?;
+    let events: &[Event] = sim.history().events();
     let after = layout_of(&sim);
     let mut copy = game.boxed_clone();
     let points = copy.points();
     let judged = copy
         .judge(&StrokeRecord {
-            events: &events,
+            events,
             numbers: sim.numbers(),
             before: &before,
             after: &after,
@@ -212,8 +213,13 @@ fn candidates(turn: &Turn, sim: &Simulation, from: Vec2, fan: usize) -> Vec<Cand
             }
         }
     }
-    let mut aims = direct_aims(&layout, &turn.legal_first);
-    aims.extend(rail_aims(&layout, &turn.legal_first));
+    // A table without pockets (carom) has no pots to aim at: the fan alone.
+    let pocketless = layout.table.pockets == PocketShape::Pocketless;
+    let mut aims = Vec::new();
+    if !pocketless {
+        aims = direct_aims(&layout, &turn.legal_first);
+        aims.extend(rail_aims(&layout, &turn.legal_first));
+    }
     for aim in &aims {
         let pocket = match aim.kind {
             crate::ShotKind::Pot { pocket, .. }
@@ -237,7 +243,7 @@ fn candidates(turn: &Turn, sim: &Simulation, from: Vec2, fan: usize) -> Vec<Cand
         // No pocket, or no clear line: a fan of directions (carom, kicks, escapes).
         for i in 0..fan {
             let angle = std::f64::consts::TAU * i as f64 / fan as f64;
-            for speed in [1.5, 3.0, 4.5] {
+            for speed in [1.5, 2.5, 3.5, 5.0] {
                 for tip in tips {
                     let mut shot = Shot::new(angle, speed);
                     shot.tip = tip;

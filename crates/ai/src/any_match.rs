@@ -118,11 +118,13 @@ pub fn play_match(
         let shot = level
             .execution_noise()
             .apply(stroke.shot, sim.params(), &mut rng);
+        // A history for this stroke only: its events start with the strike, as the rules
+        // read them.
+        sim.set_record_history(true);
         sim.strike(cue, shot).map_err(|e| e.to_string())?;
-        let mut events: Vec<Event> = Vec::new();
-        while let Some(e) = sim.step_event() {
-            events.push(e);
-        }
+        sim.run_to_rest().map_err(|e| e.to_string())?;
+        let events: Vec<Event> = sim.history().events().to_vec();
+        sim.set_record_history(false);
         let after = layout_of(&sim);
         let judged = game
             .judge(&StrokeRecord {

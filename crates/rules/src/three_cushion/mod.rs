@@ -21,13 +21,16 @@
 //! - `balls`: [`Ball`], [`BallIds`]; `error`: [`ThreeCushionError`];
 //! - `layout`: the spots, the opening, frozen balls and their re-spotting;
 //! - `judge`: a stroke's facts from the events, its fouls, its reason in words;
-//! - `game`: [`ThreeCushionGame`], [`Rules`], [`Next`], [`Verdict`], [`Outcome`].
+//! - `game`: [`ThreeCushionGame`], [`Rules`], [`Next`], [`Verdict`], [`Outcome`];
+//! - `rules`: [`rules::ThreeCushionMatch`], the game behind the one game interface
+//!   ([`crate::interface::GameRules`]).
 
 pub mod balls;
 pub mod error;
 pub mod game;
 pub mod judge;
 pub mod layout;
+pub mod rules;
 
 pub use balls::{Ball, BallIds};
 pub use error::ThreeCushionError;
