@@ -3,13 +3,14 @@
 //!
 //! The search: geometric aims at the balls it may hit first ([`direct_aims`] and
 //! [`rail_aims`]: into each pocket, and off a rail), or, on a table without pockets or with
-//! no aim, a fan of directions; each in a few speeds and tips. Each candidate is simulated
-//! once without noise and judged by a copy of the game ([`GameRules::boxed_clone`]); the best
-//! few are simulated again under the level's planning noise and valued by the mean. A value
-//! is read from the judgement ([`stroke_value`]): the game won or lost, a foul, the turn kept,
-//! the points scored. Ball in hand: the same search from a few places the rules accept.
-//! Options offered before a stroke: each is taken on a copy and valued by the best stroke
-//! that follows, from the chooser's side.
+//! no aim, a fan of directions (1440 at hard: a quarter degree apart) in four speeds and
+//! nine tips; each candidate is simulated once without noise and judged by a copy of the
+//! game ([`GameRules::boxed_clone`]). The best kept (256 at hard) are sampled under the
+//! level's planning noise and refined in rounds ([`Rounds`], the skeleton the pool and
+//! snooker searches share). A value is read from the judgement ([`stroke_value`]): the game
+//! won or lost, a foul, the turn kept, the points scored. Ball in hand: the same search from
+//! a few places the rules accept. Options offered before a stroke: each is taken on a copy
+//! and valued by the best stroke that follows, from the chooser's side.
 //!
 //! Every random draw comes from [`stream`], named by the seed and the candidate, so the same
 //! seed gives the same decision on any number of threads.
@@ -17,7 +18,8 @@
 use crate::candidates::{Layout, direct_aims, rail_aims};
 use crate::level::Level;
 use crate::noise::{Noise, stream};
-use billiards_physics::{Event, PocketShape, Shot, Simulation, TipOffset, Vec2};
+use crate::rounds::{Rounds, Sampler, Stats};
+use billiards_physics::{Event, Params, PocketShape, Shot, Simulation, TipOffset, Vec2};
 use billiards_rules::{
     CueBallPlace, Declaration, GameRules, Judgement, Need, Seat, StrokeRecord, Turn,
 };
@@ -49,10 +51,12 @@ pub struct Stroke {
 /// The size of the search at a level.
 #[derive(Clone, Copy, Debug)]
 struct Effort {
-    /// Noisy samples of each finalist.
+    /// Candidates kept from the noiseless scan, the best first.
+    keep: usize,
+    /// Noisy samples of each kept candidate.
     samples: usize,
-    /// Finalists re-simulated under noise.
-    finalists: usize,
+    /// Refinement rounds: the best `k` get `m` more samples each.
+    rounds: &'static [(usize, usize)],
     /// Directions of the fan when there is no aim.
     fan: usize,
     /// Places tried with the cue ball in hand.
@@ -62,21 +66,24 @@ struct Effort {
 fn effort(level: Level) -> Effort {
     match level {
         Level::Easy => Effort {
-            samples: 4,
-            finalists: 4,
-            fan: 90,
+            keep: 16,
+            samples: 8,
+            rounds: &[(4, 16)],
+            fan: 180,
             places: 2,
         },
         Level::Medium => Effort {
-            samples: 6,
-            finalists: 6,
-            fan: 180,
+            keep: 32,
+            samples: 16,
+            rounds: &[(8, 32)],
+            fan: 360,
             places: 3,
         },
         Level::Hard | Level::Expert | Level::Perfect => Effort {
-            samples: 10,
-            finalists: 8,
-            fan: 360,
+            keep: 256,
+            samples: 32,
+            rounds: &[(20, 68), (3, 100)],
+            fan: 1440,
             places: 4,
         },
     }
@@ -119,26 +126,21 @@ fn id_of(sim: &Simulation, number: u8) -> Option<usize> {
     sim.numbers().iter().position(|&n| n == number)
 }
 
-/// One candidate before it is judged.
+/// One candidate stroke: the cue ball's place if in hand, the shot, the declaration.
 #[derive(Clone, Copy, Debug)]
 struct Candidate {
+    place: Option<Vec2>,
     shot: Shot,
     declared: Declaration,
 }
 
 /// Plays `shot` from `sim` (the cue ball at `place` if given) and judges it on a copy of
 /// `game`; `None` when the solver or the rules refuse it.
-fn try_stroke(
-    game: &dyn GameRules,
-    sim: &Simulation,
-    cue: u8,
-    place: Option<Vec2>,
-    c: Candidate,
-) -> Option<f64> {
+fn try_stroke(game: &dyn GameRules, sim: &Simulation, cue: u8, c: Candidate) -> Option<f64> {
     let mut sim = sim.clone();
     sim.set_record_history(false);
     let id = id_of(&sim, cue)?;
-    if let Some(at) = place {
+    if let Some(at) = c.place {
         sim.place(id, at, Vec2::ZERO, Default::default()).ok()?;
     }
     let before = layout_of(&sim);
@@ -165,7 +167,12 @@ fn try_stroke(
 
 /// The candidates from the cue ball at `from`: aims at the legal balls (into each pocket,
 /// off each rail), else a fan of directions; speeds and tips around each.
-fn candidates(turn: &Turn, sim: &Simulation, from: Vec2, fan: usize) -> Vec<Candidate> {
+fn candidates(
+    turn: &Turn,
+    sim: &Simulation,
+    (place, from): (Option<Vec2>, Vec2),
+    fan: usize,
+) -> Vec<Candidate> {
     let balls: Vec<(u8, Vec2)> = layout_of(sim)
         .into_iter()
         .filter(|&(n, _)| n != turn.cue_ball)
@@ -196,6 +203,21 @@ fn candidates(turn: &Turn, sim: &Simulation, from: Vec2, fan: usize) -> Vec<Cand
             height: -0.3,
         },
     ];
+    // The fan also tries side and its mixes with follow and draw: english bends a carom's
+    // rebounds off the cushions.
+    let tip = |side: f64, height: f64| TipOffset { side, height };
+    let d = 0.3 * std::f64::consts::FRAC_1_SQRT_2;
+    let fan_tips = [
+        tips[0],
+        tips[1],
+        tips[2],
+        tip(0.3, 0.0),
+        tip(-0.3, 0.0),
+        tip(d, d),
+        tip(-d, d),
+        tip(d, -d),
+        tip(-d, -d),
+    ];
     let mut out = Vec::new();
     if turn.opening {
         // The opening stroke: hard at each legal ball, as a break is played.
@@ -207,6 +229,7 @@ fn candidates(turn: &Turn, sim: &Simulation, from: Vec2, fan: usize) -> Vec<Cand
             let angle = (p.y - from.y).atan2(p.x - from.x);
             for speed in [3.0, 6.0, 9.0] {
                 out.push(Candidate {
+                    place,
                     shot: Shot::new(angle, speed),
                     declared: declare(n, billiards_physics::Pocket::FootLeft).without_pocket(),
                 });
@@ -233,6 +256,7 @@ fn candidates(turn: &Turn, sim: &Simulation, from: Vec2, fan: usize) -> Vec<Cand
                 let mut shot = Shot::new(aim.angle, (aim.speed * k).clamp(0.5, 9.0));
                 shot.tip = tip;
                 out.push(Candidate {
+                    place,
                     shot,
                     declared: pocket.map_or(Declaration::None, |p| declare(aim.first, p)),
                 });
@@ -244,10 +268,11 @@ fn candidates(turn: &Turn, sim: &Simulation, from: Vec2, fan: usize) -> Vec<Cand
         for i in 0..fan {
             let angle = std::f64::consts::TAU * i as f64 / fan as f64;
             for speed in [1.5, 2.5, 3.5, 5.0] {
-                for tip in tips {
+                for tip in fan_tips {
                     let mut shot = Shot::new(angle, speed);
                     shot.tip = tip;
                     out.push(Candidate {
+                        place,
                         shot,
                         declared: Declaration::None,
                     });
@@ -272,47 +297,80 @@ impl WithoutPocket for Declaration {
     }
 }
 
-/// The best stroke from the cue ball at `place` (or where it lies).
-fn best_from(
+/// The noisy samples of a candidate: executed under the planning noise and judged by a
+/// copy of the game ([`crate::rounds::Sampler`]).
+struct Generic<'a> {
+    game: &'a dyn GameRules,
+    sim: &'a Simulation,
+    cue: u8,
+    noise: Noise,
+    params: Params,
+    seed: u64,
+}
+
+impl Sampler for Generic<'_> {
+    type Cand = Candidate;
+    type Scratch = ();
+
+    fn scratch(&self) {}
+
+    fn sample(&self, c: &Candidate, id: u64, k: u64, _: &mut ()) -> Stats {
+        let mut rng = stream(self.seed, id, k);
+        let shot = self.noise.apply(c.shot, &self.params, &mut rng);
+        let value = try_stroke(self.game, self.sim, self.cue, Candidate { shot, ..*c });
+        // A stroke the solver or the rules refuse counts as a foul.
+        let v = value.unwrap_or(-1.0);
+        Stats {
+            n: 1,
+            value: v,
+            pots: usize::from(v >= 1.0),
+            fouls: usize::from(v < 0.0),
+            losses: usize::from(v <= -10.0),
+            events: 0,
+        }
+    }
+}
+
+/// The best of `all`: each simulated once without noise, the best kept and sampled under
+/// noise, refined in rounds ([`Rounds`], the skeleton every search shares).
+fn best_of(
     game: &dyn GameRules,
     sim: &Simulation,
-    turn: &Turn,
-    place: Option<Vec2>,
+    cue: u8,
+    all: Vec<Candidate>,
     level: Level,
     seed: u64,
 ) -> Option<Stroke> {
     let e = effort(level);
-    let cue = turn.cue_ball;
-    let from = place.or_else(|| id_of(sim, cue).map(|id| sim.ball(id).position))?;
-    let all = candidates(turn, sim, from, e.fan);
-    let mut scored: Vec<(f64, Candidate)> = all
-        .par_iter()
-        .filter_map(|&c| try_stroke(game, sim, cue, place, c).map(|v| (v, c)))
-        .collect();
-    scored.sort_by(|a, b| b.0.total_cmp(&a.0));
-    scored.truncate(e.finalists);
-    let noise: Noise = level.planning_noise();
-    let params = *sim.params();
-    scored
+    let mut scanned: Vec<(f64, usize)> = all
         .par_iter()
         .enumerate()
-        .map(|(k, &(_, c))| {
-            let mut total = 0.0;
-            for s in 0..e.samples {
-                let mut rng = stream(seed, k as u64, s as u64);
-                let shot = noise.apply(c.shot, &params, &mut rng);
-                total += try_stroke(game, sim, cue, place, Candidate { shot, ..c }).unwrap_or(-1.0);
-            }
-            Stroke {
-                place,
-                shot: c.shot,
-                declared: c.declared,
-                value: total / e.samples as f64,
-            }
-        })
-        .collect::<Vec<_>>()
-        .into_iter()
-        .max_by(|a, b| a.value.total_cmp(&b.value))
+        .filter_map(|(i, &c)| try_stroke(game, sim, cue, c).map(|v| (v, i)))
+        .collect();
+    scanned.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    scanned.truncate(e.keep);
+    let kept: Vec<Candidate> = scanned.iter().map(|&(_, i)| all[i]).collect();
+    let sampler = Generic {
+        game,
+        sim,
+        cue,
+        noise: level.planning_noise(),
+        params: *sim.params(),
+        seed,
+    };
+    let mut rounds: Rounds<Candidate> = Rounds::default();
+    rounds.add(&sampler, kept, e.samples);
+    for &(k, m) in e.rounds {
+        rounds.refine(&sampler, k, m);
+    }
+    let best = rounds.best()?;
+    let c = rounds.cands[best];
+    Some(Stroke {
+        place: c.place,
+        shot: c.shot,
+        declared: c.declared,
+        value: rounds.value(best),
+    })
 }
 
 /// Places for the cue ball in hand that the rules accept: where it lies if allowed, then
@@ -377,18 +435,24 @@ pub fn best_stroke(
     seed: u64,
 ) -> Result<Stroke, String> {
     let turn = game.turn();
-    let spots: Vec<Option<Vec2>> = match turn.place {
-        CueBallPlace::InHand { .. } => places(game, sim, &turn, effort(level).places)
+    let e = effort(level);
+    let places: Vec<Option<Vec2>> = match turn.place {
+        CueBallPlace::InHand { .. } => places(game, sim, &turn, e.places)
             .into_iter()
             .map(Some)
             .collect(),
         CueBallPlace::AsItLies | CueBallPlace::Placed => vec![None],
     };
-    spots
-        .into_iter()
-        .enumerate()
-        .filter_map(|(k, place)| best_from(game, sim, &turn, place, level, seed ^ (k as u64) << 32))
-        .max_by(|a, b| a.value.total_cmp(&b.value))
+    let cue = id_of(sim, turn.cue_ball)
+        .ok_or_else(|| format!("{}: no cue ball on this table", game.name()))?;
+    let all: Vec<Candidate> = places
+        .iter()
+        .flat_map(|&place| {
+            let from = place.unwrap_or(sim.ball(cue).position);
+            candidates(&turn, sim, (place, from), e.fan)
+        })
+        .collect();
+    best_of(game, sim, turn.cue_ball, all, level, seed)
         .ok_or_else(|| format!("{}: no stroke the rules accept was found", game.name()))
 }
 

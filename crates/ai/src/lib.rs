@@ -20,9 +20,8 @@
 //!   ([`billiards_rules::GameRules`]): one search, valued from the rules' judgements;
 //!   [`any_match`]: a whole match of any game between two levels;
 //! - [`snooker`]: the computer at snooker ([`decide_snooker`]), the same search judged by the
-//!   WPBSA rules and valued in points, and a whole frame between two levels;
-//! - [`three_cushion`]: the computer at three-cushion ([`decide_three_cushion`]): every
-//!   direction, speed and spin simulated, the scoring shots re-simulated under noise.
+//!   WPBSA rules and valued in points, and a whole frame between two levels. Three-cushion
+//!   (and every game added through the interface) is played by [`any_game`].
 //!
 //! The same seed gives the same decision on any number of threads: every random draw comes
 //! from a stream named by the seed, the candidate's index and the sample's ([`noise::stream`]).
@@ -49,7 +48,6 @@ pub mod quiet;
 pub mod rounds;
 mod search;
 pub mod snooker;
-pub mod three_cushion;
 pub mod twoply;
 
 pub use candidates::{Candidate, Layout, ShotKind};
@@ -58,7 +56,6 @@ pub use level::{Breaks, Budget, Level, TwoPly, UnknownLevel};
 pub use noise::Noise;
 pub use search::{decide, decide_planned, decide_with};
 pub use snooker::{SnookerDecision, SnookerPlan, decide_snooker};
-pub use three_cushion::{CaromBudget, CaromPlan, CaromStroke, decide_three_cushion};
 
 use billiards_physics::{Params, Shot, Simulation, Vec2};
 use billiards_rules::{Call, Choice, GameState, NextShot};

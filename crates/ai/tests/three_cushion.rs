@@ -1,11 +1,11 @@
-//! The computer at three-cushion (`billiards_ai::three_cushion`).
+//! The computer at three-cushion: the search every game shares
+//! ([`billiards_ai::any_game`]) through the game interface (`ThreeCushionMatch`).
 
-use billiards_ai::noise::Noise;
-use billiards_ai::three_cushion::{
-    CaromBudget, CaromError, CaromStroke, decide_three_cushion, scores,
-};
-use billiards_physics::{Model, PaperModel, Params, Shot, Table, Vec2};
-use billiards_rules::three_cushion::Ball;
+use billiards_ai::Level;
+use billiards_ai::any_game::{Move, decide_any, layout_of};
+use billiards_physics::{Model, PaperModel, Params, Shot, Simulation, Table, Vec2};
+use billiards_rules::three_cushion::rules::ThreeCushionMatch;
+use billiards_rules::{Declaration, GameRules, Seat, StrokeRecord};
 
 /// The paper's model with the carom ball: straight paths between mirror rebounds, so a
 /// three-cushion point drawn with mirror images is a point in the solver.
@@ -16,12 +16,18 @@ fn paper_carom() -> Params {
     }
 }
 
-/// A layout with a point known to exist, by construction: the yellow at (-0.9, -0.3) sent
-/// off the foot, left and head cushions (mirror images) to a ghost point where it cuts the
-/// white thinly (80 degrees) and runs on 0.4 m into the red. The layout and that shot.
-fn known_point() -> (CaromStroke, Shot) {
+fn players() -> [String; 2] {
+    ["A".to_owned(), "B".to_owned()]
+}
+
+/// A layout with a point known to exist, by construction: the yellow (B's cue ball) at
+/// (-0.9, -0.3) sent off the foot, left and head cushions (mirror images) to a ghost point
+/// where it cuts the white thinly (80 degrees) and runs on 0.4 m into the red. The game
+/// (B to play) and that shot.
+fn known_point() -> (ThreeCushionMatch, Shot) {
     let t = Table::carom_match();
-    let r = paper_carom().ball.radius;
+    let params = paper_carom();
+    let r = params.ball.radius;
     let (bx, by) = (0.5 * t.length - r, 0.5 * t.width - r);
     let (from, ghost) = (Vec2::new(-0.9, -0.3), Vec2::new(-0.6, 0.2));
     // Images of the ghost across the head, then the left, then the foot cushion line.
@@ -30,75 +36,89 @@ fn known_point() -> (CaromStroke, Shot) {
     let arrive = Vec2::new(d.x, -d.y); // reversed in x twice (foot, head), in y once (left)
     let n = Vec2::from_angle(arrive.angle() + 80f64.to_radians());
     let on = (arrive - n * arrive.dot(n)).normalized().unwrap();
-    let stroke = CaromStroke {
-        positions: [ghost + n * (2.0 * r), from, ghost + on * 0.4],
-        cue: Ball::Yellow,
-        opening: false,
-    };
-    (stroke, Shot::new(d.angle(), 6.0))
+    let at = [ghost + n * (2.0 * r), from, ghost + on * 0.4];
+    let game = ThreeCushionMatch::in_progress(players(), 40, (t, params.ball), at, Seat::B);
+    (game.unwrap(), Shot::new(d.angle(), 6.0))
+}
+
+/// Plays `shot` by the striker and judges it on a copy: did the striker score?
+fn scores(game: &ThreeCushionMatch, sim: &Simulation, shot: Shot) -> bool {
+    let (mut sim, mut game) = (sim.clone(), game.clone());
+    let striker = game.turn().striker.index();
+    let before = layout_of(&sim);
+    sim.set_record_history(true);
+    sim.strike(usize::from(game.turn().cue_ball), shot).unwrap();
+    sim.run_to_rest().unwrap();
+    let events = sim.history().events().to_vec();
+    let was = game.points()[striker];
+    game.judge(&StrokeRecord {
+        events: &events,
+        numbers: sim.numbers(),
+        before: &before,
+        after: &layout_of(&sim),
+        declared: Declaration::None,
+    })
+    .unwrap();
+    game.points()[striker] > was
+}
+
+fn table_of(game: &ThreeCushionMatch, params: Params) -> Simulation {
+    Simulation::new(game.table, params, &game.layout().unwrap()).unwrap()
 }
 
 #[test]
 fn the_computer_scores_from_a_position_where_a_point_is_known_to_exist() {
-    let (stroke, planned) = known_point();
-    let (table, params) = (Table::carom_match(), paper_carom());
-    // The constructed shot is a point (the judge of the rules agrees with the geometry).
-    assert_eq!(scores(stroke, &table, &params, planned), Some(true));
-    let budget = CaromBudget::default();
-    let plan = decide_three_cushion(stroke, &table, &params, Noise::NONE, &budget, 7).unwrap();
-    assert!(plan.scoring > 0 && plan.success == 1.0, "{plan:?}");
-    assert_eq!(scores(stroke, &table, &params, plan.shot), Some(true));
-    // Under the reference execution noise it still picks a shot that scores more often than
-    // not, and the same seed gives the same plan.
-    let noisy = decide_three_cushion(stroke, &table, &params, Noise::REFERENCE, &budget, 7);
-    let noisy = noisy.unwrap();
-    assert!(noisy.success > 0.5, "{noisy:?}");
-    let again = decide_three_cushion(stroke, &table, &params, Noise::REFERENCE, &budget, 7);
-    assert_eq!(again.unwrap(), noisy);
+    let (game, planned) = known_point();
+    let sim = table_of(&game, paper_carom());
+    // The constructed shot is a point (UMB Art. 83: the judge agrees with the geometry).
+    assert!(scores(&game, &sim, planned));
+    // The perfect level (no execution noise) finds a point, and the same seed gives the
+    // same decision.
+    let Move::Strike(plan) = decide_any(&game, &sim, Level::Perfect, 7).unwrap() else {
+        panic!("no option is offered here");
+    };
+    assert!(scores(&game, &sim, plan.shot), "{plan:?}");
+    assert!(
+        plan.value > 0.5,
+        "a point is valued as the turn kept: {plan:?}"
+    );
+    let again = decide_any(&game, &sim, Level::Perfect, 7).unwrap();
+    assert_eq!(again, Move::Strike(plan));
 }
 
 #[test]
 fn on_the_opening_the_computer_plays_at_the_red_first() {
-    // UMB 3.3: every shot tried on the opening meets the red first; a few directions, so
-    // the test is quick.
-    let budget = CaromBudget {
-        directions: 24,
-        ..CaromBudget::default()
+    // UMB 3.3 / Art. 23: the opening stroke goes at the red with no cushion first; the
+    // computer's choice is judged without a foul.
+    let game =
+        ThreeCushionMatch::new(players(), 40, Table::carom_match(), Params::carom().ball).unwrap();
+    assert!(game.turn().opening);
+    let sim = table_of(&game, Params::carom());
+    let Move::Strike(plan) = decide_any(&game, &sim, Level::Easy, 1).unwrap() else {
+        panic!("no option on the opening");
     };
-    let (table, params) = (Table::carom_match(), Params::carom());
-    let head = -0.25 * table.length;
-    let stroke = CaromStroke {
-        positions: [
-            Vec2::new(head, -0.1825),
-            Vec2::new(head, 0.0),
-            Vec2::new(0.25 * table.length, 0.0),
-        ],
-        cue: Ball::White,
-        opening: true,
-    };
-    let plan = decide_three_cushion(stroke, &table, &params, Noise::NONE, &budget, 1).unwrap();
-    let to_red = stroke.positions[2] - stroke.positions[0];
-    let off = (plan.shot.angle - to_red.angle()).abs();
-    assert!(
-        off < (2.0 * params.ball.radius / to_red.length()).asin(),
-        "{plan:?}"
-    );
+    let mut s = sim.clone();
+    s.set_record_history(true);
+    s.strike(0, plan.shot).unwrap();
+    s.run_to_rest().unwrap();
+    let events = s.history().events().to_vec();
+    let mut copy = game.clone();
+    let judged = copy
+        .judge(&StrokeRecord {
+            events: &events,
+            numbers: s.numbers(),
+            before: &layout_of(&sim),
+            after: &layout_of(&s),
+            declared: Declaration::None,
+        })
+        .unwrap();
+    assert!(judged.fair, "{}", judged.text);
 }
 
 #[test]
-fn a_layout_the_solver_refuses_is_an_error() {
-    let stroke = CaromStroke {
-        positions: [Vec2::ZERO, Vec2::new(0.01, 0.0), Vec2::new(0.5, 0.0)],
-        cue: Ball::White,
-        opening: false,
-    };
-    let r = decide_three_cushion(
-        stroke,
-        &Table::carom_match(),
-        &Params::carom(),
-        Noise::NONE,
-        &CaromBudget::default(),
-        0,
-    );
-    assert_eq!(r, Err(CaromError::Layout));
+fn a_layout_with_overlapping_balls_is_refused() {
+    let t = Table::carom_match();
+    let at = [Vec2::ZERO, Vec2::new(0.01, 0.0), Vec2::new(0.5, 0.0)];
+    let r = ThreeCushionMatch::in_progress(players(), 40, (t, Params::carom().ball), at, Seat::A);
+    assert!(r.unwrap_err().to_string().contains("overlaps"));
 }

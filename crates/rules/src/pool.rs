@@ -1,6 +1,6 @@
 //! Pool's games (8-ball, 9-ball, free play: [`Game`]) behind the one game interface
 //! ([`GameRules`], issue 50): a [`PoolMatch`] is a race to N racks ([`Match`]) on a table
-//! with its balls, and turns the WPA rules' own words ([`NextShot`], [`Verdict`]) into the
+//! with its balls, and turns the WPA rules' own words ([`NextShot`], [`Verdict`](crate::Verdict)) into the
 //! interface's ([`Turn`], [`Judgement`]).
 
 use crate::foul::Group;

@@ -132,6 +132,44 @@ impl ThreeCushionGame {
         })
     }
 
+    /// A game in progress (a shared position, a study): the balls at `positions` (by
+    /// [`Ball::index`]), `striker` to play with their own cue ball, no points yet, past the
+    /// opening stroke. Refused when two balls overlap or a ball is off the cloth.
+    pub fn in_progress(
+        rules: Rules,
+        table: &Table,
+        radius: f64,
+        positions: [Vec2; 3],
+        striker: Seat,
+    ) -> Result<Self, ThreeCushionError> {
+        let mut game = Self::new(rules, table, radius)?;
+        let bounds = table.centre_bounds(radius);
+        for (k, p) in positions.iter().enumerate() {
+            if !(p.is_finite() && p.x.abs() <= bounds.x && p.y.abs() <= bounds.y) {
+                return Err(ThreeCushionError::Rules(format!(
+                    "the {} at ({:.3}, {:.3}) is not on the cloth",
+                    Ball::ALL[k].name(),
+                    p.x,
+                    p.y
+                )));
+            }
+            for q in &positions[k + 1..] {
+                if (*p - *q).length() < 2.0 * radius {
+                    return Err(ThreeCushionError::Rules(format!(
+                        "the {} overlaps another ball",
+                        Ball::ALL[k].name()
+                    )));
+                }
+            }
+        }
+        game.positions = positions;
+        game.striker = striker;
+        game.opening = false;
+        game.innings = [0; 2];
+        game.innings[striker.index()] = 1;
+        Ok(game)
+    }
+
     /// The rules in force.
     pub fn rules(&self) -> &Rules {
         &self.rules

@@ -59,6 +59,21 @@ impl ThreeCushionMatch {
         })
     }
 
+    /// [`ThreeCushionMatch::new`] from a position in play ([`ThreeCushionGame::in_progress`]).
+    pub fn in_progress(
+        players: [String; 2],
+        target: u32,
+        (table, ball): (Table, BallSpec),
+        positions: [Vec2; 3],
+        striker: Seat,
+    ) -> Result<Self, RulesError> {
+        let mut m = Self::new(players, target, table, ball)?;
+        let rules = *m.game.rules();
+        m.game = ThreeCushionGame::in_progress(rules, &table, ball.radius, positions, striker)
+            .map_err(err)?;
+        Ok(m)
+    }
+
     /// Whether the striker must first choose: their cue ball is frozen to a ball (Art. 27).
     fn frozen_choice(&self) -> bool {
         !self.frozen_choice_made && self.game.next().is_some_and(|n| !n.frozen_to.is_empty())
