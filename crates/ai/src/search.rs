@@ -134,8 +134,7 @@ pub fn decide_planned(
                 || state.game == Game::TenBall
             {
                 // On the 8, only a called safety is safe from a lucky loss (WPA 3.8); in
-                // 10-ball a ball made on a called safety gives the opponent no option to
-                // hand the table back (WPA 9.6, 9.7).
+                // 10-ball every shot is called, a safety declared as one (WPA 9.5, 9.6).
                 s.iter_mut().for_each(|c| c.call = Call::Safety);
             }
             more.extend(s);

@@ -10,10 +10,10 @@
 //! - 9.5 called shots: the called ball in the called pocket keeps the shooter at the table,
 //!   other balls made with it stay down (the 10 is spotted); the called 10 made on a legal
 //!   shot wins, at any time (a combination: the lowest ball first, the 10 called);
-//! - 9.6 a called safety: the turn passes, whatever dropped stays down (the 10 spotted);
-//! - 9.7 a ball made on a shot that did not pocket the called ball in the called pocket: no
-//!   foul, the turn passes, the balls stay down but the 10, which is spotted, and the
-//!   incoming player shoots or hands the table back;
+//! - 9.6 a called safety: the turn passes;
+//! - 9.7 a ball made on a called safety, or on a shot that did not pocket the called ball in
+//!   the called pocket: no foul, the turn passes, the balls stay down but the 10, which is
+//!   spotted, and the incoming player shoots or hands the table back;
 //! - 9.10 fouls (6.1 to 6.3): ball in hand anywhere, balls made stay down, the 10 spotted;
 //! - 9.11 with 6.14: the third foul in a row loses the rack.
 
@@ -151,6 +151,7 @@ fn legal(
         next.choices = vec![Choice::ShootFromHere, Choice::PassBack];
         return (Outcome::Passes, next);
     }
+    // `state.next` is still the shot just played: the dispatcher replaces it afterwards.
     if state.next.break_shot {
         // WPA 9.3, 9: a ball made on a legal break (the 10 too, spotted) keeps the breaker
         // at the table.
@@ -170,9 +171,9 @@ fn legal(
         );
     }
     let mut next = normal_next(state, shooter.other(), CueBall::AsItLies);
-    if any_down && call != Call::Safety {
-        // WPA 9.7: a ball made without the called ball in the called pocket: the incoming
-        // player takes the table as it lies or hands it back.
+    if any_down {
+        // WPA 9.7: a ball made on a safety or without the called ball in the called pocket:
+        // the incoming player takes the table as it lies or hands it back.
         state.pending = Some(Pending::HandBack { shooter });
         next.choices = vec![Choice::ShootFromHere, Choice::PassBack];
     }

@@ -47,7 +47,8 @@ pub enum Call {
     /// 9-ball and 10-ball: a push out, only on the shot right after a legal break (WPA 2.4,
     /// 9.4).
     PushOut,
-    /// 8-ball and 10-ball: a called safety; the turn ends whatever drops (WPA 1.6, 9.6).
+    /// 8-ball and 10-ball: a called safety; the turn ends whatever drops (WPA 1.6, 9.6; in
+    /// 10-ball a ball made on it gives the incoming player the option of 9.7).
     Safety,
     /// 8-ball and 10-ball: this ball in this pocket (WPA 1.6, 3.6, 9.5). The 8 must always be
     /// called; in 10-ball every ball, the 10 only winning when called.

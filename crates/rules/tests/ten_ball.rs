@@ -339,7 +339,15 @@ fn wpa_9_7_a_called_ball_missed_with_nothing_made_passes_without_a_choice() {
 }
 
 #[test]
-fn wpa_9_6_a_called_safety_passes_without_a_choice_and_balls_made_stay_down() {
+fn wpa_9_6_9_7_a_called_safety_passes_and_a_ball_made_on_it_gives_the_option() {
+    // Nothing made: the turn passes, no choice.
+    let mut quiet = in_play();
+    let v = quiet.play(&shot(Some(1), &[1], &[]), Call::Safety).unwrap();
+    assert!(v.legal());
+    let next = v.next.unwrap();
+    assert_eq!((v.outcome, next.shooter), (Outcome::Passes, Seat::B));
+    assert!(next.choices.is_empty());
+    // Balls made on it: they stay down but the 10, and B shoots or hands it back.
     let mut g = in_play();
     let v = g
         .play(
@@ -351,7 +359,7 @@ fn wpa_9_6_a_called_safety_passes_without_a_choice_and_balls_made_stay_down() {
     assert_eq!(v.outcome, Outcome::Passes);
     let next = v.next.unwrap();
     assert_eq!(next.shooter, Seat::B);
-    assert!(next.choices.is_empty());
+    assert_eq!(next.choices, vec![Choice::ShootFromHere, Choice::PassBack]);
     assert_eq!(next.spot, vec![10]);
     assert!(!g.on_table.contains(&3) && g.on_table.contains(&10));
 }
