@@ -109,7 +109,7 @@ pub(crate) fn play(
         }
     } else {
         state.fouls[me] = 0;
-        let (outcome, mut next) = legal(state, shooter, call, push_out, made, any_down);
+        let (outcome, mut next) = legal(state, shooter, push_out, made, any_down);
         if ten_wins {
             // WPA 9.5: the called 10 legally pocketed wins the rack.
             let over = Outcome::GameOver {
@@ -139,7 +139,6 @@ pub(crate) fn play(
 fn legal(
     state: &mut GameState,
     shooter: Seat,
-    call: Call,
     push_out: bool,
     made: bool,
     any_down: bool,
