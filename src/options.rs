@@ -90,7 +90,7 @@ impl LaunchOptions {
     /// The usage text printed by `--help` and after a command-line error.
     pub const USAGE: &'static str = "\
 usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
-                 [--game nine-ball|eight-ball|snooker|free-play] [--no-config]
+                 [--game nine-ball|ten-ball|eight-ball|snooker|free-play] [--no-config]
                  [--size WxH] [--screenshot PATH [--settle SECONDS]]
                  [--check-layout PATH] [--open-sections] [--count-idle-frames SECONDS]
                  [--stress BALLS] [--position CODE] [--drill NAME]
@@ -101,8 +101,9 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
   --no-record         do not save recordings
   --no-config         start from the default settings and keep none (the settings file
                       is otherwise in the config directory: $XDG_CONFIG_HOME/billiards)
-  --game GAME         start a match (two players, race to 3) of nine-ball, eight-ball
-                      or snooker (best of 5 frames); free-play (the default) is the sandbox
+  --game GAME         start a match (two players, race to 3) of nine-ball, ten-ball,
+                      eight-ball or snooker (best of 5 frames); free-play (the default) is
+                      the sandbox
   --stress BALLS      start on the stress table (free play): BALLS balls on a table grown
                       to hold them, frictionless; the panel's Stress table section changes it
   --position CODE     start from a position code (the panel's Copy position makes one;
@@ -206,6 +207,7 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                     use billiards_rules::Game;
                     options.game = Some(match value.as_str() {
                         "nine-ball" | "9-ball" => GameChoice::Pool(Game::NineBall),
+                        "ten-ball" | "10-ball" => GameChoice::Pool(Game::TenBall),
                         "eight-ball" | "8-ball" => GameChoice::Pool(Game::EightBall),
                         "snooker" => GameChoice::Snooker,
                         "free-play" => GameChoice::Pool(Game::FreePlay),
@@ -365,6 +367,12 @@ mod tests {
             parse(&["--game", "nine-ball"]).unwrap().game,
             Some(crate::play::game::GameChoice::Pool(
                 billiards_rules::Game::NineBall
+            ))
+        );
+        assert_eq!(
+            parse(&["--game", "ten-ball"]).unwrap().game,
+            Some(crate::play::game::GameChoice::Pool(
+                billiards_rules::Game::TenBall
             ))
         );
         assert_eq!(

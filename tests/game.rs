@@ -407,3 +407,62 @@ fn the_last_shot_says_what_went_in_and_the_computer_seat_is_marked() {
         rules(&app).seats
     );
 }
+
+/// 10-ball (WPA section 9): the dialog's game plays through the same turns; a rack of misses
+/// ends on the third foul (9.11, no win is possible on the break, 9.9), its log re-judges the
+/// recording, and after the break a ball and a pocket are called (9.5), any ball on the
+/// table, the 10 too.
+#[test]
+fn a_ten_ball_rack_is_called_and_played_to_its_winner() {
+    assert!(game::GameChoice::ALL.contains(&Game::TenBall.into()));
+    assert_eq!(game::GameChoice::from(Game::TenBall).label(), "10-ball");
+    let folder = std::env::temp_dir().join(format!("billiards-game10-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&folder);
+    let mut app = start(&folder, Game::TenBall, 1);
+    let lines = rules(&app).hud_lines(turn(&app), &[]);
+    assert_eq!(lines[0], "10-ball, race to 1: Ann 0 - 0 Bob");
+    assert!(lines.contains(&"balls left: 10".to_owned()), "{lines:?}");
+    assert_eq!(balls(&mut app).iter().filter(|b| b.1 != 0).count(), 10);
+    let winner = play_rack_of_misses(&mut app, Seat::A);
+    assert_eq!(
+        rules(&app).rack().over,
+        Some((winner, WinReason::ThreeFouls))
+    );
+    let recording = app.world().resource::<Autosave>().file.clone().unwrap();
+    let log: GameLog =
+        serde_json::from_str(&std::fs::read_to_string(GameLog::path_beside(&recording)).unwrap())
+            .unwrap();
+    assert_eq!(log.game, Game::TenBall);
+    let recorded = Recording::load(&recording).unwrap();
+    let numbers: Vec<u8> = recorded.balls.iter().map(|b| b.number).collect();
+    assert_eq!(log.check(&recorded.events, &numbers), Ok(log.shots.len()));
+    let _ = std::fs::remove_dir_all(&folder);
+
+    let mut app = start(&folder, Game::TenBall, 1);
+    // No call on the break (WPA 9).
+    command(&mut app, TurnCommand::StartCalling);
+    assert_eq!(turn(&app), Turn::BallInHand);
+    let head = app.world().resource::<TableSpec>().head_spot();
+    place(&mut app, head + DVec2::new(-0.05, 0.02)).unwrap();
+    shoot(&mut app, 0.0, 9.0);
+    assert_eq!(rules(&app).rack().over, None, "no win on the break (9.9)");
+    match rules(&app).next().choices.first() {
+        Some(&choice) => command(&mut app, TurnCommand::Choose(choice)),
+        None => command(&mut app, TurnCommand::Continue),
+    }
+    command(&mut app, TurnCommand::StartCalling);
+    assert_eq!(turn(&app), Turn::Calling);
+    let call = billiards_rules::Call::Ball {
+        ball: 10,
+        pocket: billiards_physics::Pocket::FootLeft,
+    };
+    command(&mut app, TurnCommand::Call(call));
+    assert!(matches!(turn(&app), Turn::Aiming | Turn::BallInHand));
+    assert_eq!(rules(&app).call, call);
+    let lines = rules(&app).hud_lines(turn(&app), &[]).join("\n");
+    assert!(
+        lines.contains("call: the 10 in the foot-left corner"),
+        "{lines}"
+    );
+    let _ = std::fs::remove_dir_all(&folder);
+}

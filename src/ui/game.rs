@@ -412,7 +412,12 @@ pub fn game_windows(
                 } else {
                     ui.horizontal(|ui| {
                         ui.label("Ball:");
-                        for &ball in &next.legal_first {
+                        // 10-ball calls any ball on the table (WPA 9.5), others the legal.
+                        let callable = match next.call {
+                            CallRule::BallAndPocket => &game.rack().on_table,
+                            _ => &next.legal_first,
+                        };
+                        for &ball in callable {
                             let chosen = game.call_ball == Some(ball);
                             if ui.selectable_label(chosen, ball.to_string()).clicked() {
                                 state.commands.write(TurnCommand::CallBall(ball));
@@ -422,7 +427,8 @@ pub fn game_windows(
                     ui.label("Then click the pocket on the table.");
                 }
                 ui.horizontal(|ui| {
-                    if next.call == CallRule::Optional && ui.button("Call a safety").clicked() {
+                    let safety = matches!(next.call, CallRule::Optional | CallRule::BallAndPocket);
+                    if safety && ui.button("Call a safety").clicked() {
                         state.commands.write(TurnCommand::Call(Call::Safety));
                     }
                     if ui.button("No call").clicked() {

@@ -11,12 +11,13 @@ use billiards_rules::Game;
 
 fn main() -> Result<(), String> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let usage = "usage: duel nine-ball|eight-ball PLAYER PLAYER GAMES SEED";
+    let usage = "usage: duel nine-ball|ten-ball|eight-ball PLAYER PLAYER GAMES SEED";
     let [game, a, b, n, seed] = &args[..] else {
         return Err(usage.into());
     };
     let game = match game.as_str() {
         "nine-ball" => Game::NineBall,
+        "ten-ball" => Game::TenBall,
         "eight-ball" => Game::EightBall,
         _ => return Err(usage.into()),
     };

@@ -56,7 +56,7 @@ pub enum ShotKind {
         /// The ball hit first.
         ball: u8,
     },
-    /// A 9-ball push out (WPA 2.4).
+    /// A 9-ball or 10-ball push out (WPA 2.4, 9.4).
     PushOut,
 }
 
@@ -440,7 +440,7 @@ pub struct Candidate {
     pub kind: ShotKind,
     /// The strike, before execution noise.
     pub shot: Shot,
-    /// The call (8-ball: the ball and pocket; 9-ball: none, or a push out).
+    /// The call (8-ball and 10-ball: the ball and pocket; 9-ball: none, or a push out).
     pub call: Call,
     /// Ball in hand: where the cue ball is put before the shot.
     pub place: Option<Vec2>,
@@ -449,14 +449,15 @@ pub struct Candidate {
     pub object: Option<(u8, Vec2)>,
 }
 
-/// The call of a shot of `kind` in 8-ball (`eight_ball`), else none.
-pub fn call_for(kind: ShotKind, eight_ball: bool) -> Call {
+/// The call of a shot of `kind` in a game of called shots (`called`: 8-ball, 10-ball; the
+/// ball meant to drop and its pocket, WPA 1.6, 9.5), else none.
+pub fn call_for(kind: ShotKind, called: bool) -> Call {
     match kind {
         ShotKind::Pot { ball, pocket }
         | ShotKind::Bank { ball, pocket, .. }
         | ShotKind::Kick { ball, pocket, .. }
         | ShotKind::Combo { ball, pocket, .. }
-            if eight_ball =>
+            if called =>
         {
             Call::Ball { ball, pocket }
         }
@@ -466,12 +467,13 @@ pub fn call_for(kind: ShotKind, eight_ball: bool) -> Call {
 }
 
 /// Each aim in each speed of `speeds` (multiples of its own) and, for straight and cut
-/// shots, each tip of `tips`; rail shots and combinations are struck in the centre.
+/// shots, each tip of `tips`; rail shots and combinations are struck in the centre; `called`
+/// as in [`call_for`].
 pub fn expand(
     aims: &[Aim],
     speeds: &[f64],
     tips: &[TipOffset],
-    eight_ball: bool,
+    called: bool,
     place: Option<Vec2>,
 ) -> Vec<Candidate> {
     let mut out = Vec::new();
@@ -489,7 +491,7 @@ pub fn expand(
                         tip,
                         elevation: 0.0,
                     },
-                    call: call_for(aim.kind, eight_ball),
+                    call: call_for(aim.kind, called),
                     place,
                     object: matches!(aim.kind, ShotKind::Pot { .. } | ShotKind::Combo { .. })
                         .then_some((aim.first, aim.object_dir)),

@@ -40,10 +40,11 @@ pub const RUN_WEIGHT: f64 = 0.85;
 /// costs more than in 8-ball, where the opponent still has a group to clear first. Tuned by
 /// tournaments (crates/ai/README.md): in 9-ball 0.4 wins 84.0 % of 600 games against the
 /// greedy player where 0.3 won 83.5 % of 400 and 0.5 85.5 %, but 0.5 halved hard's break
-/// and run (11 % at 0.4, 6 % at 0.5); in 8-ball 0.5 cost 3.5 points, so 0.3 stays.
+/// and run (11 % at 0.4, 6 % at 0.5); in 8-ball 0.5 cost 3.5 points, so 0.3 stays. 10-ball
+/// is 9-ball's rotation with one ball more and takes its figure (not tuned).
 pub fn miss_cost(game: Game) -> f64 {
     match game {
-        Game::NineBall => 0.4,
+        Game::NineBall | Game::TenBall => 0.4,
         Game::EightBall | Game::FreePlay => 0.3,
     }
 }
@@ -59,10 +60,12 @@ pub fn at_table(p: f64, game: bool, miss: f64) -> f64 {
     w * p - miss * (1.0 - p)
 }
 
-/// Whether the next shot of `next` is for the game ball (the 9, or the 8 with the group down).
+/// Whether the next shot of `next` is for the game ball (the 9, the 10, or the 8 with the
+/// group down).
 fn for_game_ball(state: &GameState, legal: &[u8]) -> bool {
     match state.game {
         Game::NineBall => legal == [9],
+        Game::TenBall => legal == [10],
         Game::EightBall => legal == [8],
         Game::FreePlay => false,
     }
@@ -134,13 +137,13 @@ pub struct Search<'a> {
 }
 
 /// Whether nothing later in the shot can change what the sample is scored on: a foul in
-/// 9-ball (a scratch, or a wrong first ball unless the shot is a push out), whose cost does
-/// not depend on where the balls stop; in 8-ball, the 8 down when it was not on, or down
-/// with the cue ball (the game is lost either way, WPA 3.8).
+/// 9-ball and 10-ball (a scratch, or a wrong first ball unless the shot is a push out),
+/// whose cost does not depend on where the balls stop; in 8-ball, the 8 down when it was
+/// not on, or down with the cue ball (the game is lost either way, WPA 3.8).
 pub fn settled(state: &GameState, call: Call, summary: &ShotSummary) -> bool {
     let legal = &state.next.legal_first;
     match state.game {
-        Game::NineBall => {
+        Game::NineBall | Game::TenBall => {
             summary.scratch()
                 || (call != Call::PushOut
                     && summary.first_contact.is_some_and(|b| !legal.contains(&b)))
@@ -325,7 +328,10 @@ impl Search<'_> {
             return (-at_table(IN_HAND, game_ball, miss), false);
         };
         let p = best_success(layout, &next.legal_first, self.noise);
-        if verdict.push_out {
+        let hand_back = self.state.game == Game::TenBall && !next.choices.is_empty();
+        if verdict.push_out || hand_back {
+            // After a push out (WPA 2.4, 9.4), or a 10-ball ball made uncalled (9.7), the
+            // opponent takes the table or hands it back, whichever is better for them.
             return (-at_table(p.max(1.0 - p), game_ball, miss), false);
         }
         if next.shooter == me && verdict.outcome == Outcome::Continues {

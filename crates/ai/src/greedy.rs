@@ -54,6 +54,8 @@ pub fn decide(state: &GameState, sim: &Simulation) -> Result<Decision, AiError> 
     };
     let layout = Layout::of(sim, place).ok_or(AiError::CueBallOff)?;
     let eight = state.game == Game::EightBall;
+    // 8-ball and 10-ball call every pot (WPA 3.6, 9.5).
+    let called = eight || state.game == Game::TenBall;
     let aims = if next.break_shot {
         Vec::new()
     } else {
@@ -71,7 +73,7 @@ pub fn decide(state: &GameState, sim: &Simulation) -> Result<Decision, AiError> 
         Some((_, a)) => (
             Shot::new(a.angle, (1.3 * a.speed).min(8.0)),
             a.kind,
-            call_for(a.kind, eight),
+            call_for(a.kind, called),
         ),
         None => {
             // Nothing open (or the break): straight at the nearest legal ball, firmly.
@@ -91,7 +93,8 @@ pub fn decide(state: &GameState, sim: &Simulation) -> Result<Decision, AiError> 
             } else {
                 ShotKind::Safety { ball: n }
             };
-            let call = if eight && next.legal_first == [8] {
+            let ten_safety = state.game == Game::TenBall && !next.break_shot;
+            let call = if (eight && next.legal_first == [8]) || ten_safety {
                 Call::Safety
             } else {
                 Call::None

@@ -131,8 +131,11 @@ pub fn decide_planned(
                 continue;
             };
             let mut s = safeties(&layout, &next.legal_first, budget.safeties, p);
-            if state.game == Game::EightBall && next.legal_first == [8] {
-                // On the 8, only a called safety is safe from a lucky loss (WPA 3.8).
+            if (state.game == Game::EightBall && next.legal_first == [8])
+                || state.game == Game::TenBall
+            {
+                // On the 8, only a called safety is safe from a lucky loss (WPA 3.8); in
+                // 10-ball every shot is called, a safety declared as one (WPA 9.5, 9.6).
                 s.iter_mut().for_each(|c| c.call = Call::Safety);
             }
             more.extend(s);
@@ -190,9 +193,12 @@ fn offence(search: &Search, place: Option<Vec2>, budget: &Budget) -> Vec<Candida
     let legal = &state.next.legal_first;
     let eight = state.game == Game::EightBall;
     let mut aims = direct_aims(&layout, legal);
+    // 8-ball and 10-ball call every pot (WPA 3.6, 9.5); 9-ball none.
+    let called = eight || state.game == Game::TenBall;
     if budget.banks_kicks_combos {
         aims.extend(rail_aims(&layout, legal));
-        // 8-ball: the ball called must be the shooter's (WPA 3.6); 9-ball: any ball.
+        // 8-ball: the ball called must be the shooter's (WPA 3.6); 9-ball, 10-ball: any
+        // ball (in 10-ball a combination called on the 10 wins, WPA 9.5).
         let second: Vec<u8> = if eight {
             legal.clone()
         } else {
@@ -217,7 +223,7 @@ fn offence(search: &Search, place: Option<Vec2>, budget: &Budget) -> Vec<Candida
         .take(aims_kept)
         .map(|&(_, i)| aims[i])
         .collect();
-    let cands = expand(&kept, budget.speeds, budget.tips, eight, place);
+    let cands = expand(&kept, budget.speeds, budget.tips, called, place);
     if budget.correct_aim {
         cands
             .into_par_iter()

@@ -27,6 +27,8 @@ pub enum RackArg {
 pub enum GameArg {
     /// 9-ball, WPA rules.
     NineBall,
+    /// 10-ball, WPA rules (every shot but the break called).
+    TenBall,
     /// 8-ball, WPA rules.
     EightBall,
     /// The sandbox: no fouls, a scratch respots the cue ball.
@@ -40,6 +42,7 @@ impl GameArg {
     pub fn pool(self) -> Option<Game> {
         match self {
             GameArg::NineBall => Some(Game::NineBall),
+            GameArg::TenBall => Some(Game::TenBall),
             GameArg::EightBall => Some(Game::EightBall),
             GameArg::FreePlay => Some(Game::FreePlay),
             GameArg::Snooker => None,
@@ -232,8 +235,9 @@ pub struct SimulateArgs {
     /// The two players' names, `NAME,NAME`; the first breaks.
     #[arg(long, default_value = "A,B", requires = "game")]
     pub players: String,
-    /// A call for shot K: `K:BALL:POCKET` (8-ball; pockets head-left, head-right, side-left,
-    /// side-right, foot-left, foot-right), `K:safety` (8-ball) or `K:push-out` (9-ball).
+    /// A call for shot K: `K:BALL:POCKET` (8-ball, 10-ball; pockets head-left, head-right,
+    /// side-left, side-right, foot-left, foot-right), `K:safety` (8-ball, 10-ball) or
+    /// `K:push-out` (9-ball, 10-ball).
     #[arg(long = "call", value_parser = parse_call, requires = "game")]
     pub calls: Vec<(usize, Call)>,
     /// Choices to take when the rules offer some, in order: `shoot`, `pass`, `spot-eight`
@@ -249,8 +253,8 @@ pub struct SimulateArgs {
 /// `tournament` options.
 #[derive(clap::Args, Debug)]
 pub struct TournamentArgs {
-    /// The game: nine-ball, eight-ball or snooker (computer levels only; frames, breaks
-    /// and centuries).
+    /// The game: nine-ball, ten-ball, eight-ball or snooker (computer levels only; frames,
+    /// breaks and centuries).
     #[arg(long, value_enum, default_value = "nine-ball")]
     pub game: GameArg,
     /// The two players, `A,B`: easy, medium, hard, expert, perfect, greedy or one-ply. A

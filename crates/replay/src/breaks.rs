@@ -25,7 +25,7 @@ const BREAKS: u64 = 0x6272_6561_6b73;
 /// `breaks` options.
 #[derive(clap::Args, Debug)]
 pub struct BreaksArgs {
-    /// The games, comma-separated: nine-ball, eight-ball.
+    /// The games, comma-separated: nine-ball, ten-ball, eight-ball.
     #[arg(long, value_enum, value_delimiter = ',', default_value = "nine-ball")]
     pub game: Vec<GameArg>,
     /// The tables, comma-separated (`7ft`, `8ft`, `9ft`, optionally `-wide` or `-tight`);
@@ -189,12 +189,19 @@ fn rows(a: &BreaksArgs) -> Result<Vec<(BreakSpec, RackStyle)>, String> {
     let mut out = Vec::new();
     for &g in &a.game {
         let Some(game) = g.pool() else {
-            return Err("the break study is pool's: --game nine-ball or eight-ball".into());
+            return Err(
+                "the break study is pool's: --game nine-ball, ten-ball or eight-ball".into(),
+            );
         };
         if game == Game::FreePlay {
-            return Err("free play has no break: --game nine-ball or eight-ball".into());
+            return Err("free play has no break: --game nine-ball, ten-ball or eight-ball".into());
         }
-        let default = [if game == Game::NineBall { "9ft" } else { "7ft" }.parse::<TableChoice>()?];
+        // 9-ball and 10-ball are played on 9-ft tables, 8-ball in bars on 7-ft ones.
+        let default = [match game {
+            Game::NineBall | Game::TenBall => "9ft",
+            Game::EightBall | Game::FreePlay => "7ft",
+        }
+        .parse::<TableChoice>()?];
         let tables = if a.table.is_empty() {
             &default[..]
         } else {
@@ -291,6 +298,7 @@ pub fn report(r: &BreaksResult) -> String {
              {half:.2} | {:.1} % | {:.1} % | {:.1} % | {:.1} % | {:.0} |\n",
             match s.game {
                 Game::NineBall => "9-ball",
+                Game::TenBall => "10-ball",
                 Game::EightBall => "8-ball",
                 Game::FreePlay => "free play",
             },

@@ -140,7 +140,7 @@ fn tournament(a: TournamentArgs) -> Result<(), Failure> {
         let game: Game = a.game.pool().unwrap_or(Game::NineBall);
         if game == Game::FreePlay {
             return Err(Failure::Input(
-                "free play has no winner: --game nine-ball or eight-ball".into(),
+                "free play has no winner: --game nine-ball, ten-ball or eight-ball".into(),
             ));
         }
         let players = players(&a.players).map_err(Failure::Input)?;

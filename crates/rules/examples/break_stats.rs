@@ -9,7 +9,7 @@
 //!     --gaps-mm 0,0.000001,0.01,0.05          # continuity: one row per rack gap
 //! ```
 //!
-//! Options: `--breaks N` (default 1000), `--seed S` (default 1), `--game nine|eight|both`,
+//! Options: `--breaks N` (default 1000), `--seed S` (default 1), `--game nine|ten|eight|both`,
 //! `--table T` (`7ft`, `8ft`, `9ft`, optionally `-wide` or `-tight` pockets; default: 9-ft for
 //! 9-ball, 7-ft for 8-ball), `--rack template|triangle` (default triangle), `--gaps-mm G,..`
 //! (rack lattice slack instead of the rack style's), `--speed MIN:MAX` (default 10:12 m/s),
@@ -132,9 +132,10 @@ fn options() -> Result<Options, String> {
             "--game" => {
                 o.games = match value.as_str() {
                     "nine" | "nine-ball" => vec![Game::NineBall],
+                    "ten" | "ten-ball" => vec![Game::TenBall],
                     "eight" | "eight-ball" => vec![Game::EightBall],
                     "both" => vec![Game::NineBall, Game::EightBall],
-                    _ => return Err(bad(&"expected nine, eight or both")),
+                    _ => return Err(bad(&"expected nine, ten, eight or both")),
                 }
             }
             "--table" => o.table = Some(value.parse().map_err(|e: String| bad(&e))?),
@@ -247,6 +248,7 @@ fn row(o: &Options, s: &Setup) {
          {:.1} % | {:.1} % | {:.0} | {:.1} |",
         match s.game {
             Game::NineBall => "9-ball",
+            Game::TenBall => "10-ball",
             Game::EightBall => "8-ball",
             Game::FreePlay => "free play",
         },
@@ -272,7 +274,10 @@ fn gap_label(gap: f64) -> String {
 }
 
 fn default_table(game: Game) -> TableChoice {
-    let name = if game == Game::NineBall { "9ft" } else { "7ft" };
+    let name = match game {
+        Game::NineBall | Game::TenBall => "9ft",
+        Game::EightBall | Game::FreePlay => "7ft",
+    };
     name.parse().expect("a table name")
 }
 

@@ -273,7 +273,11 @@ pub fn one_break(
         .fouls
         .iter()
         .any(|f| matches!(f, Foul::IllegalBreak { .. }));
-    let money = if spec.game == Game::NineBall { 9 } else { 8 };
+    let money = match spec.game {
+        Game::NineBall => 9,
+        Game::TenBall => 10,
+        Game::EightBall | Game::FreePlay => 8,
+    };
     Ok(BreakOutcome {
         balls: down,
         scratch: summary.scratch(),
@@ -323,7 +327,10 @@ pub fn break_run(
 pub fn rack(spec: &BreakSpec, table: &Table, params: &Params, seed: u64) -> Vec<BallSetup> {
     let mut balls: Vec<BallSetup> = match spec.game {
         Game::NineBall => crate::racks::nine_ball_spaced(table, &params.ball, seed, spec.gap),
-        _ => crate::racks::eight_ball_spaced(table, &params.ball, seed, spec.gap),
+        Game::TenBall => crate::racks::ten_ball_spaced(table, &params.ball, seed, spec.gap),
+        Game::EightBall | Game::FreePlay => {
+            crate::racks::eight_ball_spaced(table, &params.ball, seed, spec.gap)
+        }
     };
     if spec.nine_on_spot && spec.game == Game::NineBall {
         // The 9 is two rows behind the apex; rows are sqrt(3)/2 of a spacing apart.

@@ -119,6 +119,14 @@ pub const GAMES: &[GameEntry] = &[
         start: |s, t, b| Ok(pool(Game::EightBall, s, t, b)),
     },
     GameEntry {
+        id: "ten-ball",
+        label: "10-ball",
+        length_unit: "race to",
+        default_length: 3,
+        equipment: pool_equipment,
+        start: |s, t, b| Ok(pool(Game::TenBall, s, t, b)),
+    },
+    GameEntry {
         id: "snooker",
         label: "snooker",
         length_unit: "best of",

@@ -624,14 +624,15 @@ impl Drill {
         self.position.params.unwrap_or_default().ball.radius
     }
 
-    /// The ball on after `shots` (9-ball: the lowest on the table; other games: none).
+    /// The ball on after `shots` (9-ball, 10-ball: the lowest on the table; other games:
+    /// none).
     fn ball_on(&self, shots: &[DrillShot]) -> Option<u8> {
         let mut state = self.game_state();
         for s in shots {
             let _ = state.play(&s.summary, crate::game::Call::None);
         }
         match self.position.game {
-            Game::NineBall => state.on_table.first().copied(),
+            Game::NineBall | Game::TenBall => state.on_table.first().copied(),
             _ => None,
         }
     }

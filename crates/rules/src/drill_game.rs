@@ -6,12 +6,12 @@
 
 use crate::drill::{Attempt, Drill, DrillScore, DrillShot};
 use crate::interface::{
-    CueBallPlace, Declaration, Declarations, GameEnd, GameRules, Judgement, Need, RulesError,
-    Setup, StrokeRecord, Turn,
+    CueBallPlace, Declaration, Declarations, GameEnd, GameRules, Judgement, RulesError, Setup,
+    StrokeRecord, Turn,
 };
 use crate::shot::CUE;
 use crate::state::GameState;
-use crate::turn::{Call, CallRule, Seat};
+use crate::turn::{Call, Seat};
 use billiards_physics::{BallSetup, BallSpec, EventKind, Table, Vec2};
 
 /// A drill session in play.
@@ -131,11 +131,7 @@ impl GameRules for DrillGame {
             legal_first: next.legal_first.clone(),
             ball_on: crate::pool::ball_on_text(&self.state, next),
             declare: Declarations {
-                pocket: match next.call {
-                    CallRule::NotUsed => Need::NotUsed,
-                    CallRule::Optional => Need::Optional,
-                    CallRule::EightPocket => Need::Required,
-                },
+                pocket: crate::pool::need_of(next.call),
                 ..Declarations::default()
             },
             opening: false,

@@ -52,7 +52,7 @@ impl Group {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum BallOn {
-    /// 9-ball: the lowest-numbered ball on the table (WPA 2.5, 6.2).
+    /// 9-ball and 10-ball: the lowest-numbered ball on the table (WPA 2.5, 9.5, 6.2).
     Lowest(u8),
     /// 8-ball, open table: any ball but the 8 (WPA 3.5).
     AnyButEight,
@@ -79,7 +79,7 @@ pub enum Foul {
     },
     /// WPA 6.3: no ball was pocketed and no ball touched a rail after the first contact.
     NoRail,
-    /// WPA 2.3 / 3.3: on the break no ball was pocketed and fewer than four object balls
+    /// WPA 2.3 / 3.3 / 9.3: on the break no ball was pocketed and fewer than four object balls
     /// were driven to a rail.
     IllegalBreak {
         /// Object balls that touched a rail.
@@ -119,7 +119,9 @@ impl fmt::Display for Foul {
 pub enum WinReason {
     /// WPA 2.5: the winner pocketed the 9 on a legal shot (a combination or the break too).
     NinePocketed,
-    /// WPA 2.8, 6.14: the loser fouled three times in a row.
+    /// WPA 9.5: the winner pocketed the called 10 in the called pocket on a legal shot.
+    TenPocketed,
+    /// WPA 2.8, 9.11, 6.14: the loser fouled three times in a row.
     ThreeFouls,
     /// WPA 3.6: the winner pocketed the 8 in the called pocket after clearing the group.
     EightPocketed,
@@ -140,6 +142,7 @@ impl fmt::Display for WinReason {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             WinReason::NinePocketed => write!(f, "the 9 was pocketed on a legal shot"),
+            WinReason::TenPocketed => write!(f, "the called 10 was pocketed in the called pocket"),
             WinReason::ThreeFouls => write!(f, "three fouls in a row"),
             WinReason::EightPocketed => write!(f, "the 8 was pocketed in the called pocket"),
             WinReason::EightEarly => write!(f, "the 8 was pocketed before the group was cleared"),

@@ -1,9 +1,10 @@
 //! One rack of a game: its state, the shot's verdict and what the next shot must respect.
 //!
-//! The rulesets are one closed enum, [`Game`], rather than a trait: there are three games,
+//! The rulesets are one closed enum, [`Game`], rather than a trait: there are four games,
 //! each `match` over them is checked for exhaustiveness, and the whole state (a plain value)
 //! can be saved with a recording and compared when it is verified, which trait objects make
-//! awkward. The per-game logic lives in [`crate::nine_ball`] and [`crate::eight_ball`].
+//! awkward. The per-game logic lives in [`crate::nine_ball`], [`crate::ten_ball`] and
+//! [`crate::eight_ball`].
 //!
 //! Flow for a caller (the game, the command line): read [`GameState::next`]; if it offers
 //! [`NextShot::choices`], the [`NextShot::shooter`] picks one with [`GameState::choose`];
@@ -13,7 +14,8 @@
 //!
 //! Rules followed: the WPA World Standardized Rules, "Rules of Play", in the numbering of the
 //! edition effective 1 January 2008 (section 2 nine ball, 3 eight ball, 6 fouls, 8
-//! definitions); see the crate README for the rules covered and left out.
+//! definitions), and its section 9 ten ball, in force from 1 January 2009; see the crate
+//! README for the rules covered and left out.
 //!
 //! This file is the dispatcher: [`GameState::play`] and [`GameState::choose`] hand a shot to
 //! the rules of its game. The words they share live below it, in [`crate::state`] and
@@ -37,8 +39,8 @@ impl GameState {
             _ => CueBall::InHandBehindHeadString,
         };
         let legal_first = match game {
-            // WPA 2.3 with 6.2: the 1 (the lowest) first.
-            Game::NineBall => vec![1],
+            // WPA 2.3 / 9.3 with 6.2: the 1 (the lowest) first.
+            Game::NineBall | Game::TenBall => vec![1],
             _ => on_table.clone(),
         };
         let next = NextShot {
@@ -67,6 +69,7 @@ impl GameState {
         state.on_table = on_table;
         state.next = match game {
             Game::NineBall => crate::nine_ball::normal_next(&state, shooter, CueBall::AsItLies),
+            Game::TenBall => crate::ten_ball::normal_next(&state, shooter, CueBall::AsItLies),
             Game::EightBall => crate::eight_ball::normal_next(&state, shooter, CueBall::AsItLies),
             Game::FreePlay => NextShot::plain(
                 shooter,
@@ -97,6 +100,7 @@ impl GameState {
         }
         let verdict = match self.game {
             Game::NineBall => crate::nine_ball::play(self, shot, call)?,
+            Game::TenBall => crate::ten_ball::play(self, shot, call)?,
             Game::EightBall => crate::eight_ball::play(self, shot, call)?,
             Game::FreePlay => self.free_play(shot, call)?,
         };
@@ -147,12 +151,13 @@ impl GameState {
                 next.spot = vec![8];
                 next
             }
-            (Some(Pending::PushOut { .. }), Choice::ShootFromHere) => {
-                crate::nine_ball::normal_next(self, chooser, CueBall::AsItLies)
+            (Some(Pending::PushOut { .. } | Pending::HandBack { .. }), Choice::ShootFromHere) => {
+                self.rotation_next(chooser)
             }
-            (Some(Pending::PushOut { pusher }), Choice::PassBack) => {
-                crate::nine_ball::normal_next(self, pusher, CueBall::AsItLies)
-            }
+            (
+                Some(Pending::PushOut { pusher: back } | Pending::HandBack { shooter: back }),
+                Choice::PassBack,
+            ) => self.rotation_next(back),
             (pending, _) => {
                 // Unreachable: the choices offered always match the pending decision.
                 self.pending = pending;
@@ -164,6 +169,15 @@ impl GameState {
         };
         self.next = next.clone();
         Ok(next)
+    }
+
+    /// The ordinary next shot of `shooter` in a rotation game (9-ball, 10-ball), the cue
+    /// ball as it lies: after a push out (WPA 2.4, 9.4) or 10-ball's option (9.7).
+    fn rotation_next(&self, shooter: Seat) -> NextShot {
+        match self.game {
+            Game::TenBall => crate::ten_ball::normal_next(self, shooter, CueBall::AsItLies),
+            _ => crate::nine_ball::normal_next(self, shooter, CueBall::AsItLies),
+        }
     }
 
     /// A fresh rack broken by `breaker`, with the fouls of the match kept.

@@ -6,9 +6,11 @@
 //! - [`shots`]: what a "shot" of a recording is (from one strike to the next), numbered from 1
 //!   everywhere a player sees a shot number;
 //! - [`shot`]: the facts of one shot read from the solver's events ([`ShotSummary`]);
-//! - [`racks`]: 8-ball and 9-ball racks with a real rack's small random gaps, from a seed;
-//! - [`game`]: one rack of 8-ball, 9-ball (WPA rules) or free play: [`GameState::play`]
-//!   judges a shot and returns its [`Verdict`] and the [`NextShot`];
+//! - [`racks`]: 8-ball, 9-ball and 10-ball racks with a real rack's small random gaps, from
+//!   a seed;
+//! - [`game`]: one rack of 8-ball, 9-ball, 10-ball (WPA rules) or free play:
+//!   [`GameState::play`] judges a shot and returns its [`Verdict`] and the [`NextShot`];
+//!   each game's rules in [`eight_ball`], [`nine_ball`] and [`ten_ball`];
 //! - [`state`]: the state of one rack ([`GameState`]), which each game's rules move on;
 //! - [`turn`]: the words of one turn ([`Seat`], [`Call`], [`NextShot`], [`Verdict`]);
 //! - [`hand`]: whether a ball-in-hand placement is allowed;
@@ -45,6 +47,7 @@ pub mod shot;
 pub mod shots;
 pub mod snooker;
 pub mod state;
+pub mod ten_ball;
 pub mod three_cushion;
 pub mod turn;
 

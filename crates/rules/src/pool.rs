@@ -128,7 +128,18 @@ pub fn game_name(game: Game) -> &'static str {
     match game {
         Game::NineBall => "9-ball",
         Game::EightBall => "8-ball",
+        Game::TenBall => "10-ball",
         Game::FreePlay => "free play",
+    }
+}
+
+/// Whether the next shot needs a call, in the interface's words.
+pub fn need_of(call: CallRule) -> Need {
+    match call {
+        CallRule::NotUsed => Need::NotUsed,
+        CallRule::Optional => Need::Optional,
+        // 8-ball's 8 (WPA 3.8) and every 10-ball shot after the break (WPA 9.5).
+        CallRule::EightPocket | CallRule::BallAndPocket => Need::Required,
     }
 }
 
@@ -165,11 +176,7 @@ impl GameRules for PoolMatch {
             },
             CueBall::Respot => CueBallPlace::Placed,
         };
-        let pocket = match next.call {
-            CallRule::NotUsed => Need::NotUsed,
-            CallRule::Optional => Need::Optional,
-            CallRule::EightPocket => Need::Required,
-        };
+        let pocket = need_of(next.call);
         Turn {
             striker: next.shooter,
             cue_ball: CUE,

@@ -106,6 +106,7 @@ impl Position {
             Game::EightBall => 0,
             Game::NineBall => 1,
             Game::FreePlay => 2,
+            Game::TenBall => 3,
         });
         let t = &self.table;
         for x in [t.length, t.width, t.corner_mouth, t.side_mouth] {
@@ -185,6 +186,7 @@ impl Position {
             0 => Game::EightBall,
             1 => Game::NineBall,
             2 => Game::FreePlay,
+            3 => Game::TenBall,
             g => return Err(invalid(format!("unknown game {g}"))),
         };
         let (length, width) = (r.f64("the table")?, r.f64("the table")?);

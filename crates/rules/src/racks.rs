@@ -17,6 +17,8 @@
 //! Orders: 9-ball (WPA 2.2): the 1 at the apex on the foot spot, the 9 in the centre, the
 //! others at random. 8-ball (WPA 3.2): the 8 in the centre of the third row, a solid and a
 //! stripe in the two back corners (which one left is random), the other twelve at random.
+//! 10-ball (WPA 9.2): a triangle of four rows, the 1 at the apex on the foot spot, the 10 in
+//! the middle (the centre of the third row), the others at random.
 
 use billiards_physics::{BallSetup, BallSpec, Table, Vec2};
 use rand::seq::SliceRandom;
@@ -75,6 +77,8 @@ impl std::str::FromStr for RackStyle {
 
 /// Row sizes of the 9-ball diamond, apex first.
 const DIAMOND: [usize; 5] = [1, 2, 3, 2, 1];
+/// Row sizes of the 10-ball triangle, apex first.
+const TEN_TRIANGLE: [usize; 4] = [1, 2, 3, 4];
 /// Row sizes of the 15-ball triangle, apex first.
 const TRIANGLE: [usize; 5] = [1, 2, 3, 4, 5];
 
@@ -135,6 +139,30 @@ pub fn nine_ball_spaced(table: &Table, ball: &BallSpec, seed: u64, gap: f64) -> 
             rest.next().expect("seven")
         });
     }
+    place(table, &points, &numbers, 0.5 * gap, &mut rng)
+}
+
+/// A 10-ball rack (WPA 9.2) from `seed`: the cue ball on the head spot, then the ten balls.
+pub fn ten_ball(table: &Table, ball: &BallSpec, seed: u64) -> Vec<BallSetup> {
+    ten_ball_spaced(table, ball, seed, RACK_GAP)
+}
+
+/// [`ten_ball`] with another lattice slack `gap` (metres; offsets up to `gap / 2`).
+pub fn ten_ball_spaced(table: &Table, ball: &BallSpec, seed: u64, gap: f64) -> Vec<BallSetup> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let points = lattice(table, &TEN_TRIANGLE, 2.0 * ball.radius + gap);
+    let mut others: Vec<u8> = (2..=9).collect();
+    others.shuffle(&mut rng);
+    let mut rest = others.into_iter();
+    // Lattice order: apex, row 2 (two), row 3 (three, its centre is index 4: the middle of
+    // the triangle, WPA 9.2), row 4 (four).
+    let numbers: Vec<u8> = (0..10)
+        .map(|k| match k {
+            0 => 1,
+            4 => 10,
+            _ => rest.next().expect("eight"),
+        })
+        .collect();
     place(table, &points, &numbers, 0.5 * gap, &mut rng)
 }
 
@@ -218,6 +246,45 @@ mod tests {
             assert_eq!(numbers, (0..=9).collect::<Vec<u8>>());
             check(&balls, spec.radius);
         }
+    }
+
+    #[test]
+    fn wpa_9_2_ten_ball_rack_has_the_1_on_the_spot_and_the_10_in_the_middle() {
+        let (table, spec) = (Table::wpa_9ft(), BallSpec::default());
+        let mut second_row_two = 0;
+        for seed in 0..50 {
+            let balls = ten_ball(&table, &spec, seed);
+            assert_eq!(balls.len(), 11);
+            assert_eq!(balls[0].number, 0);
+            assert_eq!(balls[1].number, 1);
+            assert!((balls[1].position - table.foot_spot()).length() <= RACK_JITTER + 1e-15);
+            // The 10 in the centre of the third row, two rows behind the apex on the axis.
+            let centre = table.foot_spot()
+                + Vec2::new(
+                    2.0 * (2.0 * spec.radius + RACK_GAP) * 3f64.sqrt() / 2.0,
+                    0.0,
+                );
+            assert_eq!(balls[5].number, 10);
+            assert!((balls[5].position - centre).length() <= RACK_JITTER + 1e-15);
+            // Four rows: the back row is three rows behind the apex.
+            let back = balls
+                .iter()
+                .skip(1)
+                .map(|b| b.position.x)
+                .fold(f64::MIN, f64::max);
+            let rows =
+                (back - table.foot_spot().x) / ((2.0 * spec.radius + RACK_GAP) * 3f64.sqrt() / 2.0);
+            assert!((rows - 3.0).abs() < 1e-3, "{rows} rows behind the apex");
+            let mut numbers: Vec<u8> = balls.iter().map(|b| b.number).collect();
+            numbers.sort_unstable();
+            assert_eq!(numbers, (0..=10).collect::<Vec<u8>>());
+            second_row_two += usize::from(balls[2].number == 2);
+            check(&balls, spec.radius);
+        }
+        // The others are placed at random: the 2 is not always in the same place.
+        assert!((1..50).contains(&second_row_two), "{second_row_two}");
+        assert_eq!(ten_ball(&table, &spec, 7), ten_ball(&table, &spec, 7));
+        assert_ne!(ten_ball(&table, &spec, 7), ten_ball(&table, &spec, 8));
     }
 
     #[test]

@@ -17,6 +17,9 @@ pub enum Game {
     EightBall,
     /// 9-ball, WPA section 2.
     NineBall,
+    /// 10-ball, WPA section 9 (added to the rules on 1 January 2009): 9-ball's rotation
+    /// with every shot called.
+    TenBall,
     /// The sandbox: no fouls, no turns, a scratch respots the cue ball.
     FreePlay,
 }
@@ -26,6 +29,7 @@ impl Game {
     pub fn object_balls(self) -> Vec<u8> {
         match self {
             Game::NineBall => (1..=9).collect(),
+            Game::TenBall => (1..=10).collect(),
             Game::EightBall | Game::FreePlay => (1..=15).collect(),
         }
     }
@@ -47,6 +51,7 @@ impl Game {
         let gap = style.gap();
         match self {
             Game::NineBall => crate::racks::nine_ball_spaced(table, ball, seed, gap),
+            Game::TenBall => crate::racks::ten_ball_spaced(table, ball, seed, gap),
             Game::EightBall | Game::FreePlay => {
                 crate::racks::eight_ball_spaced(table, ball, seed, gap)
             }
@@ -111,10 +116,16 @@ pub(crate) enum Pending {
         /// The break was a foul (the incoming player chooses).
         foul: bool,
     },
-    /// 9-ball: after a push out (WPA 2.4).
+    /// 9-ball and 10-ball: after a push out (WPA 2.4, 9.4).
     PushOut {
         /// The player who pushed.
         pusher: Seat,
+    },
+    /// 10-ball: a ball went down on a shot that did not pocket the called ball in the called
+    /// pocket; the incoming player shoots or hands the table back (WPA 9.7).
+    HandBack {
+        /// The player whose shot it was.
+        shooter: Seat,
     },
 }
 
@@ -127,8 +138,8 @@ pub struct GameState {
     pub breaker: Seat,
     /// 8-ball: the group of player A (`None`: the table is open; B has the other).
     pub group_a: Option<Group>,
-    /// Fouls in a row of each player, by [`Seat::index`] (counted in every game; only
-    /// 9-ball loses on the third, WPA 2.8 — 8-ball has no such rule, WPA 6.14).
+    /// Fouls in a row of each player, by [`Seat::index`] (counted in every game; 9-ball and
+    /// 10-ball lose on the third, WPA 2.8, 9.11 — 8-ball has no such rule, WPA 6.14).
     pub fouls: [u8; 2],
     /// Object balls on the table (after spotting), ascending.
     pub on_table: Vec<u8>,

@@ -1,6 +1,6 @@
 //! One turn at the table: who shoots ([`Seat`]), what they call ([`Call`]), what the next shot
 //! must respect ([`NextShot`]) and the [`Verdict`] on the shot. Each game's rules
-//! ([`crate::nine_ball`], [`crate::eight_ball`]) and the dispatcher over them
+//! ([`crate::nine_ball`], [`crate::ten_ball`], [`crate::eight_ball`]) and the dispatcher over them
 //! ([`crate::game`]) speak these words, so they live here, below both (issue 50).
 
 use crate::foul::{Foul, Group, WinReason};
@@ -40,14 +40,18 @@ impl Seat {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Call {
-    /// No call: a break, a 9-ball shot, or an obvious 8-ball shot (WPA 1.6).
+    /// No call: a break, a 9-ball shot, or an obvious 8-ball shot (WPA 1.6); in 10-ball a
+    /// shot that calls nothing, so pocketing nothing legally (WPA 9.5, 9.7).
     #[default]
     None,
-    /// 9-ball: a push out, only on the shot right after a legal break (WPA 2.4).
+    /// 9-ball and 10-ball: a push out, only on the shot right after a legal break (WPA 2.4,
+    /// 9.4).
     PushOut,
-    /// 8-ball: a called safety; the turn ends whatever drops (WPA 1.6).
+    /// 8-ball and 10-ball: a called safety; the turn ends whatever drops (WPA 1.6, 9.6; in
+    /// 10-ball a ball made on it gives the incoming player the option of 9.7).
     Safety,
-    /// 8-ball: this ball in this pocket (WPA 1.6, 3.6). The 8 must always be called.
+    /// 8-ball and 10-ball: this ball in this pocket (WPA 1.6, 3.6, 9.5). The 8 must always be
+    /// called; in 10-ball every ball, the 10 only winning when called.
     Ball {
         /// The ball called.
         ball: u8,
@@ -81,6 +85,10 @@ pub enum CallRule {
     Optional,
     /// The 8 is on: a pocket must be called for it, or pocketing it loses (WPA 3.8).
     EightPocket,
+    /// 10-ball: every shot but the break calls one ball (any on the table: the lowest is hit
+    /// first, the called ball may be another, as in a combination) and one pocket; only the
+    /// called ball in the called pocket keeps the shooter at the table (WPA 9.5).
+    BallAndPocket,
 }
 
 /// An option offered to a player before the next shot.
@@ -88,9 +96,10 @@ pub enum CallRule {
 #[serde(rename_all = "snake_case")]
 pub enum Choice {
     /// Shoot the table as it lies (after an illegal 8-ball break, WPA 3.3; after a push
-    /// out, WPA 2.4).
+    /// out, WPA 2.4, 9.4; after a 10-ball shot that pocketed a ball it did not call, 9.7).
     ShootFromHere,
-    /// After a push out: the player who pushed must shoot again (WPA 2.4).
+    /// After a push out (WPA 2.4, 9.4), or a 10-ball shot that pocketed a ball it did not
+    /// call (WPA 9.7): the player who shot must shoot again.
     PassBack,
     /// Re-rack and break, the chooser breaking (WPA 3.3).
     RerackAndBreak,
@@ -149,7 +158,7 @@ pub struct NextShot {
     pub spot: Vec<u8>,
     /// A new rack must be put up before the shot.
     pub rerack: bool,
-    /// The shooter's fouls in a row (9-ball; two is the warning of WPA 6.14).
+    /// The shooter's fouls in a row (9-ball and 10-ball; two is the warning of WPA 6.14).
     pub fouls_in_a_row: u8,
 }
 

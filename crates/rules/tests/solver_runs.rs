@@ -218,3 +218,54 @@ fn a_match_race_to_two_scores_racks_and_alternates_the_break() {
     assert_eq!(m.name(Seat::A), "Ann");
     assert!(m.next_rack().is_err(), "the match is over");
 }
+
+#[test]
+fn wpa_9_3_9_9_a_real_break_of_the_seeded_ten_ball_rack_is_judged_by_its_own_facts() {
+    let (table, params) = setup();
+    for seed in 0..4 {
+        let mut balls = Game::TenBall.rack(&table, &params.ball, seed);
+        assert_eq!(
+            balls.len(),
+            11,
+            "the cue ball and ten object balls (WPA 9.2)"
+        );
+        balls[0].position = table.head_spot() + Vec2::new(0.0, 0.1);
+        let aim = (balls[1].position - balls[0].position).angle();
+        let s = run(&balls, Shot::new(aim, 9.0));
+        let mut g = GameState::new(Game::TenBall, Seat::A);
+        let v = g.play(&s, Call::None).unwrap();
+        assert_eq!(s.first_contact, Some(1));
+        let pocketed = s.pocketed_object_balls().count();
+        let legal = !s.scratch() && (pocketed > 0 || s.object_balls_to_rail() >= 4);
+        assert_eq!(v.legal(), legal, "seed {seed}: {s:?} {v:?}");
+        // WPA 9.9: never a win on the break; the 10 made is back on the table.
+        assert_eq!(g.over, None);
+        assert!(g.on_table.contains(&10));
+        let next = v.next.unwrap();
+        assert_eq!(next.spot.contains(&10), s.pocket_of(10).is_some());
+        match (legal, pocketed > 0) {
+            (true, true) => assert_eq!(v.outcome, Outcome::Continues),
+            _ => assert_eq!(v.outcome, Outcome::Passes),
+        }
+        assert_eq!(next.push_out_allowed, legal, "WPA 9.4");
+    }
+}
+
+#[test]
+fn wpa_9_5_9_7_a_real_pot_of_the_10_wins_only_in_the_called_pocket() {
+    let (balls, shot) = pot(10, 2.0, &[]);
+    let s = run(&balls, shot);
+    assert_eq!(s.pocketed, vec![(10, Pocket::FootLeft)]);
+    let last_ball = || GameState::in_progress(Game::TenBall, Seat::A, vec![10]);
+    let mut g = last_ball();
+    let call = |pocket| Call::Ball { ball: 10, pocket };
+    let v = g.play(&s, call(Pocket::FootLeft)).unwrap();
+    assert_eq!(g.over, Some((Seat::A, WinReason::TenPocketed)), "{v:?}");
+    let mut g = last_ball();
+    let v = g.play(&s, call(Pocket::FootRight)).unwrap();
+    assert_eq!(g.over, None);
+    assert_eq!(g.on_table, vec![10], "WPA 9.9: the 10 spotted");
+    let next = v.next.unwrap();
+    assert_eq!(next.shooter, Seat::B);
+    assert_eq!(next.choices, vec![Choice::ShootFromHere, Choice::PassBack]);
+}

@@ -86,10 +86,12 @@ fn rack_request(
         balls: game.rack_styled(&table, &params.ball, seed, style),
         rack: match game {
             Game::NineBall => Rack::NineBall,
-            Game::EightBall | Game::FreePlay => Rack::FifteenBall,
+            // The sandbox has no 10-ball rack; the 15-ball triangle is its nearest.
+            Game::TenBall | Game::EightBall | Game::FreePlay => Rack::FifteenBall,
         },
         name: match game {
             Game::NineBall => "9-ball",
+            Game::TenBall => "10-ball",
             Game::EightBall => "8-ball",
             Game::FreePlay => "15-ball",
         },
@@ -442,12 +444,14 @@ fn preselected_ball(
         .or_else(|| next.legal_first.first().copied())
 }
 
-/// The call the aim proposes: the first callable ball (the 8 when it is on, else a legal
-/// first ball) whose drawn path ends in a pocket.
+/// The call the aim proposes: the first callable ball (the 8 when it is on, in 10-ball any
+/// ball, else a legal first ball) whose drawn path ends in a pocket.
 fn proposed_call(next: &NextShot, aim: &AimPrediction) -> Option<Call> {
     let callable = |n: u8| match next.call {
         CallRule::EightPocket => n == 8,
         CallRule::Optional => next.legal_first.contains(&n),
+        // 10-ball: any ball the aim sends into a pocket (a combination on the 10 too).
+        CallRule::BallAndPocket => true,
         CallRule::NotUsed => false,
     };
     aim.after

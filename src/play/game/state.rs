@@ -14,7 +14,7 @@ use crate::settings::TableSetup;
 /// A game the player can start: one of pool's, or snooker.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum GameChoice {
-    /// 8-ball, 9-ball or free play ([`Game`]).
+    /// 8-ball, 9-ball, 10-ball or free play ([`Game`]).
     Pool(Game),
     /// Snooker on the 12-ft table ([`billiards_rules::snooker`]).
     Snooker,
@@ -22,8 +22,9 @@ pub enum GameChoice {
 
 impl GameChoice {
     /// Every choice, in the dialog's order.
-    pub const ALL: [GameChoice; 4] = [
+    pub const ALL: [GameChoice; 5] = [
         GameChoice::Pool(Game::NineBall),
+        GameChoice::Pool(Game::TenBall),
         GameChoice::Pool(Game::EightBall),
         GameChoice::Snooker,
         GameChoice::Pool(Game::FreePlay),
@@ -33,6 +34,7 @@ impl GameChoice {
     pub fn label(self) -> &'static str {
         match self {
             GameChoice::Pool(Game::NineBall) => "9-ball",
+            GameChoice::Pool(Game::TenBall) => "10-ball",
             GameChoice::Pool(Game::EightBall) => "8-ball",
             GameChoice::Pool(Game::FreePlay) => "free play",
             GameChoice::Snooker => "snooker",
@@ -218,6 +220,7 @@ impl GameInPlay {
         let next = self.next();
         let game = match play.game {
             Game::NineBall => "9-ball",
+            Game::TenBall => "10-ball",
             Game::EightBall => "8-ball",
             Game::FreePlay => "free play",
         };
