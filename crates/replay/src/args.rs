@@ -35,6 +35,9 @@ pub enum GameArg {
     FreePlay,
     /// Snooker, WPBSA rules, on the 12-ft table, between two computer levels.
     Snooker,
+    /// Three-cushion carom, UMB rules, on the 2.84 m carom table, played through the one
+    /// game interface alone.
+    ThreeCushion,
 }
 
 impl GameArg {
@@ -45,7 +48,16 @@ impl GameArg {
             GameArg::TenBall => Some(Game::TenBall),
             GameArg::EightBall => Some(Game::EightBall),
             GameArg::FreePlay => Some(Game::FreePlay),
-            GameArg::Snooker => None,
+            GameArg::Snooker | GameArg::ThreeCushion => None,
+        }
+    }
+
+    /// The catalog's id of a game played through the one game interface alone (no stack of
+    /// its own here), `None` for the others.
+    pub fn interface_only(self) -> Option<&'static str> {
+        match self {
+            GameArg::ThreeCushion => Some("three-cushion"),
+            _ => None,
         }
     }
 }
@@ -282,4 +294,7 @@ pub struct TournamentArgs {
     /// How the racks are racked: `template` (frozen) or `triangle` (small seeded gaps).
     #[arg(long, default_value = "triangle")]
     pub rack_style: billiards_rules::RackStyle,
+    /// Three-cushion: the points of each game (default 40, the UMB distance).
+    #[arg(long)]
+    pub length: Option<u32>,
 }

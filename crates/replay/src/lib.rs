@@ -11,6 +11,7 @@ pub mod cli;
 pub mod drill;
 pub mod export;
 pub mod game;
+pub mod interface_game;
 pub mod position;
 pub mod render;
 pub mod setup;

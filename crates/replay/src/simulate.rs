@@ -37,6 +37,9 @@ fn play(rec: &mut Recorder, shot: Shot) -> Result<ShotSummary, String> {
 
 pub(crate) fn simulate(a: SimulateArgs) -> Result<(), String> {
     if let Some(game) = a.game {
+        if let Some(id) = game.interface_only() {
+            return crate::interface_game::simulate(id, &a);
+        }
         return match game.pool() {
             Some(game) => crate::game::play_game(&a, game),
             None => crate::snooker::simulate(&a),

@@ -127,6 +127,15 @@ fn players(s: &str) -> Result<[Player; 2], String> {
 }
 
 fn tournament(a: TournamentArgs) -> Result<(), Failure> {
+    if let Some(id) = a.game.interface_only() {
+        return crate::interface_game::tournament(id, &a).map_err(|(e, input)| {
+            if input {
+                Failure::Input(e)
+            } else {
+                Failure::Run(e)
+            }
+        });
+    }
     if a.game.pool().is_none() {
         return crate::snooker::tournament(&a).map_err(|(e, input)| {
             if input {

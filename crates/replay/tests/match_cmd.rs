@@ -48,3 +48,64 @@ fn every_game_id_is_known_and_a_wrong_one_is_refused_with_the_list() {
     assert!(!ok, "snooker's best-of must be odd (WPBSA 2.1)");
     assert!(err.contains("odd"), "{err}");
 }
+
+#[test]
+fn tournament_and_simulate_take_three_cushion() {
+    let (ok, out, err) = cli(&[
+        "tournament",
+        "--game",
+        "three-cushion",
+        "--players",
+        "medium,easy",
+        "--games",
+        "2",
+        "--length",
+        "2",
+    ]);
+    assert!(ok, "{err}");
+    assert!(
+        out.contains("three-cushion, points to 2, medium vs easy: 2 games"),
+        "{out}"
+    );
+    // Every game has a winner: the wins add up to the games.
+    let wins: u64 = out
+        .lines()
+        .filter(|l| l.starts_with("medium ") || l.starts_with("easy "))
+        .map(|l| l.split_whitespace().nth(1).unwrap().parse::<u64>().unwrap())
+        .sum();
+    assert_eq!(wins, 2, "{out}");
+    // Pool-only players are refused with a reason.
+    let (ok, _, err) = cli(&[
+        "tournament",
+        "--game",
+        "three-cushion",
+        "--players",
+        "greedy,easy",
+    ]);
+    assert!(!ok && err.contains("pool only"), "{err}");
+    // Scripted strokes: the opening stroke that misses the red is a foul (UMB 3.3), and
+    // the recording verifies bit for bit.
+    let dir = std::env::temp_dir().join(format!("carom-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("carom.json");
+    let (ok, out, err) = cli(&[
+        "simulate",
+        "--game",
+        "three-cushion",
+        "--shot",
+        "90:2",
+        "--shot",
+        "120:4",
+        "--out",
+        file.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    assert!(
+        out.contains("stroke 1: A: Foul: the opening stroke"),
+        "{out}"
+    );
+    assert!(out.contains("stroke 2: B:"), "the yellow plays next: {out}");
+    let (ok, out, err) = cli(&["verify", file.to_str().unwrap()]);
+    assert!(ok && out.contains("bit for bit"), "{out}{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
