@@ -171,12 +171,12 @@ fn report(entry: &GameEntry, levels: &[Level; 2], length: u32, seed: u64, t: &Ta
         t.strokes[0]
     );
     out += "player    wins   win % 95 % interval  fouls\n";
-    for k in 0..2 {
+    for (k, level) in levels.iter().enumerate() {
         let n = t.games as usize;
         let (lo, hi) = wilson(t.wins[k] as usize, n);
         out += &format!(
             "{:<8} {:>5} {:>6.1}% {:>5.1}-{:>5.1}%  {:>5}\n",
-            levels[k].name(),
+            level.name(),
             t.wins[k],
             100.0 * t.wins[k] as f64 / n.max(1) as f64,
             100.0 * lo,
