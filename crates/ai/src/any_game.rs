@@ -359,17 +359,15 @@ fn best_of(
         seed,
     };
     let mut rounds: Rounds<Candidate> = Rounds::default();
-    rounds.add(&sampler, kept, e.samples);
-    for &(k, m) in e.rounds {
-        rounds.refine(&sampler, k, m);
-    }
-    let best = rounds.best()?;
-    let c = rounds.cands[best];
+    // The kept candidates hold the safeties already (a legal hit that passes the turn).
+    rounds.play_rounds(&sampler, kept, |_| Vec::new(), (e.samples, e.rounds));
+    let found = rounds.found()?;
+    let c = rounds.cands[found.index];
     Some(Stroke {
         place: c.place,
         shot: c.shot,
         declared: c.declared,
-        value: rounds.value(best),
+        value: found.value,
     })
 }
 

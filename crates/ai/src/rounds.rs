@@ -122,6 +122,32 @@ pub fn best_candidate(two: &[(usize, f64)], finalists: &[usize], stats: &[Stats]
     })
 }
 
+/// Below this chance of success for the best first candidate, a search adds its safeties
+/// (the pool and snooker searches alike).
+pub const SAFETY_BELOW: f64 = 0.6;
+
+/// What a search found: the best candidate, its samples and value, and the work done.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Found {
+    /// The candidate's index in [`Rounds::cands`].
+    pub index: usize,
+    /// Its samples.
+    pub stats: Stats,
+    /// Its value ([`Rounds::value`]).
+    pub value: f64,
+    /// Simulations the search ran.
+    pub simulations: usize,
+    /// Solver events it processed.
+    pub events: usize,
+}
+
+impl Found {
+    /// The share of its samples that fouled.
+    pub fn foul_rate(&self) -> f64 {
+        self.stats.fouls as f64 / self.stats.n.max(1) as f64
+    }
+}
+
 /// Every candidate of a search evaluated so far, with its samples.
 #[derive(Debug)]
 pub struct Rounds<C> {
@@ -166,6 +192,41 @@ impl<C: Sync> Rounds<C> {
         self.count(&stats);
         self.cands.extend(cands);
         self.stats.extend(stats);
+    }
+
+    /// A search's rounds: `first` sampled `samples` times each; then what `more` gives
+    /// (the safeties) sampled as much, `more` being told whether the best first candidate
+    /// succeeds at least [`SAFETY_BELOW`] of the time; then each refinement round `(k, m)`.
+    pub fn play_rounds<S: Sampler<Cand = C>>(
+        &mut self,
+        s: &S,
+        first: Vec<C>,
+        more: impl FnOnce(bool) -> Vec<C>,
+        (samples, rounds): (usize, &[(usize, usize)]),
+    ) {
+        self.add(s, first, samples);
+        let scoring = self
+            .best()
+            .is_some_and(|i| self.stats[i].pot_rate() >= SAFETY_BELOW);
+        let extra = more(scoring);
+        if !extra.is_empty() {
+            self.add(s, extra, samples);
+        }
+        for &(k, m) in rounds {
+            self.refine(s, k, m);
+        }
+    }
+
+    /// The best candidate so far with its samples, value and the search's work.
+    pub fn found(&self) -> Option<Found> {
+        let index = self.best()?;
+        Some(Found {
+            index,
+            stats: self.stats[index],
+            value: self.value(index),
+            simulations: self.simulations,
+            events: self.events,
+        })
     }
 
     /// Gives the best `k` candidates `m` more samples each; they become the finalists.

@@ -15,9 +15,6 @@ use billiards_physics::{Shot, Simulation, TipOffset, Vec2};
 use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState, check_placement};
 use rayon::prelude::*;
 
-/// Below this chance of a legal pot, safeties (and a push out, when allowed) are searched too.
-const SAFETY_BELOW: f64 = 0.6;
-
 /// The computer's decision at `level` for what `state` asks next, on the resting table
 /// `sim`: the balls `state.next.spot` names already spotted, a respotted cue ball (free
 /// play) already back; a cue ball in hand may be anywhere or off the table. The same `seed`
@@ -120,12 +117,11 @@ pub fn decide_planned(
     } else {
         budget
     };
-    pool.add(&search, first, budget.samples);
-    let scoring = pool
-        .best()
-        .is_some_and(|i| pool.stats[i].pot_rate() >= SAFETY_BELOW);
-    if !next.break_shot && !scoring {
+    let safeties = |scoring: bool| {
         let mut more = Vec::new();
+        if next.break_shot || scoring {
+            return more;
+        }
         for &p in &place_list {
             let Some(layout) = Layout::of(sim, p) else {
                 continue;
@@ -143,28 +139,25 @@ pub fn decide_planned(
                 more.extend(push_outs(p));
             }
         }
-        pool.add(&search, more, budget.samples);
-    }
-    for &(k, m) in budget.rounds {
-        pool.refine(&search, k, m);
-    }
+        more
+    };
+    pool.play_rounds(&search, first, safeties, (budget.samples, budget.rounds));
     if let Some(two) = budget.second.filter(|_| !next.break_shot) {
         second_ply(&mut pool, &search, two);
     }
-    let best = pool.best().ok_or(AiError::NoBall)?;
-    let (c, s) = (pool.cands[best], pool.stats[best]);
-    let value = pool.value(best);
+    let found = pool.found().ok_or(AiError::NoBall)?;
+    let c = pool.cands[found.index];
     Ok(Decision::Shoot(Plan {
         shot: c.shot,
         place: c.place,
         call: c.call,
         kind: c.kind,
-        success: s.pot_rate(),
-        foul: s.fouls as f64 / s.n.max(1) as f64,
-        value,
-        samples: s.n,
-        simulations: pool.simulations,
-        events: pool.events,
+        success: found.stats.pot_rate(),
+        foul: found.foul_rate(),
+        value: found.value,
+        samples: found.stats.n,
+        simulations: found.simulations,
+        events: found.events,
     }))
 }
 

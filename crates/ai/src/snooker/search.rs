@@ -15,9 +15,6 @@ use billiards_rules::snooker::balls::WHITE;
 use billiards_rules::snooker::{Choice, Frame};
 use rayon::prelude::*;
 
-/// Below this chance of a fair pot, safeties are searched too.
-const SAFETY_BELOW: f64 = 0.6;
-
 /// [`super::decide_snooker`] planned under `noise` with `budget`.
 pub fn decide_snooker_with(
     frame: &Frame,
@@ -69,34 +66,29 @@ pub fn decide_snooker_with(
     };
     let mut pool = Pool::default();
     let first: Vec<Cand> = places.iter().flat_map(|&p| s.offence(p, budget)).collect();
-    pool.add(&s, first, budget.samples);
-    let scoring = pool
-        .best()
-        .is_some_and(|i| pool.stats[i].pot_rate() >= SAFETY_BELOW);
-    if !scoring || s.needs {
-        let more: Vec<Cand> = places.iter().flat_map(|&p| s.safeties(p, budget)).collect();
-        pool.add(&s, more, budget.samples);
-    }
-    for &(k, m) in &budget.rounds {
-        pool.refine(&s, k, m);
-    }
+    let safeties = |scoring: bool| {
+        if scoring && !s.needs {
+            return Vec::new();
+        }
+        places.iter().flat_map(|&p| s.safeties(p, budget)).collect()
+    };
+    pool.play_rounds(&s, first, safeties, (budget.samples, &budget.rounds));
     if let Some(two) = &budget.second {
         second_ply(&mut pool, &s, two);
     }
-    let best = pool.best().ok_or(AiError::NoBall)?;
-    let (c, st) = (pool.cands[best], pool.stats[best]);
-    let value = pool.value(best);
+    let found = pool.found().ok_or(AiError::NoBall)?;
+    let c = pool.cands[found.index];
     Ok(SnookerDecision::Shoot(SnookerPlan {
         shot: c.cand.shot,
         place: c.cand.place,
         nominated: c.nominated,
         kind: c.cand.kind,
-        success: st.pot_rate(),
-        foul: st.fouls as f64 / st.n.max(1) as f64,
-        value,
-        samples: st.n,
-        simulations: pool.simulations,
-        events: pool.events,
+        success: found.stats.pot_rate(),
+        foul: found.foul_rate(),
+        value: found.value,
+        samples: found.stats.n,
+        simulations: found.simulations,
+        events: found.events,
     }))
 }
 
