@@ -43,6 +43,7 @@ pub mod position;
 pub mod race;
 pub mod racks;
 pub mod respot;
+mod rotation;
 pub mod shot;
 pub mod shots;
 pub mod snooker;

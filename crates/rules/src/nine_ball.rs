@@ -3,10 +3,11 @@
 //! (2.6); a push out right after a legal break (2.4); ball in hand anywhere after a foul
 //! (2.7, 1.5); three fouls in a row lose the rack (2.8, 6.14).
 
-use crate::foul::{BallOn, Foul, WinReason, common_fouls};
+use crate::foul::WinReason;
+use crate::rotation;
 use crate::shot::ShotSummary;
-use crate::state::{Game, GameState, Pending, RuleError};
-use crate::turn::{Call, CallRule, Choice, CueBall, NextShot, Outcome, Seat, Verdict};
+use crate::state::{Game, GameState, RuleError};
+use crate::turn::{Call, CallRule, CueBall, NextShot, Outcome, Seat, Verdict};
 
 /// The next shot of an ordinary turn: hit the lowest ball first, no call.
 pub(crate) fn normal_next(state: &GameState, shooter: Seat, cue_ball: CueBall) -> NextShot {
@@ -38,17 +39,8 @@ pub(crate) fn play(
     };
     // The 9 is on the table until the game ends, so there is a lowest ball.
     let lowest = state.on_table.first().copied().unwrap_or(9);
-    // WPA 2.4: a push out needs no contact and no rail; a scratch is still a foul.
-    let mut fouls = common_fouls(shot, BallOn::Lowest(lowest), &[lowest], !push_out);
-    if break_shot {
-        // WPA 2.3: the break's rail rule (four object balls) replaces 6.3's.
-        fouls.retain(|f| *f != Foul::NoRail);
-        let pocketed = shot.pocketed_object_balls().next().is_some();
-        let to_rail = shot.object_balls_to_rail();
-        if shot.first_contact.is_some() && !pocketed && to_rail < 4 {
-            fouls.push(Foul::IllegalBreak { to_rail });
-        }
-    }
+    // WPA 2.4: a push out needs no contact and no rail; WPA 2.3: the break's rail rule.
+    let fouls = rotation::fouls(state, shot, lowest, push_out);
     let nine_down = shot.pocket_of(9).is_some();
     let any_down = shot.pocketed_object_balls().next().is_some();
     state.take_off(shot);
@@ -61,20 +53,8 @@ pub(crate) fn play(
     }
     let me = shooter.index();
     let (outcome, next) = if foul {
-        state.fouls[me] += 1;
-        if state.fouls[me] >= 3 {
-            // WPA 2.8 with 6.14: the third foul in a row loses the rack.
-            let over = Outcome::GameOver {
-                winner: shooter.other(),
-                reason: WinReason::ThreeFouls,
-            };
-            (over, None)
-        } else {
-            // WPA 2.7, 1.5: ball in hand anywhere for the opponent.
-            let mut next = normal_next(state, shooter.other(), CueBall::InHandAnywhere);
-            next.spot = spot;
-            (Outcome::Passes, Some(next))
-        }
+        // WPA 2.7, 2.8: ball in hand anywhere, or the third foul loses.
+        rotation::after_foul(state, shooter, spot, normal_next)
     } else {
         state.fouls[me] = 0;
         if nine_down && !push_out {
@@ -86,9 +66,7 @@ pub(crate) fn play(
             (over, None)
         } else if push_out {
             // WPA 2.4: the opponent shoots from there or passes the shot back.
-            state.pending = Some(Pending::PushOut { pusher: shooter });
-            let mut next = normal_next(state, shooter.other(), CueBall::AsItLies);
-            next.choices = vec![Choice::ShootFromHere, Choice::PassBack];
+            let mut next = rotation::after_push_out(state, shooter, normal_next);
             next.spot = spot;
             (Outcome::Passes, Some(next))
         } else {

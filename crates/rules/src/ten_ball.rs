@@ -17,7 +17,8 @@
 //! - 9.10 fouls (6.1 to 6.3): ball in hand anywhere, balls made stay down, the 10 spotted;
 //! - 9.11 with 6.14: the third foul in a row loses the rack.
 
-use crate::foul::{BallOn, Foul, WinReason, common_fouls};
+use crate::foul::WinReason;
+use crate::rotation;
 use crate::shot::ShotSummary;
 use crate::state::{Game, GameState, Pending, RuleError};
 use crate::turn::{Call, CallRule, Choice, CueBall, NextShot, Outcome, Seat, Verdict};
@@ -63,17 +64,8 @@ pub(crate) fn play(
     let push_out = check_call(state, call)?;
     // The 10 is on the table until the game ends, so there is a lowest ball.
     let lowest = state.on_table.first().copied().unwrap_or(TEN);
-    // WPA 9.4: a push out suspends 6.2 and 6.3; a scratch is still a foul.
-    let mut fouls = common_fouls(shot, BallOn::Lowest(lowest), &[lowest], !push_out);
-    if break_shot {
-        // WPA 9.3: the break's rail rule (four object balls) replaces 6.3's.
-        fouls.retain(|f| *f != Foul::NoRail);
-        let pocketed = shot.pocketed_object_balls().next().is_some();
-        let to_rail = shot.object_balls_to_rail();
-        if shot.first_contact.is_some() && !pocketed && to_rail < 4 {
-            fouls.push(Foul::IllegalBreak { to_rail });
-        }
-    }
+    // WPA 9.4: a push out suspends 6.2 and 6.3; WPA 9.3: the break's rail rule.
+    let fouls = rotation::fouls(state, shot, lowest, push_out);
     let foul = !fouls.is_empty();
     // WPA 9.5: the called ball in the called pocket on a legal shot.
     let made = match call {
@@ -93,20 +85,8 @@ pub(crate) fn play(
     }
     let me = shooter.index();
     let (outcome, next) = if foul {
-        state.fouls[me] += 1;
-        if state.fouls[me] >= 3 {
-            // WPA 9.11 with 6.14: the third foul in a row loses the rack.
-            let over = Outcome::GameOver {
-                winner: shooter.other(),
-                reason: WinReason::ThreeFouls,
-            };
-            (over, None)
-        } else {
-            // WPA 9.10, 1.5: ball in hand anywhere for the opponent.
-            let mut next = normal_next(state, shooter.other(), CueBall::InHandAnywhere);
-            next.spot = spot;
-            (Outcome::Passes, Some(next))
-        }
+        // WPA 9.10, 9.11: ball in hand anywhere, or the third foul loses.
+        rotation::after_foul(state, shooter, spot, normal_next)
     } else {
         state.fouls[me] = 0;
         let (outcome, mut next) = legal(state, shooter, push_out, made, any_down);
@@ -145,10 +125,10 @@ fn legal(
 ) -> (Outcome, NextShot) {
     if push_out {
         // WPA 9.4: the opponent shoots from there or passes the shot back.
-        state.pending = Some(Pending::PushOut { pusher: shooter });
-        let mut next = normal_next(state, shooter.other(), CueBall::AsItLies);
-        next.choices = vec![Choice::ShootFromHere, Choice::PassBack];
-        return (Outcome::Passes, next);
+        return (
+            Outcome::Passes,
+            rotation::after_push_out(state, shooter, normal_next),
+        );
     }
     // `state.next` is still the shot just played: the dispatcher replaces it afterwards.
     if state.next.break_shot {
