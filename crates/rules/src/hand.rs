@@ -2,7 +2,7 @@
 //! string on the break and after a scratch on the 8-ball break, 2.3 / 3.3).
 
 use crate::game::CueBall;
-use billiards_physics::{BallId, Simulation, Vec2, sim::PLACEMENT_TOLERANCE};
+use billiards_physics::{BallId, Simulation, Table, Vec2, sim::PLACEMENT_TOLERANCE};
 
 /// Why the cue ball cannot go there.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -30,8 +30,25 @@ pub fn check_placement(
     at: Vec2,
     rule: CueBall,
 ) -> Result<(), PlacementError> {
-    let table = sim.table();
-    let r = sim.params().ball.radius;
+    let numbers = sim.numbers();
+    let others: Vec<(u8, Vec2)> = sim
+        .balls()
+        .enumerate()
+        .filter(|&(id, state)| id != cue && state.motion.on_table())
+        .map(|(id, state)| (numbers[id], state.position))
+        .collect();
+    check_place(sim.table(), sim.params().ball.radius, at, &others, rule)
+}
+
+/// [`check_placement`] on plain data: the cue ball of radius `radius` at `at` on `table`,
+/// the other balls on the table at `others` (number and centre).
+pub fn check_place(
+    table: &Table,
+    radius: f64,
+    at: Vec2,
+    others: &[(u8, Vec2)],
+    rule: CueBall,
+) -> Result<(), PlacementError> {
     match rule {
         CueBall::AsItLies | CueBall::Respot => return Err(PlacementError::NotInHand),
         CueBall::InHandBehindHeadString if at.x > table.head_spot().x => {
@@ -39,26 +56,23 @@ pub fn check_placement(
         }
         CueBall::InHandAnywhere | CueBall::InHandBehindHeadString => {}
     }
-    let bounds = table.centre_bounds(r);
+    let bounds = table.centre_bounds(radius);
     if !at.is_finite() || at.x.abs() > bounds.x || at.y.abs() > bounds.y {
         return Err(PlacementError::OffTable);
     }
-    let numbers = sim.numbers();
-    for (id, state) in sim.balls().enumerate() {
-        if id != cue
-            && state.motion.on_table()
-            && (state.position - at).length() < 2.0 * r - PLACEMENT_TOLERANCE
-        {
-            return Err(PlacementError::Overlaps(numbers[id]));
-        }
+    match others
+        .iter()
+        .find(|&&(_, p)| (p - at).length() < 2.0 * radius - PLACEMENT_TOLERANCE)
+    {
+        Some(&(n, _)) => Err(PlacementError::Overlaps(n)),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use billiards_physics::{BallSetup, Params, Table};
+    use billiards_physics::{BallSetup, Params};
 
     #[test]
     fn wpa_1_5_ball_in_hand_refuses_overlaps_the_cushions_and_the_kitchen_line() {

@@ -18,16 +18,22 @@
 //! - [`breaks`]: one break judged by the rules and the counts over many (break statistics);
 //! - [`snooker`]: snooker frames and matches under the WPBSA rules, an API of its own;
 //! - [`position`]: a position (game, table, balls, physics, shot) as a short text code;
-//! - [`drill`]: drills, a position with goals and tries, judged from the solver's record.
+//! - [`drill`]: drills, a position with goals and tries, judged from the solver's record;
+//! - [`interface`]: the one interface every game implements ([`GameRules`]), with pool's
+//!   games behind it in [`pool`] and snooker's in [`snooker::rules`];
+//! - [`catalog`]: every game, found by its command-line id and started behind the interface.
 
 pub mod breaks;
+pub mod catalog;
 pub mod drill;
 pub mod eight_ball;
 pub mod foul;
 pub mod game;
 pub mod hand;
+pub mod interface;
 pub mod log;
 pub mod nine_ball;
+pub mod pool;
 pub mod position;
 pub mod race;
 pub mod racks;
@@ -44,7 +50,11 @@ pub use game::{
     Call, CallRule, Choice, CueBall, Game, GameState, NextShot, Outcome, RuleError, Seat, Verdict,
     what_happened,
 };
-pub use hand::{PlacementError, check_placement};
+pub use hand::{PlacementError, check_place, check_placement};
+pub use interface::{
+    CueBallPlace, Declaration, Declarations, GameEnd, GameRules, HandRegion, Judgement, Need,
+    RulesError, Setup, StrokeRecord, Turn,
+};
 pub use log::{GameLog, LogError, LoggedShot, RulesLog};
 pub use position::{PlacedBall, Position, PositionError};
 pub use race::Match;

@@ -11,6 +11,7 @@
 //! - `geometry`: re-spotting (3.6), snookered (2.16), a clear path (3.14);
 //! - `frame`, `judge`: the frame and its strokes; `verdict`: what a stroke returns;
 //! - `matches`: a match of N frames;
+//! - `rules`: the frame behind the one game interface ([`crate::interface::GameRules`]);
 //! - `log`: the rules log of a recorded frame ([`FrameLog`]), re-judged against its recording.
 
 pub mod balls;
@@ -19,6 +20,7 @@ pub mod geometry;
 mod judge;
 pub mod log;
 pub mod matches;
+pub mod rules;
 pub mod verdict;
 
 pub use frame::{Chosen, Frame, Snapshot, SnookerError};

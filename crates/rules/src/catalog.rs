@@ -1,0 +1,154 @@
+//! Every game there is, each started behind the one interface ([`GameRules`], issue 50):
+//! the New game dialog lists [`GAMES`], the command line finds one by [`find`]'s id
+//! (`--game nine-ball`), and both start it with [`GameEntry::start`]. Adding a game is one
+//! entry here and an implementation of [`GameRules`] in the game's own module.
+
+use crate::interface::{GameRules, RulesError};
+use crate::pool::PoolMatch;
+use crate::racks::RackStyle;
+use crate::snooker::rules::SnookerGame;
+use crate::state::Game;
+use billiards_physics::{BallSpec, Table};
+
+/// How a match is set up, for any game.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MatchSettings {
+    /// The players' names; A opens.
+    pub players: [String; 2],
+    /// The match's length in the game's unit: racks to win (pool), frames best of (snooker,
+    /// odd), points to reach (carom).
+    pub length: u32,
+    /// The seed of the first rack's random gaps.
+    pub seed: u64,
+    /// How pool's racks are set.
+    pub style: RackStyle,
+    /// The table and balls; `None`: the game's own ([`GameEntry::equipment`]).
+    pub equipment: Option<(Table, BallSpec)>,
+}
+
+impl MatchSettings {
+    /// Two players, a match of `length`, seed `seed`, the game's own equipment.
+    pub fn new(players: [String; 2], length: u32, seed: u64) -> Self {
+        Self {
+            players,
+            length,
+            seed,
+            style: RackStyle::Triangle,
+            equipment: None,
+        }
+    }
+}
+
+/// How an entry starts a match on the given table and balls.
+pub type Start = fn(&MatchSettings, Table, BallSpec) -> Result<Box<dyn GameRules>, RulesError>;
+
+/// One game of the catalog.
+#[derive(Clone, Copy, Debug)]
+pub struct GameEntry {
+    /// The id on the command line (`nine-ball`).
+    pub id: &'static str,
+    /// The player's name for it (`9-ball`).
+    pub label: &'static str,
+    /// What the match's length counts ("race to", "best of", "points to").
+    pub length_unit: &'static str,
+    /// The usual length of a match.
+    pub default_length: u32,
+    /// The game's own table and balls.
+    pub equipment: fn() -> (Table, BallSpec),
+    start: Start,
+}
+
+impl GameEntry {
+    /// Starts a match of this game.
+    pub fn start(&self, settings: &MatchSettings) -> Result<Box<dyn GameRules>, RulesError> {
+        if settings.length == 0 {
+            return Err(RulesError(format!(
+                "a match of {} needs a length of at least 1 ({} 0 given)",
+                self.label, self.length_unit
+            )));
+        }
+        let (table, ball) = settings.equipment.unwrap_or_else(self.equipment);
+        (self.start)(settings, table, ball)
+    }
+}
+
+/// Pool's table: the WPA 8-ft table with 15 mm jaws (the game's default venue) and the
+/// WPA ball (2.25 in).
+fn pool_equipment() -> (Table, BallSpec) {
+    (Table::wpa_8ft().with_jaws(0.015), BallSpec::default())
+}
+
+fn snooker_equipment() -> (Table, BallSpec) {
+    (Table::snooker_12ft(), BallSpec::snooker())
+}
+
+fn pool(game: Game, s: &MatchSettings, table: Table, ball: BallSpec) -> Box<dyn GameRules> {
+    Box::new(PoolMatch::new(
+        game,
+        s.players.clone(),
+        s.length,
+        table,
+        ball,
+        s.seed,
+        s.style,
+    ))
+}
+
+/// Every game, in the dialog's order.
+pub const GAMES: &[GameEntry] = &[
+    GameEntry {
+        id: "nine-ball",
+        label: "9-ball",
+        length_unit: "race to",
+        default_length: 3,
+        equipment: pool_equipment,
+        start: |s, t, b| Ok(pool(Game::NineBall, s, t, b)),
+    },
+    GameEntry {
+        id: "eight-ball",
+        label: "8-ball",
+        length_unit: "race to",
+        default_length: 3,
+        equipment: pool_equipment,
+        start: |s, t, b| Ok(pool(Game::EightBall, s, t, b)),
+    },
+    GameEntry {
+        id: "snooker",
+        label: "snooker",
+        length_unit: "best of",
+        default_length: 3,
+        equipment: snooker_equipment,
+        start: |s, t, b| {
+            Ok(Box::new(SnookerGame::new(
+                s.players.clone(),
+                s.length,
+                t,
+                b,
+            )?))
+        },
+    },
+    GameEntry {
+        id: "free-play",
+        label: "free play",
+        length_unit: "race to",
+        default_length: 1,
+        equipment: pool_equipment,
+        start: |s, t, b| Ok(pool(Game::FreePlay, s, t, b)),
+    },
+];
+
+/// The game of command-line id `id` (`nine-ball`; `9-ball` and `9ball` too).
+pub fn find(id: &str) -> Result<&'static GameEntry, RulesError> {
+    let wanted = id.trim().to_ascii_lowercase();
+    GAMES
+        .iter()
+        .find(|g| {
+            g.id == wanted
+                || g.label.replace(' ', "-") == wanted
+                || g.label.replace('-', "") == wanted
+        })
+        .ok_or_else(|| {
+            let ids: Vec<&str> = GAMES.iter().map(|g| g.id).collect();
+            RulesError(format!("unknown game {id:?}: one of {}", ids.join(", ")))
+        })
+}

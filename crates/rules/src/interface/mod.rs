@@ -1,0 +1,300 @@
+//! One interface for every game (issue 50): [`GameRules`], which pool's games
+//! ([`crate::pool`]), snooker ([`crate::snooker::rules`]) and every game added
+//! later implement, and the words it speaks. The game, the command line and the computer
+//! hold a `Box<dyn GameRules>` and never ask which game it is.
+//!
+//! The flow of one stroke, for any game:
+//!
+//! 1. read [`GameRules::turn`]: who strikes, with which cue ball, from where
+//!    ([`CueBallPlace`]), what may be hit first, what may or must be declared
+//!    ([`Declarations`]) and the options to choose between first ([`Turn::choices`]);
+//! 2. while options are offered, the striker takes one by index with
+//!    [`GameRules::choose`] and sets the table as the returned [`Setup`] says;
+//! 3. place the cue ball if it is in hand, strike, run the solver to rest;
+//! 4. [`GameRules::judge`] the [`StrokeRecord`] (the solver's events of the stroke, the
+//!    layouts before and after, the declaration): the [`Judgement`] says whether the
+//!    stroke was fair, in words, which balls the rules put back on the table and where,
+//!    and whether the game (a rack, a frame, a carom game) and the match are over;
+//! 5. when the game is over and the match is not, [`GameRules::next_game`] gives the next
+//!    game's layout.
+//!
+//! The words are plain data (numbers of balls, positions, sentences), so a caller that
+//! knows no game (the HUD, a log, the computer's search) can use them.
+//!
+//! Arrows: this module imports only the shared words ([`crate::turn`], [`crate::shot`]) and
+//! the solver's types; each game's adapter imports this module, and the list of games
+//! ([`crate::catalog`]) imports the adapters, never the other way.
+
+use crate::turn::Seat;
+use billiards_physics::{BallSetup, BallSpec, Event, Pocket, Table, Vec2};
+use serde::{Deserialize, Serialize};
+
+/// What the striker may declare before a stroke: a ball and a pocket (pool's call shot),
+/// a safety, a push out (9-ball, 10-ball), a nominated ball (snooker's colour or free
+/// ball), or nothing.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Declaration {
+    /// Nothing declared.
+    #[default]
+    None,
+    /// This ball in this pocket (WPA 1.6).
+    Pocket {
+        /// The ball called.
+        ball: u8,
+        /// The pocket called.
+        pocket: Pocket,
+    },
+    /// A called safety (WPA 1.6, 8-ball).
+    Safety,
+    /// A push out (WPA 2.4).
+    PushOut,
+    /// A nominated ball (WPBSA 2.12 a colour after a red, 3.12 a free ball).
+    Nominate {
+        /// The ball nominated.
+        ball: u8,
+    },
+}
+
+impl Declaration {
+    /// The declaration in words ("the 5 in the left side pocket", "push out"), `None` when
+    /// nothing was declared. `name` names a ball in the game's words.
+    pub fn text(self, name: &dyn Fn(u8) -> String) -> Option<String> {
+        match self {
+            Declaration::None => None,
+            Declaration::Pocket { ball, pocket } => Some(format!(
+                "{} in the {}",
+                name(ball),
+                crate::foul::pocket_name(pocket)
+            )),
+            Declaration::Safety => Some("safety".to_owned()),
+            Declaration::PushOut => Some("push out".to_owned()),
+            Declaration::Nominate { ball } => Some(format!("{} nominated", name(ball))),
+        }
+    }
+}
+
+/// Whether a kind of declaration is used on the next stroke.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Need {
+    /// Not used: declaring it is refused.
+    #[default]
+    NotUsed,
+    /// Accepted; an obvious stroke needs none (WPA 1.6, WPBSA 2.12).
+    Optional,
+    /// Required: a stroke without it is judged as the game's rules say (8-ball's 8, 10-ball
+    /// every shot).
+    Required,
+}
+
+/// What the striker may declare before the next stroke.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Declarations {
+    /// A ball and a pocket ([`Declaration::Pocket`]).
+    pub pocket: Need,
+    /// A safety may be called ([`Declaration::Safety`]).
+    pub safety: bool,
+    /// A push out may be declared ([`Declaration::PushOut`]).
+    pub push_out: bool,
+    /// The balls that may be nominated ([`Declaration::Nominate`]); empty: none.
+    pub nominate: Vec<u8>,
+}
+
+/// Where the cue ball may be put by hand.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum HandRegion {
+    /// Anywhere on the table (WPA 1.5).
+    Anywhere,
+    /// Behind the head string (pool's break, WPA 2.3, 3.3).
+    BehindHeadString,
+    /// In the D (WPBSA 3.4).
+    D,
+}
+
+/// Where the striker's cue ball is before the next stroke.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum CueBallPlace {
+    /// Where it came to rest.
+    AsItLies,
+    /// In hand: the striker places it in this region (the caller checks the place with
+    /// [`GameRules::check_hand`]).
+    InHand {
+        /// The region.
+        region: HandRegion,
+    },
+    /// Put back by the rules before the stroke (free play's respot): the caller places it
+    /// where [`Judgement::put`] said.
+    Placed,
+}
+
+/// The next stroke as any game describes it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Turn {
+    /// Who strikes (or, with [`Turn::choices`], who chooses first).
+    pub striker: Seat,
+    /// The number of the striker's cue ball (0, or carom's yellow for the second player).
+    pub cue_ball: u8,
+    /// Where the cue ball is.
+    pub place: CueBallPlace,
+    /// The balls the cue ball may hit first; every object ball when any may be.
+    pub legal_first: Vec<u8>,
+    /// What is on, in words ("the 3", "a red", "the red first").
+    pub ball_on: String,
+    /// What may or must be declared.
+    pub declare: Declarations,
+    /// The stroke opens a game (a break, a break-off, carom's opening stroke).
+    pub opening: bool,
+    /// Options the striker must choose one of before striking (by index, with
+    /// [`GameRules::choose`]), in the player's words; empty: strike.
+    pub choices: Vec<String>,
+}
+
+/// How the table must be set before the next stroke, after a choice or a new game.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Setup {
+    /// Nothing changes.
+    #[default]
+    Keep,
+    /// Put these balls here (spotted balls), the others left as they lie.
+    Put {
+        /// Each ball and where.
+        balls: Vec<(u8, Vec2)>,
+    },
+    /// Every ball exactly as listed, the others off the table (WPBSA 3.14's replace).
+    Layout {
+        /// Each ball and where.
+        balls: Vec<(u8, Vec2)>,
+    },
+    /// A new rack: a fresh start of the table.
+    Rack {
+        /// The balls of the rack.
+        balls: Vec<BallSetup>,
+    },
+}
+
+/// One stroke as played, for [`GameRules::judge`].
+#[derive(Clone, Copy, Debug)]
+pub struct StrokeRecord<'a> {
+    /// The solver's events from the strike to rest (earlier events are ignored up to the
+    /// last strike among them).
+    pub events: &'a [Event],
+    /// The number painted on each ball, by the solver's ball id.
+    pub numbers: &'a [u8],
+    /// Every ball on the table at the strike (the cue ball included).
+    pub before: &'a [(u8, Vec2)],
+    /// Every ball on the table at rest (pocketed balls absent).
+    pub after: &'a [(u8, Vec2)],
+    /// What the striker declared.
+    pub declared: Declaration,
+}
+
+/// How a game (a rack, a frame, a carom game) ended.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct GameEnd {
+    /// The winner.
+    pub winner: Seat,
+    /// Why, in words ("the 9 was pocketed on a legal shot").
+    pub reason: String,
+    /// The match is over too.
+    pub match_over: bool,
+}
+
+/// The judgement of one stroke, in any game's words.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Judgement {
+    /// Who struck.
+    pub striker: Seat,
+    /// No foul.
+    pub fair: bool,
+    /// The fouls, each in words; empty on a fair stroke.
+    pub fouls: Vec<String>,
+    /// The verdict in words: fair or the fouls, and what the stroke did ("legal: the 7 in
+    /// the right side pocket", "foul: the cue ball went in-off: 4 points to Ann").
+    pub text: String,
+    /// Balls the rules put back on the table before the next stroke, and where (spotted
+    /// balls, a respotted cue ball), in the order to place them.
+    pub put: Vec<(u8, Vec2)>,
+    /// The striker stays at the table.
+    pub continues: bool,
+    /// The game's end, if this stroke ended it.
+    pub end: Option<GameEnd>,
+}
+
+/// Why a call on a game was refused (nothing changed).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{0}")]
+pub struct RulesError(pub String);
+
+impl RulesError {
+    /// An error from any displayable reason.
+    pub fn from_display(e: impl std::fmt::Display) -> Self {
+        Self(e.to_string())
+    }
+}
+
+/// One game's rules: the equipment, the rack, whose turn and what they may do, the
+/// judgement of a stroke, the score and the end. Implemented by every game; used alone by
+/// the game, the command line and the computer.
+pub trait GameRules: std::fmt::Debug + Send + Sync {
+    /// The game's name for a player ("9-ball", "snooker").
+    fn name(&self) -> &'static str;
+    /// The players' names, by [`Seat::index`].
+    fn players(&self) -> &[String; 2];
+    /// The table the game is played on.
+    fn table(&self) -> Table;
+    /// The balls' size and mass.
+    fn ball(&self) -> BallSpec;
+    /// The layout of the game in play at its start (the rack, the opening position).
+    fn layout(&self) -> Result<Vec<BallSetup>, RulesError>;
+    /// The next stroke.
+    fn turn(&self) -> Turn;
+    /// The name of a ball in the game's words ("the 7", "the pink", "the yellow").
+    fn ball_name(&self, ball: u8) -> String;
+    /// Takes option `index` of [`Turn::choices`], with the balls on the table at `layout`
+    /// (a spotted ball must miss them); returns how the table must be set.
+    fn choose(&mut self, index: usize, layout: &[(u8, Vec2)]) -> Result<Setup, RulesError>;
+    /// Whether the cue ball may be put at `at` by hand now, with the other balls at
+    /// `others`: `Err` says why not.
+    fn check_hand(&self, at: Vec2, others: &[Vec2]) -> Result<(), RulesError>;
+    /// Judges one stroke played under [`GameRules::turn`] and moves the game on.
+    fn judge(&mut self, stroke: &StrokeRecord<'_>) -> Result<Judgement, RulesError>;
+    /// The match's score in one line ("9-ball, race to 3: Ann 1 - 0 Bob").
+    fn score_line(&self) -> String;
+    /// The game's points (a frame's score, carom's points; pool's racks won).
+    fn points(&self) -> [u32; 2];
+    /// The state in a few lines for the HUD: the ball on, groups, balls left, fouls in a
+    /// row, the break, innings.
+    fn status(&self) -> Vec<String>;
+    /// The game's end, once it is over.
+    fn end(&self) -> Option<GameEnd>;
+    /// The match's winner, once it is over.
+    fn match_winner(&self) -> Option<Seat>;
+    /// Starts the next game of the match (after [`GameRules::end`]); returns its layout.
+    fn next_game(&mut self) -> Result<Vec<BallSetup>, RulesError>;
+    /// The striker concedes the game (WPBSA 2.1(a)); refused where the game has no such
+    /// rule.
+    fn concede(&mut self) -> Result<GameEnd, RulesError> {
+        Err(RulesError(format!("{} has no concession", self.name())))
+    }
+    /// A copy behind a new box (the computer searches on copies).
+    fn boxed_clone(&self) -> Box<dyn GameRules>;
+}
+
+impl Clone for Box<dyn GameRules> {
+    fn clone(&self) -> Self {
+        self.boxed_clone()
+    }
+}
+
+/// The balls of a layout as positions, leaving out `skip` (for spotting and placing).
+pub fn positions_except(layout: &[(u8, Vec2)], skip: u8) -> Vec<Vec2> {
+    layout
+        .iter()
+        .filter(|&&(n, _)| n != skip)
+        .map(|&(_, p)| p)
+        .collect()
+}
