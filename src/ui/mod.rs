@@ -322,7 +322,7 @@ fn show_scene_image(mut contexts: EguiContexts, scene: Res<SceneTarget>) -> Resu
 mod tests {
     use bevy::{prelude::*, window::RequestRedraw};
     use bevy_egui::EguiRenderOutput;
-    use bevy_egui::egui::{self, Event, PointerButton, pos2, vec2};
+    use bevy_egui::egui;
 
     /// Frames whose egui output changes a texture ask for one more frame; others do not.
     #[test]
