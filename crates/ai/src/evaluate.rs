@@ -27,9 +27,10 @@ use crate::candidates::{Candidate, Layout};
 use crate::noise::{Noise, stream};
 use crate::position::best_success;
 use crate::quiet::final_layout;
+use crate::rounds::Sampler;
+pub use crate::rounds::{Stats, best_candidate};
 use billiards_physics::{BallId, EventKind, Simulation, Vec2, Vec3};
 use billiards_rules::{Call, Game, GameState, Outcome, Seat, ShotSummary, Verdict, summarise};
-use rayon::prelude::*;
 
 /// The value of a shot that runs on when it is not for the game ball: a share of the rest
 /// of the run.
@@ -130,51 +131,6 @@ pub struct Search<'a> {
     pub seed: u64,
     /// How samples run the solver.
     pub mode: Mode,
-}
-
-/// The running totals of one candidate's samples.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Stats {
-    /// Samples.
-    pub n: usize,
-    /// Sum of the values.
-    pub value: f64,
-    /// Samples with a legal pot (or a win).
-    pub pots: usize,
-    /// Samples with a foul.
-    pub fouls: usize,
-    /// Samples that lost the game.
-    pub losses: usize,
-    /// Solver events processed.
-    pub events: usize,
-}
-
-impl Stats {
-    /// Mean value (minus infinity without samples).
-    pub fn mean(&self) -> f64 {
-        if self.n == 0 {
-            f64::NEG_INFINITY
-        } else {
-            self.value / self.n as f64
-        }
-    }
-
-    /// Fraction of samples with a legal pot or a win.
-    pub fn pot_rate(&self) -> f64 {
-        self.pots as f64 / self.n.max(1) as f64
-    }
-
-    /// Both sets of samples together.
-    pub fn merged(self, o: Stats) -> Stats {
-        Stats {
-            n: self.n + o.n,
-            value: self.value + o.value,
-            pots: self.pots + o.pots,
-            fouls: self.fouls + o.fouls,
-            losses: self.losses + o.losses,
-            events: self.events + o.events,
-        }
-    }
 }
 
 /// Whether nothing later in the shot can change what the sample is scored on: a foul in
@@ -400,34 +356,11 @@ impl Search<'_> {
     /// gives a few candidates many samples each, which a split by candidate leaves to one
     /// core at the end.
     pub fn evaluate_runs(&self, runs: &[Run]) -> Vec<Stats> {
-        let mut starts = Vec::with_capacity(runs.len() + 1);
-        let mut total = 0usize;
-        for r in runs {
-            starts.push(total);
-            total += (r.samples.end.saturating_sub(r.samples.start)) as usize;
-        }
-        starts.push(total);
-        // One scratch per rayon job, its simulation reset from the base for each sample.
-        let samples: Vec<Stats> = (0..total)
-            .into_par_iter()
-            .map_init(
-                || Scratch::new(&self.base),
-                |scratch, n| {
-                    let r = starts.partition_point(|&s| s <= n) - 1;
-                    let run = &runs[r];
-                    let k = run.samples.start + (n - starts[r]) as u64;
-                    self.sample(run.cand, run.stream, k, scratch)
-                },
-            )
+        let runs: Vec<(&Candidate, u64, std::ops::Range<u64>)> = runs
+            .iter()
+            .map(|r| (r.cand, r.stream, r.samples.clone()))
             .collect();
-        starts
-            .windows(2)
-            .map(|w| {
-                samples[w[0]..w[1]]
-                    .iter()
-                    .fold(Stats::default(), |s, x| s.merged(*x))
-            })
-            .collect()
+        crate::rounds::sample_runs(self, &runs)
     }
 
     /// `cand` with its aim corrected for throw and spin, noiselessly: a secant search on the
@@ -480,29 +413,15 @@ impl Search<'_> {
     }
 }
 
-/// The best candidate of a search: after a second ply the best two-ply value (`two`: the
-/// candidate and its value); else the best mean among the finalists of the last round (all
-/// `stats` when there was none; ties: the first).
-pub(crate) fn best_candidate(
-    two: &[(usize, f64)],
-    finalists: &[usize],
-    stats: &[Stats],
-) -> Option<usize> {
-    if !two.is_empty() {
-        return two
-            .iter()
-            .copied()
-            .reduce(|a, b| if b.1 > a.1 { b } else { a })
-            .map(|v| v.0);
+impl Sampler for Search<'_> {
+    type Cand = Candidate;
+    type Scratch = Scratch;
+
+    fn scratch(&self) -> Scratch {
+        Scratch::new(&self.base)
     }
-    let all: Vec<usize> = (0..stats.len()).collect();
-    let pool = if finalists.is_empty() {
-        &all
-    } else {
-        finalists
-    };
-    pool.iter().copied().reduce(|a, b| {
-        let (ma, mb) = (stats[a].mean(), stats[b].mean());
-        if mb > ma || (mb == ma && b < a) { b } else { a }
-    })
+
+    fn sample(&self, cand: &Candidate, stream: u64, k: u64, scratch: &mut Scratch) -> Stats {
+        Search::sample(self, cand, stream, k, scratch)
+    }
 }

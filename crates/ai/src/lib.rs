@@ -16,8 +16,12 @@
 //!   from their noisy outcomes;
 //! - [`drill`]: the computer at a drill, by the rules' search or one scored by the drill;
 //! - [`level`]: skill levels (noise and budget); [`greedy`]: a baseline without simulation;
+//! - [`any_game`]: the computer at any game through the one game interface
+//!   ([`billiards_rules::GameRules`]): one search, valued from the rules' judgements;
+//!   [`any_match`]: a whole match of any game between two levels;
 //! - [`snooker`]: the computer at snooker ([`decide_snooker`]), the same search judged by the
-//!   WPBSA rules and valued in points, and a whole frame between two levels.
+//!   WPBSA rules and valued in points, and a whole frame between two levels. Three-cushion
+//!   (and every game added through the interface) is played by [`any_game`].
 //!
 //! The same seed gives the same decision on any number of threads: every random draw comes
 //! from a stream named by the seed, the candidate's index and the sample's ([`noise::stream`]).
@@ -29,6 +33,8 @@
 //! the events (`billiards_rules::summarise`) and pass them with [`Plan::call`] to
 //! `GameState::play`. A [`Decision::Choose`] goes to `GameState::choose`.
 
+pub mod any_game;
+pub mod any_match;
 pub mod candidates;
 pub mod drill;
 pub mod evaluate;
@@ -39,6 +45,7 @@ pub mod placement;
 pub mod play;
 pub mod position;
 pub mod quiet;
+pub mod rounds;
 mod search;
 pub mod snooker;
 pub mod twoply;

@@ -4,11 +4,12 @@
 use crate::candidates::{
     Candidate, Layout, ShotKind, combo_aims, direct_aims, expand, rail_aims, safeties,
 };
-use crate::evaluate::{Mode, Run, Search, Stats, best_candidate};
+use crate::evaluate::{Mode, Search};
 use crate::level::{Budget, Level, TwoPly};
 use crate::noise::Noise;
 use crate::placement::places;
 use crate::position::{aim_probability, best_success};
+use crate::rounds::Rounds;
 use crate::{AiError, Decision, Plan, ready};
 use billiards_physics::{Shot, Simulation, TipOffset, Vec2};
 use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState, check_placement};
@@ -145,7 +146,7 @@ pub fn decide_planned(
         pool.refine(&search, k, m);
     }
     if let Some(two) = budget.second.filter(|_| !next.break_shot) {
-        pool.second_ply(&search, two);
+        second_ply(&mut pool, &search, two);
     }
     let best = pool.best().ok_or(AiError::NoBall)?;
     let (c, s) = (pool.cands[best], pool.stats[best]);
@@ -164,90 +165,18 @@ pub fn decide_planned(
     }))
 }
 
-/// Every candidate evaluated so far, with its samples.
-#[derive(Default)]
-struct Pool {
-    cands: Vec<Candidate>,
-    stats: Vec<Stats>,
-    simulations: usize,
-    events: usize,
-    /// The candidates of the last refinement round (empty: none yet).
-    finalists: Vec<usize>,
-    /// The candidates valued two plies deep and their values (empty: one ply).
-    two: Vec<(usize, f64)>,
-}
+/// Every candidate evaluated so far, with its samples ([`Rounds`], the skeleton every
+/// game's search shares).
+type Pool = Rounds<Candidate>;
 
-impl Pool {
-    /// Evaluates `cands` with `samples` each and keeps them. A candidate's random streams are
-    /// named by its index in the pool, so the order of the rounds fixes them.
-    fn add(&mut self, search: &Search, cands: Vec<Candidate>, samples: usize) {
-        let salt = self.cands.len() as u64;
-        let stats = search.evaluate(&cands, salt, 0, samples as u64);
-        self.count(&stats);
-        self.cands.extend(cands);
-        self.stats.extend(stats);
-    }
-
-    /// Gives the best `k` candidates `m` more samples each; they become the finalists.
-    fn refine(&mut self, search: &Search, k: usize, m: usize) {
-        let mut order: Vec<usize> = (0..self.cands.len()).collect();
-        let mean = |i: usize| self.stats[i].mean();
-        order.sort_by(|&a, &b| mean(b).total_cmp(&mean(a)).then(a.cmp(&b)));
-        order.truncate(k);
-        let runs: Vec<Run> = order
-            .iter()
-            .map(|&i| {
-                let n = self.stats[i].n as u64;
-                Run {
-                    cand: &self.cands[i],
-                    stream: i as u64,
-                    samples: n..n + m as u64,
-                }
-            })
-            .collect();
-        let more = search.evaluate_runs(&runs);
-        self.count(&more);
-        for (&i, s) in order.iter().zip(more) {
-            self.stats[i] = self.stats[i].merged(s);
-        }
-        self.finalists = order;
-    }
-
-    /// Values the best finalists two plies deep ([`crate::twoply`]); they become the only
-    /// candidates [`Pool::best`] chooses from.
-    fn second_ply(&mut self, search: &Search, two: TwoPly) {
-        let pool: Vec<usize> = if self.finalists.is_empty() {
-            (0..self.cands.len()).collect()
-        } else {
-            self.finalists.clone()
-        };
-        let mut order = pool;
-        let mean = |i: usize| self.stats[i].mean();
-        order.sort_by(|&a, &b| mean(b).total_cmp(&mean(a)).then(a.cmp(&b)));
-        order.truncate(two.finalists);
-        let valued = crate::twoply::value(search, &self.cands, &self.stats, &order, two);
-        self.simulations += valued.simulations;
-        self.events += valued.events;
-        self.two = valued.values;
-    }
-
-    /// The value of candidate `i`: two plies deep when it was so valued, else its mean.
-    fn value(&self, i: usize) -> f64 {
-        self.two
-            .iter()
-            .find(|v| v.0 == i)
-            .map_or(self.stats[i].mean(), |v| v.1)
-    }
-
-    fn count(&mut self, stats: &[Stats]) {
-        self.simulations += stats.iter().map(|s| s.n).sum::<usize>();
-        self.events += stats.iter().map(|s| s.events).sum::<usize>();
-    }
-
-    /// The best candidate so far ([`best_candidate`]).
-    fn best(&self) -> Option<usize> {
-        best_candidate(&self.two, &self.finalists, &self.stats)
-    }
+/// Values the best finalists two plies deep ([`crate::twoply`]); they become the only
+/// candidates [`Rounds::best`] chooses from.
+fn second_ply(pool: &mut Pool, search: &Search, two: TwoPly) {
+    let order = pool.second_ply_order(two.finalists);
+    let valued = crate::twoply::value(search, &pool.cands, &pool.stats, &order, two);
+    pool.simulations += valued.simulations;
+    pool.events += valued.events;
+    pool.two = valued.values;
 }
 
 /// Pots, banks, kicks and combinations from the cue ball at `place` (or where it is): the

@@ -38,6 +38,7 @@ macro_rules! clone_reusing {
 
 pub mod ball;
 pub mod bounds;
+pub mod carom;
 pub mod check;
 pub mod detect;
 pub mod event;

@@ -12,8 +12,10 @@ use crate::sim::Simulation;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicU64, Ordering};
 
+mod carom;
 mod clusters;
 mod scenes;
+pub use carom::carom_scenario;
 pub use clusters::cluster_scenario;
 pub use scenes::{
     SOAK_EVENT_CAP, Scenario, Variation, has_friction, models, scale_friction, scenario, vary,

@@ -1,4 +1,5 @@
-//! The table: playing surface between the cushion noses, four cushions, six pockets.
+//! The table: playing surface between the cushion noses, four cushions, six pockets (none on
+//! the carom table, [`PocketShape::Pocketless`]).
 
 use crate::math::Vec2;
 use serde::{Deserialize, Serialize};
@@ -114,6 +115,9 @@ pub enum PocketShape {
         /// Radius of the rounded cushion end, metres.
         radius: f64,
     },
+    /// No pockets at all (the carom table, [`Table::carom_match`]): the cushions run unbroken
+    /// round the table, so no pocket, opening or jaw event can occur; both mouths are zero.
+    Pocketless,
 }
 
 /// A rounded cushion end at a pocket mouth.
@@ -389,7 +393,8 @@ impl Table {
         }
     }
 
-    /// The six pocket openings (used with jaws).
+    /// The six pocket openings (used with jaws only: the solver never reads them on a table
+    /// with the paper's mouths or without pockets).
     pub fn openings(&self) -> [Opening; 6] {
         let (hx, hy, leg) = (0.5 * self.length, 0.5 * self.width, self.corner_leg());
         let corner = |sx: f64, sy: f64| {
@@ -438,13 +443,21 @@ impl Table {
 
     /// Checks every dimension; `ball_radius` must fit.
     pub fn validate(&self, ball_radius: f64) -> Result<(), TableError> {
-        for (name, value) in [
-            ("length", self.length),
-            ("width", self.width),
-            ("corner_mouth", self.corner_mouth),
-            ("side_mouth", self.side_mouth),
+        let pocketless = self.pockets == PocketShape::Pocketless;
+        for (name, value, mouth) in [
+            ("length", self.length, false),
+            ("width", self.width, false),
+            ("corner_mouth", self.corner_mouth, true),
+            ("side_mouth", self.side_mouth, true),
         ] {
-            if !(value.is_finite() && value > 0.0) {
+            // A table without pockets has no mouths: zero, so no code can find one.
+            if mouth && pocketless {
+                if value != 0.0 {
+                    return Err(TableError::Inconsistent {
+                        what: format!("without pockets must have no pocket mouth: {name} {value}"),
+                    });
+                }
+            } else if !(value.is_finite() && value > 0.0) {
                 return Err(TableError::BadDimension { name, value });
             }
         }
@@ -500,6 +513,9 @@ impl Table {
     /// The pocket whose mouth contains the point where a ball centred at `centre` touches
     /// `cushion`, if any (paper 4.2, `HitPocket`).
     pub fn pocket_at(&self, cushion: Cushion, centre: Vec2) -> Option<Pocket> {
+        if self.pockets == PocketShape::Pocketless {
+            return None;
+        }
         let (hx, hy) = (0.5 * self.length, 0.5 * self.width);
         let leg = self.corner_leg();
         match cushion {
@@ -556,36 +572,5 @@ impl Table {
     /// Foot spot (a quarter of the length from the foot cushion), apex of the rack.
     pub fn foot_spot(&self) -> Vec2 {
         Vec2::new(0.25 * self.length, 0.0)
-    }
-}
-
-#[cfg(test)]
-mod choice_tests {
-    use super::*;
-
-    #[test]
-    fn table_choices_parse_print_and_give_the_wpa_sizes() {
-        for text in ["7ft", "8ft", "9ft", "9ft-tight", "7ft-wide"] {
-            let c: TableChoice = text.parse().unwrap();
-            assert_eq!(c.to_string(), text);
-        }
-        assert_eq!("8ft-wpa".parse::<TableChoice>().unwrap().to_string(), "8ft");
-        assert_eq!(TableChoice::default().table(), Table::wpa_8ft());
-        let t = "9ft-tight".parse::<TableChoice>().unwrap().table();
-        assert_eq!((t.length, t.width), (100.0 * INCH, 50.0 * INCH));
-        assert_eq!((t.corner_mouth, t.side_mouth), (4.0 * INCH, 5.0 * INCH));
-        assert_eq!(Table::wpa_7ft().length, 78.0 * INCH);
-        for bad in ["6ft", "9ft-huge", "", "9"] {
-            let e = bad.parse::<TableChoice>().unwrap_err();
-            assert!(e.contains("expected"), "{e}");
-        }
-        for c in TableSize::ALL {
-            let t = TableChoice {
-                size: c,
-                pockets: PocketCut::Tight,
-            }
-            .table();
-            assert!(t.validate(0.028575).is_ok());
-        }
     }
 }

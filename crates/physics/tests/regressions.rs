@@ -184,7 +184,7 @@ fn soak_scene(seed: u64) -> soak::SceneStats {
         .unwrap_or_else(|| panic!("seed {seed} is not in DRAWN"));
     let jaws = match s.table.pockets {
         PocketShape::Jaws { radius } => Some(radius),
-        PocketShape::Mouth => None,
+        PocketShape::Mouth | PocketShape::Pocketless => None,
     };
     let p = s.balls[0].position;
     let got: Drawn = (

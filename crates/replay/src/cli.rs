@@ -34,6 +34,9 @@ pub enum Command {
     Export(ExportArgs),
     /// Whole racks between two computer players on all cores: win rates and figures.
     Tournament(crate::tournament::TournamentArgs),
+    /// One whole match of any game between two computer levels, through the one game
+    /// interface, each stroke's verdict printed.
+    Match(crate::any_match::MatchArgs),
     /// The break study: breaks per game, table, rack, speed and cue position, judged by the
     /// rules; sharded (`--shard K/M`, `--merge`).
     Breaks(crate::breaks::BreaksArgs),
@@ -89,6 +92,7 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Verify { file } => verify(&file),
         Command::Export(a) => export_cmd(a),
         Command::Tournament(a) => return crate::tournament::run(a),
+        Command::Match(a) => crate::any_match::run(a),
         Command::Breaks(a) => return crate::breaks::run(a),
         Command::Soak(a) => return crate::soak::run(a),
         Command::Stress(a) => return crate::stress::run(a),

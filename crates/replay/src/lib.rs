@@ -4,6 +4,7 @@
 //! `stress`, the many-ball table),
 //! a software top-view renderer and GIF/PNG export. No GPU, no Bevy: they run anywhere.
 
+pub mod any_match;
 pub mod args;
 pub mod breaks;
 pub mod cli;

@@ -8,6 +8,7 @@ use crate::pool::PoolMatch;
 use crate::racks::RackStyle;
 use crate::snooker::rules::SnookerGame;
 use crate::state::Game;
+use crate::three_cushion::rules::ThreeCushionMatch;
 use billiards_physics::{BallSpec, Table};
 
 /// How a match is set up, for any game.
@@ -82,6 +83,11 @@ fn snooker_equipment() -> (Table, BallSpec) {
     (Table::snooker_12ft(), BallSpec::snooker())
 }
 
+/// The UMB match table (2.84 x 1.42 m, Art. 11) and ball (61.5 mm, Art. 12).
+fn carom_equipment() -> (Table, BallSpec) {
+    (Table::carom_match(), BallSpec::carom())
+}
+
 fn pool(game: Game, s: &MatchSettings, table: Table, ball: BallSpec) -> Box<dyn GameRules> {
     Box::new(PoolMatch::new(
         game,
@@ -120,6 +126,22 @@ pub const GAMES: &[GameEntry] = &[
         equipment: snooker_equipment,
         start: |s, t, b| {
             Ok(Box::new(SnookerGame::new(
+                s.players.clone(),
+                s.length,
+                t,
+                b,
+            )?))
+        },
+    },
+    GameEntry {
+        id: "three-cushion",
+        label: "three-cushion",
+        length_unit: "points to",
+        // UMB world cup and championship distance (Art. 29 leaves it to the event).
+        default_length: 40,
+        equipment: carom_equipment,
+        start: |s, t, b| {
+            Ok(Box::new(ThreeCushionMatch::new(
                 s.players.clone(),
                 s.length,
                 t,

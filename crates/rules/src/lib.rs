@@ -17,15 +17,18 @@
 //! - [`log`]: the rules side of a recording (calls, choices, verdicts), kept beside it;
 //! - [`breaks`]: one break judged by the rules and the counts over many (break statistics);
 //! - [`snooker`]: snooker frames and matches under the WPBSA rules, an API of its own;
+//! - [`three_cushion`]: three-cushion carom under the UMB rules, an API of its own;
 //! - [`position`]: a position (game, table, balls, physics, shot) as a short text code;
 //! - [`drill`]: drills, a position with goals and tries, judged from the solver's record;
 //! - [`interface`]: the one interface every game implements ([`GameRules`]), with pool's
 //!   games behind it in [`pool`] and snooker's in [`snooker::rules`];
+//! - [`drill_game`]: a drill session behind the interface, a one-player game of tries;
 //! - [`catalog`]: every game, found by its command-line id and started behind the interface.
 
 pub mod breaks;
 pub mod catalog;
 pub mod drill;
+pub mod drill_game;
 pub mod eight_ball;
 pub mod foul;
 pub mod game;
@@ -42,6 +45,7 @@ pub mod shot;
 pub mod shots;
 pub mod snooker;
 pub mod state;
+pub mod three_cushion;
 pub mod turn;
 
 pub use drill::{Attempt, Drill, DrillError, DrillScore, DrillShot, Goal, Zone};

@@ -1,6 +1,6 @@
 //! Pool's games (8-ball, 9-ball, free play: [`Game`]) behind the one game interface
 //! ([`GameRules`], issue 50): a [`PoolMatch`] is a race to N racks ([`Match`]) on a table
-//! with its balls, and turns the WPA rules' own words ([`NextShot`], [`Verdict`]) into the
+//! with its balls, and turns the WPA rules' own words ([`NextShot`], [`Verdict`](crate::Verdict)) into the
 //! interface's ([`Turn`], [`Judgement`]).
 
 use crate::foul::Group;
@@ -12,7 +12,7 @@ use crate::interface::{
 use crate::race::Match;
 use crate::racks::RackStyle;
 use crate::respot::{foot_spot_position, head_string_spot};
-use crate::shot::{CUE, summarise};
+use crate::shot::CUE;
 use crate::state::{Game, GameState};
 use crate::turn::{Call, CallRule, Choice, CueBall, NextShot, Outcome, Seat, what_happened};
 use billiards_physics::{BallSetup, BallSpec, Table, Vec2};
@@ -234,7 +234,7 @@ impl GameRules for PoolMatch {
 
     fn judge(&mut self, stroke: &StrokeRecord<'_>) -> Result<Judgement, RulesError> {
         let call = call_of(stroke.declared)?;
-        let summary = summarise(stroke.events, stroke.numbers);
+        let summary = stroke.summary();
         let verdict = self
             .play
             .play(&summary, call)

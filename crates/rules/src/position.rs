@@ -9,7 +9,7 @@
 //! | 1 | version (1) |
 //! | 1 | flags: bit 0 the physics follow, bit 1 a shot follows |
 //! | 1 | game: 0 8-ball, 1 9-ball, 2 free play |
-//! | 4 x 8 + 1 (+ 8) | table: length, width, corner and side mouth (f64), pockets (0 the paper's mouths, 1 jaws, then their radius) |
+//! | 4 x 8 + 1 (+ 8) | table: length, width, corner and side mouth (f64), pockets (0 the paper's mouths, 1 jaws, then their radius, 2 none) |
 //! | 1 + 17 n | the balls: their count, then each one's number (u8) and centre x, y (f64) |
 //! | 2 + k | with flag 0: the parameters as JSON (`Params`, the scene files' form), k bytes |
 //! | 5 x 8 | with flag 1: the shot's angle, speed, tip side, tip height, elevation (f64) |
@@ -117,6 +117,7 @@ impl Position {
                 b.push(1);
                 b.extend(radius.to_le_bytes());
             }
+            PocketShape::Pocketless => b.push(2),
         }
         b.push(self.balls.len() as u8);
         for ball in &self.balls {
@@ -193,6 +194,7 @@ impl Position {
             1 => PocketShape::Jaws {
                 radius: r.f64("the table")?,
             },
+            2 => PocketShape::Pocketless,
             k => return Err(invalid(format!("unknown pocket shape {k}"))),
         };
         let table = Table {

@@ -14,7 +14,6 @@ use billiards_rules::ShotSummary;
 use billiards_rules::snooker::Stroke;
 use billiards_rules::snooker::balls::WHITE;
 use rand::Rng;
-use rayon::prelude::*;
 
 /// The stream of the second ply's outcomes: common to every finalist (close strokes meet the
 /// same errors), far from the candidates' own streams and [`SnookerPlan::executed`]'s.
@@ -36,42 +35,6 @@ pub(super) fn on_table(sim: &Simulation) -> Vec<(u8, Vec2)> {
 }
 
 impl Snook<'_> {
-    /// Samples of each run `(candidate, stream, draws)` on all cores, summed in the order of
-    /// their draws (so the result does not depend on the threads).
-    pub(super) fn evaluate(
-        &self,
-        cands: &[Cand],
-        runs: &[(usize, u64, std::ops::Range<u64>)],
-    ) -> Vec<Stats> {
-        let mut starts = Vec::with_capacity(runs.len() + 1);
-        let mut total = 0usize;
-        for r in runs {
-            starts.push(total);
-            total += (r.2.end - r.2.start) as usize;
-        }
-        starts.push(total);
-        let samples: Vec<Stats> = (0..total)
-            .into_par_iter()
-            .map_init(
-                || self.base.clone(),
-                |sim, n| {
-                    let r = starts.partition_point(|&s| s <= n) - 1;
-                    let (i, stream_id, ref draws) = runs[r];
-                    let k = draws.start + (n - starts[r]) as u64;
-                    self.sample(&cands[i], stream_id, k, sim)
-                },
-            )
-            .collect();
-        starts
-            .windows(2)
-            .map(|w| {
-                samples[w[0]..w[1]]
-                    .iter()
-                    .fold(Stats::default(), |s, x| s.merged(*x))
-            })
-            .collect()
-    }
-
     /// One noisy sample of `c` (draw `k` of stream `id`) in the scratch simulation `sim`.
     pub(super) fn sample(&self, c: &Cand, id: u64, k: u64, sim: &mut Simulation) -> Stats {
         let refused = Stats {
@@ -203,5 +166,18 @@ impl Snook<'_> {
             ),
             _ => (0.0, 1, events),
         }
+    }
+}
+
+impl crate::rounds::Sampler for Snook<'_> {
+    type Cand = Cand;
+    type Scratch = Simulation;
+
+    fn scratch(&self) -> Simulation {
+        self.base.clone()
+    }
+
+    fn sample(&self, cand: &Cand, stream: u64, k: u64, sim: &mut Simulation) -> Stats {
+        Snook::sample(self, cand, stream, k, sim)
     }
 }

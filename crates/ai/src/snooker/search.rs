@@ -8,8 +8,8 @@ use super::decision::{SnookerDecision, SnookerPlan};
 use super::strokes::Cand;
 use super::value::d_places;
 use crate::AiError;
-use crate::evaluate::{Stats, best_candidate};
 use crate::noise::Noise;
+use crate::rounds::Rounds;
 use billiards_physics::{BallSetup, Simulation, Vec2};
 use billiards_rules::snooker::balls::WHITE;
 use billiards_rules::snooker::{Choice, Frame};
@@ -81,7 +81,7 @@ pub fn decide_snooker_with(
         pool.refine(&s, k, m);
     }
     if let Some(two) = &budget.second {
-        pool.second_ply(&s, two);
+        second_ply(&mut pool, &s, two);
     }
     let best = pool.best().ok_or(AiError::NoBall)?;
     let (c, st) = (pool.cands[best], pool.stats[best]);
@@ -100,98 +100,30 @@ pub fn decide_snooker_with(
     }))
 }
 
-/// Every candidate evaluated so far, with its samples.
-#[derive(Default)]
-struct Pool {
-    cands: Vec<Cand>,
-    stats: Vec<Stats>,
-    simulations: usize,
-    events: usize,
-    finalists: Vec<usize>,
-    /// Candidates valued two plies deep, with their values (empty: one ply).
-    two: Vec<(usize, f64)>,
-}
+/// Every candidate evaluated so far, with its samples ([`Rounds`], the skeleton every
+/// game's search shares).
+type Pool = Rounds<Cand>;
 
-impl Pool {
-    /// Evaluates `cands` with `samples` each; candidate `i` of the pool draws from stream `i`.
-    fn add(&mut self, s: &Snook, cands: Vec<Cand>, samples: usize) {
-        let salt = self.cands.len() as u64;
-        let runs: Vec<(usize, u64, std::ops::Range<u64>)> = (0..cands.len())
-            .map(|i| (i, salt + i as u64, 0..samples as u64))
-            .collect();
-        let stats = s.evaluate(&cands, &runs);
-        self.count(&stats);
-        self.cands.extend(cands);
-        self.stats.extend(stats);
-    }
-
-    /// The best `k` so far get `m` more samples each and become the finalists.
-    fn refine(&mut self, s: &Snook, k: usize, m: usize) {
-        let mut order: Vec<usize> = (0..self.cands.len()).collect();
-        let mean = |i: usize| self.stats[i].mean();
-        order.sort_by(|&a, &b| mean(b).total_cmp(&mean(a)).then(a.cmp(&b)));
-        order.truncate(k);
-        let runs: Vec<(usize, u64, std::ops::Range<u64>)> = order
-            .iter()
-            .map(|&i| {
-                let n = self.stats[i].n as u64;
-                (i, i as u64, n..n + m as u64)
-            })
-            .collect();
-        let more = s.evaluate(&self.cands, &runs);
-        self.count(&more);
-        for (&i, st) in order.iter().zip(more) {
-            self.stats[i] = self.stats[i].merged(st);
-        }
-        self.finalists = order;
-    }
-
-    fn count(&mut self, stats: &[Stats]) {
-        self.simulations += stats.iter().map(|s| s.n).sum::<usize>();
-        self.events += stats.iter().map(|s| s.events).sum::<usize>();
-    }
-
-    /// Values the best finalists two plies deep; they become the only candidates
-    /// [`Pool::best`] chooses from. A stroke's value: its one-ply mean plus the mean, over
-    /// its searched outcomes, of (second-ply value - one-ply value) of the same outcome (a
-    /// control variate, as [`crate::twoply`]).
-    fn second_ply(&mut self, s: &Snook, two: &SnookerTwoPly) {
-        let mut order = if self.finalists.is_empty() {
-            (0..self.cands.len()).collect()
-        } else {
-            self.finalists.clone()
-        };
-        let mean = |i: usize| self.stats[i].mean();
-        order.sort_by(|&a, &b| mean(b).total_cmp(&mean(a)).then(a.cmp(&b)));
-        order.truncate(two.finalists);
-        let jobs: Vec<(usize, u64)> = order
-            .iter()
-            .flat_map(|&i| (0..two.outcomes as u64).map(move |k| (i, k)))
-            .collect();
-        let corrections: Vec<(f64, usize, usize)> = jobs
-            .par_iter()
-            .map(|&(i, k)| s.correction(&self.cands[i], k, &two.reply))
-            .collect();
-        for (n, &i) in order.iter().enumerate() {
-            let mine = &corrections[n * two.outcomes..(n + 1) * two.outcomes];
-            let shift = mine.iter().map(|c| c.0).sum::<f64>() / two.outcomes.max(1) as f64;
-            self.two.push((i, self.stats[i].mean() + shift));
-            self.simulations += mine.iter().map(|c| c.1).sum::<usize>();
-            self.events += mine.iter().map(|c| c.2).sum::<usize>();
-        }
-    }
-
-    /// The value of candidate `i`: two plies deep when it was so valued, else its mean.
-    fn value(&self, i: usize) -> f64 {
-        self.two
-            .iter()
-            .find(|v| v.0 == i)
-            .map_or(self.stats[i].mean(), |v| v.1)
-    }
-
-    /// The best candidate so far ([`best_candidate`]).
-    fn best(&self) -> Option<usize> {
-        best_candidate(&self.two, &self.finalists, &self.stats)
+/// Values the best finalists two plies deep; they become the only candidates
+/// [`Rounds::best`] chooses from. A stroke's value: its one-ply mean plus the mean, over
+/// its searched outcomes, of (second-ply value - one-ply value) of the same outcome (a
+/// control variate, as [`crate::twoply`]).
+fn second_ply(pool: &mut Pool, s: &Snook, two: &SnookerTwoPly) {
+    let order = pool.second_ply_order(two.finalists);
+    let jobs: Vec<(usize, u64)> = order
+        .iter()
+        .flat_map(|&i| (0..two.outcomes as u64).map(move |k| (i, k)))
+        .collect();
+    let corrections: Vec<(f64, usize, usize)> = jobs
+        .par_iter()
+        .map(|&(i, k)| s.correction(&pool.cands[i], k, &two.reply))
+        .collect();
+    for (n, &i) in order.iter().enumerate() {
+        let mine = &corrections[n * two.outcomes..(n + 1) * two.outcomes];
+        let shift = mine.iter().map(|c| c.0).sum::<f64>() / two.outcomes.max(1) as f64;
+        pool.two.push((i, pool.stats[i].mean() + shift));
+        pool.simulations += mine.iter().map(|c| c.1).sum::<usize>();
+        pool.events += mine.iter().map(|c| c.2).sum::<usize>();
     }
 }
 

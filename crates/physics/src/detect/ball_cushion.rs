@@ -76,7 +76,7 @@ pub fn line_contact(p: Vec2, v: Vec2, a: Vec2, n: Vec2, offset: f64, horizon: f6
 /// cushions).
 ///
 /// With the paper's mouths, any contact with the cushion line counts (a contact inside a
-/// mouth pockets the ball). With jaws, only contacts on the cushion itself count: a root in a
+/// mouth pockets the ball); on a table without pockets every contact is on the cushion. With jaws, only contacts on the cushion itself count: a root in a
 /// mouth means the ball crossed the line's extension into the mouth, and the search goes on
 /// from where it comes back out.
 #[inline]
@@ -90,7 +90,9 @@ pub fn cushion_contact(
     horizon: f64,
 ) -> Option<f64> {
     let tau = line_contact(p, v, a, cushion.inward_normal(), limit, horizon)?;
-    if table.pockets == PocketShape::Mouth || table.on_cushion(cushion, seg.position_at(t + tau)) {
+    if !matches!(table.pockets, PocketShape::Jaws { .. })
+        || table.on_cushion(cushion, seg.position_at(t + tau))
+    {
         return Some(tau);
     }
     cushion_contact_past_mouths(seg, t, a, cushion, limit, table, horizon)
@@ -114,7 +116,7 @@ fn cushion_contact_past_mouths(
         let start = t + from;
         let (p, v) = (seg.position_at(start), seg.velocity_at(start));
         let tau = line_contact(p, v, a, n, limit, horizon - from)? + from;
-        if table.pockets == PocketShape::Mouth
+        if !matches!(table.pockets, PocketShape::Jaws { .. })
             || table.on_cushion(cushion, seg.position_at(t + tau))
         {
             return Some(tau);

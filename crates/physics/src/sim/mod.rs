@@ -459,13 +459,13 @@ impl Simulation {
     }
 
     /// Ball `id` reaches `cushion`'s line: in a mouth of the paper's table it drops, anywhere
-    /// else it rebounds.
+    /// else (and everywhere on a table without pockets) it rebounds.
     fn cushion(&mut self, id: BallId, cushion: Cushion) {
         let s = self.segments[id].state_at(self.time);
         let table = &self.bodies.table;
         let mouth = match table.pockets {
             PocketShape::Mouth => table.pocket_at(cushion, s.position),
-            PocketShape::Jaws { .. } => None,
+            PocketShape::Jaws { .. } | PocketShape::Pocketless => None,
         };
         if let Some(pocket) = mouth {
             return self.pocket(id, pocket);

@@ -13,7 +13,8 @@ use crate::table::{Cushion, Jaw, Opening, PocketShape, Table};
 use std::hint::select_unpredictable;
 
 /// The fixed bodies a ball can meet: the cushions (as the bounds of its centre), the pocket
-/// jaws and openings (empty unless the table has jaws).
+/// jaws and openings (empty unless the table has jaws: none with the paper's mouths or
+/// without pockets).
 #[derive(Debug)]
 pub(super) struct Bodies {
     /// The table.
@@ -50,7 +51,7 @@ impl Bodies {
             bounds: table.centre_bounds(radius),
             jaws: table.jaws(),
             openings: match table.pockets {
-                PocketShape::Mouth => Vec::new(),
+                PocketShape::Mouth | PocketShape::Pocketless => Vec::new(),
                 PocketShape::Jaws { .. } => table.openings().to_vec(),
             },
             opening_regions: Vec::new(),
@@ -90,7 +91,7 @@ impl Bodies {
     pub fn jaw_radius(&self) -> f64 {
         match self.table.pockets {
             PocketShape::Jaws { radius } => radius,
-            PocketShape::Mouth => 0.0,
+            PocketShape::Mouth | PocketShape::Pocketless => 0.0,
         }
     }
 }

@@ -25,8 +25,9 @@
 //! the solver's types; each game's adapter imports this module, and the list of games
 //! ([`crate::catalog`]) imports the adapters, never the other way.
 
+use crate::shot::{ShotSummary, summarise};
 use crate::turn::Seat;
-use billiards_physics::{BallSetup, BallSpec, Event, Pocket, Table, Vec2};
+use billiards_physics::{BallSetup, BallSpec, Event, EventKind, Pocket, Table, Vec2};
 use serde::{Deserialize, Serialize};
 
 /// What the striker may declare before a stroke: a ball and a pocket (pool's call shot),
@@ -179,8 +180,9 @@ pub enum Setup {
 /// One stroke as played, for [`GameRules::judge`].
 #[derive(Clone, Copy, Debug)]
 pub struct StrokeRecord<'a> {
-    /// The solver's events from the strike to rest (earlier events are ignored up to the
-    /// last strike among them).
+    /// The solver's events of the stroke: from its strike to rest (a history's slice
+    /// starting with the strike event, or the events a lean solver stepped after the
+    /// strike, which has none; see [`StrokeRecord::summary`]).
     pub events: &'a [Event],
     /// The number painted on each ball, by the solver's ball id.
     pub numbers: &'a [u8],
@@ -190,6 +192,26 @@ pub struct StrokeRecord<'a> {
     pub after: &'a [(u8, Vec2)],
     /// What the striker declared.
     pub declared: Declaration,
+}
+
+impl StrokeRecord<'_> {
+    /// The stroke's facts in the rules' terms ([`ShotSummary`]): read after the strike
+    /// event when the events hold one ([`summarise`]), else every event (a lean solver's
+    /// [`billiards_physics::Simulation::step_event`] yields none for the strike).
+    pub fn summary(&self) -> ShotSummary {
+        if self
+            .events
+            .iter()
+            .any(|e| matches!(e.kind, EventKind::Strike { .. }))
+        {
+            return summarise(self.events, self.numbers);
+        }
+        let mut s = ShotSummary::default();
+        for e in self.events {
+            s.record(&e.kind, self.numbers);
+        }
+        s
+    }
 }
 
 /// How a game (a rack, a frame, a carom game) ended.

@@ -11,7 +11,6 @@ use crate::interface::{
     CueBallPlace, Declaration, Declarations, GameEnd, GameRules, HandRegion, Judgement, RulesError,
     Setup, StrokeRecord, Turn,
 };
-use crate::shot::summarise;
 use crate::turn::Seat;
 use billiards_physics::sim::PLACEMENT_TOLERANCE;
 use billiards_physics::snooker::{default_cue_position, layout};
@@ -213,7 +212,7 @@ impl GameRules for SnookerGame {
                 )));
             }
         };
-        let summary = summarise(stroke.events, stroke.numbers);
+        let summary = stroke.summary();
         let verdict = self
             .frame
             .play(Stroke {

@@ -1,0 +1,498 @@
+//! The computer at any game, through the one game interface alone
+//! ([`billiards_rules::GameRules`], issue 50): it never asks which game it plays.
+//!
+//! The search: geometric aims at the balls it may hit first ([`direct_aims`] and
+//! [`rail_aims`]: into each pocket, and off a rail), or, on a table without pockets or with
+//! no aim, a fan of directions (1440 at hard: a quarter degree apart) in four speeds and
+//! nine tips; each candidate is simulated once without noise and judged by a copy of the
+//! game ([`GameRules::boxed_clone`]). The best kept (256 at hard) are sampled under the
+//! level's planning noise and refined in rounds ([`Rounds`], the skeleton the pool and
+//! snooker searches share). A value is read from the judgement ([`stroke_value`]): the game
+//! won or lost, a foul, the turn kept, the points scored. Ball in hand: the same search from
+//! a few places the rules accept. Options offered before a stroke: each is taken on a copy
+//! and valued by the best stroke that follows, from the chooser's side.
+//!
+//! Every random draw comes from [`stream`], named by the seed and the candidate, so the same
+//! seed gives the same decision on any number of threads.
+
+use crate::candidates::{Layout, direct_aims, rail_aims};
+use crate::level::Level;
+use crate::noise::{Noise, stream};
+use crate::rounds::{Rounds, Sampler, Stats};
+use billiards_physics::{Event, Params, PocketShape, Shot, Simulation, TipOffset, Vec2};
+use billiards_rules::{
+    CueBallPlace, Declaration, GameRules, Judgement, Need, Seat, StrokeRecord, Turn,
+};
+use rayon::prelude::*;
+
+/// What the computer does next.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Move {
+    /// Take option `index` of [`Turn::choices`].
+    Choose(usize),
+    /// Strike.
+    Strike(Stroke),
+}
+
+/// A stroke: where to put the cue ball in hand, the shot (before execution noise) and the
+/// declaration.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Stroke {
+    /// The cue ball's place, when it is in hand.
+    pub place: Option<Vec2>,
+    /// The shot as planned.
+    pub shot: Shot,
+    /// What is declared.
+    pub declared: Declaration,
+    /// The expected value the search found ([`stroke_value`] units).
+    pub value: f64,
+}
+
+/// The size of the search at a level.
+#[derive(Clone, Copy, Debug)]
+struct Effort {
+    /// Candidates kept from the noiseless scan, the best first.
+    keep: usize,
+    /// Noisy samples of each kept candidate.
+    samples: usize,
+    /// Refinement rounds: the best `k` get `m` more samples each.
+    rounds: &'static [(usize, usize)],
+    /// Directions of the fan when there is no aim.
+    fan: usize,
+    /// Places tried with the cue ball in hand.
+    places: usize,
+}
+
+fn effort(level: Level) -> Effort {
+    match level {
+        Level::Easy => Effort {
+            keep: 16,
+            samples: 8,
+            rounds: &[(4, 16)],
+            fan: 180,
+            places: 2,
+        },
+        Level::Medium => Effort {
+            keep: 32,
+            samples: 16,
+            rounds: &[(8, 32)],
+            fan: 360,
+            places: 3,
+        },
+        Level::Hard | Level::Expert | Level::Perfect => Effort {
+            keep: 256,
+            samples: 32,
+            rounds: &[(20, 68), (3, 100)],
+            fan: 1440,
+            places: 4,
+        },
+    }
+}
+
+/// The value of a judged stroke for its striker: the game won +10 (lost -10), a foul -1,
+/// the turn kept +1, with a twentieth of a point for each point the striker gained on the
+/// opponent (snooker's pots and penalties, carom's points).
+pub fn stroke_value(judgement: &Judgement, before: [u32; 2], after: [u32; 2]) -> f64 {
+    let me = judgement.striker.index();
+    if let Some(end) = &judgement.end {
+        return if end.winner == judgement.striker {
+            10.0
+        } else {
+            -10.0
+        };
+    }
+    let gain = |s: usize| f64::from(after[s]) - f64::from(before[s]);
+    let lead = gain(me) - gain(1 - me);
+    let turn = if !judgement.fair {
+        -1.0
+    } else if judgement.continues {
+        1.0
+    } else {
+        0.0
+    };
+    turn + 0.05 * lead
+}
+
+/// The balls on the table of `sim`, by number.
+pub fn layout_of(sim: &Simulation) -> Vec<(u8, Vec2)> {
+    sim.balls()
+        .zip(sim.numbers())
+        .filter(|(b, _)| b.motion.on_table())
+        .map(|(b, &n)| (n, b.position))
+        .collect()
+}
+
+fn id_of(sim: &Simulation, number: u8) -> Option<usize> {
+    sim.numbers().iter().position(|&n| n == number)
+}
+
+/// One candidate stroke: the cue ball's place if in hand, the shot, the declaration.
+#[derive(Clone, Copy, Debug)]
+struct Candidate {
+    place: Option<Vec2>,
+    shot: Shot,
+    declared: Declaration,
+}
+
+/// Plays `shot` from `sim` (the cue ball at `place` if given) and judges it on a copy of
+/// `game`; `None` when the solver or the rules refuse it.
+fn try_stroke(game: &dyn GameRules, sim: &Simulation, cue: u8, c: Candidate) -> Option<f64> {
+    let mut sim = sim.clone();
+    sim.set_record_history(false);
+    let id = id_of(&sim, cue)?;
+    if let Some(at) = c.place {
+        sim.place(id, at, Vec2::ZERO, Default::default()).ok()?;
+    }
+    let before = layout_of(&sim);
+    // A history from here on: the stroke's events start with its strike, as the rules read
+    // them (a lean run yields no strike event).
+    sim.set_record_history(true);
+    sim.strike(id, c.shot).ok()?;
+    sim.run_to_rest().ok()?;
+    let events: &[Event] = sim.history().events();
+    let after = layout_of(&sim);
+    let mut copy = game.boxed_clone();
+    let points = copy.points();
+    let judged = copy
+        .judge(&StrokeRecord {
+            events,
+            numbers: sim.numbers(),
+            before: &before,
+            after: &after,
+            declared: c.declared,
+        })
+        .ok()?;
+    Some(stroke_value(&judged, points, copy.points()))
+}
+
+/// The candidates from the cue ball at `from`: aims at the legal balls (into each pocket,
+/// off each rail), else a fan of directions; speeds and tips around each.
+fn candidates(
+    turn: &Turn,
+    sim: &Simulation,
+    (place, from): (Option<Vec2>, Vec2),
+    fan: usize,
+) -> Vec<Candidate> {
+    let balls: Vec<(u8, Vec2)> = layout_of(sim)
+        .into_iter()
+        .filter(|&(n, _)| n != turn.cue_ball)
+        .collect();
+    let layout = Layout {
+        table: *sim.table(),
+        radius: sim.params().ball.radius,
+        cue: from,
+        balls,
+    };
+    let declare = |ball: u8, pocket| {
+        if turn.declare.pocket != Need::NotUsed {
+            Declaration::Pocket { ball, pocket }
+        } else if turn.declare.nominate.contains(&ball) {
+            Declaration::Nominate { ball }
+        } else {
+            Declaration::None
+        }
+    };
+    let tips = [
+        TipOffset::default(),
+        TipOffset {
+            side: 0.0,
+            height: 0.3,
+        },
+        TipOffset {
+            side: 0.0,
+            height: -0.3,
+        },
+    ];
+    // The fan also tries side and its mixes with follow and draw: english bends a carom's
+    // rebounds off the cushions.
+    let tip = |side: f64, height: f64| TipOffset { side, height };
+    let d = 0.3 * std::f64::consts::FRAC_1_SQRT_2;
+    let fan_tips = [
+        tips[0],
+        tips[1],
+        tips[2],
+        tip(0.3, 0.0),
+        tip(-0.3, 0.0),
+        tip(d, d),
+        tip(-d, d),
+        tip(d, -d),
+        tip(-d, -d),
+    ];
+    let mut out = Vec::new();
+    if turn.opening {
+        // The opening stroke: hard at each legal ball, as a break is played.
+        for &(n, p) in layout
+            .balls
+            .iter()
+            .filter(|(n, _)| turn.legal_first.contains(n))
+        {
+            let angle = (p.y - from.y).atan2(p.x - from.x);
+            for speed in [3.0, 6.0, 9.0] {
+                out.push(Candidate {
+                    place,
+                    shot: Shot::new(angle, speed),
+                    declared: declare(n, billiards_physics::Pocket::FootLeft).without_pocket(),
+                });
+            }
+        }
+    }
+    // A table without pockets (carom) has no pots to aim at: the fan alone.
+    let pocketless = layout.table.pockets == PocketShape::Pocketless;
+    let mut aims = Vec::new();
+    if !pocketless {
+        aims = direct_aims(&layout, &turn.legal_first);
+        aims.extend(rail_aims(&layout, &turn.legal_first));
+    }
+    for aim in &aims {
+        let pocket = match aim.kind {
+            crate::ShotKind::Pot { pocket, .. }
+            | crate::ShotKind::Bank { pocket, .. }
+            | crate::ShotKind::Kick { pocket, .. }
+            | crate::ShotKind::Combo { pocket, .. } => Some(pocket),
+            _ => None,
+        };
+        for k in [1.0, 1.6] {
+            for tip in tips {
+                let mut shot = Shot::new(aim.angle, (aim.speed * k).clamp(0.5, 9.0));
+                shot.tip = tip;
+                out.push(Candidate {
+                    place,
+                    shot,
+                    declared: pocket.map_or(Declaration::None, |p| declare(aim.first, p)),
+                });
+            }
+        }
+    }
+    if aims.is_empty() {
+        // No pocket, or no clear line: a fan of directions (carom, kicks, escapes).
+        for i in 0..fan {
+            let angle = std::f64::consts::TAU * i as f64 / fan as f64;
+            for speed in [1.5, 2.5, 3.5, 5.0] {
+                for tip in fan_tips {
+                    let mut shot = Shot::new(angle, speed);
+                    shot.tip = tip;
+                    out.push(Candidate {
+                        place,
+                        shot,
+                        declared: Declaration::None,
+                    });
+                }
+            }
+        }
+    }
+    out
+}
+
+trait WithoutPocket {
+    fn without_pocket(self) -> Self;
+}
+
+impl WithoutPocket for Declaration {
+    /// An opening stroke declares nothing (WPA: no call on the break).
+    fn without_pocket(self) -> Self {
+        match self {
+            Declaration::Pocket { .. } => Declaration::None,
+            d => d,
+        }
+    }
+}
+
+/// The noisy samples of a candidate: executed under the planning noise and judged by a
+/// copy of the game ([`crate::rounds::Sampler`]).
+struct Generic<'a> {
+    game: &'a dyn GameRules,
+    sim: &'a Simulation,
+    cue: u8,
+    noise: Noise,
+    params: Params,
+    seed: u64,
+}
+
+impl Sampler for Generic<'_> {
+    type Cand = Candidate;
+    type Scratch = ();
+
+    fn scratch(&self) {}
+
+    fn sample(&self, c: &Candidate, id: u64, k: u64, _: &mut ()) -> Stats {
+        let mut rng = stream(self.seed, id, k);
+        let shot = self.noise.apply(c.shot, &self.params, &mut rng);
+        let value = try_stroke(self.game, self.sim, self.cue, Candidate { shot, ..*c });
+        // A stroke the solver or the rules refuse counts as a foul.
+        let v = value.unwrap_or(-1.0);
+        Stats {
+            n: 1,
+            value: v,
+            pots: usize::from(v >= 1.0),
+            fouls: usize::from(v < 0.0),
+            losses: usize::from(v <= -10.0),
+            events: 0,
+        }
+    }
+}
+
+/// The best of `all`: each simulated once without noise, the best kept and sampled under
+/// noise, refined in rounds ([`Rounds`], the skeleton every search shares).
+fn best_of(
+    game: &dyn GameRules,
+    sim: &Simulation,
+    cue: u8,
+    all: Vec<Candidate>,
+    level: Level,
+    seed: u64,
+) -> Option<Stroke> {
+    let e = effort(level);
+    let mut scanned: Vec<(f64, usize)> = all
+        .par_iter()
+        .enumerate()
+        .filter_map(|(i, &c)| try_stroke(game, sim, cue, c).map(|v| (v, i)))
+        .collect();
+    scanned.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    scanned.truncate(e.keep);
+    let kept: Vec<Candidate> = scanned.iter().map(|&(_, i)| all[i]).collect();
+    let sampler = Generic {
+        game,
+        sim,
+        cue,
+        noise: level.planning_noise(),
+        params: *sim.params(),
+        seed,
+    };
+    let mut rounds: Rounds<Candidate> = Rounds::default();
+    rounds.add(&sampler, kept, e.samples);
+    for &(k, m) in e.rounds {
+        rounds.refine(&sampler, k, m);
+    }
+    let best = rounds.best()?;
+    let c = rounds.cands[best];
+    Some(Stroke {
+        place: c.place,
+        shot: c.shot,
+        declared: c.declared,
+        value: rounds.value(best),
+    })
+}
+
+/// Places for the cue ball in hand that the rules accept: where it lies if allowed, then
+/// the accepted points of a grid nearest the legal balls.
+fn places(game: &dyn GameRules, sim: &Simulation, turn: &Turn, count: usize) -> Vec<Vec2> {
+    let layout = layout_of(sim);
+    let others: Vec<Vec2> = layout
+        .iter()
+        .filter(|&&(n, _)| n != turn.cue_ball)
+        .map(|&(_, p)| p)
+        .collect();
+    let targets: Vec<Vec2> = layout
+        .iter()
+        .filter(|(n, _)| turn.legal_first.contains(n))
+        .map(|&(_, p)| p)
+        .collect();
+    let table = game.table();
+    let mut grid: Vec<Vec2> = Vec::new();
+    let (nx, ny) = (48, 24);
+    for i in 1..nx {
+        for j in 1..ny {
+            let at = Vec2::new(
+                (i as f64 / nx as f64 - 0.5) * table.length,
+                (j as f64 / ny as f64 - 0.5) * table.width,
+            );
+            if game.check_hand(at, &others).is_ok() {
+                grid.push(at);
+            }
+        }
+    }
+    // Nearest a legal ball, but not closer than 15 cm (room to cue).
+    let cost = |p: Vec2| {
+        targets
+            .iter()
+            .map(|&t| ((t - p).length() - 0.3).abs())
+            .fold(f64::INFINITY, f64::min)
+    };
+    grid.sort_by(|a, b| cost(*a).total_cmp(&cost(*b)));
+    let mut out: Vec<Vec2> = Vec::new();
+    if let Some(id) = id_of(sim, turn.cue_ball)
+        && sim.ball(id).motion.on_table()
+        && game.check_hand(sim.ball(id).position, &others).is_ok()
+    {
+        out.push(sim.ball(id).position);
+    }
+    for p in grid {
+        if out.len() >= count {
+            break;
+        }
+        if out.iter().all(|q| (*q - p).length() > 0.2) {
+            out.push(p);
+        }
+    }
+    out
+}
+
+/// The best stroke of the turn in play, the cue ball placed if it is in hand.
+pub fn best_stroke(
+    game: &dyn GameRules,
+    sim: &Simulation,
+    level: Level,
+    seed: u64,
+) -> Result<Stroke, String> {
+    let turn = game.turn();
+    let e = effort(level);
+    let places: Vec<Option<Vec2>> = match turn.place {
+        CueBallPlace::InHand { .. } => places(game, sim, &turn, e.places)
+            .into_iter()
+            .map(Some)
+            .collect(),
+        CueBallPlace::AsItLies | CueBallPlace::Placed => vec![None],
+    };
+    let cue = id_of(sim, turn.cue_ball)
+        .ok_or_else(|| format!("{}: no cue ball on this table", game.name()))?;
+    let all: Vec<Candidate> = places
+        .iter()
+        .flat_map(|&place| {
+            let from = place.unwrap_or(sim.ball(cue).position);
+            candidates(&turn, sim, (place, from), e.fan)
+        })
+        .collect();
+    best_of(game, sim, turn.cue_ball, all, level, seed)
+        .ok_or_else(|| format!("{}: no stroke the rules accept was found", game.name()))
+}
+
+/// What the computer does next in any game: an option when the rules offer some, else the
+/// best stroke.
+pub fn decide_any(
+    game: &dyn GameRules,
+    sim: &Simulation,
+    level: Level,
+    seed: u64,
+) -> Result<Move, String> {
+    let turn = game.turn();
+    if turn.choices.is_empty() {
+        return best_stroke(game, sim, level, seed).map(Move::Strike);
+    }
+    let me: Seat = turn.striker;
+    let layout = layout_of(sim);
+    let mut best: Option<(f64, usize)> = None;
+    for index in 0..turn.choices.len() {
+        let mut copy = game.boxed_clone();
+        let Ok(setup) = copy.choose(index, &layout) else {
+            continue;
+        };
+        // A re-rack or a replace cannot be valued on this table: an even chance.
+        let value = match setup {
+            billiards_rules::Setup::Keep => {
+                let next = copy.turn();
+                let v = if next.choices.is_empty() {
+                    best_stroke(copy.as_ref(), sim, Level::Easy, seed).map_or(0.0, |s| s.value)
+                } else {
+                    0.0
+                };
+                if next.striker == me { v } else { -v }
+            }
+            _ => 0.0,
+        };
+        if best.is_none_or(|(b, _)| value > b) {
+            best = Some((value, index));
+        }
+    }
+    best.map(|(_, i)| Move::Choose(i))
+        .ok_or_else(|| format!("{}: no option offered could be taken", game.name()))
+}

@@ -1,0 +1,227 @@
+//! The rounds of a search, shared by every game's search (issue 50: one skeleton, not a
+//! copy per game): candidates evaluated by noisy samples ([`Sampler`]) on all cores, the
+//! best refined with more samples, the best chosen from the finalists or from a second ply.
+//! A game's search brings its candidates, its sampler (what one noisy sample of a
+//! candidate is worth) and, if any, its second ply.
+
+use rayon::prelude::*;
+use std::ops::Range;
+
+/// The running totals of one candidate's samples.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Samples.
+    pub n: usize,
+    /// Sum of the values.
+    pub value: f64,
+    /// Samples with a legal pot (or a win).
+    pub pots: usize,
+    /// Samples with a foul.
+    pub fouls: usize,
+    /// Samples that lost the game.
+    pub losses: usize,
+    /// Solver events processed.
+    pub events: usize,
+}
+
+impl Stats {
+    /// Mean value (minus infinity without samples).
+    pub fn mean(&self) -> f64 {
+        if self.n == 0 {
+            f64::NEG_INFINITY
+        } else {
+            self.value / self.n as f64
+        }
+    }
+
+    /// Fraction of samples with a legal pot or a win.
+    pub fn pot_rate(&self) -> f64 {
+        self.pots as f64 / self.n.max(1) as f64
+    }
+
+    /// Both sets of samples together.
+    pub fn merged(self, o: Stats) -> Stats {
+        Stats {
+            n: self.n + o.n,
+            value: self.value + o.value,
+            pots: self.pots + o.pots,
+            fouls: self.fouls + o.fouls,
+            losses: self.losses + o.losses,
+            events: self.events + o.events,
+        }
+    }
+}
+
+/// What one noisy sample of a candidate is worth, for one game's search.
+pub trait Sampler: Sync {
+    /// A candidate stroke.
+    type Cand: Sync;
+    /// What one thread reuses from sample to sample (a simulation to reset).
+    type Scratch: Send;
+    /// A fresh scratch.
+    fn scratch(&self) -> Self::Scratch;
+    /// Draw `k` of random stream `stream` of `cand`, played in `scratch`.
+    fn sample(&self, cand: &Self::Cand, stream: u64, k: u64, scratch: &mut Self::Scratch) -> Stats;
+}
+
+/// The samples of every run (a candidate, its stream and its draws), on all cores, each
+/// run's totals summed in the order of its draws (so the result does not depend on the
+/// threads). The work is split by sample, not by candidate: candidates differ in cost by
+/// ten times, and a refinement round gives a few candidates many samples each, which a
+/// split by candidate leaves to one core at the end.
+pub fn sample_runs<S: Sampler>(s: &S, runs: &[(&S::Cand, u64, Range<u64>)]) -> Vec<Stats> {
+    let mut starts = Vec::with_capacity(runs.len() + 1);
+    let mut total = 0usize;
+    for r in runs {
+        starts.push(total);
+        total += r.2.end.saturating_sub(r.2.start) as usize;
+    }
+    starts.push(total);
+    let samples: Vec<Stats> = (0..total)
+        .into_par_iter()
+        .map_init(
+            || s.scratch(),
+            |scratch, n| {
+                let r = starts.partition_point(|&x| x <= n) - 1;
+                let (cand, stream, ref draws) = runs[r];
+                let k = draws.start + (n - starts[r]) as u64;
+                s.sample(cand, stream, k, scratch)
+            },
+        )
+        .collect();
+    starts
+        .windows(2)
+        .map(|w| {
+            samples[w[0]..w[1]]
+                .iter()
+                .fold(Stats::default(), |s, x| s.merged(*x))
+        })
+        .collect()
+}
+
+/// The best candidate of a search: after a second ply the best two-ply value (`two`: the
+/// candidate and its value); else the best mean among the finalists of the last round (all
+/// `stats` when there was none; ties: the first).
+pub fn best_candidate(two: &[(usize, f64)], finalists: &[usize], stats: &[Stats]) -> Option<usize> {
+    if !two.is_empty() {
+        return two
+            .iter()
+            .copied()
+            .reduce(|a, b| if b.1 > a.1 { b } else { a })
+            .map(|v| v.0);
+    }
+    let all: Vec<usize> = (0..stats.len()).collect();
+    let pool = if finalists.is_empty() {
+        &all
+    } else {
+        finalists
+    };
+    pool.iter().copied().reduce(|a, b| {
+        let (ma, mb) = (stats[a].mean(), stats[b].mean());
+        if mb > ma || (mb == ma && b < a) { b } else { a }
+    })
+}
+
+/// Every candidate of a search evaluated so far, with its samples.
+#[derive(Debug)]
+pub struct Rounds<C> {
+    /// The candidates, in the order they were added.
+    pub cands: Vec<C>,
+    /// Their samples.
+    pub stats: Vec<Stats>,
+    /// Simulations run.
+    pub simulations: usize,
+    /// Solver events processed.
+    pub events: usize,
+    /// The candidates of the last refinement round (empty: none yet).
+    pub finalists: Vec<usize>,
+    /// The candidates valued two plies deep and their values (empty: one ply).
+    pub two: Vec<(usize, f64)>,
+}
+
+impl<C> Default for Rounds<C> {
+    fn default() -> Self {
+        Self {
+            cands: Vec::new(),
+            stats: Vec::new(),
+            simulations: 0,
+            events: 0,
+            finalists: Vec::new(),
+            two: Vec::new(),
+        }
+    }
+}
+
+impl<C: Sync> Rounds<C> {
+    /// Evaluates `cands` with `samples` each and keeps them. A candidate's random streams are
+    /// named by its index in the search, so the order of the rounds fixes them.
+    pub fn add<S: Sampler<Cand = C>>(&mut self, s: &S, cands: Vec<C>, samples: usize) {
+        let salt = self.cands.len() as u64;
+        let runs: Vec<(&C, u64, Range<u64>)> = cands
+            .iter()
+            .enumerate()
+            .map(|(i, c)| (c, salt + i as u64, 0..samples as u64))
+            .collect();
+        let stats = sample_runs(s, &runs);
+        self.count(&stats);
+        self.cands.extend(cands);
+        self.stats.extend(stats);
+    }
+
+    /// Gives the best `k` candidates `m` more samples each; they become the finalists.
+    pub fn refine<S: Sampler<Cand = C>>(&mut self, s: &S, k: usize, m: usize) {
+        let order = self.best_by_mean(&(0..self.cands.len()).collect::<Vec<_>>(), k);
+        let runs: Vec<(&C, u64, Range<u64>)> = order
+            .iter()
+            .map(|&i| {
+                let n = self.stats[i].n as u64;
+                (&self.cands[i], i as u64, n..n + m as u64)
+            })
+            .collect();
+        let more = sample_runs(s, &runs);
+        self.count(&more);
+        for (&i, st) in order.iter().zip(more) {
+            self.stats[i] = self.stats[i].merged(st);
+        }
+        self.finalists = order;
+    }
+
+    /// The best `k` of `among` by mean (ties: the first).
+    fn best_by_mean(&self, among: &[usize], k: usize) -> Vec<usize> {
+        let mut order = among.to_vec();
+        let mean = |i: usize| self.stats[i].mean();
+        order.sort_by(|&a, &b| mean(b).total_cmp(&mean(a)).then(a.cmp(&b)));
+        order.truncate(k);
+        order
+    }
+
+    /// The candidates a second ply values: the best `k` finalists (of all candidates when
+    /// no round refined any).
+    pub fn second_ply_order(&self, k: usize) -> Vec<usize> {
+        let pool: Vec<usize> = if self.finalists.is_empty() {
+            (0..self.cands.len()).collect()
+        } else {
+            self.finalists.clone()
+        };
+        self.best_by_mean(&pool, k)
+    }
+
+    /// Counts the simulations and events of `stats`.
+    pub fn count(&mut self, stats: &[Stats]) {
+        self.simulations += stats.iter().map(|s| s.n).sum::<usize>();
+        self.events += stats.iter().map(|s| s.events).sum::<usize>();
+    }
+
+    /// The value of candidate `i`: two plies deep when it was so valued, else its mean.
+    pub fn value(&self, i: usize) -> f64 {
+        self.two
+            .iter()
+            .find(|v| v.0 == i)
+            .map_or(self.stats[i].mean(), |v| v.1)
+    }
+
+    /// The best candidate so far ([`best_candidate`]).
+    pub fn best(&self) -> Option<usize> {
+        best_candidate(&self.two, &self.finalists, &self.stats)
+    }
+}
