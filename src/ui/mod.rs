@@ -11,6 +11,8 @@
 //! - [`recordings`]: the Recordings section (open a recording);
 //! - [`timeline`]: the replay timeline strip and the Export form;
 //! - [`hud`]: the HUD in the top-right corner;
+//! - [`new_game`]: the new-game dialog's form, kept between frames;
+//! - `snooker_windows`: a snooker frame's nomination, verdict and end;
 //! - [`game`]: the match's HUD lines, the new-game dialog, the verdict, the call, the end of
 //!   a rack.
 //!
@@ -25,9 +27,11 @@ pub mod game;
 pub mod hud;
 pub mod layout;
 pub mod layout_check;
+pub mod new_game;
 pub mod practice;
 pub mod recordings;
 pub mod settings;
+mod snooker_windows;
 pub mod stress;
 pub mod timeline;
 
@@ -59,7 +63,7 @@ pub fn plugin(app: &mut App) {
     app.add_plugins(EguiPlugin::default())
         .init_resource::<recordings::RecordingsForm>()
         .init_resource::<timeline::ExportForm>()
-        .init_resource::<game::NewGameForm>()
+        .init_resource::<new_game::NewGameForm>()
         .init_resource::<settings::RackConfirm>()
         .init_resource::<stress::StressConfirm>()
         .init_resource::<practice::PositionForm>()
@@ -86,7 +90,7 @@ pub fn plugin(app: &mut App) {
         )
         .init_resource::<PointerOnUi>()
         .add_systems(Update, find_pointer_on_ui.before(InputSystems::Pointer))
-        .add_systems(Update, game::remember_new_game)
+        .add_systems(Update, new_game::remember_new_game)
         .add_systems(
             PostUpdate,
             redraw_after_texture_change
