@@ -10,6 +10,7 @@ use billiards_rules::{Call, CallRule, Game};
 
 use super::layout::{HUD_BUTTON_WIDTH, HudLine, INFO, PANEL_WIDTH, WARNING};
 use super::new_game::NewGameForm;
+use super::pool_windows;
 use super::snooker_windows;
 use crate::{
     play::computer::{Computer, HintRequested},
@@ -314,109 +315,21 @@ pub fn game_windows(
                 return Ok(());
             };
             centre("Verdict").show(&ctx, |ui| {
-                if let Some(verdict) = &game.last {
-                    ui.label(format!(
-                        "{}: {}",
-                        game.name(verdict.shooter),
-                        game.verdict_text(verdict)
-                    ));
-                    if let Some(group) = verdict.assigned {
-                        ui.label(format!(
-                            "{} takes the {}",
-                            game.name(verdict.shooter),
-                            group.name()
-                        ));
-                    }
-                }
-                let next = game.next();
-                if game.computer(next.shooter).is_some() && !next.choices.is_empty() {
-                    ui.label(format!(
-                        "{} (computer) chooses next",
-                        game.name(next.shooter)
-                    ));
-                } else if next.choices.is_empty() {
-                    ui.label(game.next_text());
-                    // Between two computers the verdict goes on by itself.
-                    if game.has_human() && ui.button("Continue (Enter)").clicked() {
-                        state.commands.write(TurnCommand::Continue);
-                    }
-                } else {
-                    ui.label(format!("{} chooses:", game.name(next.shooter)));
-                    ui.horizontal(|ui| {
-                        for &choice in &next.choices {
-                            if ui.button(choice.label()).clicked() {
-                                state.commands.write(TurnCommand::Choose(choice));
-                            }
-                        }
-                    });
-                }
+                pool_windows::verdict(ui, game, &mut state.commands)
             });
         }
         Turn::Calling => {
             let Some(game) = &state.rules.game else {
                 return Ok(());
             };
-            centre("Call").show(&ctx, |ui| {
-                let next = game.next();
-                // What the aim sends into a pocket, one click to confirm.
-                if let Some(call) = game.proposed
-                    && let Some(text) = call.text()
-                {
-                    if ui.button(format!("Call {text} (your aim)")).clicked() {
-                        state.commands.write(TurnCommand::Call(call));
-                    }
-                    ui.label("or choose another:");
-                }
-                if next.call == CallRule::EightPocket {
-                    ui.label("The 8: click the pocket on the table.");
-                } else {
-                    ui.horizontal(|ui| {
-                        ui.label("Ball:");
-                        for &ball in &next.legal_first {
-                            let chosen = game.call_ball == Some(ball);
-                            if ui.selectable_label(chosen, ball.to_string()).clicked() {
-                                state.commands.write(TurnCommand::CallBall(ball));
-                            }
-                        }
-                    });
-                    ui.label("Then click the pocket on the table.");
-                }
-                ui.horizontal(|ui| {
-                    if next.call == CallRule::Optional && ui.button("Call a safety").clicked() {
-                        state.commands.write(TurnCommand::Call(Call::Safety));
-                    }
-                    if ui.button("No call").clicked() {
-                        state.commands.write(TurnCommand::Call(Call::None));
-                    }
-                });
-            });
+            centre("Call").show(&ctx, |ui| pool_windows::call(ui, game, &mut state.commands));
         }
         Turn::GameOver => {
             let Some(game) = &state.rules.game else {
                 return Ok(());
             };
             centre("Rack over").show(&ctx, |ui| {
-                if let Some((winner, reason)) = game.rack().over {
-                    ui.label(format!("{} wins the rack: {reason}", game.name(winner)));
-                }
-                let play = &game.play;
-                ui.label(format!(
-                    "{} {} - {} {} (race to {})",
-                    play.players[0], play.score[0], play.score[1], play.players[1], play.race_to
-                ));
-                match play.winner() {
-                    Some(winner) => {
-                        ui.label(format!("{} wins the match", game.name(winner)));
-                        if ui.button("New game...").clicked() {
-                            state.commands.write(TurnCommand::OpenDialog);
-                        }
-                    }
-                    None => {
-                        if ui.button("Next rack").clicked() {
-                            state.commands.write(TurnCommand::NextRack);
-                        }
-                    }
-                }
+                pool_windows::rack_over(ui, game, &mut state.commands)
             });
         }
         Turn::Aiming | Turn::BallInHand if human_to_shoot(&state) => {
