@@ -5,11 +5,10 @@
 
 use bevy::prelude::*;
 use bevy_egui::{EguiContexts, egui};
-use billiards_ai::Level;
 use billiards_rules::{Call, CallRule, Game};
 
 use super::layout::{HUD_BUTTON_WIDTH, HudLine, INFO, PANEL_WIDTH, WARNING};
-use super::new_game::NewGameForm;
+use super::new_game::{NewGameForm, seat_rows};
 use super::pool_windows;
 use super::snooker_windows;
 use crate::{
@@ -342,6 +341,8 @@ pub fn game_windows(
     Ok(())
 }
 
+/// The new-game dialog: the game, the table and rack, the players or free play's drill, then
+/// Start (asking first over a game in progress) or Cancel.
 fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
     let form = &mut *state.form;
     ui.horizontal(|ui| {
@@ -380,47 +381,7 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
                 }
             });
         }
-        for (k, (name, seat)) in form
-            .players
-            .iter_mut()
-            .zip(form.computer.iter_mut())
-            .enumerate()
-        {
-            ui.horizontal(|ui| {
-                ui.label(format!("Player {}:", k + 1));
-                ui.add(egui::TextEdit::singleline(name).desired_width(140.0));
-                // A list, not a row of choices: every level fits, however many there are.
-                let label = |seat: Option<Level>| match seat {
-                    None => "human".to_owned(),
-                    Some(level) => format!("computer, {level}"),
-                };
-                egui::ComboBox::from_id_salt(("seat", k))
-                    .selected_text(label(*seat))
-                    .width(160.0)
-                    .show_ui(ui, |ui| {
-                        ui.selectable_value(seat, None, label(None));
-                        for level in Level::ALL {
-                            ui.selectable_value(seat, Some(level), label(Some(level)));
-                        }
-                    });
-            });
-        }
-        ui.horizontal(|ui| {
-            ui.label("Race to");
-            ui.add(
-                egui::DragValue::new(&mut form.race_to)
-                    .update_while_editing(false)
-                    .range(1..=15),
-            );
-            if snooker {
-                ui.label(format!(
-                    "frames (best of {}); the break-off alternates",
-                    2 * form.race_to - 1
-                ));
-            } else {
-                ui.label("racks; player 1 breaks first, then the break alternates");
-            }
-        });
+        seat_rows(ui, form, snooker);
     }
     // A game with shots in it ends only when the player says so (as the rack buttons ask).
     let in_progress = state.solver.as_ref().is_some_and(|s| s.in_progress());

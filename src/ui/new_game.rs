@@ -2,6 +2,7 @@
 //! dialog opens on the match in play).
 
 use bevy::prelude::*;
+use bevy_egui::egui;
 use billiards_ai::Level;
 use billiards_rules::Game;
 
@@ -60,6 +61,52 @@ pub fn remember_new_game(
             drill: None,
         };
     }
+}
+
+/// The players' rows (name, human or the computer at a level) and the race: racks, or
+/// frames of a snooker match (best of an odd number, WPBSA 2.1).
+pub(super) fn seat_rows(ui: &mut egui::Ui, form: &mut NewGameForm, snooker: bool) {
+    for (k, (name, seat)) in form
+        .players
+        .iter_mut()
+        .zip(form.computer.iter_mut())
+        .enumerate()
+    {
+        ui.horizontal(|ui| {
+            ui.label(format!("Player {}:", k + 1));
+            ui.add(egui::TextEdit::singleline(name).desired_width(140.0));
+            // A list, not a row of choices: every level fits, however many there are.
+            let label = |seat: Option<Level>| match seat {
+                None => "human".to_owned(),
+                Some(level) => format!("computer, {level}"),
+            };
+            egui::ComboBox::from_id_salt(("seat", k))
+                .selected_text(label(*seat))
+                .width(160.0)
+                .show_ui(ui, |ui| {
+                    ui.selectable_value(seat, None, label(None));
+                    for level in Level::ALL {
+                        ui.selectable_value(seat, Some(level), label(Some(level)));
+                    }
+                });
+        });
+    }
+    ui.horizontal(|ui| {
+        ui.label("Race to");
+        ui.add(
+            egui::DragValue::new(&mut form.race_to)
+                .update_while_editing(false)
+                .range(1..=15),
+        );
+        if snooker {
+            ui.label(format!(
+                "frames (best of {}); the break-off alternates",
+                2 * form.race_to - 1
+            ));
+        } else {
+            ui.label("racks; player 1 breaks first, then the break alternates");
+        }
+    });
 }
 
 #[cfg(test)]
