@@ -10,11 +10,12 @@ use std::{
 };
 
 use bevy::{math::DVec2, prelude::*, window::RequestRedraw};
-use billiards_ai::{AiError, Decision, Level, ShotKind, SnookerDecision};
-use billiards_physics::{Cushion, Shot, Vec2};
-use billiards_rules::snooker::{Choice as SnookerChoice, Frame, balls::name as snooker_name};
-use billiards_rules::{Call, GameState, pocket_name};
+use billiards_ai::{AiError, Decision, Level, SnookerDecision};
+use billiards_physics::{Shot, Vec2};
+use billiards_rules::snooker::Frame;
+use billiards_rules::{Call, GameState};
 
+pub use super::decided::{Decided, describe};
 use crate::{
     mode::GameMode,
     play::game::{Rules, Turn, TurnCommand},
@@ -22,7 +23,7 @@ use crate::{
     sim::{HandRule, ShotRequested, SimStatus, SimSystems, Solver, place_ball_in_hand},
     table::balls::{Ball, BallMotion, Pocketed},
     table::geometry::TableSpec,
-    view::camera::{CameraMode, OrbitCamera},
+    view::camera::OrbitCamera,
 };
 
 /// How long the computer shows its aim (or its choice) before it acts; tests set zero.
@@ -59,7 +60,7 @@ pub struct Computer {
 }
 
 /// The hint as the HUD shows it. The decision is kept, not its words: its cushions are named
-/// as the view shows them when it is drawn ([`cushion_name`]).
+/// as the view shows them when it is drawn ([`describe`], whose `cushion_name` does it).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Hint {
     /// The search runs.
@@ -83,15 +84,6 @@ impl Hint {
 
 /// Which turn of which rack a decision is for: a decision for another turn is dropped.
 pub type TurnKey = (u64, usize, usize);
-
-/// A decision of either game's computer.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Decided {
-    /// Pool's ([`billiards_ai::decide`]).
-    Pool(Decision),
-    /// Snooker's ([`billiards_ai::decide_snooker`]).
-    Snooker(SnookerDecision),
-}
 
 /// What a decision is asked of: the rules' state of either game.
 #[derive(Debug, Clone)]
@@ -356,18 +348,6 @@ fn outcome(handle: JoinHandle<Result<Decided, AiError>>) -> Result<Decided, Stri
         .map_err(|e| e.to_string())
 }
 
-impl Decided {
-    /// The shot decided on and the cue ball's place in hand; `None` for a choice.
-    pub fn aim(&self) -> Option<(Shot, Option<Vec2>)> {
-        match self {
-            Decided::Pool(Decision::Shoot(plan)) => Some((plan.shot, plan.place)),
-            Decided::Snooker(SnookerDecision::Shoot(plan)) => Some((plan.shot, plan.place)),
-            Decided::Pool(Decision::Choose { .. })
-            | Decided::Snooker(SnookerDecision::Choose { .. }) => None,
-        }
-    }
-}
-
 /// What goes with a decided shot before it is struck: pool's call (when it differs from the
 /// one in force), snooker's nomination.
 fn announce(decision: &Decided, call: Call, commands: &mut MessageWriter<TurnCommand>) {
@@ -469,164 +449,4 @@ fn give_hint(
         Err(error) => Hint::Failed(error),
     };
     computer.hint = Some((key, hint));
-}
-
-/// The decision in words, with its success probability; cushions named as `view` shows them.
-pub fn describe(decision: &Decided, view: &OrbitCamera) -> String {
-    match decision {
-        Decided::Pool(decision) => describe_pool(decision, view),
-        Decided::Snooker(SnookerDecision::Choose { choice, estimate }) => {
-            format!(
-                "{} (worth {estimate:+.1} points)",
-                snooker_choice_text(*choice)
-            )
-        }
-        Decided::Snooker(SnookerDecision::Shoot(plan)) => {
-            let what = match plan.kind {
-                ShotKind::Break => "the break-off".to_owned(),
-                kind => kind_text(kind, view, |n| snooker_name(n).to_owned()),
-            };
-            let nominated = plan.nominated.map_or(String::new(), |n| {
-                format!(", nominating the {}", snooker_name(n))
-            });
-            format!(
-                "{what}{nominated}, {:.0} % to pot, {:.0} % foul",
-                100.0 * plan.success,
-                100.0 * plan.foul
-            )
-        }
-    }
-}
-
-fn snooker_choice_text(choice: SnookerChoice) -> String {
-    match choice {
-        SnookerChoice::PlayOn => "play on".to_owned(),
-        SnookerChoice::PutBack => "put the offender back in".to_owned(),
-        SnookerChoice::Replace => "replace the balls".to_owned(),
-        SnookerChoice::BlackFirst(seat) => format!("player {} plays the black", seat.index() + 1),
-    }
-}
-
-/// The decision in words, with its success probability; cushions named as `view` shows them.
-fn describe_pool(decision: &Decision, view: &OrbitCamera) -> String {
-    match decision {
-        Decision::Choose { choice, estimate } => {
-            format!("{} ({:.0} %)", choice.label(), 100.0 * estimate)
-        }
-        Decision::Shoot(plan) => {
-            let what = kind_text(plan.kind, view, |n| n.to_string());
-            let call = match plan.call {
-                Call::Ball { .. } | Call::None => String::new(),
-                other => other.text().map_or(String::new(), |c| format!(", {c}")),
-            };
-            format!(
-                "{what}{call}, {:.0} % to succeed, {:.0} % foul",
-                100.0 * plan.success,
-                100.0 * plan.foul
-            )
-        }
-    }
-}
-
-/// A cushion's name as `view` shows it. The short ones keep the players' "head" and "foot";
-/// a long one is named by where it lies on the screen: "left" or "right", and "far" or
-/// "near" (in the top view "top" or "bottom"). The rules' "left" (seen from the head end)
-/// read as the top rail in the top view (issue 28, item 10).
-pub fn cushion_name(cushion: Cushion, view: &OrbitCamera) -> &'static str {
-    match cushion {
-        Cushion::Head => return "head",
-        Cushion::Foot => return "foot",
-        Cushion::Left | Cushion::Right => {}
-    }
-    let outward = -cushion.inward_normal();
-    // The camera's forward and right on the table, in the solver's axes (yaw 0 looks along
-    // the solver's +y, with its +x to the right).
-    let yaw = f64::from(view.yaw);
-    let forward = Vec2::new(-yaw.sin(), yaw.cos());
-    let right = Vec2::new(yaw.cos(), yaw.sin());
-    let (ahead, aside) = (outward.dot(forward), outward.dot(right));
-    let top = view.mode == CameraMode::Top;
-    match (aside.abs() >= ahead.abs(), aside > 0.0, ahead > 0.0, top) {
-        (true, true, _, _) => "right",
-        (true, false, _, _) => "left",
-        (false, _, true, true) => "top",
-        (false, _, true, false) => "far",
-        (false, _, false, true) => "bottom",
-        (false, _, false, false) => "near",
-    }
-}
-
-/// A shot in words, the balls named by `name` (pool's numbers, snooker's colours).
-fn kind_text(kind: ShotKind, view: &OrbitCamera, name: impl Fn(u8) -> String) -> String {
-    let cushion = |c: Cushion| cushion_name(c, view);
-    match kind {
-        ShotKind::Break => "the break".to_owned(),
-        ShotKind::Pot { ball, pocket } => {
-            format!("the {} in the {}", name(ball), pocket_name(pocket))
-        }
-        ShotKind::Bank {
-            ball,
-            pocket,
-            cushion: c,
-        } => format!(
-            "the {} off the {} cushion in the {}",
-            name(ball),
-            cushion(c),
-            pocket_name(pocket)
-        ),
-        ShotKind::Kick {
-            ball,
-            pocket,
-            cushion: c,
-        } => format!(
-            "a kick off the {} cushion, the {} in the {}",
-            cushion(c),
-            name(ball),
-            pocket_name(pocket)
-        ),
-        ShotKind::Combo {
-            first,
-            ball,
-            pocket,
-        } => format!(
-            "the {} into the {}, in the {}",
-            name(first),
-            name(ball),
-            pocket_name(pocket)
-        ),
-        ShotKind::Safety { ball } => format!("a safety on the {}", name(ball)),
-        ShotKind::PushOut => "a push out".to_owned(),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The long cushions are named as the screen shows them: from the default view behind the
-    /// head rail the rules' left cushion is on the left; in the top view (head rail on the
-    /// left) it is the top one; seen from the foot end, sides swap.
-    #[test]
-    fn long_cushions_are_named_as_the_view_shows_them() {
-        let behind_head = OrbitCamera::default();
-        assert_eq!(cushion_name(Cushion::Left, &behind_head), "left");
-        assert_eq!(cushion_name(Cushion::Right, &behind_head), "right");
-        assert_eq!(cushion_name(Cushion::Head, &behind_head), "head");
-        let top = OrbitCamera::top_view();
-        assert_eq!(cushion_name(Cushion::Left, &top), "top");
-        assert_eq!(cushion_name(Cushion::Right, &top), "bottom");
-        assert_eq!(cushion_name(Cushion::Foot, &top), "foot");
-        let behind_foot = OrbitCamera {
-            yaw: behind_head.yaw + std::f32::consts::PI,
-            ..behind_head
-        };
-        assert_eq!(cushion_name(Cushion::Left, &behind_foot), "right");
-        // Looking across the table from the right long cushion, the left one is far.
-        let across = OrbitCamera {
-            yaw: 0.0,
-            ..behind_head
-        };
-        assert_eq!(cushion_name(Cushion::Left, &across), "far");
-        assert_eq!(cushion_name(Cushion::Right, &across), "near");
-    }
 }

@@ -4,6 +4,7 @@
 pub mod aim;
 pub mod computer;
 pub mod cue;
+pub mod decided;
 pub mod game;
 pub mod key_repeat;
 pub mod script;

@@ -4,8 +4,10 @@
 //! - [`placing`]: the Place tool (free play): pick a ball and drag it (or click where it
 //!   goes), snapped to the spots, never onto another ball or over a pocket; add and remove
 //!   balls; every edit undoable.
+//! - `edits`: the Place tool's edits carried out (move, add, remove, clear, undo).
 //! - [`position`]: [`PositionRequested`] sets a position on the table; the current table
 //!   as a position; the clipboard.
+//! - [`drill_list`]: the drills listed (the standard set, the player's folder) and saved;
 //! - [`drill`]: a drill session: the drill's position, each attempt judged from the solver's
 //!   own history ([`billiards_rules::Drill::judge`]), the tries counted, the best kept in the
 //!   settings file ([`DrillBests`]).
@@ -13,6 +15,8 @@
 //! The mode is one [`Practice`] state: free play, the Place tool, or a drill.
 
 pub mod drill;
+pub mod drill_list;
+mod edits;
 pub mod placing;
 pub mod position;
 pub mod state;
@@ -99,7 +103,7 @@ pub fn plugin(app: &mut App) {
                 position::open_pending,
                 position::position_commands,
                 position::load_position,
-                placing::apply_edits,
+                edits::apply_edits,
                 placing::leave_placing_in_a_match,
                 drill::save_as_drill,
             )

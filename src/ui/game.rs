@@ -5,70 +5,20 @@
 
 use bevy::prelude::*;
 use bevy_egui::{EguiContexts, egui};
-use billiards_ai::Level;
 use billiards_rules::{Call, CallRule, Game};
 
 use super::layout::{HUD_BUTTON_WIDTH, HudLine, INFO, PANEL_WIDTH, WARNING};
+use super::new_game::{NewGameForm, seat_rows};
+use super::pool_windows;
+use super::snooker_windows;
 use crate::{
     play::computer::{Computer, HintRequested},
-    play::game::{GameChoice, NewGameRequested, Rules, Turn, TurnCommand, snooker},
+    play::game::{GameChoice, NewGameRequested, Rules, Turn, TurnCommand},
     practice::{DrillBests, DrillList, DrillRequested},
     settings::{TableSetup, rack_style_label, table_choices, table_label},
     sim::{Solver, clock_seed},
     view::camera::OrbitCamera,
 };
-
-/// What the new-game dialog holds between frames.
-#[derive(Resource, Debug, Clone, PartialEq, Eq)]
-pub struct NewGameForm {
-    /// The game chosen.
-    pub game: GameChoice,
-    /// The players' names.
-    pub players: [String; 2],
-    /// Racks to win.
-    pub race_to: u32,
-    /// Each seat: a human (`None`) or the computer at a level.
-    pub computer: [Option<Level>; 2],
-    /// The table and rack style; `None` until the dialog first opens, then the table in play.
-    pub setup: Option<TableSetup>,
-    /// Start was pressed over a game in progress: the dialog asks before ending it.
-    pub confirm: bool,
-    /// In free play, the drill to start (its place in the [`DrillList`]).
-    pub drill: Option<usize>,
-}
-
-impl Default for NewGameForm {
-    fn default() -> Self {
-        Self {
-            game: GameChoice::Pool(Game::NineBall),
-            players: ["Player 1".to_owned(), "Player 2".to_owned()],
-            race_to: 3,
-            computer: [None, Some(Level::Medium)],
-            setup: None,
-            confirm: false,
-            drill: None,
-        }
-    }
-}
-
-/// Copies every new game (from the dialog, `--game` at launch, a test) into the dialog's
-/// form, so that the dialog opens on the match in play rather than on its defaults.
-pub fn remember_new_game(
-    mut requests: MessageReader<NewGameRequested>,
-    mut form: ResMut<NewGameForm>,
-) {
-    for r in requests.read() {
-        *form = NewGameForm {
-            game: r.game,
-            players: r.players.clone(),
-            race_to: r.race_to,
-            computer: r.computer,
-            setup: Some(r.setup),
-            confirm: false,
-            drill: None,
-        };
-    }
-}
 
 /// What the game's windows read and write.
 #[derive(bevy::ecs::system::SystemParam)]
@@ -344,130 +294,46 @@ pub fn game_windows(
             centre("New game").show(&ctx, |ui| new_game_form(ui, &mut state));
         }
         Turn::Verdict if state.rules.snooker.is_some() => {
-            snooker_verdict(&ctx, centre("Verdict"), &mut state);
+            snooker_windows::snooker_verdict(
+                &ctx,
+                centre("Verdict"),
+                &state.rules,
+                &mut state.commands,
+            );
         }
         Turn::GameOver if state.rules.snooker.is_some() => {
-            snooker_frame_over(&ctx, centre("Frame over"), &mut state);
+            snooker_windows::snooker_frame_over(
+                &ctx,
+                centre("Frame over"),
+                &state.rules,
+                &mut state.commands,
+            );
         }
         Turn::Verdict => {
             let Some(game) = &state.rules.game else {
                 return Ok(());
             };
             centre("Verdict").show(&ctx, |ui| {
-                if let Some(verdict) = &game.last {
-                    ui.label(format!(
-                        "{}: {}",
-                        game.name(verdict.shooter),
-                        game.verdict_text(verdict)
-                    ));
-                    if let Some(group) = verdict.assigned {
-                        ui.label(format!(
-                            "{} takes the {}",
-                            game.name(verdict.shooter),
-                            group.name()
-                        ));
-                    }
-                }
-                let next = game.next();
-                if game.computer(next.shooter).is_some() && !next.choices.is_empty() {
-                    ui.label(format!(
-                        "{} (computer) chooses next",
-                        game.name(next.shooter)
-                    ));
-                } else if next.choices.is_empty() {
-                    ui.label(game.next_text());
-                    // Between two computers the verdict goes on by itself.
-                    if game.has_human() && ui.button("Continue (Enter)").clicked() {
-                        state.commands.write(TurnCommand::Continue);
-                    }
-                } else {
-                    ui.label(format!("{} chooses:", game.name(next.shooter)));
-                    ui.horizontal(|ui| {
-                        for &choice in &next.choices {
-                            if ui.button(choice.label()).clicked() {
-                                state.commands.write(TurnCommand::Choose(choice));
-                            }
-                        }
-                    });
-                }
+                pool_windows::verdict(ui, game, &mut state.commands)
             });
         }
         Turn::Calling => {
             let Some(game) = &state.rules.game else {
                 return Ok(());
             };
-            centre("Call").show(&ctx, |ui| {
-                let next = game.next();
-                // What the aim sends into a pocket, one click to confirm.
-                if let Some(call) = game.proposed
-                    && let Some(text) = call.text()
-                {
-                    if ui.button(format!("Call {text} (your aim)")).clicked() {
-                        state.commands.write(TurnCommand::Call(call));
-                    }
-                    ui.label("or choose another:");
-                }
-                if next.call == CallRule::EightPocket {
-                    ui.label("The 8: click the pocket on the table.");
-                } else {
-                    ui.horizontal(|ui| {
-                        ui.label("Ball:");
-                        // 10-ball calls any ball on the table (WPA 9.5), others the legal.
-                        let callable = match next.call {
-                            CallRule::BallAndPocket => &game.rack().on_table,
-                            _ => &next.legal_first,
-                        };
-                        for &ball in callable {
-                            let chosen = game.call_ball == Some(ball);
-                            if ui.selectable_label(chosen, ball.to_string()).clicked() {
-                                state.commands.write(TurnCommand::CallBall(ball));
-                            }
-                        }
-                    });
-                    ui.label("Then click the pocket on the table.");
-                }
-                ui.horizontal(|ui| {
-                    let safety = matches!(next.call, CallRule::Optional | CallRule::BallAndPocket);
-                    if safety && ui.button("Call a safety").clicked() {
-                        state.commands.write(TurnCommand::Call(Call::Safety));
-                    }
-                    if ui.button("No call").clicked() {
-                        state.commands.write(TurnCommand::Call(Call::None));
-                    }
-                });
-            });
+            centre("Call").show(&ctx, |ui| pool_windows::call(ui, game, &mut state.commands));
         }
         Turn::GameOver => {
             let Some(game) = &state.rules.game else {
                 return Ok(());
             };
             centre("Rack over").show(&ctx, |ui| {
-                if let Some((winner, reason)) = game.rack().over {
-                    ui.label(format!("{} wins the rack: {reason}", game.name(winner)));
-                }
-                let play = &game.play;
-                ui.label(format!(
-                    "{} {} - {} {} (race to {})",
-                    play.players[0], play.score[0], play.score[1], play.players[1], play.race_to
-                ));
-                match play.winner() {
-                    Some(winner) => {
-                        ui.label(format!("{} wins the match", game.name(winner)));
-                        if ui.button("New game...").clicked() {
-                            state.commands.write(TurnCommand::OpenDialog);
-                        }
-                    }
-                    None => {
-                        if ui.button("Next rack").clicked() {
-                            state.commands.write(TurnCommand::NextRack);
-                        }
-                    }
-                }
+                pool_windows::rack_over(ui, game, &mut state.commands)
             });
         }
         Turn::Aiming | Turn::BallInHand if human_to_shoot(&state) => {
             if state.rules.snooker.is_some() {
-                snooker_nominate(&ctx, &mut state);
+                snooker_windows::snooker_nominate(&ctx, &state.rules, &mut state.commands);
             }
         }
         Turn::Aiming | Turn::BallInHand | Turn::ShotInPlay => {}
@@ -475,153 +341,8 @@ pub fn game_windows(
     Ok(())
 }
 
-/// Snooker, a human to play: the colour (or free ball) to nominate (2.12, 3.12; without one
-/// the ball hit first is taken as nominated), and the concession of the frame (2.1(a)).
-fn snooker_nominate(ctx: &egui::Context, state: &mut GameParam) {
-    use billiards_rules::snooker::{BallOn, balls};
-    let Some(game) = &state.rules.snooker else {
-        return;
-    };
-    let next = game.next();
-    let colour_on = matches!(next.on, BallOn::Colour { .. });
-    let on = game.frame.balls_on(next.on);
-    // A free ball may be any ball; the colours are offered (a red as a free ball is the one
-    // hit first).
-    let choices: Vec<u8> = if colour_on || next.free_ball {
-        balls::COLOURS
-            .iter()
-            .copied()
-            .filter(|c| game.frame.on_table.contains(c))
-            .filter(|c| colour_on || !on.contains(c))
-            .collect()
-    } else {
-        Vec::new()
-    };
-    // Nothing to nominate on the break-off (issue 48: the window opened at the first stroke
-    // with nothing in it but the ball on, which the HUD says); later a collapsed "Frame"
-    // window keeps the concession at hand.
-    let first_stroke = game.log.strokes.is_empty();
-    if choices.is_empty() && first_stroke {
-        return;
-    }
-    let window = egui::Window::new(if choices.is_empty() {
-        "Frame"
-    } else {
-        "Nominate"
-    })
-    .id(egui::Id::new("snooker nominate"))
-    .collapsible(true)
-    .default_open(!choices.is_empty())
-    .resizable(false)
-    .anchor(egui::Align2::RIGHT_BOTTOM, [-10.0, -10.0]);
-    window.show(ctx, |ui| {
-        if choices.is_empty() {
-            ui.label(format!("ball on: {}", next.on));
-        } else {
-            ui.label(if colour_on {
-                "Nominate a colour (else the one hit first):"
-            } else {
-                "Free ball: nominate one (else the one hit first):"
-            });
-            ui.horizontal(|ui| {
-                for &c in &choices {
-                    let chosen = game.nominated == Some(c);
-                    if ui.selectable_label(chosen, balls::name(c)).clicked() {
-                        state.commands.write(TurnCommand::Nominate(c));
-                    }
-                }
-            });
-        }
-        if ui
-            .button("Concede the frame")
-            .on_hover_text("WPBSA 2.1(a): the opponent wins the frame")
-            .clicked()
-        {
-            state.commands.write(TurnCommand::Concede);
-        }
-    });
-}
-
-/// Snooker's verdict: the sentence, then the incoming player's choices or Continue.
-fn snooker_verdict(ctx: &egui::Context, window: egui::Window, state: &mut GameParam) {
-    let Some(game) = &state.rules.snooker else {
-        return;
-    };
-    window.show(ctx, |ui| {
-        if let Some(verdict) = &game.last {
-            ui.label(&verdict.text);
-        }
-        let next = game.next();
-        let striker = game.name(next.striker);
-        if !next.choices.is_empty() && game.computer(next.striker).is_some() {
-            ui.label(format!("{striker} (computer) chooses next"));
-        } else if !next.choices.is_empty() {
-            ui.label(format!("{striker} chooses:"));
-            ui.horizontal_wrapped(|ui| {
-                for &choice in &next.choices {
-                    if ui.button(snooker::choice_label(choice, game)).clicked() {
-                        state.commands.write(TurnCommand::SnookerChoose(choice));
-                    }
-                }
-            });
-        } else {
-            let hand = if next.in_hand {
-                ", with the cue ball in hand in the D"
-            } else {
-                ""
-            };
-            let free = if next.free_ball {
-                " (a free ball: any ball may be nominated)"
-            } else {
-                ""
-            };
-            ui.label(format!("{striker} plays next{hand}{free}"));
-            if game.has_human() && ui.button("Continue (Enter)").clicked() {
-                state.commands.write(TurnCommand::Continue);
-            }
-        }
-    });
-}
-
-/// The end of a snooker frame: the winner, the frames, the next frame or a new game.
-fn snooker_frame_over(ctx: &egui::Context, window: egui::Window, state: &mut GameParam) {
-    let Some(game) = &state.rules.snooker else {
-        return;
-    };
-    window.show(ctx, |ui| {
-        if let Some(end) = game.frame.end {
-            ui.label(snooker::end_text(game, end));
-        }
-        let f = &game.frame;
-        ui.label(format!(
-            "points {} {} - {} {}; highest breaks {} and {}",
-            game.name(billiards_rules::Seat::A),
-            f.scores[0],
-            f.scores[1],
-            game.name(billiards_rules::Seat::B),
-            f.highest_break[0],
-            f.highest_break[1]
-        ));
-        ui.label(format!(
-            "frames {} - {} (best of {})",
-            game.frames.frames[0], game.frames.frames[1], game.frames.best_of
-        ));
-        match game.frames.winner() {
-            Some(winner) => {
-                ui.label(format!("{} wins the match", game.name(winner)));
-                if ui.button("New game...").clicked() {
-                    state.commands.write(TurnCommand::OpenDialog);
-                }
-            }
-            None => {
-                if ui.button("Next frame").clicked() {
-                    state.commands.write(TurnCommand::NextRack);
-                }
-            }
-        }
-    });
-}
-
+/// The new-game dialog: the game, the table and rack, the players or free play's drill, then
+/// Start (asking first over a game in progress) or Cancel.
 fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
     let form = &mut *state.form;
     ui.horizontal(|ui| {
@@ -660,47 +381,7 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
                 }
             });
         }
-        for (k, (name, seat)) in form
-            .players
-            .iter_mut()
-            .zip(form.computer.iter_mut())
-            .enumerate()
-        {
-            ui.horizontal(|ui| {
-                ui.label(format!("Player {}:", k + 1));
-                ui.add(egui::TextEdit::singleline(name).desired_width(140.0));
-                // A list, not a row of choices: every level fits, however many there are.
-                let label = |seat: Option<Level>| match seat {
-                    None => "human".to_owned(),
-                    Some(level) => format!("computer, {level}"),
-                };
-                egui::ComboBox::from_id_salt(("seat", k))
-                    .selected_text(label(*seat))
-                    .width(160.0)
-                    .show_ui(ui, |ui| {
-                        ui.selectable_value(seat, None, label(None));
-                        for level in Level::ALL {
-                            ui.selectable_value(seat, Some(level), label(Some(level)));
-                        }
-                    });
-            });
-        }
-        ui.horizontal(|ui| {
-            ui.label("Race to");
-            ui.add(
-                egui::DragValue::new(&mut form.race_to)
-                    .update_while_editing(false)
-                    .range(1..=15),
-            );
-            if snooker {
-                ui.label(format!(
-                    "frames (best of {}); the break-off alternates",
-                    2 * form.race_to - 1
-                ));
-            } else {
-                ui.label("racks; player 1 breaks first, then the break alternates");
-            }
-        });
+        seat_rows(ui, form, snooker);
     }
     // A game with shots in it ends only when the player says so (as the rack buttons ask).
     let in_progress = state.solver.as_ref().is_some_and(|s| s.in_progress());
@@ -772,39 +453,5 @@ fn drill_row(ui: &mut egui::Ui, form: &mut NewGameForm, drills: &DrillList, best
     });
     if let Some(Some((_, Ok(drill)))) = form.drill.map(|k| drills.drills.get(k)) {
         ui.label(format!("{} ({} tries)", drill.description, drill.tries));
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    // Named from the crate root: a `super::` path reads as a use of `ui` in the layout test.
-    use crate::play::game::NewGameRequested;
-    use crate::ui::game::{NewGameForm, remember_new_game};
-    use bevy::prelude::*;
-    use billiards_ai::Level;
-    use billiards_rules::Game;
-
-    /// A match started from outside the dialog (`--game eight-ball`, hard against easy)
-    /// is what the dialog shows next, not its defaults (9-ball, a human against medium).
-    #[test]
-    fn the_dialog_opens_on_the_match_in_play() {
-        let mut app = App::new();
-        app.add_message::<NewGameRequested>()
-            .init_resource::<NewGameForm>()
-            .add_systems(Update, remember_new_game);
-        app.world_mut().write_message(NewGameRequested {
-            game: Game::EightBall.into(),
-            players: ["Ann".to_owned(), "Bob".to_owned()],
-            race_to: 5,
-            seed: 1,
-            computer: [Some(Level::Hard), Some(Level::Easy)],
-            setup: crate::settings::TableSetup::default(),
-        });
-        app.update();
-        let form = app.world().resource::<NewGameForm>();
-        assert_eq!(form.game, Game::EightBall.into());
-        assert_eq!(form.players, ["Ann".to_owned(), "Bob".to_owned()]);
-        assert_eq!(form.race_to, 5);
-        assert_eq!(form.computer, [Some(Level::Hard), Some(Level::Easy)]);
     }
 }

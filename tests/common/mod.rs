@@ -1,5 +1,7 @@
 //! What the headless app tests share.
 
+pub mod replay;
+
 use std::time::Duration;
 
 use bevy::{app::Plugins, prelude::*, time::TimeUpdateStrategy};

@@ -1,5 +1,5 @@
 //! Break statistics: one break of a seeded 9-ball or 8-ball rack, judged by the rules, and
-//! the counts over many. What `examples/break_stats.rs` prints and `billiards-cli breaks`
+//! the counts over many. What `examples/break_stats/` prints and `billiards-cli breaks`
 //! computes (per game, table, rack, speed and cue position, sharded over processes).
 //!
 //! A break draws, in this order, from the random stream it is given: the rack's seed, the

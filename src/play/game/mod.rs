@@ -18,6 +18,8 @@
 //! [`table_plugin`] adds what needs a window: the legal area of the cue ball in hand, the
 //! pockets while calling and the called pocket (gizmos), and the click on a pocket.
 
+mod call;
+mod commands;
 mod flow;
 pub mod snooker;
 mod state;
@@ -27,7 +29,8 @@ mod turn;
 pub use state::*;
 pub use table_input::pocket_near;
 
-use flow::{apply_commands, follow_rules, judge_shot, start_game_at_launch};
+use commands::{apply_commands, start_game_at_launch};
+use flow::{follow_rules, judge_shot};
 use table_input::{click_pocket, confirm_key, draw_rules, lock_aim};
 
 use bevy::prelude::*;
