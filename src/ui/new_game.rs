@@ -26,7 +26,8 @@ pub struct NewGameForm {
     pub setup: Option<TableSetup>,
     /// Start was pressed over a game in progress: the dialog asks before ending it.
     pub confirm: bool,
-    /// In free play, the drill to start (its place in the [`DrillList`]).
+    /// In free play, the drill to start (its place in the
+    /// [`DrillList`](crate::practice::drill_list::DrillList)).
     pub drill: Option<usize>,
 }
 

@@ -113,6 +113,7 @@ pub fn ball_on_text(rack: &GameState, next: &NextShot) -> String {
         (_, []) => "none".to_owned(),
         (_, [one]) => format!("the {one}"),
         (Game::EightBall, _) if rack.group(next.shooter).is_none() => {
+            // The next line says "open table" (WPA 3.5); not twice.
             "any ball but the 8".to_owned()
         }
         (Game::EightBall, _) => format!(

@@ -283,7 +283,10 @@ impl GameInPlay {
         };
         lines.push(doing);
         if rack.over.is_none() && !next.break_shot {
-            lines.push(format!("ball on: {}", ball_on_text(rack, next)));
+            lines.push(format!(
+                "ball on: {}",
+                billiards_rules::pool::ball_on_text(rack, next)
+            ));
         }
         if play.game == Game::EightBall {
             lines.push(match rack.group(Seat::A) {
@@ -331,22 +334,6 @@ impl GameInPlay {
             lines.push(format!("last foul: {foul}"));
         }
         lines
-    }
-}
-
-fn ball_on_text(rack: &GameState, next: &NextShot) -> String {
-    match (rack.game, next.legal_first.as_slice()) {
-        (_, []) => "none".to_owned(),
-        (_, [one]) => format!("the {one}"),
-        (Game::EightBall, _) if rack.group(next.shooter).is_none() => {
-            // The next line says "open table" (WPA 3.5); not twice.
-            "any ball but the 8".to_owned()
-        }
-        (Game::EightBall, _) => format!(
-            "the {}",
-            rack.group(next.shooter).map_or("group", Group::name)
-        ),
-        (_, many) => format!("any of {many:?}"),
     }
 }
 
