@@ -19,7 +19,7 @@ use crate::candidates::{Layout, direct_aims, rail_aims};
 use crate::level::Level;
 use crate::noise::{Noise, stream};
 use crate::rounds::{Rounds, Sampler, Stats};
-use billiards_physics::{Event, Params, PocketShape, Shot, Simulation, TipOffset, Vec2};
+use billiards_physics::{Event, PocketShape, Shot, Simulation, TipOffset, Vec2};
 use billiards_rules::{
     CueBallPlace, Declaration, GameRules, Judgement, Need, Seat, StrokeRecord, Turn,
 };
@@ -113,16 +113,11 @@ pub fn stroke_value(judgement: &Judgement, before: [u32; 2], after: [u32; 2]) ->
     turn + 0.05 * lead
 }
 
-/// The balls on the table of `sim`, by number.
-pub fn layout_of(sim: &Simulation) -> Vec<(u8, Vec2)> {
-    sim.balls()
-        .zip(sim.numbers())
-        .filter(|(b, _)| b.motion.on_table())
-        .map(|(b, &n)| (n, b.position))
-        .collect()
-}
+/// The balls on the table of a simulation, by number (the drills' `resting`).
+pub use billiards_rules::drill::resting as layout_of;
 
-fn id_of(sim: &Simulation, number: u8) -> Option<usize> {
+/// The solver's id of ball `number`.
+pub(crate) fn id_of(sim: &Simulation, number: u8) -> Option<usize> {
     sim.numbers().iter().position(|&n| n == number)
 }
 
@@ -231,7 +226,12 @@ fn candidates(
                 out.push(Candidate {
                     place,
                     shot: Shot::new(angle, speed),
-                    declared: declare(n, billiards_physics::Pocket::FootLeft).without_pocket(),
+                    // No call on an opening stroke (WPA 2.3, 9.3); a nomination stays.
+                    declared: if turn.declare.nominate.contains(&n) {
+                        Declaration::Nominate { ball: n }
+                    } else {
+                        Declaration::None
+                    },
                 });
             }
         }
@@ -283,20 +283,6 @@ fn candidates(
     out
 }
 
-trait WithoutPocket {
-    fn without_pocket(self) -> Self;
-}
-
-impl WithoutPocket for Declaration {
-    /// An opening stroke declares nothing (WPA: no call on the break).
-    fn without_pocket(self) -> Self {
-        match self {
-            Declaration::Pocket { .. } => Declaration::None,
-            d => d,
-        }
-    }
-}
-
 /// The noisy samples of a candidate: executed under the planning noise and judged by a
 /// copy of the game ([`crate::rounds::Sampler`]).
 struct Generic<'a> {
@@ -304,7 +290,6 @@ struct Generic<'a> {
     sim: &'a Simulation,
     cue: u8,
     noise: Noise,
-    params: Params,
     seed: u64,
 }
 
@@ -316,7 +301,7 @@ impl Sampler for Generic<'_> {
 
     fn sample(&self, c: &Candidate, id: u64, k: u64, _: &mut ()) -> Stats {
         let mut rng = stream(self.seed, id, k);
-        let shot = self.noise.apply(c.shot, &self.params, &mut rng);
+        let shot = self.noise.apply(c.shot, self.sim.params(), &mut rng);
         let value = try_stroke(self.game, self.sim, self.cue, Candidate { shot, ..*c });
         // A stroke the solver or the rules refuse counts as a foul.
         let v = value.unwrap_or(-1.0);
@@ -355,7 +340,6 @@ fn best_of(
         sim,
         cue,
         noise: level.planning_noise(),
-        params: *sim.params(),
         seed,
     };
     let mut rounds: Rounds<Candidate> = Rounds::default();
@@ -375,10 +359,10 @@ fn best_of(
 /// the accepted points of a grid nearest the legal balls.
 fn places(game: &dyn GameRules, sim: &Simulation, turn: &Turn, count: usize) -> Vec<Vec2> {
     let layout = layout_of(sim);
-    let others: Vec<Vec2> = layout
+    let others: Vec<(u8, Vec2)> = layout
         .iter()
-        .filter(|&&(n, _)| n != turn.cue_ball)
-        .map(|&(_, p)| p)
+        .copied()
+        .filter(|&(n, _)| n != turn.cue_ball)
         .collect();
     let targets: Vec<Vec2> = layout
         .iter()
@@ -399,7 +383,7 @@ fn places(game: &dyn GameRules, sim: &Simulation, turn: &Turn, count: usize) -> 
             }
         }
     }
-    // Nearest a legal ball, but not closer than 15 cm (room to cue).
+    // About 30 cm from a legal ball: near enough to aim well, far enough to cue.
     let cost = |p: Vec2| {
         targets
             .iter()

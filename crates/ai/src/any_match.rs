@@ -38,10 +38,7 @@ fn solver(
 }
 
 fn id_of(sim: &Simulation, n: u8) -> Result<usize, String> {
-    sim.numbers()
-        .iter()
-        .position(|&m| m == n)
-        .ok_or_else(|| format!("no ball {n} on this table"))
+    crate::any_game::id_of(sim, n).ok_or_else(|| format!("no ball {n} on this table"))
 }
 
 fn put(sim: &mut Simulation, balls: &[(u8, Vec2)]) -> Result<(), String> {

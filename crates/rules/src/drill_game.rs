@@ -12,7 +12,7 @@ use crate::interface::{
 use crate::shot::CUE;
 use crate::state::GameState;
 use crate::turn::{Call, Seat};
-use billiards_physics::{BallSetup, BallSpec, EventKind, Table, Vec2};
+use billiards_physics::{BallSetup, BallSpec, Table, Vec2};
 
 /// A drill session in play.
 #[derive(Clone, Debug, PartialEq)]
@@ -72,27 +72,6 @@ impl DrillGame {
             match_over: self.session_over(),
         })
     }
-
-    /// The shot's record for the drill's judge: after the strike event when the events
-    /// hold one, else every event (a lean solver's).
-    fn shot_of(stroke: &StrokeRecord<'_>) -> DrillShot {
-        let rest = stroke.after.to_vec();
-        if stroke
-            .events
-            .iter()
-            .any(|e| matches!(e.kind, EventKind::Strike { .. }))
-        {
-            return DrillShot::from_events(stroke.events, stroke.numbers, rest);
-        }
-        let mut shot = DrillShot {
-            rest,
-            ..DrillShot::default()
-        };
-        for e in stroke.events {
-            shot.record(&e.kind, stroke.numbers);
-        }
-        shot
-    }
 }
 
 impl GameRules for DrillGame {
@@ -151,7 +130,7 @@ impl GameRules for DrillGame {
         Err(RulesError(format!("a drill offers no option {index}")))
     }
 
-    fn check_hand(&self, _at: Vec2, _others: &[Vec2]) -> Result<(), RulesError> {
+    fn check_hand(&self, _at: Vec2, _others: &[(u8, Vec2)]) -> Result<(), RulesError> {
         Err(RulesError(
             "a drill is played from its position: no ball in hand".to_owned(),
         ))
@@ -171,7 +150,8 @@ impl GameRules for DrillGame {
             Declaration::Pocket { ball, pocket } => Call::Ball { ball, pocket },
             other => return Err(RulesError(format!("a drill takes no {other:?}"))),
         };
-        let shot = Self::shot_of(stroke);
+        stroke.check_strike()?;
+        let shot = DrillShot::from_events(stroke.events, stroke.numbers, stroke.after.to_vec());
         // The position's rules keep the ball on for the next shot of a run-out; a foul
         // there ends the visit, which the drill's judge reads from the shots.
         let verdict = self.state.play(&shot.summary, call).ok();

@@ -227,14 +227,12 @@ impl GameRules for PoolMatch {
         })
     }
 
-    fn check_hand(&self, at: Vec2, others: &[Vec2]) -> Result<(), RulesError> {
-        // Numbers are only used to name an overlapped ball; the interface gives positions.
-        let others: Vec<(u8, Vec2)> = others.iter().map(|&p| (u8::MAX, p)).collect();
+    fn check_hand(&self, at: Vec2, others: &[(u8, Vec2)]) -> Result<(), RulesError> {
         check_place(
             &self.table,
             self.ball.radius,
             at,
-            &others,
+            others,
             self.next().cue_ball,
         )
         .map_err(RulesError::from_display)
@@ -242,7 +240,7 @@ impl GameRules for PoolMatch {
 
     fn judge(&mut self, stroke: &StrokeRecord<'_>) -> Result<Judgement, RulesError> {
         let call = call_of(stroke.declared)?;
-        let summary = stroke.summary();
+        let summary = stroke.summary()?;
         let verdict = self
             .play
             .play(&summary, call)

@@ -61,10 +61,9 @@ fn put(sim: &mut Simulation, balls: &[(u8, Vec2)]) {
 
 /// A place for the cue ball in hand that the rules accept, scanning the table.
 fn hand_place(game: &dyn GameRules, sim: &Simulation, cue: u8) -> Vec2 {
-    let others: Vec<Vec2> = layout_of(sim)
+    let others: Vec<(u8, Vec2)> = layout_of(sim)
         .into_iter()
         .filter(|&(n, _)| n != cue)
-        .map(|(_, p)| p)
         .collect();
     let table = game.table();
     let (nx, ny) = (40, 20);
@@ -110,10 +109,9 @@ fn play(game: &mut dyn GameRules, strokes: usize, seed: u64) -> Run {
         let cue = id_of(&sim, turn.cue_ball);
         if let CueBallPlace::InHand { .. } = turn.place {
             let here = sim.ball(cue);
-            let others: Vec<Vec2> = layout_of(&sim)
+            let others: Vec<(u8, Vec2)> = layout_of(&sim)
                 .into_iter()
                 .filter(|&(n, _)| n != turn.cue_ball)
-                .map(|(_, p)| p)
                 .collect();
             if !(here.motion.on_table() && game.check_hand(here.position, &others).is_ok()) {
                 let at = hand_place(game, &sim, turn.cue_ball);
@@ -374,4 +372,23 @@ fn snooker_concession_ends_the_frame_and_the_next_frame_changes_breaker() {
         .start(&MatchSettings::new(players(), 1, 0))
         .unwrap();
     assert!(pool.concede().unwrap_err().to_string().contains("8-ball"));
+}
+
+/// Events without their strike would read as a stroke that hit nothing: every game refuses
+/// them rather than judge a foul that never happened.
+#[test]
+fn a_stroke_without_its_strike_event_is_refused() {
+    for entry in GAMES {
+        let mut game = entry.start(&MatchSettings::new(players(), 1, 0)).unwrap();
+        let sim = solver(game.as_ref(), &game.layout().unwrap());
+        let layout = layout_of(&sim);
+        let r = game.judge(&StrokeRecord {
+            events: &[],
+            numbers: sim.numbers(),
+            before: &layout,
+            after: &layout,
+            declared: Declaration::None,
+        });
+        assert!(r.is_err(), "{}: judged without a strike", entry.label);
+    }
 }

@@ -180,9 +180,9 @@ pub enum Setup {
 /// One stroke as played, for [`GameRules::judge`].
 #[derive(Clone, Copy, Debug)]
 pub struct StrokeRecord<'a> {
-    /// The solver's events of the stroke: from its strike to rest (a history's slice
-    /// starting with the strike event, or the events a lean solver stepped after the
-    /// strike, which has none; see [`StrokeRecord::summary`]).
+    /// The solver's events of the stroke, from its strike event to rest (a history's
+    /// slice: a lean solver's steps hold no strike event and are refused,
+    /// [`StrokeRecord::check_strike`]).
     pub events: &'a [Event],
     /// The number painted on each ball, by the solver's ball id.
     pub numbers: &'a [u8],
@@ -195,22 +195,26 @@ pub struct StrokeRecord<'a> {
 }
 
 impl StrokeRecord<'_> {
-    /// The stroke's facts in the rules' terms ([`ShotSummary`]): read after the strike
-    /// event when the events hold one ([`summarise`]), else every event (a lean solver's
-    /// [`billiards_physics::Simulation::step_event`] yields none for the strike).
-    pub fn summary(&self) -> ShotSummary {
+    /// Refuses events without a strike: judged, they would read as a stroke that did
+    /// nothing (a silent "no ball hit").
+    pub fn check_strike(&self) -> Result<(), RulesError> {
         if self
             .events
             .iter()
             .any(|e| matches!(e.kind, EventKind::Strike { .. }))
         {
-            return summarise(self.events, self.numbers);
+            Ok(())
+        } else {
+            Err(RulesError(
+                "the stroke's events hold no strike: record them from the strike on".to_owned(),
+            ))
         }
-        let mut s = ShotSummary::default();
-        for e in self.events {
-            s.record(&e.kind, self.numbers);
-        }
-        s
+    }
+
+    /// The stroke's facts in the rules' terms ([`ShotSummary`], read after the strike).
+    pub fn summary(&self) -> Result<ShotSummary, RulesError> {
+        self.check_strike()?;
+        Ok(summarise(self.events, self.numbers))
     }
 }
 
@@ -280,8 +284,8 @@ pub trait GameRules: std::fmt::Debug + Send + Sync {
     /// (a spotted ball must miss them); returns how the table must be set.
     fn choose(&mut self, index: usize, layout: &[(u8, Vec2)]) -> Result<Setup, RulesError>;
     /// Whether the cue ball may be put at `at` by hand now, with the other balls at
-    /// `others`: `Err` says why not.
-    fn check_hand(&self, at: Vec2, others: &[Vec2]) -> Result<(), RulesError>;
+    /// `others` (number and centre): `Err` says why not.
+    fn check_hand(&self, at: Vec2, others: &[(u8, Vec2)]) -> Result<(), RulesError>;
     /// Judges one stroke played under [`GameRules::turn`] and moves the game on.
     fn judge(&mut self, stroke: &StrokeRecord<'_>) -> Result<Judgement, RulesError>;
     /// The match's score in one line ("9-ball, race to 3: Ann 1 - 0 Bob").

@@ -7,12 +7,13 @@ use super::frame::{Frame, SnookerError};
 use super::judge::Stroke;
 use super::matches::SnookerMatch;
 use super::verdict::{BallOn, Choice, NextShot};
+use crate::hand::check_place;
 use crate::interface::{
     CueBallPlace, Declaration, Declarations, GameEnd, GameRules, HandRegion, Judgement, RulesError,
     Setup, StrokeRecord, Turn,
 };
+use crate::turn::CueBall;
 use crate::turn::Seat;
-use billiards_physics::sim::PLACEMENT_TOLERANCE;
 use billiards_physics::snooker::{default_cue_position, layout};
 use billiards_physics::{BallSetup, BallSpec, SnookerMarks, Table, Vec2};
 
@@ -182,24 +183,21 @@ impl GameRules for SnookerGame {
         })
     }
 
-    fn check_hand(&self, at: Vec2, others: &[Vec2]) -> Result<(), RulesError> {
-        let r = self.ball.radius;
+    fn check_hand(&self, at: Vec2, others: &[(u8, Vec2)]) -> Result<(), RulesError> {
         if !(at.is_finite() && self.frame.marks.in_d(at)) {
             return Err(RulesError(
                 "the cue ball in hand must be placed in the D (3.4)".to_owned(),
             ));
         }
-        let bounds = self.frame.table.centre_bounds(r);
-        if at.x.abs() > bounds.x || at.y.abs() > bounds.y {
-            return Err(RulesError("the cue ball must be on the table".to_owned()));
-        }
-        if others
-            .iter()
-            .any(|&p| (p - at).length() < 2.0 * r - PLACEMENT_TOLERANCE)
-        {
-            return Err(RulesError("the cue ball would overlap a ball".to_owned()));
-        }
-        Ok(())
+        // Inside the D, the rest is pool's placement check: on the cloth, clear of balls.
+        check_place(
+            &self.frame.table,
+            self.ball.radius,
+            at,
+            others,
+            CueBall::InHandAnywhere,
+        )
+        .map_err(RulesError::from_display)
     }
 
     fn judge(&mut self, stroke: &StrokeRecord<'_>) -> Result<Judgement, RulesError> {
@@ -212,7 +210,7 @@ impl GameRules for SnookerGame {
                 )));
             }
         };
-        let summary = stroke.summary();
+        let summary = stroke.summary()?;
         let verdict = self
             .frame
             .play(Stroke {

@@ -188,7 +188,7 @@ impl GameRules for ThreeCushionMatch {
         }
     }
 
-    fn check_hand(&self, _at: Vec2, _others: &[Vec2]) -> Result<(), RulesError> {
+    fn check_hand(&self, _at: Vec2, _others: &[(u8, Vec2)]) -> Result<(), RulesError> {
         Err(RulesError(
             "three-cushion has no ball in hand: the balls are played as they lie".to_owned(),
         ))
