@@ -90,7 +90,7 @@ pub(crate) fn simulate(id: &str, a: &SimulateArgs) -> Result<(), String> {
 struct Tally {
     games: u64,
     wins: [u64; 2],
-    strokes: [usize; 2],
+    strokes: usize,
     fouls: [usize; 2],
     undecided: u64,
 }
@@ -149,7 +149,7 @@ pub(crate) fn tournament(id: &str, a: &TournamentArgs) -> Result<(), (String, bo
         for seat in 0..2 {
             t.fouls[player(seat)] += run.fouls[seat];
         }
-        t.strokes[0] += run.strokes;
+        t.strokes += run.strokes;
         println!("game {g}: {}", run.score_line);
     }
     print!("{}", report(entry, &levels, length, a.seed, &t));
@@ -168,7 +168,7 @@ fn report(entry: &GameEntry, levels: &[Level; 2], length: u32, seed: u64, t: &Ta
         levels[0].name(),
         levels[1].name(),
         t.games,
-        t.strokes[0]
+        t.strokes
     );
     out += "player    wins   win % 95 % interval  fouls\n";
     for (k, level) in levels.iter().enumerate() {

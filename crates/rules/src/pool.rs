@@ -7,7 +7,7 @@ use crate::foul::Group;
 use crate::hand::check_place;
 use crate::interface::{
     CueBallPlace, Declaration, Declarations, GameEnd, GameRules, HandRegion, Judgement, Need,
-    RulesError, Setup, StrokeRecord, Turn, positions_except,
+    RulesError, Setup, StrokeRecord, Turn,
 };
 use crate::race::Match;
 use crate::racks::RackStyle;
@@ -255,7 +255,12 @@ impl GameRules for PoolMatch {
         if let Some(next) = &verdict.next {
             put = self.spot_places(&next.spot, stroke.after)?;
             if next.cue_ball == CueBall::Respot {
-                let mut others = positions_except(stroke.after, CUE);
+                let mut others: Vec<Vec2> = stroke
+                    .after
+                    .iter()
+                    .filter(|&&(n, _)| n != CUE)
+                    .map(|&(_, p)| p)
+                    .collect();
                 others.extend(put.iter().map(|&(_, p)| p));
                 let at = head_string_spot(&self.table, self.ball.radius, &others)
                     .ok_or_else(|| RulesError("no free place on the head string".to_owned()))?;

@@ -315,12 +315,3 @@ impl Clone for Box<dyn GameRules> {
         self.boxed_clone()
     }
 }
-
-/// The balls of a layout as positions, leaving out `skip` (for spotting and placing).
-pub fn positions_except(layout: &[(u8, Vec2)], skip: u8) -> Vec<Vec2> {
-    layout
-        .iter()
-        .filter(|&&(n, _)| n != skip)
-        .map(|&(_, p)| p)
-        .collect()
-}
