@@ -10,10 +10,10 @@ use std::{
 };
 
 use bevy::{math::DVec2, prelude::*, window::RequestRedraw};
-use billiards_ai::{AiError, Decision, Level, SnookerDecision};
+use billiards_ai::{AiError, Decision, Level, SnookerDecision, any_game::Move};
 use billiards_physics::{Shot, Vec2};
 use billiards_rules::snooker::Frame;
-use billiards_rules::{Call, GameState};
+use billiards_rules::{Call, Declaration, GameRules, GameState};
 
 pub use super::decided::{Decided, describe};
 use crate::{
@@ -90,6 +90,8 @@ pub type TurnKey = (u64, usize, usize);
 enum Question {
     Pool(GameState),
     Snooker(Box<Frame>),
+    /// A game behind the one interface: the shared search ([`billiards_ai::decide_any`]).
+    Any(Box<dyn GameRules>),
 }
 
 #[derive(Debug)]
@@ -100,7 +102,7 @@ enum Task {
         key: TurnKey,
         seed: u64,
         level: Level,
-        handle: JoinHandle<Result<Decided, AiError>>,
+        handle: JoinHandle<Result<Decided, String>>,
     },
     Showing {
         key: TurnKey,
@@ -141,6 +143,27 @@ struct TurnView {
 }
 
 fn turn_view(rules: &Rules) -> Option<TurnView> {
+    if let Some(game) = &rules.live {
+        let turn = game.rules.turn();
+        return Some(TurnView {
+            key: game.turn_key(),
+            name: game.name(turn.striker).to_owned(),
+            level: game.computer(turn.striker),
+            over: game.rules.end().is_some(),
+            choosing: !turn.choices.is_empty(),
+            has_human: game.has_human(),
+            hand: match turn.place {
+                billiards_rules::CueBallPlace::InHand { region } => Some(match region {
+                    billiards_rules::HandRegion::Anywhere => HandRule::Anywhere,
+                    billiards_rules::HandRegion::BehindHeadString => HandRule::BehindHeadString,
+                    billiards_rules::HandRegion::D => HandRule::InD,
+                }),
+                _ => None,
+            },
+            call: Call::None,
+            question: Question::Any(game.rules.boxed_clone()),
+        });
+    }
     if let Some(game) = &rules.snooker {
         let next = game.next();
         return Some(TurnView {
@@ -196,9 +219,14 @@ fn think(question: Question, sim: &Solver, level: Level, key: TurnKey) -> Task {
     let sim = sim.simulation().clone();
     let seed = decision_seed(key);
     let handle = std::thread::spawn(move || match question {
-        Question::Pool(state) => billiards_ai::decide(&state, &sim, level, seed).map(Decided::Pool),
-        Question::Snooker(frame) => {
-            billiards_ai::decide_snooker(&frame, &sim, level, seed).map(Decided::Snooker)
+        Question::Pool(state) => billiards_ai::decide(&state, &sim, level, seed)
+            .map(Decided::Pool)
+            .map_err(|e: AiError| e.to_string()),
+        Question::Snooker(frame) => billiards_ai::decide_snooker(&frame, &sim, level, seed)
+            .map(Decided::Snooker)
+            .map_err(|e: AiError| e.to_string()),
+        Question::Any(game) => {
+            billiards_ai::any_game::decide_any(game.as_ref(), &sim, level, seed).map(Decided::Any)
         }
     });
     Task::Thinking {
@@ -334,6 +362,18 @@ fn play_computer_turn(
                     shots.write(ShotRequested::from(plan.executed(noise, params, seed)));
                     computer.fired = Some((key, Instant::now()));
                 }
+                Decided::Any(Move::Choose(index)) => {
+                    turn_commands.write(TurnCommand::ChooseOption(index));
+                }
+                Decided::Any(Move::Strike(stroke)) => {
+                    let mut rng = billiards_ai::noise::stream(seed, u64::MAX, 0);
+                    shots.write(ShotRequested::from(noise.apply(
+                        stroke.shot,
+                        params,
+                        &mut rng,
+                    )));
+                    computer.fired = Some((key, Instant::now()));
+                }
             }
         }
         task => computer.turn = task,
@@ -341,11 +381,10 @@ fn play_computer_turn(
 }
 
 /// A finished decision thread's answer; a panic is said as such, not as a rules error.
-fn outcome(handle: JoinHandle<Result<Decided, AiError>>) -> Result<Decided, String> {
+fn outcome(handle: JoinHandle<Result<Decided, String>>) -> Result<Decided, String> {
     handle
         .join()
         .map_err(|_| "the decision thread panicked".to_owned())?
-        .map_err(|e| e.to_string())
 }
 
 /// What goes with a decided shot before it is struck: pool's call (when it differs from the
@@ -359,6 +398,9 @@ fn announce(decision: &Decided, call: Call, commands: &mut MessageWriter<TurnCom
             if let Some(n) = plan.nominated {
                 commands.write(TurnCommand::Nominate(n));
             }
+        }
+        Decided::Any(Move::Strike(stroke)) if stroke.declared != Declaration::None => {
+            commands.write(TurnCommand::Declare(stroke.declared));
         }
         _ => {}
     }
@@ -374,7 +416,9 @@ fn show_aim(
     cue_ball: &mut Query<(&Ball, &mut BallMotion), Without<Pocketed>>,
 ) {
     if let Some((at, rule)) = place
-        && let Some((_, mut motion)) = cue_ball.iter_mut().find(|(b, _)| b.number == 0)
+        && let Some((_, mut motion)) = cue_ball
+            .iter_mut()
+            .find(|(b, _)| b.number == solver.cue_number())
         && let Err(error) = place_ball_in_hand(solver, spec, &mut motion, to_dvec(at), rule)
     {
         warn!("computer's cue ball placement refused: {error}");

@@ -137,12 +137,25 @@ fn retry_undone_shot(mut undone: MessageReader<ShotUndone>, mut shot: ResMut<Sho
     }
 }
 
-/// The cue ball's table position, if it is on the table.
-fn cue_ball_position(balls: &Query<(&Ball, &BallMotion), Without<Pocketed>>) -> Option<DVec2> {
+/// The cue ball's table position, if it is on the table: the ball the next stroke strikes
+/// (`cue`, [`Solver::cue_number`]).
+fn cue_ball_position(
+    balls: &Query<(&Ball, &BallMotion), Without<Pocketed>>,
+    cue: u8,
+) -> Option<DVec2> {
     balls
         .iter()
-        .find(|(ball, _)| ball.number == 0)
+        .find(|(ball, _)| ball.number == cue)
         .map(|(_, motion)| motion.position)
+}
+
+/// The cue stick's transform and visibility.
+type CueStickQuery<'w, 's> =
+    Single<'w, 's, (&'static mut Transform, &'static mut Visibility), With<CueStick>>;
+
+/// The number of the ball the next stroke strikes: the solver's, 0 without one.
+fn cue_number(solver: &Option<Res<Solver>>) -> u8 {
+    solver.as_ref().map_or(0, |s| s.cue_number())
 }
 
 /// The mouse, the modifier keys and what the pointer is over.
@@ -208,6 +221,7 @@ fn aim_with_mouse(
     if !status.at_rest {
         return;
     }
+    let cue = cue_number(&solver);
     if let Some(rule) = status.ball_in_hand
         && let Some(solver) = solver
     {
@@ -219,7 +233,7 @@ fn aim_with_mouse(
             && let Some(target) = target
             && let Some(cue_ball) = balls
                 .iter()
-                .find(|(ball, _)| ball.number == 0)
+                .find(|(ball, _)| ball.number == cue)
                 .map(|(_, motion)| motion.position)
             && target.distance(cue_ball) < 1.5 * spec.ball_radius
         {
@@ -227,7 +241,7 @@ fn aim_with_mouse(
         }
         if (*dragging_ball || ctrl) && input.left_down() {
             if let Some(target) = target
-                && let Some((_, mut motion)) = balls.iter_mut().find(|(ball, _)| ball.number == 0)
+                && let Some((_, mut motion)) = balls.iter_mut().find(|(ball, _)| ball.number == cue)
             {
                 // A refused spot keeps the ball where it last was legal.
                 let placed = place_ball_in_hand(&solver, &spec, &mut motion, target, rule);
@@ -238,7 +252,7 @@ fn aim_with_mouse(
     }
     let Some(cue_ball) = balls
         .iter()
-        .find(|(ball, _)| ball.number == 0)
+        .find(|(ball, _)| ball.number == cue)
         .map(|(_, motion)| motion.position)
     else {
         return;
@@ -328,11 +342,13 @@ fn place_cue(
     shot: Res<ShotSettings>,
     status: Res<SimStatus>,
     balls: Query<(&Ball, &BallMotion), Without<Pocketed>>,
-    cue: Single<(&mut Transform, &mut Visibility), With<CueStick>>,
+    (cue, solver): (CueStickQuery, Option<Res<Solver>>),
     mut redraw: MessageWriter<RequestRedraw>,
 ) {
     let (mut transform, mut visibility) = cue.into_inner();
-    let cue_ball = cue_ball_position(&balls).filter(|_| status.at_rest && !referee.rack_over);
+    let number = cue_number(&solver);
+    let cue_ball =
+        cue_ball_position(&balls, number).filter(|_| status.at_rest && !referee.rack_over);
     let wanted_visibility = if cue_ball.is_some() {
         Visibility::Inherited
     } else {
@@ -347,7 +363,7 @@ fn place_cue(
     // Raised over any ball behind the cue ball, as a player jacks up the butt.
     let others = balls
         .iter()
-        .filter(|(b, _)| b.number != 0)
+        .filter(|(b, _)| b.number != number)
         .map(|(_, m)| m.position);
     let elevation = cue_elevation(
         cue_ball,
@@ -412,7 +428,7 @@ fn draw_vectors(
     status: Res<SimStatus>,
     balls: Query<(&Ball, &BallMotion), Without<Pocketed>>,
     mode: Res<State<GameMode>>,
-    mut gizmos: Gizmos,
+    (mut gizmos, solver): (Gizmos, Option<Res<Solver>>),
 ) {
     if !view.show_vectors {
         return;
@@ -424,7 +440,7 @@ fn draw_vectors(
     let lift = Vec3::Y * (2.05 * spec.ball_radius as f32);
     if live
         && status.at_rest
-        && let Some(cue_ball) = cue_ball_position(&balls)
+        && let Some(cue_ball) = cue_ball_position(&balls, cue_number(&solver))
     {
         let start = spec.ball_world_position(cue_ball) + lift;
         let end = start + table_dir_to_world(shot.direction()) * METRES_PER_MPS * shot.power as f32;

@@ -3,7 +3,7 @@
 //! them.
 
 use bevy::prelude::*;
-use billiards_ai::{Decision, ShotKind, SnookerDecision};
+use billiards_ai::{Decision, ShotKind, SnookerDecision, any_game::Move};
 use billiards_physics::{Cushion, Shot, Vec2};
 use billiards_rules::snooker::{Choice as SnookerChoice, balls::name as snooker_name};
 use billiards_rules::{Call, pocket_name};
@@ -17,6 +17,9 @@ pub enum Decided {
     Pool(Decision),
     /// Snooker's ([`billiards_ai::decide_snooker`]).
     Snooker(SnookerDecision),
+    /// The shared search's, for a game behind the interface
+    /// ([`billiards_ai::any_game::decide_any`]).
+    Any(Move),
 }
 
 impl Decided {
@@ -25,8 +28,10 @@ impl Decided {
         match self {
             Decided::Pool(Decision::Shoot(plan)) => Some((plan.shot, plan.place)),
             Decided::Snooker(SnookerDecision::Shoot(plan)) => Some((plan.shot, plan.place)),
+            Decided::Any(Move::Strike(stroke)) => Some((stroke.shot, stroke.place)),
             Decided::Pool(Decision::Choose { .. })
-            | Decided::Snooker(SnookerDecision::Choose { .. }) => None,
+            | Decided::Snooker(SnookerDecision::Choose { .. })
+            | Decided::Any(Move::Choose(_)) => None,
         }
     }
 }
@@ -35,6 +40,13 @@ impl Decided {
 pub fn describe(decision: &Decided, view: &OrbitCamera) -> String {
     match decision {
         Decided::Pool(decision) => describe_pool(decision, view),
+        Decided::Any(Move::Choose(index)) => format!("option {}", index + 1),
+        Decided::Any(Move::Strike(stroke)) => format!(
+            "a stroke at {:.1} degrees, {:.1} m/s (worth {:+.2})",
+            stroke.shot.angle.to_degrees().rem_euclid(360.0),
+            stroke.shot.speed,
+            stroke.value
+        ),
         Decided::Snooker(SnookerDecision::Choose { choice, estimate }) => {
             format!(
                 "{} (worth {estimate:+.1} points)",

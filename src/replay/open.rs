@@ -81,33 +81,18 @@ impl OpenRecording {
     pub fn game_line(&self, t: f64) -> Option<String> {
         match self.game.as_ref()? {
             Err(error) => Some(format!("game log: {error}")),
-            Ok(RulesLog::Pool(log)) => {
-                let k = self.shot_at(t);
-                let text = log.shot_text(k)?;
-                Some(format!("shot {k}, {text}"))
-            }
-            Ok(RulesLog::Snooker(log)) => {
-                let k = self.shot_at(t);
-                let text = &log.strokes.get(k.checked_sub(1)?)?.verdict.text;
-                Some(format!("stroke {k}: {text}"))
-            }
+            Ok(log) => log.line(self.shot_at(t)),
         }
     }
 
     /// Re-judges the recorded shots with the rules and compares the logged verdicts
-    /// ([`billiards_rules::GameLog::check`]): the number of verdicts confirmed, `None` for free play.
+    /// ([`RulesLog::check`]): the number of verdicts confirmed, `None` for free play.
     pub fn check_verdicts(&self) -> Option<Result<usize, String>> {
         let log = match self.game.as_ref()? {
             Ok(log) => log,
             Err(error) => return Some(Err(error.clone())),
         };
-        let numbers: Vec<u8> = self.recording.balls.iter().map(|b| b.number).collect();
-        Some(match log {
-            RulesLog::Pool(log) => log
-                .check(&self.recording.events, &numbers)
-                .map_err(|e| e.to_string()),
-            RulesLog::Snooker(log) => log.check(&self.recording).map_err(|e| e.to_string()),
-        })
+        Some(log.check(&self.recording))
     }
 
     /// The time of the first event after `t`.

@@ -155,6 +155,7 @@ fn install(
         undo: Vec::new(),
         undone_time: 0.0,
         scene,
+        cue_number: 0,
     });
     *status = SimStatus {
         at_rest: true,

@@ -44,6 +44,9 @@ pub struct Solver {
     /// A whole scene ([`SceneRequested`]): its own table and parameters, which the Physics
     /// settings do not change.
     pub(super) scene: bool,
+    /// The number of the ball the next stroke strikes: 0 (the white) but in a game whose
+    /// players each have their own cue ball (three-cushion's yellow, UMB 3.3).
+    pub(super) cue_number: u8,
 }
 
 impl Solver {
@@ -112,7 +115,18 @@ impl Solver {
 
     /// The solver index of the cue ball, if it is in the layout.
     pub fn cue_ball(&self) -> Option<usize> {
-        self.simulation().numbers().iter().position(|&n| n == 0)
+        let cue = self.cue_number;
+        self.simulation().numbers().iter().position(|&n| n == cue)
+    }
+
+    /// The number of the ball the next stroke strikes ([`Solver::cue_ball`]).
+    pub fn cue_number(&self) -> u8 {
+        self.cue_number
+    }
+
+    /// Makes ball `number` the one the next stroke strikes (the rules say whose turn it is).
+    pub fn set_cue_number(&mut self, number: u8) {
+        self.cue_number = number;
     }
 }
 

@@ -8,6 +8,7 @@ use bevy_egui::{EguiContexts, egui};
 use billiards_rules::{Call, CallRule, Game};
 
 use super::layout::{HUD_BUTTON_WIDTH, HudLine, INFO, PANEL_WIDTH, WARNING};
+use super::live_windows;
 use super::new_game::{NewGameForm, seat_rows};
 use super::pool_windows;
 use super::snooker_windows;
@@ -130,6 +131,10 @@ pub fn hud_lines(state: &GameParam) -> (Vec<HudLine>, Vec<HudLine>) {
     let Some(turn) = state.turn.as_ref().map(|t| *t.get()) else {
         return (Vec::new(), Vec::new());
     };
+    if let Some(game) = &state.rules.live {
+        let lines = game.hud_lines(turn);
+        return split_lines(state, lines, 1, |_, _| false, game.turn_key());
+    }
     if let Some(game) = &state.rules.snooker {
         // The match and the frame's score above the turn; the snookers needed in warning.
         let lines = game.hud_lines(turn);
@@ -255,6 +260,7 @@ pub fn game_windows(
     let docked = match turn {
         Some(Turn::Verdict) => Some("Verdict"),
         Some(Turn::GameOver) if state.rules.snooker.is_some() => Some("Frame over"),
+        Some(Turn::GameOver) if state.rules.live.is_some() => Some("Game over"),
         Some(Turn::GameOver) => Some("Rack over"),
         _ => None,
     };
@@ -292,6 +298,16 @@ pub fn game_windows(
     match turn {
         Turn::NewGame => {
             centre("New game").show(&ctx, |ui| new_game_form(ui, &mut state));
+        }
+        Turn::Verdict if let Some(game) = &state.rules.live => {
+            centre("Verdict").show(&ctx, |ui| {
+                live_windows::verdict(ui, game, &mut state.commands)
+            });
+        }
+        Turn::GameOver if let Some(game) = &state.rules.live => {
+            centre("Game over").show(&ctx, |ui| {
+                live_windows::game_over(ui, game, &mut state.commands)
+            });
         }
         Turn::Verdict if state.rules.snooker.is_some() => {
             snooker_windows::snooker_verdict(
@@ -345,17 +361,25 @@ pub fn game_windows(
 /// Start (asking first over a game in progress) or Cancel.
 fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
     let form = &mut *state.form;
+    let before = form.game;
     ui.horizontal(|ui| {
         ui.label("Game:");
         for choice in GameChoice::ALL {
             ui.selectable_value(&mut form.game, choice, choice.label());
         }
     });
+    if form.game != before {
+        // Each game's own usual length: three-cushion's 40 points, not a race to 3.
+        form.race_to = form.game.length().1;
+    }
     let snooker = form.game == GameChoice::Snooker;
+    let own_table = matches!(form.game, GameChoice::Catalog(_));
     let setup = form.setup.get_or_insert(*state.setup);
     // Snooker has one table and one way to set the balls: the pool rows give way to it.
     if snooker {
         ui.label("Table: 12-ft snooker (WPBSA 1.1), 52.5 mm balls");
+    } else if let GameChoice::Catalog(id) = form.game {
+        ui.label(own_table_text(id));
     } else {
         ui.horizontal(|ui| {
             ui.label("Table:");
@@ -373,7 +397,7 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
         drill_row(ui, form, &state.drills, &state.bests);
     } else {
         form.drill = None;
-        if !snooker {
+        if !snooker && !own_table {
             ui.horizontal(|ui| {
                 ui.label("Rack:");
                 for style in billiards_rules::RackStyle::ALL {
@@ -420,6 +444,28 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
             state.commands.write(TurnCommand::CloseDialog);
         }
     });
+}
+
+/// A catalog game's own table in words: "Table: 2.84 x 1.42 m without pockets, 61.5 mm
+/// balls".
+fn own_table_text(id: &str) -> String {
+    match billiards_rules::catalog::find(id) {
+        Ok(entry) => {
+            let (table, ball) = (entry.equipment)();
+            let pockets = if table.pockets == billiards_physics::PocketShape::Pocketless {
+                " without pockets"
+            } else {
+                ""
+            };
+            format!(
+                "Table: {:.2} x {:.2} m{pockets}, {:.1} mm balls",
+                table.length,
+                table.width,
+                ball.radius * 2000.0
+            )
+        }
+        Err(error) => format!("Table: {error}"),
+    }
 }
 
 /// Free play's drill choice: none, or a drill of the list with its best session. A refused

@@ -28,6 +28,7 @@ pub mod game;
 pub mod hud;
 pub mod layout;
 pub mod layout_check;
+mod live_windows;
 pub mod new_game;
 mod pool_windows;
 pub mod practice;

@@ -92,6 +92,24 @@ pub(super) fn seat_rows(ui: &mut egui::Ui, form: &mut NewGameForm, snooker: bool
                 });
         });
     }
+    if let GameChoice::Catalog(_) = form.game {
+        // A game of the catalog says what its length counts ("points to").
+        let (unit, _) = form.game.length();
+        ui.horizontal(|ui| {
+            let mut unit = unit.to_owned();
+            if let Some(first) = unit.get_mut(..1) {
+                first.make_ascii_uppercase();
+            }
+            ui.label(unit);
+            ui.add(
+                egui::DragValue::new(&mut form.race_to)
+                    .update_while_editing(false)
+                    .range(1..=200),
+            );
+            ui.label("player 1 opens");
+        });
+        return;
+    }
     ui.horizontal(|ui| {
         ui.label("Race to");
         ui.add(

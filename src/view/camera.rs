@@ -212,11 +212,14 @@ fn frame_table(spec: Res<TableSpec>, mut orbit: ResMut<OrbitCamera>) {
 fn follow_cue_ball(
     mut orbit: ResMut<OrbitCamera>,
     balls: Query<(&Ball, &Transform), Without<Pocketed>>,
+    solver: Option<Res<crate::sim::Solver>>,
 ) {
     if orbit.mode != CameraMode::FollowCue {
         return;
     }
-    if let Some((_, transform)) = balls.iter().find(|(ball, _)| ball.number == 0) {
+    // The ball the next stroke strikes (three-cushion: the white or the yellow).
+    let cue = solver.map_or(0, |s| s.cue_number());
+    if let Some((_, transform)) = balls.iter().find(|(ball, _)| ball.number == cue) {
         let focus = transform.translation.with_y(0.0);
         if orbit.focus != focus {
             orbit.focus = focus;

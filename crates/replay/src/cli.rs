@@ -130,9 +130,16 @@ fn verify(file: &std::path::Path) -> Result<(), String> {
             match RulesLog::beside(file) {
                 None => Ok(()),
                 Some((_, Err(e))) => Err(e),
-                Some((path, Ok(RulesLog::Pool(log)))) => crate::game::check_log(&path, &log, &rec),
-                Some((path, Ok(RulesLog::Snooker(log)))) => {
-                    crate::snooker::check_log(&path, &log, &rec)
+                Some((path, Ok(log))) => {
+                    let n = log
+                        .check(&rec)
+                        .map_err(|e| format!("{}: {e}", path.display()))?;
+                    println!(
+                        "{}: {n} {} re-judged identically",
+                        path.display(),
+                        log.verdicts()
+                    );
+                    Ok(())
                 }
             }
         }

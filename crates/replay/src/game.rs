@@ -3,7 +3,7 @@
 
 use crate::args::SimulateArgs;
 use crate::setup::{ShotSummary, respot_cue_ball, setup};
-use billiards_physics::recording::{Recorder, Recording};
+use billiards_physics::recording::Recorder;
 use billiards_physics::{Vec2, Vec3};
 use billiards_rules::{
     Call, Choice, CueBall, Game, GameLog, GameState, LoggedShot, NextShot, Outcome, Seat, Verdict,
@@ -192,19 +192,4 @@ fn save_log(recording: &Path, log: &GameLog) -> Result<(), String> {
     let tmp = path.with_extension("json.tmp");
     std::fs::write(&tmp, json).map_err(|e| format!("{}: {e}", tmp.display()))?;
     std::fs::rename(&tmp, &path).map_err(|e| format!("{}: {e}", path.display()))
-}
-
-/// `verify`: re-judges the shots of `rec` against the game log `log`, read from `path` (the
-/// rules log beside the recording, [`billiards_rules::RulesLog::beside`]).
-pub(crate) fn check_log(path: &Path, log: &GameLog, rec: &Recording) -> Result<(), String> {
-    let numbers: Vec<u8> = rec.balls.iter().map(|b| b.number).collect();
-    let n = log
-        .check(&rec.events, &numbers)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    println!(
-        "{}: {n} verdicts of {:?} re-judged identically",
-        path.display(),
-        log.game
-    );
-    Ok(())
 }

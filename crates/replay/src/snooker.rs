@@ -9,7 +9,6 @@ use crate::stats::wilson;
 use billiards_ai::Level;
 use billiards_ai::noise::stream;
 use billiards_ai::snooker::play::{FrameRecord, play_frame};
-use billiards_physics::recording::Recording;
 use billiards_rules::Seat;
 use billiards_rules::snooker::FrameLog;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -95,19 +94,6 @@ fn save_log(recording: &Path, log: &FrameLog) -> Result<(), String> {
     let tmp = path.with_extension("json.tmp");
     std::fs::write(&tmp, json).map_err(|e| format!("{}: {e}", tmp.display()))?;
     std::fs::rename(&tmp, &path).map_err(|e| format!("{}: {e}", path.display()))
-}
-
-/// `verify`: re-judges the strokes of `rec` against the frame log `log`, read from `path`
-/// (the rules log beside the recording, [`billiards_rules::RulesLog::beside`]).
-pub fn check_log(path: &Path, log: &FrameLog, rec: &Recording) -> Result<(), String> {
-    let n = log
-        .check(rec)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    println!(
-        "{}: {n} snooker verdicts re-judged identically",
-        path.display()
-    );
-    Ok(())
 }
 
 /// A snooker tournament's results (or one shard's).

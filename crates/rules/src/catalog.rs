@@ -182,3 +182,26 @@ pub fn find(id: &str) -> Result<&'static GameEntry, RulesError> {
             RulesError(format!("unknown game {id:?}: one of {}", ids.join(", ")))
         })
 }
+
+/// A game saved by [`GameRules::save`], by its kind.
+#[derive(serde::Deserialize)]
+#[serde(tag = "kind", content = "state", rename_all = "snake_case")]
+enum Saved {
+    Pool(Box<PoolMatch>),
+    Snooker(Box<SnookerGame>),
+    ThreeCushion(Box<ThreeCushionMatch>),
+    Drill(Box<crate::drill_game::DrillGame>),
+}
+
+/// The game [`GameRules::save`] saved, back behind the interface; a clear error for JSON
+/// that is not a saved game.
+pub fn restore(saved: &serde_json::Value) -> Result<Box<dyn GameRules>, RulesError> {
+    let game: Saved = serde_json::from_value(saved.clone())
+        .map_err(|e| RulesError(format!("not a saved game: {e}")))?;
+    Ok(match game {
+        Saved::Pool(g) => g,
+        Saved::Snooker(g) => g,
+        Saved::ThreeCushion(g) => g,
+        Saved::Drill(g) => g,
+    })
+}

@@ -15,7 +15,7 @@ use crate::turn::{Call, Seat};
 use billiards_physics::{BallSetup, BallSpec, Table, Vec2};
 
 /// A drill session in play.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct DrillGame {
     /// The drill.
     pub drill: Drill,
@@ -235,5 +235,9 @@ impl GameRules for DrillGame {
 
     fn boxed_clone(&self) -> Box<dyn GameRules> {
         Box::new(self.clone())
+    }
+
+    fn save(&self) -> Result<serde_json::Value, RulesError> {
+        crate::interface::saved("drill", self)
     }
 }

@@ -48,6 +48,7 @@ pub mod shot;
 pub mod shots;
 pub mod snooker;
 pub mod state;
+pub mod stroke_log;
 pub mod ten_ball;
 pub mod three_cushion;
 pub mod turn;
@@ -74,3 +75,4 @@ pub use respot::{
 };
 pub use shot::{CUE, ShotSummary, summarise};
 pub use shots::Shots;
+pub use stroke_log::{StrokeEntry, StrokeLog};

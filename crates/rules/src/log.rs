@@ -195,6 +195,8 @@ pub enum RulesLog {
     Pool(GameLog),
     /// A frame of snooker.
     Snooker(FrameLog),
+    /// Any game, through the one interface ([`crate::stroke_log::StrokeLog`]).
+    Strokes(crate::stroke_log::StrokeLog),
 }
 
 impl RulesLog {
@@ -207,7 +209,9 @@ impl RulesLog {
         let Some(object) = value.as_object() else {
             return Err("not a rules log: not a JSON object".into());
         };
-        if object.contains_key("game") {
+        if object.contains_key("start") {
+            crate::stroke_log::StrokeLog::from_json(text).map(RulesLog::Strokes)
+        } else if object.contains_key("game") {
             GameLog::from_json(text).map(RulesLog::Pool)
         } else if object.contains_key("breaker") && object.contains_key("players") {
             FrameLog::from_json(text).map(RulesLog::Snooker)
@@ -232,6 +236,46 @@ impl RulesLog {
             .and_then(|text| Self::from_json(&text))
             .map_err(|e| format!("{}: {e}", path.display()));
         Some((path, log))
+    }
+
+    /// Re-judges `recording` with this log: the number of verdicts confirmed, or the first
+    /// difference (or why the recording cannot be judged) in words.
+    pub fn check(
+        &self,
+        recording: &billiards_physics::recording::Recording,
+    ) -> Result<usize, String> {
+        match self {
+            RulesLog::Pool(log) => {
+                let numbers: Vec<u8> = recording.balls.iter().map(|b| b.number).collect();
+                log.check(&recording.events, &numbers)
+                    .map_err(|e| e.to_string())
+            }
+            RulesLog::Snooker(log) => log.check(recording).map_err(|e| e.to_string()),
+            RulesLog::Strokes(log) => log.check(recording),
+        }
+    }
+
+    /// The line of shot `k` (from 1) for a timeline: "shot 3, Bob: foul: ...", "stroke 3:
+    /// ..."; `None` past the log's end.
+    pub fn line(&self, k: usize) -> Option<String> {
+        match self {
+            RulesLog::Pool(log) => Some(format!("shot {k}, {}", log.shot_text(k)?)),
+            RulesLog::Snooker(log) => {
+                let text = &log.strokes.get(k.checked_sub(1)?)?.verdict.text;
+                Some(format!("stroke {k}: {text}"))
+            }
+            RulesLog::Strokes(log) => log.line(k),
+        }
+    }
+
+    /// What its verdicts are, for "N ... re-judged identically": "verdicts of NineBall",
+    /// "snooker verdicts", "three-cushion verdicts".
+    pub fn verdicts(&self) -> String {
+        match self {
+            RulesLog::Pool(log) => format!("verdicts of {:?}", log.game),
+            RulesLog::Snooker(_) => "snooker verdicts".to_owned(),
+            RulesLog::Strokes(log) => format!("{} verdicts", log.game),
+        }
     }
 
     /// Whether `text` is a rules log of either kind (a file given where a recording was

@@ -18,7 +18,7 @@ use crate::turn::{Call, CallRule, Choice, CueBall, NextShot, Outcome, Seat, what
 use billiards_physics::{BallSetup, BallSpec, Table, Vec2};
 
 /// A match of one of pool's games, with its equipment and the seed of the rack in play.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PoolMatch {
     /// The match: players, race, score and the rack in play.
     pub play: Match,
@@ -359,5 +359,9 @@ impl GameRules for PoolMatch {
 
     fn boxed_clone(&self) -> Box<dyn GameRules> {
         Box::new(self.clone())
+    }
+
+    fn save(&self) -> Result<serde_json::Value, RulesError> {
+        crate::interface::saved("pool", self)
     }
 }

@@ -7,6 +7,7 @@ use billiards_rules::{Call, CallRule, Choice, Game, GameLog, Match, Seat};
 
 use super::call::{preselected_ball, proposed_call};
 use super::flow::{new_rack, prepare_table, rack_request};
+use super::live_flow::{live_command, start_live};
 use super::snooker::{self, SnookerInPlay};
 use super::state::*;
 use crate::{
@@ -63,8 +64,7 @@ pub(super) fn apply_commands(
 ) {
     // A rack from the panel is free play.
     if requests.racks.read().count() > 0 {
-        state.rules.game = None;
-        state.rules.snooker = None;
+        state.rules.clear();
     }
     for request in requests.new_games.read() {
         start_game(request, &mut state, &mut table, &mut live.status);
@@ -83,9 +83,20 @@ fn start_game(
     status: &mut SimStatus,
 ) {
     state.dialog.0 = false;
-    state.rules.game = None;
-    state.rules.snooker = None;
+    state.rules.clear();
     match request.game {
+        GameChoice::Catalog(id) => {
+            match start_live(
+                request,
+                id,
+                &mut table.spec,
+                &table.settings,
+                &mut table.layouts,
+            ) {
+                Ok(game) => state.rules.live = Some(game),
+                Err(error) => status.note = Some(error),
+            }
+        }
         GameChoice::Snooker => start_snooker(
             request,
             &mut state.rules,
@@ -151,6 +162,14 @@ fn turn_command(
         TurnCommand::CloseDialog => state.dialog.0 = false,
         _ => {}
     }
+    if let Some(game) = state.rules.live.as_mut() {
+        let layout = live
+            .solver
+            .as_ref()
+            .map_or_else(Vec::new, |s| super::put::layout_at(s.simulation(), None));
+        live_command(game, command, &mut live.status, &mut table.layouts, &layout);
+        return;
+    }
     if let Some(game) = state.rules.snooker.as_mut() {
         snooker_command(
             game,
@@ -181,6 +200,8 @@ fn pool_command(
         | TurnCommand::CloseDialog
         | TurnCommand::SnookerChoose(_)
         | TurnCommand::Nominate(_)
+        | TurnCommand::ChooseOption(_)
+        | TurnCommand::Declare(_)
         | TurnCommand::Concede => {}
         TurnCommand::Continue => game.verdict_shown = false,
         TurnCommand::Choose(choice) => choose(game, choice, table, live),

@@ -27,6 +27,9 @@ fn phase(rules: &Rules, status: &SimStatus, dialog: bool) -> Turn {
     if !status.at_rest {
         return Turn::ShotInPlay;
     }
+    if let Some(game) = &rules.live {
+        return game.phase();
+    }
     if let Some(snooker) = &rules.snooker {
         return snooker.phase();
     }
@@ -207,6 +210,7 @@ pub(super) fn prepare_table(
 pub(super) fn follow_rules(
     rules: Res<Rules>,
     dialog: Res<DialogOpen>,
+    solver: Option<ResMut<Solver>>,
     mut status: ResMut<SimStatus>,
     mut referee: ResMut<Referee>,
     turn: Option<Res<State<Turn>>>,
@@ -221,6 +225,12 @@ pub(super) fn follow_rules(
         Turn::Verdict => Some("the verdict first: continue or choose"),
         Turn::GameOver => Some("the rack is over"),
         Turn::Calling => Some("click a pocket to call it first"),
+        Turn::Aiming | Turn::BallInHand if let Some(game) = &rules.live => {
+            let turn = game.rules.turn();
+            (turn.declare.pocket == billiards_rules::Need::Required
+                && !matches!(game.declared, billiards_rules::Declaration::Pocket { .. }))
+            .then_some("declare a ball and a pocket first")
+        }
         Turn::Aiming | Turn::BallInHand => rules.game.as_ref().and_then(|game| {
             (game.next().call == CallRule::EightPocket
                 && !matches!(game.call, Call::Ball { ball: 8, .. }))
@@ -235,6 +245,31 @@ pub(super) fn follow_rules(
         rack_over: wanted == Turn::GameOver,
     };
     referee.set_if_neq(wanted_referee);
+    // The striker's own cue ball (three-cushion: the white or the yellow), 0 otherwise.
+    let cue = rules.live.as_ref().map_or(0, |g| g.rules.turn().cue_ball);
+    if let Some(mut solver) = solver
+        && solver.cue_number() != cue
+    {
+        solver.set_cue_number(cue);
+    }
+    if let Some(game) = &rules.live
+        && status.at_rest
+    {
+        use billiards_rules::{CueBallPlace, HandRegion};
+        let turn = game.rules.turn();
+        let hand = match turn.place {
+            _ if game.rules.end().is_some() => None,
+            CueBallPlace::InHand { region } => Some(match region {
+                HandRegion::Anywhere => HandRule::Anywhere,
+                HandRegion::BehindHeadString => HandRule::BehindHeadString,
+                HandRegion::D => HandRule::InD,
+            }),
+            CueBallPlace::AsItLies | CueBallPlace::Placed => None,
+        };
+        if status.ball_in_hand != hand {
+            status.ball_in_hand = hand;
+        }
+    }
     if let Some(game) = &rules.snooker
         && status.at_rest
     {

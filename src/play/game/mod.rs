@@ -21,6 +21,9 @@
 mod call;
 mod commands;
 mod flow;
+mod live;
+mod live_flow;
+pub mod put;
 pub mod snooker;
 mod state;
 mod table_input;
@@ -56,8 +59,10 @@ pub fn plugin(app: &mut App) {
             (
                 judge_shot,
                 snooker::flow::judge_stroke,
+                live_flow::judge_live,
                 apply_commands,
                 snooker::flow::replace_balls,
+                live_flow::put_pending,
                 follow_rules,
             )
                 .chain()

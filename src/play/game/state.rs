@@ -7,6 +7,7 @@ use billiards_rules::{
     RackStyle, Seat, Verdict,
 };
 
+pub use super::live::LiveGame;
 use super::snooker::SnookerInPlay;
 pub use super::turn::Turn;
 use crate::settings::TableSetup;
@@ -18,15 +19,19 @@ pub enum GameChoice {
     Pool(Game),
     /// Snooker on the 12-ft table ([`billiards_rules::snooker`]).
     Snooker,
+    /// A game of the catalog played behind the one interface alone, by its id
+    /// ([`billiards_rules::catalog::find`]): three-cushion.
+    Catalog(&'static str),
 }
 
 impl GameChoice {
     /// Every choice, in the dialog's order.
-    pub const ALL: [GameChoice; 5] = [
+    pub const ALL: [GameChoice; 6] = [
         GameChoice::Pool(Game::NineBall),
         GameChoice::Pool(Game::TenBall),
         GameChoice::Pool(Game::EightBall),
         GameChoice::Snooker,
+        GameChoice::Catalog("three-cushion"),
         GameChoice::Pool(Game::FreePlay),
     ];
 
@@ -38,6 +43,19 @@ impl GameChoice {
             GameChoice::Pool(Game::EightBall) => "8-ball",
             GameChoice::Pool(Game::FreePlay) => "free play",
             GameChoice::Snooker => "snooker",
+            GameChoice::Catalog(id) => {
+                billiards_rules::catalog::find(id).map_or("unknown game", |entry| entry.label)
+            }
+        }
+    }
+
+    /// What the match's length counts ("race to", "best of", "points to") and its usual
+    /// length.
+    pub fn length(self) -> (&'static str, u32) {
+        match self {
+            GameChoice::Catalog(id) => billiards_rules::catalog::find(id)
+                .map_or(("race to", 3), |e| (e.length_unit, e.default_length)),
+            _ => ("race to", 3),
         }
     }
 }
@@ -86,30 +104,48 @@ pub enum TurnCommand {
     SnookerChoose(billiards_rules::snooker::Choice),
     /// Snooker: nominate this colour or free ball for the next stroke (2.12, 3.12).
     Nominate(u8),
-    /// Snooker: the striker concedes the frame (2.1(a)).
+    /// Snooker: the striker concedes the frame (2.1(a)); any game that has a concession.
     Concede,
+    /// Take option `index` of the turn ([`billiards_rules::Turn::choices`]): a game behind
+    /// the interface.
+    ChooseOption(usize),
+    /// Declare this for the next stroke: a game behind the interface.
+    Declare(billiards_rules::Declaration),
     /// The rack is over: rack the next one of the match.
     NextRack,
 }
 
-/// The rules side of the live game: both `None` in free play.
+/// The rules side of the live game: all `None` in free play, at most one set.
 #[derive(Resource, Debug, Default)]
 pub struct Rules {
     /// The pool match in play, if any.
     pub game: Option<GameInPlay>,
     /// The snooker match in play, if any.
     pub snooker: Option<SnookerInPlay>,
+    /// A match of any other game, behind the one interface, if any.
+    pub live: Option<LiveGame>,
 }
 
 impl Rules {
-    /// Whether a match (pool or snooker) is in play.
+    /// Whether a match (of any game) is in play.
     pub fn in_match(&self) -> bool {
-        self.game.is_some() || self.snooker.is_some()
+        self.game.is_some() || self.snooker.is_some() || self.live.is_some()
+    }
+
+    /// No match: free play.
+    pub fn clear(&mut self) {
+        self.game = None;
+        self.snooker = None;
+        self.live = None;
     }
 
     /// The match's next player: whether the computer plays that seat (its level, `None` for
     /// a human) and whether choices are offered first; `None` in free play.
     pub fn to_play(&self) -> Option<(Option<Level>, bool)> {
+        if let Some(game) = &self.live {
+            let turn = game.rules.turn();
+            return Some((game.computer(turn.striker), !turn.choices.is_empty()));
+        }
         if let Some(game) = &self.snooker {
             let next = game.next();
             return Some((game.computer(next.striker), !next.choices.is_empty()));

@@ -308,6 +308,16 @@ pub trait GameRules: std::fmt::Debug + Send + Sync {
     }
     /// A copy behind a new box (the computer searches on copies).
     fn boxed_clone(&self) -> Box<dyn GameRules>;
+    /// The whole state as JSON tagged with its kind ([`saved`]), for a rules log that
+    /// re-judges a recording from where its first stroke found the game
+    /// ([`crate::catalog::restore`] reads it back).
+    fn save(&self) -> Result<serde_json::Value, RulesError>;
+}
+
+/// `state` as `{"kind": kind, "state": ...}`, the form [`crate::catalog::restore`] reads.
+pub fn saved<T: Serialize>(kind: &str, state: &T) -> Result<serde_json::Value, RulesError> {
+    let state = serde_json::to_value(state).map_err(RulesError::from_display)?;
+    Ok(serde_json::json!({ "kind": kind, "state": state }))
 }
 
 impl Clone for Box<dyn GameRules> {

@@ -18,7 +18,7 @@ use billiards_physics::snooker::{default_cue_position, layout};
 use billiards_physics::{BallSetup, BallSpec, SnookerMarks, Table, Vec2};
 
 /// A snooker match in play: the frames won and the frame in play.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct SnookerGame {
     /// Frames won and the best-of (2.1).
     pub frames: SnookerMatch,
@@ -319,5 +319,9 @@ impl GameRules for SnookerGame {
 
     fn boxed_clone(&self) -> Box<dyn GameRules> {
         Box::new(self.clone())
+    }
+
+    fn save(&self) -> Result<serde_json::Value, RulesError> {
+        crate::interface::saved("snooker", self)
     }
 }

@@ -14,7 +14,7 @@ use crate::turn::Seat;
 use billiards_physics::{BallSetup, BallSpec, Table, Vec2};
 
 /// A three-cushion match in play: one game to `target` points.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ThreeCushionMatch {
     /// The game.
     pub game: ThreeCushionGame,
@@ -294,5 +294,9 @@ impl GameRules for ThreeCushionMatch {
 
     fn boxed_clone(&self) -> Box<dyn GameRules> {
         Box::new(self.clone())
+    }
+
+    fn save(&self) -> Result<serde_json::Value, RulesError> {
+        crate::interface::saved("three_cushion", self)
     }
 }

@@ -88,7 +88,14 @@ pub(crate) fn judge_stroke(
     if in_hand && let Some(at) = free_place_in_d(solver.simulation()) {
         moves.push((0, at));
     }
-    set_balls(&mut commands, &mut solver, &moves, &mut balls, &mut status);
+    set_balls(
+        &mut commands,
+        &mut solver,
+        &moves,
+        &mut balls,
+        &mut status,
+        &|n| billiards_rules::snooker::balls::name(n).to_owned(),
+    );
 }
 
 /// 3.14: a replace chosen: the balls go back where they were before the foul.
@@ -107,5 +114,12 @@ pub(crate) fn replace_balls(
     };
     // Balls on the table now but not in the layout were potted then: none can be, as a
     // stroke pots balls and never adds one; the layout is every ball to set.
-    set_balls(&mut commands, &mut solver, &layout, &mut balls, &mut status);
+    set_balls(
+        &mut commands,
+        &mut solver,
+        &layout,
+        &mut balls,
+        &mut status,
+        &|n| billiards_rules::snooker::balls::name(n).to_owned(),
+    );
 }

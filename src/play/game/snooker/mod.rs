@@ -8,7 +8,7 @@
 //! colour after a red is nominated by the player, or is the one hit first (2.12: an obvious
 //! ball needs no nomination); a free ball likewise (3.12).
 
-use bevy::{math::DVec2, prelude::*};
+use bevy::prelude::*;
 use billiards_ai::Level;
 use billiards_physics::{SnookerMarks, Vec2, snooker::default_cue_position};
 use billiards_rules::Seat;
@@ -19,11 +19,8 @@ use billiards_rules::snooker::{
 
 pub mod flow;
 
+pub(crate) use super::put::{layout_at, set_balls};
 use super::turn::Turn;
-use crate::{
-    sim::{SimStatus, Solver, to_dvec2},
-    table::balls::{BallMotion, MotionState, Pocketed},
-};
 
 /// A snooker match in play: the frames won, the frame in play, the players and what the
 /// incoming player did since the last stroke.
@@ -302,20 +299,6 @@ pub fn choice_label(choice: Choice, game: &SnookerInPlay) -> String {
     }
 }
 
-/// Every ball on the table of `sim` at time `t` of its history, by number.
-pub(crate) fn layout_at(sim: &billiards_physics::Simulation, t: Option<f64>) -> Vec<(u8, Vec2)> {
-    let states: Vec<billiards_physics::BallState> = match t {
-        Some(t) => sim.history().states_at(t),
-        None => sim.balls().collect(),
-    };
-    states
-        .iter()
-        .zip(sim.numbers())
-        .filter(|(s, _)| s.motion.on_table())
-        .map(|(s, &n)| (n, s.position))
-        .collect()
-}
-
 /// The nomination for a stroke: the player's, or else the ball hit first when that is the
 /// obvious one (2.12: a colour after a red; 3.12: a free ball that is not otherwise on).
 pub(crate) fn nomination(frame: &Frame, chosen: Option<u8>, first: Option<u8>) -> Option<u8> {
@@ -349,59 +332,6 @@ pub fn free_place_in_d(sim: &billiards_physics::Simulation) -> Option<Vec2> {
             })
         }))
         .find(|&p| marks.in_d(p) && clear(p))
-}
-
-/// Puts the balls `moves` names where it says, in the solver directly (a replace can move
-/// a ball onto the place another one leaves, so they go in passes: each pass places every
-/// ball whose place is free) and in their components; pocketed ones come back.
-pub(crate) fn set_balls(
-    commands: &mut Commands,
-    solver: &mut Solver,
-    moves: &[(u8, Vec2)],
-    balls: &mut Query<(&mut BallMotion, Has<Pocketed>)>,
-    status: &mut SimStatus,
-) {
-    let mut left: Vec<(usize, Vec2)> = moves
-        .iter()
-        .filter_map(|&(n, p)| {
-            let id = solver.simulation().numbers().iter().position(|&m| m == n)?;
-            let s = solver.simulation().ball(id);
-            (!(s.motion.on_table() && s.position == p)).then_some((id, p))
-        })
-        .collect();
-    while !left.is_empty() {
-        let before = left.len();
-        left.retain(|&(id, p)| {
-            if solver.place_at_rest(id, p).is_err() {
-                return true;
-            }
-            if let Some(entity) = solver.entity(id)
-                && let Ok((mut motion, pocketed)) = balls.get_mut(entity)
-            {
-                // The solver has it already: the component follows without a second edit.
-                *motion.bypass_change_detection() = BallMotion {
-                    position: to_dvec2(p),
-                    velocity: DVec2::ZERO,
-                    state: MotionState::Stationary,
-                    spin: bevy::math::DVec3::ZERO,
-                };
-                motion.set_changed();
-                if pocketed {
-                    commands.entity(entity).remove::<Pocketed>();
-                }
-            }
-            false
-        });
-        if left.len() == before {
-            let names: Vec<&str> = left
-                .iter()
-                .map(|&(id, _)| name(solver.simulation().numbers()[id]))
-                .collect();
-            status.note = Some(format!("could not put back: {}", names.join(", ")));
-            break;
-        }
-    }
-    status.at_rest = solver.simulation().is_at_rest();
 }
 
 /// The ends of a frame in words ("Ann wins the frame on points").

@@ -1,0 +1,164 @@
+//! A game in play behind the one game interface ([`GameRules`], issue 50): any game of the
+//! catalog ([`billiards_rules::catalog::GAMES`]) the game knows nothing special about. The
+//! turn, the verdict, the options, the score and the end all come from the interface; the
+//! log ([`StrokeLog`]) is written beside the recording as every game's is.
+//!
+//! Three-cushion is played through it; pool and snooker still have their own state
+//! ([`super::GameInPlay`], [`super::snooker::SnookerInPlay`]) until they move here.
+
+use billiards_ai::Level;
+use billiards_rules::catalog::GameEntry;
+use billiards_rules::{
+    CueBallPlace, Declaration, GameRules, HandRegion, Judgement, Seat, StrokeLog,
+};
+
+use super::turn::Turn;
+
+/// A match of any game in play and what the players did since the last stroke.
+#[derive(Debug)]
+pub struct LiveGame {
+    /// The game's rules and state.
+    pub rules: Box<dyn GameRules>,
+    /// Its catalog entry (id, label, what its length counts).
+    pub entry: &'static GameEntry,
+    /// Each seat's computer level; `None`: a human.
+    pub seats: [Option<Level>; 2],
+    /// The seed of the match; each game of it takes the next.
+    pub seed: u64,
+    /// Games started in the match (the first is 0).
+    pub games: u64,
+    /// What the striker declared for the next stroke.
+    pub declared: Declaration,
+    /// The last judgement.
+    pub last: Option<Judgement>,
+    /// The last judgement waits for the player.
+    pub verdict_shown: bool,
+    /// The last foul in words, with the offender, kept until a later foul.
+    pub last_foul: Option<String>,
+    /// Options taken since the last stroke (logged with the next one).
+    pub choices: Vec<usize>,
+    /// The log of the recording in play.
+    pub log: StrokeLog,
+    /// Balls an option puts back, set on the table after the command.
+    pub pending: Vec<(u8, billiards_physics::Vec2)>,
+}
+
+impl LiveGame {
+    /// The name of `seat`.
+    pub fn name(&self, seat: Seat) -> &str {
+        &self.rules.players()[seat.index()]
+    }
+
+    /// The name of `seat`, "(computer)" after it for the computer's seat.
+    pub fn seat_name(&self, seat: Seat) -> String {
+        match self.computer(seat) {
+            Some(_) => format!("{} (computer)", self.name(seat)),
+            None => self.name(seat).to_owned(),
+        }
+    }
+
+    /// The computer's level at `seat`, `None` for a human.
+    pub fn computer(&self, seat: Seat) -> Option<Level> {
+        self.seats[seat.index()]
+    }
+
+    /// Whether a human plays in this match.
+    pub fn has_human(&self) -> bool {
+        self.seats.iter().any(Option::is_none)
+    }
+
+    /// Which turn this is: the game, the strokes and the options so far.
+    pub fn turn_key(&self) -> (u64, usize, usize) {
+        (
+            self.seed.wrapping_add(self.games),
+            self.log.strokes.len(),
+            self.choices.len(),
+        )
+    }
+
+    /// The turn's phase (with the balls at rest and no dialog open).
+    pub fn phase(&self) -> Turn {
+        let turn = self.rules.turn();
+        if self.rules.end().is_some() {
+            Turn::GameOver
+        } else if self.verdict_shown || !turn.choices.is_empty() {
+            Turn::Verdict
+        } else if matches!(turn.place, CueBallPlace::InHand { .. }) {
+            Turn::BallInHand
+        } else {
+            Turn::Aiming
+        }
+    }
+
+    /// The last judgement in words, with the striker: "Ann: 1 point ...".
+    pub fn verdict_text(&self, judgement: &Judgement) -> String {
+        format!("{}: {}", self.name(judgement.striker), judgement.text)
+    }
+
+    /// The end of the game in words: "Ann wins the game (40 points) and the match".
+    pub fn end_text(&self) -> Option<String> {
+        let end = self.rules.end()?;
+        Some(format!(
+            "{} wins the game ({}){}",
+            self.name(end.winner),
+            end.reason,
+            if end.match_over { " and the match" } else { "" }
+        ))
+    }
+
+    /// The HUD's lines: the score (computer seats marked), what to do now, the ball on, the
+    /// game's own status lines, the declaration, the last stroke and the last foul.
+    pub fn hud_lines(&self, phase: Turn) -> Vec<String> {
+        let turn = self.rules.turn();
+        let striker = self.name(turn.striker);
+        let mut score = self.rules.score_line();
+        for seat in [Seat::A, Seat::B] {
+            if self.computer(seat).is_some() && !self.name(seat).is_empty() {
+                score = score.replacen(self.name(seat), &self.seat_name(seat), 1);
+            }
+        }
+        let cue = self.rules.ball_name(turn.cue_ball);
+        let doing = match phase {
+            Turn::NewGame => "new game: choose the game and the players".to_owned(),
+            Turn::ShotInPlay => format!("{striker} plays: balls moving"),
+            Turn::GameOver => self
+                .end_text()
+                .unwrap_or_else(|| "the game is over".to_owned()),
+            Turn::Verdict if !turn.choices.is_empty() => {
+                format!("{striker} to choose: {}", turn.choices.join(" or "))
+            }
+            Turn::Verdict => format!("{striker} to play next: continue"),
+            Turn::BallInHand | Turn::Aiming if let Some(level) = self.computer(turn.striker) => {
+                format!("{striker} (computer, {level}) to play the {cue}")
+            }
+            Turn::BallInHand => format!(
+                "{striker} to play the {cue}: ball in hand {}, drag it, aim and shoot",
+                match turn.place {
+                    CueBallPlace::InHand {
+                        region: HandRegion::BehindHeadString,
+                    } => "behind the head string",
+                    CueBallPlace::InHand {
+                        region: HandRegion::D,
+                    } => "in the D",
+                    _ => "anywhere",
+                }
+            ),
+            Turn::Aiming | Turn::Calling => format!("{striker} to play the {cue}: aim and shoot"),
+        };
+        let mut lines = vec![score, doing];
+        if self.rules.end().is_none() && !turn.ball_on.is_empty() {
+            lines.push(format!("ball on: {}", turn.ball_on));
+        }
+        lines.extend(self.rules.status());
+        if let Some(text) = self.declared.text(&|b| self.rules.ball_name(b)) {
+            lines.push(format!("declared: {text}"));
+        }
+        if let Some(last) = &self.last {
+            lines.push(format!("last stroke: {}", self.verdict_text(last)));
+        }
+        if let Some(foul) = &self.last_foul {
+            lines.push(format!("last foul: {foul}"));
+        }
+        lines
+    }
+}

@@ -1,0 +1,288 @@
+//! The flow of a game behind the interface ([`LiveGame`]): a match started from the catalog,
+//! a finished stroke judged ([`GameRules::judge`]) and logged, the balls the judgement or an
+//! option puts back, and the player's commands. Nothing here asks which game it is.
+
+use bevy::prelude::*;
+use billiards_physics::{EventKind, Rack, Simulation, Vec2};
+use billiards_rules::catalog::{self, MatchSettings};
+use billiards_rules::{CueBallPlace, GameRules, Setup, StrokeEntry, StrokeLog, StrokeRecord};
+
+use super::live::LiveGame;
+use super::put::{layout_at, set_balls};
+use super::state::{NewGameRequested, Rules, TurnCommand};
+use crate::{
+    recording::{RecordingsFolder, save_rules_log},
+    settings::PhysicsSettings,
+    sim::{LayoutRequested, ShotFinished, SimStatus, Solver, params_for, table_for},
+    table::balls::{BallMotion, Pocketed},
+    table::geometry::TableSpec,
+};
+
+/// Starts a match of catalog game `id` on its own table: the table set first (the layout is
+/// set on it), then the game started on the solver's table and balls, and its layout asked
+/// of the simulation. A refusal (an unknown id, a bad length) goes to the status line.
+pub(super) fn start_live(
+    request: &NewGameRequested,
+    id: &str,
+    spec: &mut ResMut<TableSpec>,
+    settings: &PhysicsSettings,
+    layouts: &mut MessageWriter<LayoutRequested>,
+) -> Result<LiveGame, String> {
+    let entry = catalog::find(id).map_err(|e| e.0)?;
+    let (own_table, _) = (entry.equipment)();
+    spec.set_if_neq(TableSpec::fitting(&own_table));
+    let equipment = (table_for(spec, settings), params_for(spec, settings).ball);
+    let match_settings = MatchSettings {
+        players: request.players.clone(),
+        length: request.race_to,
+        seed: request.seed,
+        style: request.setup.rack_style,
+        equipment: Some(equipment),
+    };
+    let cannot = |e: billiards_rules::RulesError| format!("cannot start {}: {e}", entry.label);
+    let rules = entry.start(&match_settings).map_err(cannot)?;
+    let balls = rules.layout().map_err(cannot)?;
+    let log = StrokeLog::new(rules.as_ref()).map_err(cannot)?;
+    layouts.write(layout_request(rules.as_ref(), balls));
+    Ok(LiveGame {
+        rules,
+        entry,
+        seats: request.computer,
+        seed: request.seed,
+        games: 0,
+        declared: Default::default(),
+        last: None,
+        verdict_shown: false,
+        last_foul: None,
+        choices: Vec::new(),
+        log,
+        pending: Vec::new(),
+    })
+}
+
+/// The layout `balls` of `game` as asked of the simulation; the recording is named after
+/// the game.
+fn layout_request(
+    game: &dyn GameRules,
+    balls: Vec<billiards_physics::BallSetup>,
+) -> LayoutRequested {
+    LayoutRequested {
+        balls,
+        // No standard rack is near a game's own layout; the panel's rack buttons start free
+        // play on the 15-ball triangle.
+        rack: Rack::FifteenBall,
+        name: game.name(),
+    }
+}
+
+/// A player's command in a match behind the interface. Balls an option puts back wait in
+/// [`LiveGame::pending`] for [`put_pending`]; a new layout restarts the recording and its log.
+pub(super) fn live_command(
+    game: &mut LiveGame,
+    command: TurnCommand,
+    status: &mut SimStatus,
+    layouts: &mut MessageWriter<LayoutRequested>,
+    layout: &[(u8, Vec2)],
+) {
+    let refused = |status: &mut SimStatus, e: billiards_rules::RulesError| {
+        status.note = Some(e.0);
+    };
+    match command {
+        TurnCommand::Continue => game.verdict_shown = false,
+        TurnCommand::ChooseOption(index) => match game.rules.choose(index, layout) {
+            Ok(setup) => {
+                game.choices.push(index);
+                game.verdict_shown = false;
+                match setup {
+                    Setup::Keep => {}
+                    Setup::Put { balls } => game.pending = balls,
+                    Setup::Layout { balls } => {
+                        let balls = balls
+                            .into_iter()
+                            .map(|(n, p)| billiards_physics::BallSetup::at(n, p))
+                            .collect();
+                        new_layout(game, balls, layouts, status);
+                    }
+                    Setup::Rack { balls } => new_layout(game, balls, layouts, status),
+                }
+            }
+            Err(e) => refused(status, e),
+        },
+        TurnCommand::Declare(declaration) => game.declared = declaration,
+        TurnCommand::Concede => match game.rules.concede() {
+            Ok(_) => game.verdict_shown = false,
+            Err(e) => refused(status, e),
+        },
+        TurnCommand::NextRack => {
+            if game.rules.end().is_none_or(|end| end.match_over) {
+                return;
+            }
+            match game.rules.next_game() {
+                Ok(balls) => {
+                    game.games += 1;
+                    game.last = None;
+                    game.last_foul = None;
+                    game.verdict_shown = false;
+                    new_layout(game, balls, layouts, status);
+                }
+                Err(e) => refused(status, e),
+            }
+        }
+        _ => {}
+    }
+}
+
+/// A new layout of the table: a new recording, so a new log from the game as it stands.
+fn new_layout(
+    game: &mut LiveGame,
+    balls: Vec<billiards_physics::BallSetup>,
+    layouts: &mut MessageWriter<LayoutRequested>,
+    status: &mut SimStatus,
+) {
+    match StrokeLog::new(game.rules.as_ref()) {
+        Ok(log) => game.log = log,
+        Err(e) => status.note = Some(format!("the game log restarts empty: {e}")),
+    }
+    game.choices.clear();
+    layouts.write(layout_request(game.rules.as_ref(), balls));
+}
+
+/// On a finished stroke of a match behind the interface: judge it on the solver's events
+/// from the strike and the layouts before and after, log it, and put back what the
+/// judgement says (with the next striker's cue ball into a legal place when in hand).
+pub(super) fn judge_live(
+    mut commands: Commands,
+    mut finished: MessageReader<ShotFinished>,
+    mut rules: ResMut<Rules>,
+    solver: Option<ResMut<Solver>>,
+    mut balls: Query<(&mut BallMotion, Has<Pocketed>)>,
+    mut status: ResMut<SimStatus>,
+    folder: Res<RecordingsFolder>,
+) {
+    if finished.read().count() == 0 {
+        return;
+    }
+    let (Some(game), Some(mut solver)) = (rules.live.as_mut(), solver) else {
+        return;
+    };
+    let sim = solver.simulation();
+    let events = sim.history().events();
+    let Some(strike) = events
+        .iter()
+        .rposition(|e| matches!(e.kind, EventKind::Strike { .. }))
+    else {
+        return;
+    };
+    let before = layout_at(sim, Some(events[strike].time));
+    let after = layout_at(sim, None);
+    let declared = std::mem::take(&mut game.declared);
+    let judged = game.rules.judge(&StrokeRecord {
+        events: &events[strike..],
+        numbers: sim.numbers(),
+        before: &before,
+        after: &after,
+        declared,
+    });
+    let judgement = match judged {
+        Ok(judgement) => judgement,
+        Err(error) => {
+            status.note = Some(format!("the rules refused the stroke: {error}"));
+            return;
+        }
+    };
+    if !judgement.fair {
+        let what = if judgement.fouls.is_empty() {
+            judgement.text.clone()
+        } else {
+            judgement.fouls.join("; ")
+        };
+        game.last_foul = Some(format!("{what} ({})", game.name(judgement.striker)));
+    }
+    game.log.strokes.push(StrokeEntry {
+        choices: std::mem::take(&mut game.choices),
+        declared,
+        judgement: judgement.clone(),
+    });
+    save_rules_log(
+        &folder,
+        &solver,
+        StrokeLog::path_beside,
+        &game.log,
+        &mut status,
+    );
+    let mut moves = judgement.put.clone();
+    game.last = Some(judgement);
+    game.verdict_shown = true;
+    moves.extend(hand_place(game.rules.as_ref(), solver.simulation(), &moves));
+    let name = |n: u8| game.rules.ball_name(n);
+    set_balls(
+        &mut commands,
+        &mut solver,
+        &moves,
+        &mut balls,
+        &mut status,
+        &name,
+    );
+}
+
+/// Balls an option put back ([`Setup::Put`]): set on the table once the command is taken.
+pub(super) fn put_pending(
+    mut commands: Commands,
+    mut rules: ResMut<Rules>,
+    solver: Option<ResMut<Solver>>,
+    mut balls: Query<(&mut BallMotion, Has<Pocketed>)>,
+    mut status: ResMut<SimStatus>,
+) {
+    let (Some(game), Some(mut solver)) = (rules.live.as_mut(), solver) else {
+        return;
+    };
+    if game.pending.is_empty() {
+        return;
+    }
+    let moves = std::mem::take(&mut game.pending);
+    let name = |n: u8| game.rules.ball_name(n);
+    set_balls(
+        &mut commands,
+        &mut solver,
+        &moves,
+        &mut balls,
+        &mut status,
+        &name,
+    );
+}
+
+/// With the cue ball in hand and off the table (pocketed), a place the rules accept for it
+/// (after the balls `put` are set): the first clear one of a sweep of the table from the
+/// middle of its head half. `None` when it is on the table or nothing is in hand.
+fn hand_place(game: &dyn GameRules, sim: &Simulation, put: &[(u8, Vec2)]) -> Option<(u8, Vec2)> {
+    let turn = game.turn();
+    if !matches!(turn.place, CueBallPlace::InHand { .. }) {
+        return None;
+    }
+    let cue = turn.cue_ball;
+    let on_table = layout_at(sim, None);
+    if on_table.iter().any(|&(n, _)| n == cue) {
+        return None;
+    }
+    let others: Vec<(u8, Vec2)> = on_table
+        .into_iter()
+        .filter(|(n, _)| !put.iter().any(|(m, _)| m == n))
+        .chain(put.iter().copied())
+        .filter(|&(n, _)| n != cue)
+        .collect();
+    let table = sim.table();
+    let from = Vec2::new(-table.length / 4.0, 0.0);
+    let mut places: Vec<Vec2> = (0..40 * 20)
+        .map(|k| {
+            Vec2::new(
+                (f64::from(k % 40) + 0.5) / 40.0 * table.length - table.length / 2.0,
+                (f64::from(k / 40) + 0.5) / 20.0 * table.width - table.width / 2.0,
+            )
+        })
+        .collect();
+    places.sort_by(|a, b| (*a - from).length().total_cmp(&(*b - from).length()));
+    places
+        .into_iter()
+        .find(|&at| game.check_hand(at, &others).is_ok())
+        .map(|at| (cue, at))
+}
