@@ -29,7 +29,8 @@ pub struct LaunchOptions {
     pub count_idle_frames: Option<Duration>,
     /// Open this recording in the replay viewer at start (`billiards replay FILE`).
     pub replay: Option<PathBuf>,
-    /// Start a match of this game (two players, race to 3) instead of free play.
+    /// Start a match of this game (two players, the game's usual length) instead of free
+    /// play.
     pub game: Option<crate::play::game::GameChoice>,
     /// Start on the stress table with this many balls (frictionless, seed 1).
     pub stress: Option<usize>,
@@ -101,9 +102,9 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
   --no-record         do not save recordings
   --no-config         start from the default settings and keep none (the settings file
                       is otherwise in the config directory: $XDG_CONFIG_HOME/billiards)
-  --game GAME         start a match (two players, race to 3) of nine-ball, ten-ball,
-                      eight-ball or snooker (best of 5 frames); free-play (the default) is
-                      the sandbox
+  --game GAME         start a match between two players: nine-ball, ten-ball or
+                      eight-ball (race to 3), snooker (best of 3 frames), three-cushion
+                      (40 points); free-play (the default) is the sandbox
   --stress BALLS      start on the stress table (free play): BALLS balls on a table grown
                       to hold them, frictionless; the panel's Stress table section changes it
   --position CODE     start from a position code (the panel's Copy position makes one;
@@ -205,18 +206,19 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                     let value = args.next().ok_or(ArgsError::MissingValue("--game"))?;
                     use crate::play::game::GameChoice;
                     use billiards_rules::Game;
-                    options.game = Some(match value.as_str() {
-                        "nine-ball" | "9-ball" => GameChoice::Pool(Game::NineBall),
-                        "ten-ball" | "10-ball" => GameChoice::Pool(Game::TenBall),
-                        "eight-ball" | "8-ball" => GameChoice::Pool(Game::EightBall),
-                        "snooker" => GameChoice::Snooker,
+                    // Every game of the catalog by its id (`nine-ball`, `three-cushion`).
+                    let Ok(entry) = billiards_rules::catalog::find(&value) else {
+                        return Err(ArgsError::InvalidValue {
+                            flag: "--game",
+                            value,
+                        });
+                    };
+                    options.game = Some(match entry.id {
+                        "nine-ball" => GameChoice::Pool(Game::NineBall),
+                        "ten-ball" => GameChoice::Pool(Game::TenBall),
+                        "eight-ball" => GameChoice::Pool(Game::EightBall),
                         "free-play" => GameChoice::Pool(Game::FreePlay),
-                        _ => {
-                            return Err(ArgsError::InvalidValue {
-                                flag: "--game",
-                                value,
-                            });
-                        }
+                        id => GameChoice::Catalog(id),
                     });
                 }
                 "--stress" => {
@@ -377,7 +379,11 @@ mod tests {
         );
         assert_eq!(
             parse(&["--game", "snooker"]).unwrap().game,
-            Some(crate::play::game::GameChoice::Snooker)
+            Some(crate::play::game::GameChoice::Catalog("snooker"))
+        );
+        assert_eq!(
+            parse(&["--game", "three-cushion"]).unwrap().game,
+            Some(crate::play::game::GameChoice::Catalog("three-cushion"))
         );
         assert!(matches!(
             parse(&["--game", "pyramid"]),

@@ -267,7 +267,7 @@ fn layout_states(recording: &str, missing: &str) -> Vec<(Vec<String>, &'static s
                 "--script",
                 "move 0 -1.15 0.12; move 1 -1.2773 0.2743; shoot 129.5 2; continue",
             ],
-            "Nominate a colour",
+            "Nominate a ball",
         ),
         // Snooker: the cue ball rolled behind the brown, no ball hit; played on, a free ball.
         (
@@ -279,7 +279,7 @@ fn layout_states(recording: &str, missing: &str) -> Vec<(Vec<String>, &'static s
                 "--script",
                 "move 0 -1.30 0.12; move 18 -1.22 0.12; shoot 180 0.2; choose 1",
             ],
-            "Free ball: nominate one",
+            "or a free ball",
         ),
         // The computer's turn: Player 1 fouls, the computer has ball in hand.
         (

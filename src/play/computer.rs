@@ -10,9 +10,8 @@ use std::{
 };
 
 use bevy::{math::DVec2, prelude::*, window::RequestRedraw};
-use billiards_ai::{AiError, Decision, Level, SnookerDecision, any_game::Move};
+use billiards_ai::{AiError, Decision, Level, any_game::Move};
 use billiards_physics::{Shot, Vec2};
-use billiards_rules::snooker::Frame;
 use billiards_rules::{Call, Declaration, GameRules, GameState};
 
 pub use super::decided::{Decided, describe};
@@ -89,8 +88,7 @@ pub type TurnKey = (u64, usize, usize);
 #[derive(Debug, Clone)]
 enum Question {
     Pool(GameState),
-    Snooker(Box<Frame>),
-    /// A game behind the one interface: the shared search ([`billiards_ai::decide_any`]).
+    /// A game behind the one interface: its own search ([`billiards_ai::game::decide_game`]).
     Any(Box<dyn GameRules>),
 }
 
@@ -140,6 +138,8 @@ struct TurnView {
     /// Pool: the call in force.
     call: Call,
     question: Question,
+    /// A game behind the interface: its rules, to carry a decision out as one of its moves.
+    live: Option<Box<dyn GameRules>>,
 }
 
 fn turn_view(rules: &Rules) -> Option<TurnView> {
@@ -162,20 +162,7 @@ fn turn_view(rules: &Rules) -> Option<TurnView> {
             },
             call: Call::None,
             question: Question::Any(game.rules.boxed_clone()),
-        });
-    }
-    if let Some(game) = &rules.snooker {
-        let next = game.next();
-        return Some(TurnView {
-            key: game.turn_key(),
-            name: game.name(next.striker).to_owned(),
-            level: game.computer(next.striker),
-            over: game.frame.end.is_some(),
-            choosing: !next.choices.is_empty(),
-            has_human: game.has_human(),
-            hand: next.in_hand.then_some(HandRule::InD),
-            call: Call::None,
-            question: Question::Snooker(Box::new(game.frame.clone())),
+            live: Some(game.rules.boxed_clone()),
         });
     }
     let game = rules.game.as_ref()?;
@@ -190,6 +177,7 @@ fn turn_view(rules: &Rules) -> Option<TurnView> {
         hand: HandRule::of(next.cue_ball),
         call: game.call,
         question: Question::Pool(game.rack().clone()),
+        live: None,
     })
 }
 
@@ -222,12 +210,7 @@ fn think(question: Question, sim: &Solver, level: Level, key: TurnKey) -> Task {
         Question::Pool(state) => billiards_ai::decide(&state, &sim, level, seed)
             .map(Decided::Pool)
             .map_err(|e: AiError| e.to_string()),
-        Question::Snooker(frame) => billiards_ai::decide_snooker(&frame, &sim, level, seed)
-            .map(Decided::Snooker)
-            .map_err(|e: AiError| e.to_string()),
-        Question::Any(game) => {
-            billiards_ai::any_game::decide_any(game.as_ref(), &sim, level, seed).map(Decided::Any)
-        }
+        Question::Any(game) => billiards_ai::game::decide_game(game.as_ref(), &sim, level, seed),
     });
     Task::Thinking {
         key,
@@ -317,7 +300,7 @@ fn play_computer_turn(
             handle,
         }) if handle.is_finished() => match outcome(handle) {
             Ok(decision) => {
-                announce(&decision, seat.call, &mut turn_commands);
+                announce(&decision, &seat, &mut turn_commands);
                 if let Some((shot, place)) = decision.aim() {
                     let place = place.zip(seat.hand);
                     let table = (&*solver, &*spec);
@@ -347,32 +330,30 @@ fn play_computer_turn(
         }) if since.elapsed() >= pace.0 => {
             let params = solver.simulation().params();
             let noise = level.execution_noise();
-            match decision {
-                Decided::Pool(Decision::Choose { choice, .. }) => {
-                    turn_commands.write(TurnCommand::Choose(choice));
-                }
-                Decided::Snooker(SnookerDecision::Choose { choice, .. }) => {
-                    turn_commands.write(TurnCommand::SnookerChoose(choice));
-                }
-                Decided::Pool(Decision::Shoot(plan)) => {
-                    shots.write(ShotRequested::from(plan.executed(noise, params, seed)));
-                    computer.fired = Some((key, Instant::now()));
-                }
-                Decided::Snooker(SnookerDecision::Shoot(plan)) => {
-                    shots.write(ShotRequested::from(plan.executed(noise, params, seed)));
-                    computer.fired = Some((key, Instant::now()));
-                }
-                Decided::Any(Move::Choose(index)) => {
+            let chosen = seat
+                .live
+                .as_ref()
+                .and_then(|g| decision.as_move(g.as_ref()));
+            match (decision, chosen) {
+                (_, Some(Move::Choose(index))) => {
                     turn_commands.write(TurnCommand::ChooseOption(index));
                 }
-                Decided::Any(Move::Strike(stroke)) => {
+                (_, Some(Move::Strike(stroke))) => {
+                    // The same stream as a plan's execution ([`billiards_ai::Plan::executed`]).
                     let mut rng = billiards_ai::noise::stream(seed, u64::MAX, 0);
-                    shots.write(ShotRequested::from(noise.apply(
-                        stroke.shot,
-                        params,
-                        &mut rng,
-                    )));
+                    let shot = noise.apply(stroke.shot, params, &mut rng);
+                    shots.write(ShotRequested::from(shot));
                     computer.fired = Some((key, Instant::now()));
+                }
+                (Decided::Pool(Decision::Choose { choice, .. }), None) => {
+                    turn_commands.write(TurnCommand::Choose(choice));
+                }
+                (Decided::Pool(Decision::Shoot(plan)), None) => {
+                    shots.write(ShotRequested::from(plan.executed(noise, params, seed)));
+                    computer.fired = Some((key, Instant::now()));
+                }
+                (decision, None) => {
+                    warn!("the computer's decision is not for this game: {decision:?}")
                 }
             }
         }
@@ -388,21 +369,20 @@ fn outcome(handle: JoinHandle<Result<Decided, String>>) -> Result<Decided, Strin
 }
 
 /// What goes with a decided shot before it is struck: pool's call (when it differs from the
-/// one in force), snooker's nomination.
-fn announce(decision: &Decided, call: Call, commands: &mut MessageWriter<TurnCommand>) {
-    match decision {
-        Decided::Pool(Decision::Shoot(plan)) if plan.call != call => {
-            commands.write(TurnCommand::Call(plan.call));
-        }
-        Decided::Snooker(SnookerDecision::Shoot(plan)) => {
-            if let Some(n) = plan.nominated {
-                commands.write(TurnCommand::Nominate(n));
-            }
-        }
-        Decided::Any(Move::Strike(stroke)) if stroke.declared != Declaration::None => {
+/// one in force), or a game's declaration (snooker's nomination, a called pocket).
+fn announce(decision: &Decided, seat: &TurnView, commands: &mut MessageWriter<TurnCommand>) {
+    if let Some(game) = &seat.live {
+        if let Some(Move::Strike(stroke)) = decision.as_move(game.as_ref())
+            && stroke.declared != Declaration::None
+        {
             commands.write(TurnCommand::Declare(stroke.declared));
         }
-        _ => {}
+        return;
+    }
+    if let Decided::Pool(Decision::Shoot(plan)) = decision
+        && plan.call != seat.call
+    {
+        commands.write(TurnCommand::Call(plan.call));
     }
 }
 
@@ -454,7 +434,7 @@ fn give_hint(
     let key = seat.key;
     if asked && status.at_rest && computer.hint_task.is_none() {
         computer.hint = Some((key, Hint::Thinking));
-        computer.hint_task = Some(think(seat.question, &solver, HINT_LEVEL, key));
+        computer.hint_task = Some(think(seat.question.clone(), &solver, HINT_LEVEL, key));
     }
     let finished = matches!(
         &computer.hint_task,
@@ -482,7 +462,7 @@ fn give_hint(
         Ok(decision) => {
             // The hint's call or nomination too: the player confirms it by shooting, or
             // changes it.
-            announce(&decision, seat.call, &mut calls);
+            announce(&decision, &seat, &mut calls);
             if let Some((shot, place)) = decision.aim() {
                 let place = place.zip(seat.hand);
                 let table = (&*solver, &*spec);

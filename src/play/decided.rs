@@ -1,40 +1,16 @@
-//! What the computer decided ([`Decided`]: pool's or snooker's decision) and the decision
+//! What the computer decided ([`Decided`]: by pool's, snooker's or the shared search) and the decision
 //! in words for the hint and the status line ([`describe`]), cushions named as the view shows
 //! them.
 
 use bevy::prelude::*;
 use billiards_ai::{Decision, ShotKind, SnookerDecision, any_game::Move};
-use billiards_physics::{Cushion, Shot, Vec2};
+use billiards_physics::{Cushion, Vec2};
 use billiards_rules::snooker::{Choice as SnookerChoice, balls::name as snooker_name};
 use billiards_rules::{Call, pocket_name};
 
 use crate::view::camera::{CameraMode, OrbitCamera};
 
-/// A decision of either game's computer.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Decided {
-    /// Pool's ([`billiards_ai::decide`]).
-    Pool(Decision),
-    /// Snooker's ([`billiards_ai::decide_snooker`]).
-    Snooker(SnookerDecision),
-    /// The shared search's, for a game behind the interface
-    /// ([`billiards_ai::any_game::decide_any`]).
-    Any(Move),
-}
-
-impl Decided {
-    /// The shot decided on and the cue ball's place in hand; `None` for a choice.
-    pub fn aim(&self) -> Option<(Shot, Option<Vec2>)> {
-        match self {
-            Decided::Pool(Decision::Shoot(plan)) => Some((plan.shot, plan.place)),
-            Decided::Snooker(SnookerDecision::Shoot(plan)) => Some((plan.shot, plan.place)),
-            Decided::Any(Move::Strike(stroke)) => Some((stroke.shot, stroke.place)),
-            Decided::Pool(Decision::Choose { .. })
-            | Decided::Snooker(SnookerDecision::Choose { .. })
-            | Decided::Any(Move::Choose(_)) => None,
-        }
-    }
-}
+pub use billiards_ai::game::Decided;
 
 /// The decision in words, with its success probability; cushions named as `view` shows them.
 pub fn describe(decision: &Decided, view: &OrbitCamera) -> String {

@@ -14,7 +14,7 @@ use std::collections::VecDeque;
 
 use bevy::prelude::*;
 use billiards_physics::{Pocket, Vec2};
-use billiards_rules::Call;
+use billiards_rules::{Call, Declaration};
 
 use super::game::{Rules, Turn, TurnCommand};
 use crate::{
@@ -194,18 +194,20 @@ fn play_script(
             ready
         }
         Step::Nominate(ball) => {
-            let ready = human_to_play && rules.snooker.is_some() && turn != Some(Turn::Verdict);
+            let ready = human_to_play && rules.live.is_some() && turn != Some(Turn::Verdict);
             if ready {
-                commands.write(TurnCommand::Nominate(ball));
+                commands.write(TurnCommand::Declare(Declaration::Nominate { ball }));
             }
             ready
         }
         Step::Choose(k) => {
             let pool = rules.game.as_ref().map(|g| g.next().choices.clone());
-            let snooker = rules.snooker.as_ref().map(|g| g.next().choices.clone());
-            let command = match (pool, snooker) {
+            let offered = rules.live.as_ref().map(|g| g.rules.turn().choices.len());
+            let command = match (pool, offered) {
                 (Some(choices), _) => choices.get(k - 1).map(|&c| TurnCommand::Choose(c)),
-                (_, Some(choices)) => choices.get(k - 1).map(|&c| TurnCommand::SnookerChoose(c)),
+                (_, Some(n)) => (1..=n)
+                    .contains(&k)
+                    .then(|| TurnCommand::ChooseOption(k - 1)),
                 (None, None) => None,
             };
             let ready = human_to_play && turn == Some(Turn::Verdict) && command.is_some();

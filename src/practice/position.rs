@@ -97,8 +97,7 @@ pub(super) fn load_position(
         return;
     }
     let ended_match = rules.in_match();
-    rules.game = None;
-    rules.snooker = None;
+    rules.clear();
     // A drill in session ends (drill::end_drill_on_new_table) unless this is its own.
     let own = request.own_physics && p.params.is_some();
     match table_choice_of(&p.table).filter(|_| !own) {

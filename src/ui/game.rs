@@ -11,7 +11,6 @@ use super::layout::{HUD_BUTTON_WIDTH, HudLine, INFO, PANEL_WIDTH, WARNING};
 use super::live_windows;
 use super::new_game::{NewGameForm, seat_rows};
 use super::pool_windows;
-use super::snooker_windows;
 use crate::{
     play::computer::{Computer, HintRequested},
     play::game::{GameChoice, NewGameRequested, Rules, Turn, TurnCommand},
@@ -64,9 +63,13 @@ pub fn free_play(state: &GameParam) -> bool {
     !state.rules.in_match()
 }
 
-/// A snooker frame is in play (its balls are named by colour, not number).
+/// The table is the snooker table (its balls are named by colour, not number).
 pub fn snooker(state: &GameParam) -> bool {
-    state.rules.snooker.is_some()
+    use billiards_physics::snooker::{SNOOKER_LENGTH, SNOOKER_WIDTH};
+    state.solver.as_ref().is_some_and(|solver| {
+        let table = solver.simulation().table();
+        table.length == SNOOKER_LENGTH && table.width == SNOOKER_WIDTH
+    })
 }
 
 /// The HUD's buttons, one row, each always in its place: disabled when it does not apply
@@ -135,12 +138,6 @@ pub fn hud_lines(state: &GameParam) -> (Vec<HudLine>, Vec<HudLine>) {
         let lines = game.hud_lines(turn);
         return split_lines(state, lines, 1, |_, _| false, game.turn_key());
     }
-    if let Some(game) = &state.rules.snooker {
-        // The match and the frame's score above the turn; the snookers needed in warning.
-        let lines = game.hud_lines(turn);
-        let warn = |k: usize, line: &str| k > 2 && line.contains("snooker");
-        return split_lines(state, lines, 2, warn, game.turn_key());
-    }
     let Some(game) = &state.rules.game else {
         return (vec![("free play".to_owned(), None)], Vec::new());
     };
@@ -192,7 +189,10 @@ fn split_lines(
     {
         // A hint's odds are those of its own aim (issue 48: "61 % to succeed" stayed after
         // the aim moved): once the player's aim or nomination leaves it, it says so.
-        let nominated = state.rules.snooker.as_ref().map(|g| g.nominated);
+        let nominated = state.rules.live.as_ref().map(|g| match g.declared {
+            billiards_rules::Declaration::Nominate { ball } => Some(ball),
+            _ => None,
+        });
         let text = if hint_left(hint, &state.shot, nominated) {
             "hint: your aim has left the hint's shot (Hint again for its odds)".to_owned()
         } else {
@@ -259,7 +259,6 @@ pub fn game_windows(
     // window was at its last pass; the new-game dialog, modal, sits over the table.
     let docked = match turn {
         Some(Turn::Verdict) => Some("Verdict"),
-        Some(Turn::GameOver) if state.rules.snooker.is_some() => Some("Frame over"),
         Some(Turn::GameOver) if state.rules.live.is_some() => Some("Game over"),
         Some(Turn::GameOver) => Some("Rack over"),
         _ => None,
@@ -309,22 +308,6 @@ pub fn game_windows(
                 live_windows::game_over(ui, game, &mut state.commands)
             });
         }
-        Turn::Verdict if state.rules.snooker.is_some() => {
-            snooker_windows::snooker_verdict(
-                &ctx,
-                centre("Verdict"),
-                &state.rules,
-                &mut state.commands,
-            );
-        }
-        Turn::GameOver if state.rules.snooker.is_some() => {
-            snooker_windows::snooker_frame_over(
-                &ctx,
-                centre("Frame over"),
-                &state.rules,
-                &mut state.commands,
-            );
-        }
         Turn::Verdict => {
             let Some(game) = &state.rules.game else {
                 return Ok(());
@@ -348,8 +331,8 @@ pub fn game_windows(
             });
         }
         Turn::Aiming | Turn::BallInHand if human_to_shoot(&state) => {
-            if state.rules.snooker.is_some() {
-                snooker_windows::snooker_nominate(&ctx, &state.rules, &mut state.commands);
+            if let Some(game) = &state.rules.live {
+                live_windows::declare(&ctx, game, &mut state.commands);
             }
         }
         Turn::Aiming | Turn::BallInHand | Turn::ShotInPlay => {}
@@ -372,13 +355,11 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
         // Each game's own usual length: three-cushion's 40 points, not a race to 3.
         form.race_to = form.game.length().1;
     }
-    let snooker = form.game == GameChoice::Snooker;
     let own_table = matches!(form.game, GameChoice::Catalog(_));
     let setup = form.setup.get_or_insert(*state.setup);
-    // Snooker has one table and one way to set the balls: the pool rows give way to it.
-    if snooker {
-        ui.label("Table: 12-ft snooker (WPBSA 1.1), 52.5 mm balls");
-    } else if let GameChoice::Catalog(id) = form.game {
+    // A game of the catalog (snooker, three-cushion) has its own table and layout: the pool
+    // rows give way to it.
+    if let GameChoice::Catalog(id) = form.game {
         ui.label(own_table_text(id));
     } else {
         ui.horizontal(|ui| {
@@ -397,7 +378,7 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
         drill_row(ui, form, &state.drills, &state.bests);
     } else {
         form.drill = None;
-        if !snooker && !own_table {
+        if !own_table {
             ui.horizontal(|ui| {
                 ui.label("Rack:");
                 for style in billiards_rules::RackStyle::ALL {
@@ -405,7 +386,7 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
                 }
             });
         }
-        seat_rows(ui, form, snooker);
+        seat_rows(ui, form);
     }
     // A game with shots in it ends only when the player says so (as the rack buttons ask).
     let in_progress = state.solver.as_ref().is_some_and(|s| s.in_progress());

@@ -60,3 +60,62 @@ pub(super) fn game_over(
         commands.write(TurnCommand::NextRack);
     }
 }
+
+/// A human to play: the balls the rules let them nominate (snooker's colour after a red or
+/// free ball, 2.12, 3.12; without one the ball hit first counts), and the concession where
+/// the game has one (snooker's frame, 2.1(a)). Nothing on the opening stroke unless either
+/// applies (issue 48: an empty window at the break-off).
+pub(super) fn declare(
+    ctx: &egui::Context,
+    game: &LiveGame,
+    commands: &mut MessageWriter<TurnCommand>,
+) {
+    use billiards_rules::Declaration;
+    let turn = game.rules.turn();
+    let nominate = &turn.declare.nominate;
+    // A concession is offered where taking it on a copy of the game is accepted.
+    let concession = !turn.opening && game.rules.boxed_clone().concede().is_ok();
+    if nominate.is_empty() && !concession {
+        return;
+    }
+    let title = if nominate.is_empty() {
+        "Game"
+    } else {
+        "Nominate"
+    };
+    egui::Window::new(title)
+        .id(egui::Id::new("live declare"))
+        .collapsible(true)
+        .default_open(!nominate.is_empty())
+        .resizable(false)
+        .anchor(egui::Align2::RIGHT_BOTTOM, [-10.0, -10.0])
+        .show(ctx, |ui| {
+            ui.label(format!("ball on: {}", turn.ball_on));
+            if !nominate.is_empty() {
+                ui.label("Nominate a ball (else the one hit first counts):");
+                ui.horizontal_wrapped(|ui| {
+                    // One button a name: fifteen reds are one "red" (the one hit first).
+                    let mut seen: Vec<String> = Vec::new();
+                    for &ball in nominate {
+                        let name = game.rules.ball_name(ball);
+                        if seen.contains(&name) {
+                            continue;
+                        }
+                        seen.push(name.clone());
+                        let chosen = game.declared == Declaration::Nominate { ball };
+                        if ui.selectable_label(chosen, name).clicked() {
+                            commands.write(TurnCommand::Declare(Declaration::Nominate { ball }));
+                        }
+                    }
+                });
+            }
+            if concession
+                && ui
+                    .button("Concede")
+                    .on_hover_text("the opponent wins this game (WPBSA 2.1(a) in snooker)")
+                    .clicked()
+            {
+                commands.write(TurnCommand::Concede);
+            }
+        });
+}

@@ -34,7 +34,6 @@ mod pool_windows;
 pub mod practice;
 pub mod recordings;
 pub mod settings;
-mod snooker_windows;
 pub mod stress;
 pub mod timeline;
 

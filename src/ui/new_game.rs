@@ -66,7 +66,7 @@ pub fn remember_new_game(
 
 /// The players' rows (name, human or the computer at a level) and the race: racks, or
 /// frames of a snooker match (best of an odd number, WPBSA 2.1).
-pub(super) fn seat_rows(ui: &mut egui::Ui, form: &mut NewGameForm, snooker: bool) {
+pub(super) fn seat_rows(ui: &mut egui::Ui, form: &mut NewGameForm) {
     for (k, (name, seat)) in form
         .players
         .iter_mut()
@@ -100,13 +100,17 @@ pub(super) fn seat_rows(ui: &mut egui::Ui, form: &mut NewGameForm, snooker: bool
             if let Some(first) = unit.get_mut(..1) {
                 first.make_ascii_uppercase();
             }
-            ui.label(unit);
+            ui.label(&unit);
             ui.add(
                 egui::DragValue::new(&mut form.race_to)
                     .update_while_editing(false)
                     .range(1..=200),
             );
-            ui.label("player 1 opens");
+            // WPBSA 2.1: a match is the best of an odd number of frames.
+            if unit == "Best of" && form.race_to.is_multiple_of(2) {
+                form.race_to += 1;
+            }
+            ui.label("player 1 opens, then the players alternate");
         });
         return;
     }
@@ -117,14 +121,7 @@ pub(super) fn seat_rows(ui: &mut egui::Ui, form: &mut NewGameForm, snooker: bool
                 .update_while_editing(false)
                 .range(1..=15),
         );
-        if snooker {
-            ui.label(format!(
-                "frames (best of {}); the break-off alternates",
-                2 * form.race_to - 1
-            ));
-        } else {
-            ui.label("racks; player 1 breaks first, then the break alternates");
-        }
+        ui.label("racks; player 1 breaks first, then the break alternates");
     });
 }
 

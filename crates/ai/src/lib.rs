@@ -38,6 +38,7 @@ pub mod any_match;
 pub mod candidates;
 pub mod drill;
 pub mod evaluate;
+pub mod game;
 pub mod greedy;
 pub mod level;
 pub mod noise;

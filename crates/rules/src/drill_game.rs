@@ -240,4 +240,8 @@ impl GameRules for DrillGame {
     fn save(&self) -> Result<serde_json::Value, RulesError> {
         crate::interface::saved("drill", self)
     }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
 }

@@ -364,4 +364,8 @@ impl GameRules for PoolMatch {
     fn save(&self) -> Result<serde_json::Value, RulesError> {
         crate::interface::saved("pool", self)
     }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
 }

@@ -8,7 +8,6 @@ use billiards_rules::{Call, CallRule, Choice, Game, GameLog, Match, Seat};
 use super::call::{preselected_ball, proposed_call};
 use super::flow::{new_rack, prepare_table, rack_request};
 use super::live_flow::{live_command, start_live};
-use super::snooker::{self, SnookerInPlay};
 use super::state::*;
 use crate::{
     play::aim::AimPrediction,
@@ -97,14 +96,6 @@ fn start_game(
                 Err(error) => status.note = Some(error),
             }
         }
-        GameChoice::Snooker => start_snooker(
-            request,
-            &mut state.rules,
-            &mut table.spec,
-            &table.settings,
-            &mut table.layouts,
-            status,
-        ),
         GameChoice::Pool(game) => start_pool(request, game, &mut state.rules, table),
     }
 }
@@ -170,17 +161,6 @@ fn turn_command(
         live_command(game, command, &mut live.status, &mut table.layouts, &layout);
         return;
     }
-    if let Some(game) = state.rules.snooker.as_mut() {
-        snooker_command(
-            game,
-            command,
-            &mut live.status,
-            &mut table.layouts,
-            &table.spec,
-            &table.settings,
-        );
-        return;
-    }
     if let Some(game) = state.rules.game.as_mut() {
         pool_command(game, command, table, live, aim);
     }
@@ -198,8 +178,6 @@ fn pool_command(
     match command {
         TurnCommand::OpenDialog
         | TurnCommand::CloseDialog
-        | TurnCommand::SnookerChoose(_)
-        | TurnCommand::Nominate(_)
         | TurnCommand::ChooseOption(_)
         | TurnCommand::Declare(_)
         | TurnCommand::Concede => {}
@@ -270,83 +248,10 @@ pub(super) fn start_game_at_launch(
         new_games.write(NewGameRequested {
             game: start.game,
             players: ["Player 1".to_owned(), "Player 2".to_owned()],
-            race_to: 3,
+            race_to: start.game.length().1,
             seed: start.seed.unwrap_or_else(clock_seed),
             computer: [None, start.computer],
             setup: *setup,
         });
-    }
-}
-
-/// A new snooker match: the 12-ft table, the 22 balls, frame 1.
-fn start_snooker(
-    request: &NewGameRequested,
-    rules: &mut Rules,
-    spec: &mut ResMut<TableSpec>,
-    settings: &PhysicsSettings,
-    layouts: &mut MessageWriter<LayoutRequested>,
-    status: &mut SimStatus,
-) {
-    spec.set_if_neq(TableSpec::snooker());
-    let (table, ball) = snooker::equipment(spec, settings);
-    // 2.1: a match is the best of an odd number of frames; `race_to` frames win it.
-    let best_of = 2 * request.race_to.max(1) - 1;
-    let started = SnookerInPlay::new(
-        request.players.clone(),
-        best_of,
-        request.computer,
-        request.seed,
-        &table,
-        &ball,
-    );
-    match (started, snooker::rack_request(spec, settings)) {
-        (Ok(game), Ok(rack)) => {
-            rules.snooker = Some(game);
-            layouts.write(rack);
-        }
-        (Err(error), _) => status.note = Some(format!("cannot start snooker: {}", error.0)),
-        (_, Err(error)) => status.note = Some(format!("cannot start snooker: {error}")),
-    }
-}
-
-/// A player's command in a snooker match.
-fn snooker_command(
-    game: &mut SnookerInPlay,
-    command: TurnCommand,
-    status: &mut SimStatus,
-    layouts: &mut MessageWriter<LayoutRequested>,
-    spec: &TableSpec,
-    settings: &PhysicsSettings,
-) {
-    match command {
-        TurnCommand::Continue => game.verdict_shown = false,
-        TurnCommand::SnookerChoose(choice) => match game.frame.choose(choice) {
-            Ok(chosen) => {
-                game.choices.push(choice);
-                game.verdict_shown = false;
-                game.pending_layout = chosen.layout;
-            }
-            Err(error) => status.note = Some(error.to_string()),
-        },
-        TurnCommand::Nominate(ball) => game.nominated = Some(ball),
-        TurnCommand::Concede => {
-            let striker = game.next().striker;
-            match game.frame.concede(striker) {
-                Ok(_) => {
-                    game.verdict_shown = false;
-                    game.count_the_frame();
-                }
-                Err(error) => status.note = Some(error.to_string()),
-            }
-        }
-        TurnCommand::NextRack => {
-            if game.frame.winner().is_none() || game.frames.winner().is_some() {
-                return;
-            }
-            if let Err(error) = game.next_frame(spec, settings, layouts) {
-                status.note = Some(error);
-            }
-        }
-        _ => {}
     }
 }

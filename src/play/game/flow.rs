@@ -30,9 +30,6 @@ fn phase(rules: &Rules, status: &SimStatus, dialog: bool) -> Turn {
     if let Some(game) = &rules.live {
         return game.phase();
     }
-    if let Some(snooker) = &rules.snooker {
-        return snooker.phase();
-    }
     let Some(game) = &rules.game else {
         return Turn::Aiming;
     };
@@ -266,15 +263,6 @@ pub(super) fn follow_rules(
             }),
             CueBallPlace::AsItLies | CueBallPlace::Placed => None,
         };
-        if status.ball_in_hand != hand {
-            status.ball_in_hand = hand;
-        }
-    }
-    if let Some(game) = &rules.snooker
-        && status.at_rest
-    {
-        let next = game.next();
-        let hand = (next.in_hand && game.frame.end.is_none()).then_some(HandRule::InD);
         if status.ball_in_hand != hand {
             status.ball_in_hand = hand;
         }

@@ -3,8 +3,8 @@
 //! turn, the verdict, the options, the score and the end all come from the interface; the
 //! log ([`StrokeLog`]) is written beside the recording as every game's is.
 //!
-//! Three-cushion is played through it; pool and snooker still have their own state
-//! ([`super::GameInPlay`], [`super::snooker::SnookerInPlay`]) until they move here.
+//! Snooker and three-cushion are played through it; pool still has its own state
+//! ([`super::GameInPlay`]) until it moves here.
 
 use billiards_ai::Level;
 use billiards_rules::catalog::GameEntry;

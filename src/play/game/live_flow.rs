@@ -96,6 +96,15 @@ pub(super) fn live_command(
                 match setup {
                     Setup::Keep => {}
                     Setup::Put { balls } => game.pending = balls,
+                    // Every ball back where it was (snooker's replace, 3.14): moved in place,
+                    // in the same recording, when no ball now on the table is left out.
+                    Setup::Layout { balls }
+                        if layout
+                            .iter()
+                            .all(|(n, _)| balls.iter().any(|(m, _)| m == n)) =>
+                    {
+                        game.pending = balls;
+                    }
                     Setup::Layout { balls } => {
                         let balls = balls
                             .into_iter()

@@ -24,7 +24,6 @@ mod flow;
 mod live;
 mod live_flow;
 pub mod put;
-pub mod snooker;
 mod state;
 mod table_input;
 mod turn;
@@ -58,10 +57,8 @@ pub fn plugin(app: &mut App) {
             Update,
             (
                 judge_shot,
-                snooker::flow::judge_stroke,
                 live_flow::judge_live,
                 apply_commands,
-                snooker::flow::replace_balls,
                 live_flow::put_pending,
                 follow_rules,
             )

@@ -8,7 +8,6 @@ use billiards_rules::{
 };
 
 pub use super::live::LiveGame;
-use super::snooker::SnookerInPlay;
 pub use super::turn::Turn;
 use crate::settings::TableSetup;
 
@@ -17,10 +16,8 @@ use crate::settings::TableSetup;
 pub enum GameChoice {
     /// 8-ball, 9-ball, 10-ball or free play ([`Game`]).
     Pool(Game),
-    /// Snooker on the 12-ft table ([`billiards_rules::snooker`]).
-    Snooker,
     /// A game of the catalog played behind the one interface alone, by its id
-    /// ([`billiards_rules::catalog::find`]): three-cushion.
+    /// ([`billiards_rules::catalog::find`]): snooker, three-cushion.
     Catalog(&'static str),
 }
 
@@ -30,7 +27,7 @@ impl GameChoice {
         GameChoice::Pool(Game::NineBall),
         GameChoice::Pool(Game::TenBall),
         GameChoice::Pool(Game::EightBall),
-        GameChoice::Snooker,
+        GameChoice::Catalog("snooker"),
         GameChoice::Catalog("three-cushion"),
         GameChoice::Pool(Game::FreePlay),
     ];
@@ -42,7 +39,6 @@ impl GameChoice {
             GameChoice::Pool(Game::TenBall) => "10-ball",
             GameChoice::Pool(Game::EightBall) => "8-ball",
             GameChoice::Pool(Game::FreePlay) => "free play",
-            GameChoice::Snooker => "snooker",
             GameChoice::Catalog(id) => {
                 billiards_rules::catalog::find(id).map_or("unknown game", |entry| entry.label)
             }
@@ -73,7 +69,8 @@ pub struct NewGameRequested {
     pub game: GameChoice,
     /// The players' names.
     pub players: [String; 2],
-    /// Racks (snooker: frames) needed to win the match.
+    /// The match's length in the game's own unit ([`GameChoice::length`]): racks to win,
+    /// frames best of (snooker), points to reach (three-cushion).
     pub race_to: u32,
     /// The seed of the first rack's gaps (each later rack takes the next seed).
     pub seed: u64,
@@ -100,10 +97,6 @@ pub enum TurnCommand {
     CallBall(u8),
     /// Make this call for the next shot (a pocket, a safety, a push out, or none).
     Call(Call),
-    /// Snooker: take one of the choices offered after a foul or a tie.
-    SnookerChoose(billiards_rules::snooker::Choice),
-    /// Snooker: nominate this colour or free ball for the next stroke (2.12, 3.12).
-    Nominate(u8),
     /// Snooker: the striker concedes the frame (2.1(a)); any game that has a concession.
     Concede,
     /// Take option `index` of the turn ([`billiards_rules::Turn::choices`]): a game behind
@@ -120,8 +113,6 @@ pub enum TurnCommand {
 pub struct Rules {
     /// The pool match in play, if any.
     pub game: Option<GameInPlay>,
-    /// The snooker match in play, if any.
-    pub snooker: Option<SnookerInPlay>,
     /// A match of any other game, behind the one interface, if any.
     pub live: Option<LiveGame>,
 }
@@ -129,13 +120,12 @@ pub struct Rules {
 impl Rules {
     /// Whether a match (of any game) is in play.
     pub fn in_match(&self) -> bool {
-        self.game.is_some() || self.snooker.is_some() || self.live.is_some()
+        self.game.is_some() || self.live.is_some()
     }
 
     /// No match: free play.
     pub fn clear(&mut self) {
         self.game = None;
-        self.snooker = None;
         self.live = None;
     }
 
@@ -145,10 +135,6 @@ impl Rules {
         if let Some(game) = &self.live {
             let turn = game.rules.turn();
             return Some((game.computer(turn.striker), !turn.choices.is_empty()));
-        }
-        if let Some(game) = &self.snooker {
-            let next = game.next();
-            return Some((game.computer(next.striker), !next.choices.is_empty()));
         }
         let game = self.game.as_ref()?;
         let next = game.next();

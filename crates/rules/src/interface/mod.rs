@@ -312,6 +312,9 @@ pub trait GameRules: std::fmt::Debug + Send + Sync {
     /// re-judges a recording from where its first stroke found the game
     /// ([`crate::catalog::restore`] reads it back).
     fn save(&self) -> Result<serde_json::Value, RulesError>;
+    /// The game as [`std::any::Any`]: a caller with a game's own tools (the computer's
+    /// dedicated pool and snooker searches) finds its type; every other caller needs none.
+    fn as_any(&self) -> &dyn std::any::Any;
 }
 
 /// `state` as `{"kind": kind, "state": ...}`, the form [`crate::catalog::restore`] reads.

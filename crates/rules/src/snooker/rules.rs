@@ -87,6 +87,18 @@ impl SnookerGame {
     }
 }
 
+/// The nomination of a stroke: the player's, or else the ball hit first when that is the
+/// obvious one (2.12: a colour after a red; 3.12: a free ball that is not otherwise on).
+pub fn nomination(frame: &Frame, chosen: Option<u8>, first: Option<u8>) -> Option<u8> {
+    chosen.or(match frame.next.on {
+        BallOn::Colour { .. } => first.filter(|&c| super::balls::is_colour(c)),
+        on if frame.next.free_ball => {
+            first.filter(|n| !frame.balls_on(on).contains(n) && frame.on_table.contains(n))
+        }
+        _ => None,
+    })
+}
+
 /// What is on in words: "a red", "a colour (the one hit first is nominated)", "the blue",
 /// with a free ball if one may be nominated (2.12, 3.12).
 pub fn on_text(next: &NextShot) -> String {
@@ -201,7 +213,7 @@ impl GameRules for SnookerGame {
     }
 
     fn judge(&mut self, stroke: &StrokeRecord<'_>) -> Result<Judgement, RulesError> {
-        let nominated = match stroke.declared {
+        let declared = match stroke.declared {
             Declaration::None => None,
             Declaration::Nominate { ball } => Some(ball),
             other => {
@@ -211,6 +223,7 @@ impl GameRules for SnookerGame {
             }
         };
         let summary = stroke.summary()?;
+        let nominated = nomination(&self.frame, declared, summary.first_contact);
         let verdict = self
             .frame
             .play(Stroke {
@@ -323,5 +336,9 @@ impl GameRules for SnookerGame {
 
     fn save(&self) -> Result<serde_json::Value, RulesError> {
         crate::interface::saved("snooker", self)
+    }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
     }
 }

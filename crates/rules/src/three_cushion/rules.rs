@@ -299,4 +299,8 @@ impl GameRules for ThreeCushionMatch {
     fn save(&self) -> Result<serde_json::Value, RulesError> {
         crate::interface::saved("three_cushion", self)
     }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
 }
