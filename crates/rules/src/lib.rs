@@ -42,6 +42,7 @@ pub mod pool;
 pub mod position;
 pub mod race;
 pub mod racks;
+pub mod replay_strokes;
 pub mod respot;
 mod rotation;
 pub mod shot;

@@ -13,8 +13,9 @@
 
 use crate::catalog::restore;
 use crate::interface::{Declaration, GameRules, Judgement, StrokeRecord};
-use billiards_physics::recording::{Action, Recording};
-use billiards_physics::{Simulation, Vec2};
+use crate::replay_strokes::{Replayed, StrokeJudge, layout, replay_strokes, strikes};
+use billiards_physics::Simulation;
+use billiards_physics::recording::Recording;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
@@ -49,9 +50,6 @@ pub struct StrokeLog {
     #[serde(default)]
     pub strokes: Vec<StrokeEntry>,
 }
-
-/// A stroke in flight in the check: its number, the layout at the strike and its first event.
-type InFlight = (usize, Vec<(u8, Vec2)>, usize);
 
 impl StrokeLog {
     /// An empty log of `game` as it stands now.
@@ -106,90 +104,64 @@ impl StrokeLog {
         if self.version != STROKE_LOG_VERSION {
             return Err(format!("stroke log version {}", self.version));
         }
-        let strikes = recording
-            .inputs
-            .iter()
-            .filter(|i| matches!(i.action, Action::Strike { .. }))
-            .count();
+        let strikes = strikes(recording);
         if strikes != self.strokes.len() {
             return Err(format!(
                 "the log has {} strokes, the recording {strikes} strikes",
                 self.strokes.len()
             ));
         }
-        let mut game = restore(&self.start).map_err(|e| e.0)?;
-        let mut sim = recording.start().map_err(|e| format!("setup: {e}"))?;
-        let mut pending: Option<InFlight> = None;
-        let mut k = 0;
-        for (i, input) in recording.inputs.iter().enumerate() {
-            let replay =
-                |e: &dyn std::fmt::Display| format!("input {i} at t = {}: {e}", input.time);
-            sim.advance_to(input.time).map_err(|e| replay(&e))?;
-            if let Some(p) = pending.take() {
-                self.judge(game.as_mut(), &sim, p)?;
-            }
-            match input.action {
-                Action::Strike { ball, shot } => {
-                    k += 1;
-                    let entry = &self.strokes[k - 1];
-                    for &index in &entry.choices {
-                        game.choose(index, &layout(&sim))
-                            .map_err(|e| format!("stroke {k}: option {index}: {e}"))?;
-                    }
-                    let cue = game.turn().cue_ball;
-                    let struck = sim.numbers().get(ball).copied();
-                    if struck != Some(cue) {
-                        return Err(format!(
-                            "stroke {k}: the strike is of ball {struck:?}, not of the cue ball {cue}"
-                        ));
-                    }
-                    let before = layout(&sim);
-                    let first = sim.history().events().len();
-                    sim.strike(ball, shot).map_err(|e| replay(&e))?;
-                    pending = Some((k, before, first));
-                }
-                Action::Place {
-                    ball,
-                    position,
-                    velocity,
-                    spin,
-                } => sim
-                    .place(ball, position, velocity, spin)
-                    .map_err(|e| replay(&e))?,
-                Action::SetParams { params } => sim.set_params(params).map_err(|e| replay(&e))?,
-            }
-        }
-        if let Some(p) = pending.take() {
-            sim.advance_to(recording.end_time)
-                .map_err(|e| format!("to the end: {e}"))?;
-            if !sim.is_at_rest() {
-                // Saved while the balls were moving: the rest follows from the physics.
-                sim.run_to_rest().map_err(|e| format!("to rest: {e}"))?;
-            }
-            self.judge(game.as_mut(), &sim, p)?;
-        }
-        Ok(self.strokes.len())
+        let game = restore(&self.start).map_err(|e| e.0)?;
+        replay_strokes(recording, &mut Checker { log: self, game })
+    }
+}
+
+/// The game re-judging a log's strokes as the recording replays.
+struct Checker<'a> {
+    log: &'a StrokeLog,
+    game: Box<dyn GameRules>,
+}
+
+impl StrokeJudge for Checker<'_> {
+    type Error = String;
+
+    fn replay_error(&self, what: String) -> String {
+        what
     }
 
-    /// Judges stroke `k` on the table the replay reached, against the logged judgement.
-    fn judge(
-        &self,
-        game: &mut dyn GameRules,
-        sim: &Simulation,
-        (k, before, first): InFlight,
-    ) -> Result<(), String> {
+    /// The logged options taken on the table as it is, then the struck ball checked.
+    fn strike(&mut self, k: usize, sim: &Simulation, ball: usize) -> Result<(), String> {
+        for &index in &self.log.strokes[k - 1].choices {
+            self.game
+                .choose(index, &layout(sim))
+                .map_err(|e| format!("stroke {k}: option {index}: {e}"))?;
+        }
+        let cue = self.game.turn().cue_ball;
+        let struck = sim.numbers().get(ball).copied();
+        if struck != Some(cue) {
+            return Err(format!(
+                "stroke {k}: the strike is of ball {struck:?}, not of the cue ball {cue}"
+            ));
+        }
+        Ok(())
+    }
+
+    /// Stroke `k` judged on the table the replay reached, against the logged judgement.
+    fn rest(&mut self, sim: &Simulation, stroke: Replayed) -> Result<(), String> {
+        let k = stroke.k;
         if !sim.is_at_rest() {
             return Err(format!(
                 "stroke {k}: the next input came before its balls rested"
             ));
         }
-        let entry = &self.strokes[k - 1];
+        let entry = &self.log.strokes[k - 1];
         let after = layout(sim);
-        let judgement = game
+        let judgement = self
+            .game
             .judge(&StrokeRecord {
-                events: &sim.history().events()[first..],
+                events: &sim.history().events()[stroke.first..],
                 numbers: sim.numbers(),
-                before: &before,
+                before: &stroke.before,
                 after: &after,
                 declared: entry.declared,
             })
@@ -202,13 +174,4 @@ impl StrokeLog {
         }
         Ok(())
     }
-}
-
-/// Every ball on the table by number.
-fn layout(sim: &Simulation) -> Vec<(u8, Vec2)> {
-    sim.balls()
-        .zip(sim.numbers())
-        .filter(|(b, _)| b.motion.on_table())
-        .map(|(b, &n)| (n, b.position))
-        .collect()
 }

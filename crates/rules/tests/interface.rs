@@ -11,20 +11,11 @@ use billiards_rules::{
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
+mod interface_common;
+use interface_common::{hand_place, id_of, layout_of};
+
 fn players() -> [String; 2] {
     ["Ann".to_owned(), "Bob".to_owned()]
-}
-
-fn layout_of(sim: &Simulation) -> Vec<(u8, Vec2)> {
-    sim.balls()
-        .zip(sim.numbers())
-        .filter(|(b, _)| b.motion.on_table())
-        .map(|(b, &n)| (n, b.position))
-        .collect()
-}
-
-fn id_of(sim: &Simulation, number: u8) -> usize {
-    sim.numbers().iter().position(|&n| n == number).unwrap()
 }
 
 /// A fresh solver on `balls` with the game's table and balls.
@@ -57,28 +48,6 @@ fn put(sim: &mut Simulation, balls: &[(u8, Vec2)]) {
                 panic!("the rules put the {n} at {p:?}, which the solver refuses: {e}")
             });
     }
-}
-
-/// A place for the cue ball in hand that the rules accept, scanning the table.
-fn hand_place(game: &dyn GameRules, sim: &Simulation, cue: u8) -> Vec2 {
-    let others: Vec<(u8, Vec2)> = layout_of(sim)
-        .into_iter()
-        .filter(|&(n, _)| n != cue)
-        .collect();
-    let table = game.table();
-    let (nx, ny) = (40, 20);
-    for i in 0..nx {
-        for j in 0..ny {
-            let at = Vec2::new(
-                (i as f64 / nx as f64 - 0.5) * table.length,
-                (j as f64 / ny as f64 - 0.5) * table.width,
-            );
-            if game.check_hand(at, &others).is_ok() {
-                return at;
-            }
-        }
-    }
-    panic!("no place for the cue ball in hand on the whole table");
 }
 
 /// The counts of one run through the interface.

@@ -3,7 +3,7 @@
 //! recording, and an edited judgement or a missing stroke found.
 
 use billiards_physics::recording::{Recorder, Recording};
-use billiards_physics::{Params, Shot, Simulation, Vec2};
+use billiards_physics::{Params, Shot, Vec2};
 use billiards_rules::catalog::{GAMES, MatchSettings, restore};
 use billiards_rules::{
     CueBallPlace, GameRules, RulesLog, Setup, StrokeEntry, StrokeLog, StrokeRecord,
@@ -11,35 +11,8 @@ use billiards_rules::{
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-fn layout_of(sim: &Simulation) -> Vec<(u8, Vec2)> {
-    sim.balls()
-        .zip(sim.numbers())
-        .filter(|(b, _)| b.motion.on_table())
-        .map(|(b, &n)| (n, b.position))
-        .collect()
-}
-
-fn id_of(sim: &Simulation, number: u8) -> usize {
-    sim.numbers().iter().position(|&n| n == number).unwrap()
-}
-
-/// A place for the cue ball in hand that the rules accept, scanning the table.
-fn hand_place(game: &dyn GameRules, sim: &Simulation, cue: u8) -> Vec2 {
-    let others: Vec<(u8, Vec2)> = layout_of(sim)
-        .into_iter()
-        .filter(|&(n, _)| n != cue)
-        .collect();
-    let table = game.table();
-    (0..800)
-        .map(|k| {
-            Vec2::new(
-                (f64::from(k % 40) / 40.0 - 0.5) * table.length,
-                (f64::from(k / 40) / 20.0 - 0.5) * table.width,
-            )
-        })
-        .find(|&at| game.check_hand(at, &others).is_ok())
-        .expect("a place for the cue ball in hand")
-}
+mod interface_common;
+use interface_common::{hand_place, id_of, layout_of};
 
 /// Records up to `strokes` strokes of `game` from its start, each logged as the game does:
 /// options taken at random, the cue ball in hand placed, random shots. Stops where the table

@@ -160,18 +160,16 @@ fn new_layout(
 /// from the strike and the layouts before and after, log it, and put back what the
 /// judgement says (with the next striker's cue ball into a legal place when in hand).
 pub(super) fn judge_live(
-    mut commands: Commands,
     mut finished: MessageReader<ShotFinished>,
     mut rules: ResMut<Rules>,
-    solver: Option<ResMut<Solver>>,
-    mut balls: Query<(&mut BallMotion, Has<Pocketed>)>,
+    solver: Option<Res<Solver>>,
     mut status: ResMut<SimStatus>,
     folder: Res<RecordingsFolder>,
 ) {
     if finished.read().count() == 0 {
         return;
     }
-    let (Some(game), Some(mut solver)) = (rules.live.as_mut(), solver) else {
+    let (Some(game), Some(solver)) = (rules.live.as_mut(), solver) else {
         return;
     };
     let sim = solver.simulation();
@@ -223,18 +221,12 @@ pub(super) fn judge_live(
     game.last = Some(judgement);
     game.verdict_shown = true;
     moves.extend(hand_place(game.rules.as_ref(), solver.simulation(), &moves));
-    let name = |n: u8| game.rules.ball_name(n);
-    set_balls(
-        &mut commands,
-        &mut solver,
-        &moves,
-        &mut balls,
-        &mut status,
-        &name,
-    );
+    // Set on the table by `put_pending`, later in this frame's flow.
+    game.pending = moves;
 }
 
-/// Balls an option put back ([`Setup::Put`]): set on the table once the command is taken.
+/// Balls the last judgement or an option put back ([`Judgement::put`](billiards_rules::Judgement),
+/// [`Setup::Put`]), set on the table after the frame's judging and commands.
 pub(super) fn put_pending(
     mut commands: Commands,
     mut rules: ResMut<Rules>,

@@ -16,9 +16,10 @@ use super::frame::{Frame, SnookerError};
 use super::judge::Stroke;
 use super::verdict::{Choice, Verdict};
 use crate::game::Seat;
+use crate::replay_strokes::{Replayed, StrokeJudge, layout, replay_strokes, strikes};
 use crate::shot::summarise;
 use billiards_physics::Vec2;
-use billiards_physics::recording::{Action, Recording};
+use billiards_physics::recording::Recording;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
@@ -121,9 +122,6 @@ pub enum FrameLogError {
     },
 }
 
-/// A stroke in flight: its number (from 1), the balls at its strike, its first event.
-type InFlight = (usize, Vec<(u8, Vec2)>, usize);
-
 /// What the rules left on the table for the next strike.
 #[derive(Default)]
 struct Expected {
@@ -176,107 +174,85 @@ impl FrameLog {
                 found: self.version,
             });
         }
-        let strikes = recording
-            .inputs
-            .iter()
-            .filter(|i| matches!(i.action, Action::Strike { .. }))
-            .count();
+        let strikes = strikes(recording);
         if strikes != self.strokes.len() {
             return Err(FrameLogError::StrokeCount {
                 logged: self.strokes.len(),
                 recorded: strikes,
             });
         }
-        let mut frame = Frame::new(
+        let frame = Frame::new(
             self.players.clone(),
             recording.table,
             &recording.params.ball,
             self.breaker,
         )
         .map_err(FrameLogError::Frame)?;
-        let mut sim = recording
-            .start()
-            .map_err(|e| FrameLogError::Replay(format!("setup: {e}")))?;
-        let numbers = sim.numbers().to_vec();
-        // The stroke in flight: its number, the layout at the strike, its first event.
-        let mut pending: Option<InFlight> = None;
-        let mut expected = Expected::default();
-        let mut k = 0;
-        for (i, input) in recording.inputs.iter().enumerate() {
-            sim.advance_to(input.time).map_err(|e| {
-                FrameLogError::Replay(format!("input {i} at t = {}: {e}", input.time))
-            })?;
-            if let Some(p) = pending.take() {
-                expected = self.judge(&mut frame, &sim, &numbers, p)?;
-            }
-            match input.action {
-                Action::Strike { ball, shot } => {
-                    k += 1;
-                    let logged = &self.strokes[k - 1];
-                    let refused = |error| FrameLogError::Refused { stroke: k, error };
-                    for &choice in &logged.choices {
-                        if let Some(l) = frame.choose(choice).map_err(refused)?.layout {
-                            expected.at = l;
-                        }
-                    }
-                    let n = numbers.get(ball).copied().unwrap_or(u8::MAX);
-                    if n != WHITE {
-                        return Err(FrameLogError::NotTheCueBall { stroke: k, ball: n });
-                    }
-                    let before = layout(&sim);
-                    check_table(&frame, &before, &expected, k)?;
-                    let first = sim.history().events().len();
-                    sim.strike(ball, shot).map_err(|e| {
-                        FrameLogError::Replay(format!("input {i} at t = {}: {e}", input.time))
-                    })?;
-                    pending = Some((k, before, first));
-                }
-                Action::Place {
-                    ball,
-                    position,
-                    velocity,
-                    spin,
-                } => sim.place(ball, position, velocity, spin).map_err(|e| {
-                    FrameLogError::Replay(format!("input {i} at t = {}: {e}", input.time))
-                })?,
-                Action::SetParams { params } => sim.set_params(params).map_err(|e| {
-                    FrameLogError::Replay(format!("input {i} at t = {}: {e}", input.time))
-                })?,
-            }
-        }
-        if let Some(p) = pending.take() {
-            sim.advance_to(recording.end_time)
-                .map_err(|e| FrameLogError::Replay(format!("to the end: {e}")))?;
-            if !sim.is_at_rest() {
-                // Saved while the balls were moving: the rest follows from the physics.
-                sim.run_to_rest()
-                    .map_err(|e| FrameLogError::Replay(format!("to rest: {e}")))?;
-            }
-            self.judge(&mut frame, &sim, &numbers, p)?;
-        }
+        let mut checker = FrameChecker {
+            log: self,
+            frame,
+            expected: Expected::default(),
+        };
+        replay_strokes(recording, &mut checker)?;
         Ok(self.strokes.len())
     }
+}
 
-    /// Judges the stroke in flight once the balls rest and compares its verdict; returns the
-    /// balls the rules put back (the verdict's spots).
-    fn judge(
-        &self,
-        frame: &mut Frame,
+/// The frame re-judging a log's strokes as the recording replays, with the balls the rules
+/// put back after the last one.
+struct FrameChecker<'a> {
+    log: &'a FrameLog,
+    frame: Frame,
+    expected: Expected,
+}
+
+impl StrokeJudge for FrameChecker<'_> {
+    type Error = FrameLogError;
+
+    fn replay_error(&self, what: String) -> FrameLogError {
+        FrameLogError::Replay(what)
+    }
+
+    /// The logged choices taken, the struck ball and the table checked against the rules.
+    fn strike(
+        &mut self,
+        k: usize,
         sim: &billiards_physics::Simulation,
-        numbers: &[u8],
-        (k, before, first): InFlight,
-    ) -> Result<Expected, FrameLogError> {
+        ball: usize,
+    ) -> Result<(), FrameLogError> {
+        let refused = |error| FrameLogError::Refused { stroke: k, error };
+        for &choice in &self.log.strokes[k - 1].choices {
+            if let Some(l) = self.frame.choose(choice).map_err(refused)?.layout {
+                self.expected.at = l;
+            }
+        }
+        let n = sim.numbers().get(ball).copied().unwrap_or(u8::MAX);
+        if n != WHITE {
+            return Err(FrameLogError::NotTheCueBall { stroke: k, ball: n });
+        }
+        check_table(&self.frame, &layout(sim), &self.expected, k)
+    }
+
+    /// Judges the stroke once the balls rest and compares its verdict; the balls the rules
+    /// put back (the verdict's spots) are expected at the next strike.
+    fn rest(
+        &mut self,
+        sim: &billiards_physics::Simulation,
+        stroke: Replayed,
+    ) -> Result<(), FrameLogError> {
+        let k = stroke.k;
         if !sim.is_at_rest() {
             return Err(FrameLogError::NotAtRest { stroke: k });
         }
-        let logged = &self.strokes[k - 1];
-        let summary = summarise(&sim.history().events()[first..], numbers);
+        let logged = &self.log.strokes[k - 1];
+        let summary = summarise(&sim.history().events()[stroke.first..], sim.numbers());
         let after = layout(sim);
-        let verdict = frame
+        let verdict = self
+            .frame
             .play(Stroke {
                 summary: &summary,
                 nominated: logged.nominated,
-                before: &before,
+                before: &stroke.before,
                 after: &after,
             })
             .map_err(|error| FrameLogError::Refused { stroke: k, error })?;
@@ -293,17 +269,9 @@ impl FrameLog {
                 rejudged: show(&verdict),
             });
         }
-        Ok(Expected { at: verdict.spots })
+        self.expected = Expected { at: verdict.spots };
+        Ok(())
     }
-}
-
-/// The balls of `sim` on the table, by number.
-fn layout(sim: &billiards_physics::Simulation) -> Vec<(u8, Vec2)> {
-    sim.balls()
-        .zip(sim.numbers())
-        .filter(|(b, _)| b.motion.on_table())
-        .map(|(b, &n)| (n, b.position))
-        .collect()
 }
 
 /// The table at stroke `k`'s strike against the rules: the object balls on it are the
