@@ -240,13 +240,21 @@ mod tests {
         let table = table_for(&spec, &settings);
         assert_eq!(table, physics::Table::carom_match());
         assert!(table.jaws().is_empty());
-        // The default settings are the library's defaults, so the carom table's parameters
-        // are the library's carom parameters (61.5 mm, 210 g ball; cushion at 0.635 D).
+        // As Params::carom is the default parameters with the carom ball (61.5 mm, 210 g),
+        // the carom table's parameters are the pool table's with that ball.
         let params = params_for(&spec, &settings);
         assert_eq!(params.ball, physics::BallSpec::carom());
-        assert_eq!(params, Params::carom());
+        assert_eq!(params.ball, Params::carom().ball);
+        let pool = params_for(&TableSpec::default(), &settings);
+        assert_eq!(
+            Params {
+                ball: pool.ball,
+                ..params
+            },
+            pool
+        );
         // The pool table keeps its jaws.
-        let pool = table_for(&TableSpec::default(), &settings);
-        assert_eq!(pool.jaws().len(), 12);
+        let pool_table = table_for(&TableSpec::default(), &settings);
+        assert_eq!(pool_table.jaws().len(), 12);
     }
 }

@@ -507,7 +507,7 @@ mod tests {
         let table = spec.physics_table();
         for pocket in billiards_physics::Pocket::ALL {
             let corner = table.pocket_position(pocket);
-            let hole = spec.pocket(pocket);
+            let hole = spec.pocket(pocket).unwrap();
             assert!(hole.centre.distance(DVec2::new(corner.x, corner.y)) < hole.radius + 0.01);
         }
     }

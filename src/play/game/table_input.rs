@@ -46,7 +46,7 @@ pub fn pocket_near(spec: &TableSpec, point: DVec2) -> Option<Pocket> {
         .map(|(p, hole)| (p, hole.centre.distance(point), hole.radius))
         .filter(|&(_, d, radius)| d < radius + 3.0 * spec.ball_radius)
         .min_by(|a, b| a.1.total_cmp(&b.1))
-        .map(|(p, _)| p)
+        .map(|(p, _, _)| p)
 }
 
 /// While a pocket is being called, a click on the table calls it and does not also aim; on
