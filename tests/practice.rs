@@ -243,7 +243,10 @@ fn placing_refuses_off_the_cloth_and_over_a_hole_places_freely_and_clears() {
     );
     assert_eq!(note, "the cue ball cannot go there: off the cloth");
     assert_eq!(cue(&app), start);
-    let hole = spec.pocket(billiards_physics::Pocket::HeadLeft).centre;
+    let hole = spec
+        .pocket(billiards_physics::Pocket::HeadLeft)
+        .unwrap()
+        .centre;
     let note = edit(
         &mut app,
         EditRequested::Move {
@@ -287,7 +290,7 @@ fn a_ball_over_a_side_hole_is_refused_by_name() {
         .resource::<billiards::table::geometry::TableSpec>()
         .clone();
     let sim = app.world().resource::<Solver>().simulation();
-    let side = spec.pocket(billiards_physics::Pocket::SideLeft);
+    let side = spec.pocket(billiards_physics::Pocket::SideLeft).unwrap();
     // Inward from the hole's centre, still within its radius.
     let inward = DVec2::new(0.0, -side.centre.y.signum());
     let p = side.centre + inward * 0.9 * side.radius;

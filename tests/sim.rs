@@ -386,3 +386,73 @@ fn fresh_racks_differ_and_another_table_is_racked_on() {
     let table = *app.world().resource::<Solver>().simulation().table();
     assert_eq!(table.length, 100.0 * 0.0254);
 }
+
+/// The carom table through a scene (as a recording on it opens): the table drawn is the
+/// carom one, and a hard shot straight into a corner, which a pool table would pocket, comes
+/// back off both cushions of the corner (UMB Art. 11: no pockets); nothing leaves play. A
+/// free-play rack on that table lays out the three-cushion opening (UMB Art. 23).
+#[test]
+fn the_carom_table_pockets_nothing_and_racks_three_balls() {
+    let mut app = game(Rack::FifteenBall);
+    let spec = TableSpec::carom();
+    let settings = PhysicsSettings::default();
+    let (table, params) = (table_for(&spec, &settings), params_for(&spec, &settings));
+    let balls = sim::carom_layout(&table, &params.ball).unwrap();
+    let white = balls[0].position;
+    app.world_mut().write_message(sim::SceneRequested {
+        table,
+        params,
+        balls,
+        name: "three-cushion",
+    });
+    app.update();
+    assert_eq!(*app.world().resource::<TableSpec>(), spec);
+    assert_eq!(spec.kind, billiards::table::geometry::TableKind::Carom);
+    assert_eq!(ecs_balls(&mut app).len(), 3);
+    let corner = DVec2::new(spec.length / 2.0, spec.width / 2.0);
+    let aim = corner - DVec2::new(white.x, white.y);
+    shoot(&mut app, aim.y.atan2(aim.x), 5.0);
+    let (pocketed, scratch) = run_collecting(&mut app);
+    assert!(pocketed.is_empty() && !scratch, "{pocketed:?}");
+    assert!(ecs_balls(&mut app).iter().all(|&(_, _, gone)| !gone));
+    let sim = app.world().resource::<Solver>().simulation();
+    assert_eq!(*sim.table(), billiards_physics::Table::carom_match());
+    assert!(sim.balls().all(|b| b.motion.on_table()));
+    let cushions: Vec<billiards_physics::Cushion> = sim
+        .history()
+        .events()
+        .iter()
+        .filter_map(|e| match e.kind {
+            billiards_physics::EventKind::Cushion { ball: 0, cushion } => Some(cushion),
+            _ => None,
+        })
+        .collect();
+    for side in [
+        billiards_physics::Cushion::Foot,
+        billiards_physics::Cushion::Left,
+    ] {
+        assert!(cushions.contains(&side), "{side:?} not hit: {cushions:?}");
+    }
+
+    // A layout on the carom table (a position set on it) leaves the scene but keeps the
+    // table; a free-play rack there is the three balls, not a pool rack.
+    let two_balls = vec![
+        billiards_physics::BallSetup::at(0, white),
+        billiards_physics::BallSetup::at(2, billiards_physics::Vec2::ZERO),
+    ];
+    app.world_mut().write_message(sim::LayoutRequested {
+        balls: two_balls,
+        rack: Rack::PaperDefault,
+        name: "position",
+    });
+    app.update();
+    assert!(!app.world().resource::<Solver>().is_scene());
+    assert_eq!(*app.world().resource::<TableSpec>(), spec);
+    app.world_mut()
+        .write_message(RackRequested::standard(Rack::NineBall));
+    app.update();
+    let sim = app.world().resource::<Solver>().simulation();
+    assert_eq!(sim.numbers(), &[0, 1, 2]);
+    assert_eq!(*sim.table(), billiards_physics::Table::carom_match());
+    assert_eq!(sim.params().ball, billiards_physics::BallSpec::carom());
+}

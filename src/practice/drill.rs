@@ -363,8 +363,7 @@ pub(super) fn draw_goals(
     for goal in &session.drill.goals {
         let ball = match *goal {
             Goal::Pocket { ball, pocket, .. } => {
-                if let Some(p) = pocket {
-                    let hole = spec.pocket(p);
+                if let Some(hole) = pocket.and_then(|p| spec.pocket(p)) {
                     for k in [1.2, 1.35] {
                         gizmos
                             .circle(

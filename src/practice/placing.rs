@@ -134,10 +134,10 @@ pub fn spot_error(sim: &Simulation, spec: &TableSpec, number: u8, p: DVec2) -> R
     {
         return Err("off the cloth".to_owned());
     }
-    if let Some(pocket) = billiards_physics::Pocket::ALL
-        .into_iter()
-        .find(|&k| spec.pocket(k).centre.distance(p) < spec.pocket(k).radius)
-    {
+    if let Some(pocket) = billiards_physics::Pocket::ALL.into_iter().find(|&k| {
+        spec.pocket(k)
+            .is_some_and(|hole| hole.centre.distance(p) < hole.radius)
+    }) {
         return Err(format!("over the {}", billiards_rules::pocket_name(pocket)));
     }
     let blocker = sim
@@ -425,7 +425,10 @@ mod tests {
                 .contains("cloth")
         );
         assert!(spot_error(&sim, &spec, 0, DVec2::new(f64::NAN, 0.0)).is_err());
-        let hole = spec.pocket(billiards_physics::Pocket::FootRight).centre;
+        let hole = spec
+            .pocket(billiards_physics::Pocket::FootRight)
+            .unwrap()
+            .centre;
         assert!(spot_error(&sim, &spec, 0, hole).is_err());
     }
 

@@ -10,7 +10,7 @@ use super::{messages::*, solver::*};
 use crate::{
     settings::{PhysicsSettings, TableSetup},
     table::balls::{Ball, BallMotion},
-    table::geometry::TableSpec,
+    table::geometry::{TableKind, TableSpec},
 };
 
 /// Free play: another table chosen in the panel ([`TableSetup`]) replaces the table and racks
@@ -89,6 +89,16 @@ pub(super) fn rack_balls(
                 return;
             }
         },
+        // Free play on the carom table: the three balls on their opening spots.
+        (None, Some(_)) if spec.kind == TableKind::Carom => {
+            match carom_layout(&table, &params.ball) {
+                Ok(balls) => (balls, (Rack::PaperDefault, "three-cushion")),
+                Err(error) => {
+                    status.note = Some(format!("cannot rack: {error}"));
+                    return;
+                }
+            }
+        }
         (None, Some(RackRequested { rack, seed })) => {
             let game = match rack {
                 Rack::FifteenBall => Some(Game::EightBall),
@@ -170,6 +180,21 @@ pub fn snooker_layout(
 ) -> Result<Vec<physics::BallSetup>, String> {
     let marks = physics::SnookerMarks::of(table)?;
     physics::snooker::layout(table, ball, physics::snooker::default_cue_position(&marks))
+}
+
+/// The three balls of a three-cushion opening (UMB Art. 23, `billiards_rules::three_cushion`):
+/// the red (2) on the top spot, the yellow (1) on the bottom spot, the white (0), the cue
+/// ball, on the left starting spot.
+pub fn carom_layout(
+    table: &physics::Table,
+    ball: &physics::BallSpec,
+) -> Result<Vec<physics::BallSetup>, String> {
+    use billiards_rules::three_cushion::{Ball, Side, Spots};
+    let spots = Spots::of(table, ball.radius).map_err(|e| e.to_string())?;
+    let at = spots.opening(Ball::White, Side::Left);
+    Ok(Ball::ALL
+        .map(|b| physics::BallSetup::at(b.index() as u8, at[b.index()]))
+        .to_vec())
 }
 
 /// A settings change reaches the solver: moving balls continue under the new parameters. A

@@ -24,7 +24,7 @@ mod solver;
 mod step;
 mod undo;
 
-pub use commands::snooker_layout;
+pub use commands::{carom_layout, snooker_layout};
 pub use messages::*;
 pub use respot::{
     HandError, move_ball_in_hand, place_ball_in_hand, respot_after_scratch, respot_ball,

@@ -12,7 +12,7 @@ use super::messages::*;
 use crate::{
     settings::{BallFrictionChoice, CushionChoice, PhysicsModel, PhysicsSettings},
     table::balls::{BallMotion, MotionState},
-    table::geometry::TableSpec,
+    table::geometry::{TableKind, TableSpec},
 };
 
 /// The table just before a strike: what an undo goes back to.
@@ -136,15 +136,18 @@ pub const JAW_RADIUS: f64 = 0.015;
 /// The solver's table for the table's dimensions and the player's settings.
 pub fn table_for(spec: &TableSpec, settings: &PhysicsSettings) -> physics::Table {
     let table = spec.physics_table();
-    // The snooker table's rounded knuckles are part of the table, not a setting.
-    if settings.jaws && !spec.is_snooker() {
-        table.with_jaws(JAW_RADIUS)
-    } else {
-        table
+    match spec.kind {
+        TableKind::Pool if settings.jaws => table.with_jaws(JAW_RADIUS),
+        // The snooker table's rounded knuckles are part of the table, not a setting; the
+        // carom table has no pockets to give jaws to.
+        TableKind::Pool | TableKind::Snooker | TableKind::Carom => table,
     }
 }
 
-/// The solver's parameters for the player's settings and the table's balls.
+/// The solver's parameters for the player's settings and the table's balls. On the carom
+/// table this is [`Params::carom`] for the default settings: it differs from the pool
+/// parameters only in its ball, and the cushion's height is a fraction of the ball's
+/// diameter, so it follows the 61.5 mm ball.
 pub fn params_for(spec: &TableSpec, settings: &PhysicsSettings) -> Params {
     let model = match settings.model {
         PhysicsModel::Paper => Model::Paper(PaperModel {
@@ -235,5 +238,37 @@ pub fn ball_motion(state: &BallState) -> BallMotion {
             // Spinning in place: the centre does not move, so nothing to roll.
             Motion::Stationary | Motion::Spinning | Motion::Pocketed(_) => MotionState::Stationary,
         },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_carom_table_gets_the_carom_table_and_parameters() {
+        let spec = TableSpec::carom();
+        // Jaws on (the default) must not give the pocketless table pocket jaws.
+        let settings = PhysicsSettings::default();
+        assert!(settings.jaws);
+        let table = table_for(&spec, &settings);
+        assert_eq!(table, physics::Table::carom_match());
+        assert!(table.jaws().is_empty());
+        // As Params::carom is the default parameters with the carom ball (61.5 mm, 210 g),
+        // the carom table's parameters are the pool table's with that ball.
+        let params = params_for(&spec, &settings);
+        assert_eq!(params.ball, physics::BallSpec::carom());
+        assert_eq!(params.ball, Params::carom().ball);
+        let pool = params_for(&TableSpec::default(), &settings);
+        assert_eq!(
+            Params {
+                ball: pool.ball,
+                ..params
+            },
+            pool
+        );
+        // The pool table keeps its jaws.
+        let pool_table = table_for(&TableSpec::default(), &settings);
+        assert_eq!(pool_table.jaws().len(), 12);
     }
 }

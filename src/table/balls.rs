@@ -11,7 +11,7 @@ use bevy::{
     render::render_resource::{Extent3d, TextureDimension, TextureFormat},
 };
 
-use crate::table::geometry::{TableSpec, table_dir_to_world, to_world};
+use crate::table::geometry::{TableKind, TableSpec, table_dir_to_world, to_world};
 
 /// Adds ball visuals and the writeback from [`BallMotion`] to [`Transform`].
 pub fn plugin(app: &mut App) {
@@ -144,13 +144,29 @@ pub fn snooker_colour(number: u8) -> Color {
     }
 }
 
-/// The meshes (pool and snooker sizes) and one material per number of each set.
+/// The carom balls' colours (UMB Art. 12: two white balls, one of them marked, and a red; the
+/// yellow ball is the usual second cue ball now), by the numbers of
+/// `billiards_rules::three_cushion`: 0 white (player A's), 1 yellow (player B's), 2 red.
+pub fn carom_colour(number: u8) -> Color {
+    match number {
+        0 => Color::srgb(0.96, 0.95, 0.90),
+        1 => Color::srgb(0.98, 0.82, 0.10),
+        _ => Color::srgb(0.80, 0.05, 0.05),
+    }
+}
+
+/// Largest carom ball number (the red).
+const CAROM_MAX: u8 = 2;
+
+/// The meshes (pool, snooker and carom sizes) and one material per number of each set.
 #[derive(Resource, Debug)]
 struct BallAssets {
     mesh: Handle<Mesh>,
     materials: Vec<Handle<StandardMaterial>>,
     snooker_mesh: Handle<Mesh>,
     snooker_materials: Vec<Handle<StandardMaterial>>,
+    carom_mesh: Handle<Mesh>,
+    carom_materials: Vec<Handle<StandardMaterial>>,
 }
 
 /// Largest snooker ball number (the black).
@@ -167,19 +183,24 @@ fn create_ball_assets(
 ) {
     let pool = TableSpec::default();
     let mesh = meshes.add(Sphere::new(pool.ball_radius as f32).mesh().uv(48, 24));
-    let snooker_radius = billiards_physics::BallSpec::snooker().radius;
-    let snooker_mesh = meshes.add(Sphere::new(snooker_radius as f32).mesh().uv(48, 24));
-    // Snooker balls carry no numbers: one plain colour each.
-    let snooker_materials = (0..=SNOOKER_MAX)
-        .map(|number| {
-            materials.add(StandardMaterial {
-                base_color: snooker_colour(number),
-                perceptual_roughness: 0.12,
-                reflectance: 0.5,
-                ..default()
+    let mut sphere = |radius: f64| meshes.add(Sphere::new(radius as f32).mesh().uv(48, 24));
+    let snooker_mesh = sphere(billiards_physics::BallSpec::snooker().radius);
+    let carom_mesh = sphere(billiards_physics::BallSpec::carom().radius);
+    // Snooker and carom balls carry no numbers: one plain colour each.
+    let mut plain = |colour: fn(u8) -> Color, max: u8| -> Vec<Handle<StandardMaterial>> {
+        (0..=max)
+            .map(|number| {
+                materials.add(StandardMaterial {
+                    base_color: colour(number),
+                    perceptual_roughness: 0.12,
+                    reflectance: 0.5,
+                    ..default()
+                })
             })
-        })
-        .collect();
+            .collect()
+    };
+    let snooker_materials = plain(snooker_colour, SNOOKER_MAX);
+    let carom_materials = plain(carom_colour, CAROM_MAX);
     let materials = (0..=MAX_NUMBER)
         .map(|number| {
             let texture = images.add(ball_texture(number));
@@ -197,6 +218,8 @@ fn create_ball_assets(
         materials,
         snooker_mesh,
         snooker_materials,
+        carom_mesh,
+        carom_materials,
     });
 }
 
@@ -210,13 +233,12 @@ fn attach_visuals(
 ) {
     let Some(assets) = assets else { return };
     for (entity, ball, mut transform) in balls {
-        let (mesh, material) = if spec.is_snooker() {
-            let n = usize::from(ball.number.min(SNOOKER_MAX));
-            (&assets.snooker_mesh, &assets.snooker_materials[n])
-        } else {
-            let n = usize::from(ball.number.min(MAX_NUMBER));
-            (&assets.mesh, &assets.materials[n])
+        let (mesh, materials, max) = match spec.kind {
+            TableKind::Pool => (&assets.mesh, &assets.materials, MAX_NUMBER),
+            TableKind::Snooker => (&assets.snooker_mesh, &assets.snooker_materials, SNOOKER_MAX),
+            TableKind::Carom => (&assets.carom_mesh, &assets.carom_materials, CAROM_MAX),
         };
+        let material = &materials[usize::from(ball.number.min(max))];
         // Local +Y (number) up, local +Z (top of the digits) toward the foot rail, so the
         // numbers read upright from the head end where the player stands.
         transform.rotation = Quat::from_mat3(&Mat3::from_cols(Vec3::NEG_Z, Vec3::Y, Vec3::X));
@@ -252,10 +274,15 @@ fn start_pocket_drops(
     balls: Query<(Entity, &Pocketed, &Transform), NewlyPocketed>,
 ) {
     for (entity, pocketed, transform) in &balls {
-        let hole = spec.pocket(pocketed.pocket).centre;
+        // A table without pockets drops nothing: the ball sinks where it is.
+        let over = spec
+            .pocket(pocketed.pocket)
+            .map_or(transform.translation, |hole| {
+                spec.ball_world_position(hole.centre)
+            });
         commands.entity(entity).insert(PocketDrop {
             from: transform.translation,
-            over: spec.ball_world_position(hole),
+            over,
             elapsed: 0.0,
         });
     }
@@ -525,5 +552,17 @@ mod tests {
         let eleven = ball_texture(11);
         assert!(pixel(&eleven, 0.0, 0.05).iter().all(|&c| c > 200));
         assert!(pixel(&eleven, 0.0, 0.5)[0] > 150);
+    }
+
+    #[test]
+    fn carom_balls_are_white_yellow_and_red_by_number() {
+        // billiards_rules::three_cushion::Ball::index: white 0, yellow 1, red 2.
+        let rgb = |n: u8| carom_colour(n).to_srgba();
+        let (white, yellow, red) = (rgb(0), rgb(1), rgb(2));
+        assert!(white.red > 0.9 && white.green > 0.9 && white.blue > 0.8);
+        assert!(yellow.red > 0.9 && yellow.green > 0.7 && yellow.blue < 0.2);
+        assert!(red.red > 0.7 && red.green < 0.1 && red.blue < 0.1);
+        use billiards_rules::three_cushion::Ball as Carom;
+        assert_eq!(usize::from(CAROM_MAX) + 1, Carom::ALL.len());
     }
 }

@@ -34,6 +34,32 @@ pub enum TableKind {
     Pool,
     /// The 12-ft snooker table with 52.5 mm balls (baulk line, D, spots; WPBSA 1.1).
     Snooker,
+    /// The carom match table without pockets, 61.5 mm balls (UMB Art. 11-12; three-cushion).
+    Carom,
+}
+
+impl TableKind {
+    /// The kind of a solver's table: a pocketless table is a carom table, a table of the
+    /// snooker size a snooker table (a recording stores the table, not the game).
+    pub fn of(table: &billiards_physics::Table) -> Self {
+        use billiards_physics::snooker::{SNOOKER_LENGTH, SNOOKER_WIDTH};
+        if table.pockets == billiards_physics::PocketShape::Pocketless {
+            Self::Carom
+        } else if table.length == SNOOKER_LENGTH && table.width == SNOOKER_WIDTH {
+            Self::Snooker
+        } else {
+            Self::Pool
+        }
+    }
+
+    /// The balls played on this kind of table.
+    pub fn ball(self) -> billiards_physics::BallSpec {
+        match self {
+            Self::Pool => billiards_physics::BallSpec::default(),
+            Self::Snooker => billiards_physics::BallSpec::snooker(),
+            Self::Carom => billiards_physics::BallSpec::carom(),
+        }
+    }
 }
 
 /// The two kinds of pocket, which differ in mouth width and jaw angle.
@@ -86,7 +112,7 @@ pub struct TableSpec {
     pub ball_radius: f64,
     /// Ball mass (5.5 oz).
     pub ball_mass: f64,
-    /// Pool or snooker.
+    /// Pool, snooker or carom.
     pub kind: TableKind,
     /// Corner pocket mouth, between the cushion noses (4.5 in).
     pub corner_mouth: f64,
@@ -145,18 +171,19 @@ impl TableSpec {
         Self::fitting(&billiards_physics::Table::snooker_12ft())
     }
 
+    /// The carom match table ([`billiards_physics::Table::carom_match`], no pockets) with
+    /// 61.5 mm balls ([`billiards_physics::BallSpec::carom`]).
+    pub fn carom() -> Self {
+        Self::fitting(&billiards_physics::Table::carom_match())
+    }
+
     /// The table drawn for a solver's table (a recording's): its playing surface and pocket
-    /// mouths, with regulation rails. A table of the snooker size is a snooker table, with
-    /// snooker balls (a recording stores the table, not the game).
+    /// mouths, with regulation rails, and the balls of its kind ([`TableKind::of`]: a
+    /// pocketless table is a carom table, a table of the snooker size a snooker table).
     pub fn fitting(table: &billiards_physics::Table) -> Self {
-        let snooker = table.length == billiards_physics::snooker::SNOOKER_LENGTH
-            && table.width == billiards_physics::snooker::SNOOKER_WIDTH;
+        let kind = TableKind::of(table);
         let pool = Self::wpa_eight_foot();
-        let ball = if snooker {
-            billiards_physics::BallSpec::snooker()
-        } else {
-            billiards_physics::BallSpec::default()
-        };
+        let ball = kind.ball();
         Self {
             length: table.length,
             width: table.width,
@@ -164,11 +191,7 @@ impl TableSpec {
             side_mouth: table.side_mouth,
             ball_radius: ball.radius,
             ball_mass: ball.mass,
-            kind: if snooker {
-                TableKind::Snooker
-            } else {
-                TableKind::Pool
-            },
+            kind,
             // The cushion nose at 63.5 % of the ball's diameter, as on the pool table.
             cushion_nose_height: pool.cushion_nose_height * ball.radius / pool.ball_radius,
             ..pool
@@ -222,13 +245,21 @@ impl TableSpec {
         self.corner_mouth / std::f64::consts::SQRT_2
     }
 
+    /// Whether the table has pockets (the carom table has none).
+    pub fn has_pockets(&self) -> bool {
+        self.kind != TableKind::Carom
+    }
+
     /// The six pockets: head-left, head-right, foot-left, foot-right corners, then the left
-    /// and right side pockets.
+    /// and right side pockets; none on the carom table.
     ///
     /// The holes are drawn slightly larger than the mouth and set behind it, leaving a
     /// shelf between the mouth line and the drop, as on a real table. (The physics decides
     /// pocketing on its own; these holes are what the player sees.)
-    pub fn pockets(&self) -> [Pocket; 6] {
+    pub fn pockets(&self) -> Vec<Pocket> {
+        if !self.has_pockets() {
+            return Vec::new();
+        }
         let h = self.half_extents();
         let corner_radius = 0.55 * self.corner_mouth;
         let corner_shelf = 0.5 * INCH;
@@ -248,7 +279,7 @@ impl TableSpec {
             centre: DVec2::new(0.0, sy * (h.y + side_offset)),
             radius: side_radius,
         };
-        [
+        vec![
             corner(-1.0, 1.0),
             corner(-1.0, -1.0),
             corner(1.0, 1.0),
@@ -258,8 +289,8 @@ impl TableSpec {
         ]
     }
 
-    /// The hole of one of the solver's pockets.
-    pub fn pocket(&self, pocket: billiards_physics::Pocket) -> Pocket {
+    /// The hole of one of the solver's pockets; `None` on a table without pockets.
+    pub fn pocket(&self, pocket: billiards_physics::Pocket) -> Option<Pocket> {
         use billiards_physics::Pocket as P;
         let index = match pocket {
             P::HeadLeft => 0,
@@ -269,12 +300,30 @@ impl TableSpec {
             P::SideLeft => 4,
             P::SideRight => 5,
         };
-        self.pockets()[index]
+        self.pockets().get(index).copied()
     }
 
-    /// The six cushions between the pockets.
-    pub fn cushions(&self) -> [CushionSegment; 6] {
+    /// The six cushions between the pockets; on the carom table four, each the full length
+    /// of its rail.
+    pub fn cushions(&self) -> Vec<CushionSegment> {
         let h = self.half_extents();
+        if !self.has_pockets() {
+            // Slope 1: each end grows by its depth, so neighbouring cushions meet on the
+            // corner's diagonal (a 45-degree mitre) and the frame is closed.
+            let full = |rail, half: f64| CushionSegment {
+                rail,
+                start: -half,
+                end: half,
+                start_jaw_slope: 1.0,
+                end_jaw_slope: 1.0,
+            };
+            return vec![
+                full(Rail::Left, h.x),
+                full(Rail::Right, h.x),
+                full(Rail::Head, h.y),
+                full(Rail::Foot, h.y),
+            ];
+        }
         let corner_gap = self.corner_nose_offset();
         let side_gap = self.side_mouth / 2.0;
         // A jaw at angle `a` to the cushion face leaves the nose line at 180 deg - a, so each
@@ -288,7 +337,7 @@ impl TableSpec {
             start_jaw_slope,
             end_jaw_slope,
         };
-        [
+        vec![
             long(
                 Rail::Left,
                 -h.x + corner_gap,
@@ -355,15 +404,20 @@ impl TableSpec {
 
     /// The solver's table with these dimensions.
     pub fn physics_table(&self) -> billiards_physics::Table {
-        if self.is_snooker() {
-            return billiards_physics::Table::snooker_12ft();
-        }
+        let base = match self.kind {
+            TableKind::Snooker => return billiards_physics::Table::snooker_12ft(),
+            // The pocketless shape and zero mouths are the carom table's own.
+            TableKind::Carom => billiards_physics::Table::carom_match(),
+            TableKind::Pool => billiards_physics::Table {
+                corner_mouth: self.corner_mouth,
+                side_mouth: self.side_mouth,
+                ..billiards_physics::Table::wpa_8ft()
+            },
+        };
         billiards_physics::Table {
             length: self.length,
             width: self.width,
-            corner_mouth: self.corner_mouth,
-            side_mouth: self.side_mouth,
-            ..billiards_physics::Table::wpa_8ft()
+            ..base
         }
     }
 
@@ -453,7 +507,7 @@ mod tests {
         let table = spec.physics_table();
         for pocket in billiards_physics::Pocket::ALL {
             let corner = table.pocket_position(pocket);
-            let hole = spec.pocket(pocket);
+            let hole = spec.pocket(pocket).unwrap();
             assert!(hole.centre.distance(DVec2::new(corner.x, corner.y)) < hole.radius + 0.01);
         }
     }
@@ -476,6 +530,56 @@ mod tests {
                     assert!(pocket.centre.y.abs() - pocket.radius > h.y);
                 }
             }
+        }
+    }
+
+    #[test]
+    fn a_pocketless_table_is_the_carom_table_with_four_full_cushions() {
+        let table = billiards_physics::Table::carom_match();
+        let spec = TableSpec::fitting(&table);
+        assert_eq!(spec.kind, TableKind::Carom);
+        assert_eq!(spec, TableSpec::carom());
+        // UMB Art. 12: 61.5 mm balls, 210 g.
+        assert!((spec.ball_radius - 0.03075).abs() < 1e-15);
+        assert!((spec.ball_mass - 0.210).abs() < 1e-15);
+        assert!(spec.pockets().is_empty());
+        for pocket in billiards_physics::Pocket::ALL {
+            assert_eq!(spec.pocket(pocket), None);
+        }
+        // UMB Art. 11: 2.84 x 1.42 m; each cushion's nose runs the whole rail.
+        let cushions = spec.cushions();
+        assert_eq!(cushions.len(), 4);
+        for c in &cushions {
+            let rail_length = match c.rail {
+                Rail::Left | Rail::Right => 2.84,
+                Rail::Head | Rail::Foot => 1.42,
+            };
+            assert!((c.end - c.start - rail_length).abs() < 1e-12, "{c:?}");
+            assert!((c.start + c.end).abs() < 1e-12, "{c:?}: not centred");
+        }
+        let rails: Vec<Rail> = cushions.iter().map(|c| c.rail).collect();
+        for rail in [Rail::Left, Rail::Right, Rail::Head, Rail::Foot] {
+            assert!(rails.contains(&rail), "no cushion on {rail:?}");
+        }
+        // The solver's table round-trips, and no jaws are added to it.
+        assert_eq!(spec.physics_table(), table);
+    }
+
+    #[test]
+    fn pool_and_snooker_tables_keep_their_kind_and_six_pockets() {
+        for (table, kind) in [
+            (billiards_physics::Table::wpa_8ft(), TableKind::Pool),
+            (billiards_physics::Table::snooker_12ft(), TableKind::Snooker),
+        ] {
+            let spec = TableSpec::fitting(&table);
+            assert_eq!(spec.kind, kind);
+            assert_eq!(spec.pockets().len(), 6);
+            assert_eq!(spec.cushions().len(), 6);
+            assert!(
+                billiards_physics::Pocket::ALL
+                    .iter()
+                    .all(|&p| spec.pocket(p).is_some())
+            );
         }
     }
 }

@@ -123,7 +123,8 @@ fn half_chord(pocket: &Pocket, d: f64) -> Option<f64> {
     (h2 > 0.0).then(|| h2.sqrt())
 }
 
-/// The cloth on the bed, out to the back of the cushions, with the six pocket holes cut out.
+/// The cloth on the bed, out to the back of the cushions, with the pocket holes cut out (none
+/// on the carom table).
 ///
 /// Each column of the sweep keeps the part below the nearest hole at either end; the little
 /// cloth that hides behind a hole under the rails is dropped.
@@ -269,7 +270,7 @@ fn add_cushion(builder: &mut MeshBuilder, spec: &TableSpec, segment: &CushionSeg
     }
 }
 
-/// The six rubber cushions, covered in cloth.
+/// The rubber cushions, covered in cloth: six between the pockets, or the carom table's four.
 pub fn cushions(spec: &TableSpec) -> Mesh {
     let mut builder = MeshBuilder::default();
     for segment in &spec.cushions() {
@@ -319,15 +320,20 @@ pub fn pocket_liners(spec: &TableSpec, depth: f64) -> Mesh {
     builder.build()
 }
 
-/// Where the diamond sights sit on the rail tops: six on each long rail (eighths of the
-/// length, the side pocket at the middle one) and three on each short rail (quarters of the
-/// width), along the middle of the rail.
+/// Where the diamond sights sit on the rail tops: at the eighths of each long rail and the
+/// quarters of each short rail, along the middle of the rail: seven and three on the carom
+/// table, six and three on a pocketed one (the side pocket takes the middle of the long rail).
 pub fn diamond_positions(spec: &TableSpec) -> Vec<(Rail, DVec3)> {
     let depth = spec.cushion_depth + spec.rail_width / 2.0;
     let height = spec.rail_height;
     let mut positions = Vec::new();
+    let long: &[i32] = if spec.has_pockets() {
+        &[-3, -2, -1, 1, 2, 3]
+    } else {
+        &[-3, -2, -1, 0, 1, 2, 3]
+    };
     for rail in [Rail::Left, Rail::Right] {
-        for k in [-3, -2, -1, 1, 2, 3] {
+        for &k in long {
             let along = spec.length * f64::from(k) / 8.0;
             positions.push((rail, spec.rail_point(rail, along, depth, height)));
         }
@@ -423,5 +429,57 @@ mod tests {
             assert!(outside);
             assert_eq!(p.z, spec.rail_height);
         }
+    }
+
+    #[test]
+    fn the_carom_table_is_drawn_without_holes_and_with_a_closed_cushion_frame() {
+        let spec = TableSpec::carom();
+        // The cloth is the whole bed: its area is the rectangle to the back of the cushions.
+        let edge = spec.half_extents() + DVec2::splat(spec.cushion_depth);
+        let points = positions(&cloth(&spec));
+        let max = points.iter().fold(Vec3::splat(f32::MIN), |a, &p| a.max(p));
+        assert!((f64::from(max.x) - edge.x).abs() < 1e-4);
+        assert!((f64::from(max.z) - edge.y).abs() < 1e-4);
+        let area = triangle_area(&cloth(&spec));
+        assert!(
+            (area / (4.0 * edge.x * edge.y) - 1.0).abs() < 1e-5,
+            "cloth area {area}"
+        );
+        assert_eq!(positions(&pocket_liners(&spec, 0.1)).len(), 0);
+        // The four cushions' noses run corner to corner: the nose line reaches each corner of
+        // the playing surface, and at full depth the mitred ends meet on the diagonal.
+        let h = spec.half_extents();
+        let cushion_points = positions(&cushions(&spec));
+        for (sx, sy) in [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)] {
+            let corner = Vec3::new((sx * h.x) as f32, 0.0, -(sy * h.y) as f32);
+            let nose = Vec3::new(corner.x, spec.cushion_nose_height as f32, corner.z);
+            assert!(cushion_points.iter().any(|p| p.distance(nose) < 1e-5));
+        }
+        // UMB: the long rail divided into eighths, the short into quarters.
+        let diamonds = diamond_positions(&spec);
+        assert_eq!(diamonds.len(), 2 * 7 + 2 * 3);
+        let on_left: Vec<f64> = diamonds
+            .iter()
+            .filter(|(rail, _)| *rail == Rail::Left)
+            .map(|(_, p)| p.x)
+            .collect();
+        for (k, x) in on_left.iter().enumerate() {
+            assert!((x - spec.length * (k as f64 - 3.0) / 8.0).abs() < 1e-12);
+        }
+    }
+
+    /// The summed area of a flat mesh's triangles, in square metres.
+    fn triangle_area(mesh: &Mesh) -> f64 {
+        let points = positions(mesh);
+        let Some(bevy::mesh::Indices::U32(indices)) = mesh.indices() else {
+            panic!("no u32 indices");
+        };
+        indices
+            .chunks(3)
+            .map(|t| {
+                let [a, b, c] = [0, 1, 2].map(|k| points[t[k] as usize].as_dvec3());
+                (b - a).cross(c - a).length() / 2.0
+            })
+            .sum()
     }
 }

@@ -1,4 +1,5 @@
-//! The table: cloth, cushions, wooden rails, pockets, diamond sights, legs and the floor.
+//! The table: cloth, cushions, wooden rails, pockets (none on the carom table), diamond
+//! sights, legs and the floor.
 
 pub mod balls;
 pub mod geometry;
@@ -6,7 +7,7 @@ pub mod mesh;
 
 use bevy::{light::NotShadowCaster, math::DVec3, prelude::*};
 
-use geometry::{TableSpec, to_world};
+use geometry::{TableKind, TableSpec, to_world};
 
 /// Spawns the table from the [`TableSpec`] resource, and again when another table is chosen.
 /// The first spawn is in the first frame's `PostUpdate` (an added resource counts as
@@ -34,6 +35,8 @@ pub struct TablePart;
 
 /// The cloth, whose colour the render test looks for.
 pub const CLOTH_COLOUR: Color = Color::srgb(0.05, 0.42, 0.20);
+/// The carom table's cloth.
+pub const CAROM_CLOTH_COLOUR: Color = Color::srgb(0.06, 0.25, 0.55);
 
 /// Height of the cloth above the floor (WPA: 29.25-31 in).
 const CLOTH_HEIGHT: f64 = 0.78;
@@ -48,14 +51,19 @@ fn spawn_table(
     mut meshes: ResMut<Assets<Mesh>>,
     mut materials: ResMut<Assets<StandardMaterial>>,
 ) {
+    let (cloth_colour, cushion_colour) = match spec.kind {
+        TableKind::Pool | TableKind::Snooker => (CLOTH_COLOUR, Color::srgb(0.04, 0.36, 0.17)),
+        // The blue cloth of carom match tables.
+        TableKind::Carom => (CAROM_CLOTH_COLOUR, Color::srgb(0.04, 0.20, 0.46)),
+    };
     let cloth = materials.add(StandardMaterial {
-        base_color: CLOTH_COLOUR,
+        base_color: cloth_colour,
         perceptual_roughness: 0.95,
         reflectance: 0.2,
         ..default()
     });
     let cushion_cloth = materials.add(StandardMaterial {
-        base_color: Color::srgb(0.04, 0.36, 0.17),
+        base_color: cushion_colour,
         perceptual_roughness: 0.95,
         reflectance: 0.2,
         ..default()
@@ -92,13 +100,16 @@ fn spawn_table(
     part(mesh::cloth(&spec), &cloth, "Cloth");
     part(mesh::cushions(&spec), &cushion_cloth, "Cushions");
     part(mesh::rails(&spec, -APRON_DEPTH), &wood, "Rails");
-    part(
-        mesh::pocket_liners(&spec, POCKET_DEPTH),
-        &liner,
-        "Pocket liners",
-    );
     // The liners cast shadows: a pocket is a closed bag, and the lamps' light that went
-    // through the holes lit pocket-shaped patches on the floor.
+    // through the holes lit pocket-shaped patches on the floor. The carom table has no
+    // pockets, and no empty mesh is spawned for them.
+    if spec.has_pockets() {
+        part(
+            mesh::pocket_liners(&spec, POCKET_DEPTH),
+            &liner,
+            "Pocket liners",
+        );
+    }
 
     // Diamond sights: small flat rhombi inlaid in the rail tops.
     let diamond = meshes.add(Rhombus::new(0.028, 0.014));

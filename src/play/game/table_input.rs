@@ -42,10 +42,11 @@ pub(super) fn click_pocket(
 pub fn pocket_near(spec: &TableSpec, point: DVec2) -> Option<Pocket> {
     Pocket::ALL
         .into_iter()
-        .map(|p| (p, spec.pocket(p).centre.distance(point)))
-        .filter(|&(p, d)| d < spec.pocket(p).radius + 3.0 * spec.ball_radius)
+        .filter_map(|p| spec.pocket(p).map(|hole| (p, hole)))
+        .map(|(p, hole)| (p, hole.centre.distance(point), hole.radius))
+        .filter(|&(_, d, radius)| d < radius + 3.0 * spec.ball_radius)
         .min_by(|a, b| a.1.total_cmp(&b.1))
-        .map(|(p, _)| p)
+        .map(|(p, _, _)| p)
 }
 
 /// While a pocket is being called, a click on the table calls it and does not also aim; on
@@ -115,8 +116,7 @@ pub(super) fn draw_rules(
         gizmos.linestrip(corners.map(at), Color::srgb(0.3, 0.9, 1.0));
     }
     if turn == Turn::Calling {
-        for pocket in Pocket::ALL {
-            let hole = spec.pocket(pocket);
+        for hole in spec.pockets() {
             gizmos
                 .circle(
                     Isometry3d::new(at(hole.centre), flat),
@@ -126,8 +126,9 @@ pub(super) fn draw_rules(
                 .resolution(32);
         }
     }
-    if let Call::Ball { pocket, .. } = game.call {
-        let hole = spec.pocket(pocket);
+    if let Call::Ball { pocket, .. } = game.call
+        && let Some(hole) = spec.pocket(pocket)
+    {
         for k in [1.0, 1.15] {
             gizmos
                 .circle(
