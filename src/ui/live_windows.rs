@@ -31,7 +31,7 @@ pub(super) fn verdict(
         });
     } else {
         ui.label(format!(
-            "{striker} plays the {} next",
+            "{striker} plays {} next",
             game.rules.ball_name(turn.cue_ball)
         ));
         if game.has_human() && ui.button("Continue (Enter)").clicked() {

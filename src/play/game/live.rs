@@ -129,10 +129,10 @@ impl LiveGame {
             }
             Turn::Verdict => format!("{striker} to play next: continue"),
             Turn::BallInHand | Turn::Aiming if let Some(level) = self.computer(turn.striker) => {
-                format!("{striker} (computer, {level}) to play the {cue}")
+                format!("{striker} (computer, {level}) to play {cue}")
             }
             Turn::BallInHand => format!(
-                "{striker} to play the {cue}: ball in hand {}, drag it, aim and shoot",
+                "{striker} to play {cue}: ball in hand {}, drag it, aim and shoot",
                 match turn.place {
                     CueBallPlace::InHand {
                         region: HandRegion::BehindHeadString,
@@ -143,7 +143,7 @@ impl LiveGame {
                     _ => "anywhere",
                 }
             ),
-            Turn::Aiming | Turn::Calling => format!("{striker} to play the {cue}: aim and shoot"),
+            Turn::Aiming | Turn::Calling => format!("{striker} to play {cue}: aim and shoot"),
         };
         let mut lines = vec![score, doing];
         if self.rules.end().is_none() && !turn.ball_on.is_empty() {
