@@ -8,14 +8,7 @@ use super::open::OpenRecording;
 impl OpenRecording {
     /// What happened at an event, with the balls by number (`"ball 3 hit the foot cushion"`).
     pub fn describe(&self, event: &Event) -> String {
-        // A snooker recording names its balls by colour ("the pink"; every red is "a red").
-        let snooker =
-            crate::table::geometry::TableSpec::fitting(&self.recording.table).is_snooker();
-        let ball = |id: usize| match self.number(id) {
-            0 => "cue ball".to_owned(),
-            n if snooker => billiards_rules::snooker::balls::name(n).to_owned(),
-            n => format!("ball {n}"),
-        };
+        let ball = |id: usize| self.ball_name(id);
         match event.kind {
             EventKind::Strike { ball: id, shot } => format!(
                 "strike: {} at {:.1} deg, {:.2} m/s",
@@ -111,10 +104,18 @@ impl OpenRecording {
         (ta, tb)
     }
 
+    /// A ball in words by its table: snooker's by colour ("pink"; every red is "red"),
+    /// carom's white, yellow and red (UMB), pool's by number ("cue ball", "ball 3").
     fn ball_name(&self, id: usize) -> String {
-        match self.number(id) {
-            0 => "cue ball".to_owned(),
-            n => format!("ball {n}"),
+        use crate::table::geometry::{TableKind, TableSpec};
+        let kind = TableSpec::fitting(&self.recording.table).kind;
+        match (kind, self.number(id)) {
+            (TableKind::Carom, n) => billiards_rules::three_cushion::balls::Ball::ALL
+                .get(usize::from(n))
+                .map_or_else(|| format!("ball {n}"), |b| b.name().to_owned()),
+            (_, 0) => "cue ball".to_owned(),
+            (TableKind::Snooker, n) => billiards_rules::snooker::balls::name(n).to_owned(),
+            (_, n) => format!("ball {n}"),
         }
     }
 }

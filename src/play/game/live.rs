@@ -90,9 +90,15 @@ impl LiveGame {
         }
     }
 
-    /// The last judgement in words, with the striker: "Ann: 1 point ...".
+    /// The last judgement in words, with the striker: "Ann: no point ...". A text that names
+    /// the striker already ("Ann pots a red") is given as it is.
     pub fn verdict_text(&self, judgement: &Judgement) -> String {
-        format!("{}: {}", self.name(judgement.striker), judgement.text)
+        let name = self.name(judgement.striker);
+        if judgement.text.contains(name) {
+            judgement.text.clone()
+        } else {
+            format!("{name}: {}", judgement.text)
+        }
     }
 
     /// The end of the game in words: "Ann wins the game (40 points) and the match".
@@ -146,10 +152,13 @@ impl LiveGame {
             Turn::Aiming | Turn::Calling => format!("{striker} to play {cue}: aim and shoot"),
         };
         let mut lines = vec![score, doing];
-        if self.rules.end().is_none() && !turn.ball_on.is_empty() {
+        let status = self.rules.status();
+        // The ball on, unless the game's own lines say it.
+        let said = status.iter().any(|l| l.starts_with("ball on"));
+        if self.rules.end().is_none() && !turn.ball_on.is_empty() && !said {
             lines.push(format!("ball on: {}", turn.ball_on));
         }
-        lines.extend(self.rules.status());
+        lines.extend(status);
         if let Some(text) = self.declared.text(&|b| self.rules.ball_name(b)) {
             lines.push(format!("declared: {text}"));
         }
