@@ -204,6 +204,8 @@ fn layout_states(recording: &str, missing: &str) -> Vec<(Vec<String>, &'static s
         (&["--game", "nine-ball"], "9-ball, race to 3"),
         // Snooker's longer HUD lines (frames, score, break, points remaining).
         (&["--game", "snooker"], "points remaining"),
+        // Three-cushion on the carom table: the score with innings, the average.
+        (&["--game", "three-cushion"], "three-cushion to 40"),
         (&["replay", recording], "replaying a recording"),
         (&["replay", missing], "does-not-exist"),
         // Free play: the cue ball from the head spot into the head-left corner.
