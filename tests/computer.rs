@@ -44,10 +44,24 @@ fn turn(app: &App) -> Turn {
 
 #[test]
 fn two_computers_play_a_rack_of_nine_ball_to_its_end() {
-    let folder = std::env::temp_dir().join(format!("billiards-computer-{}", std::process::id()));
+    play_a_rack_between_computers(Game::NineBall, "nine");
+}
+
+/// Issue 50: 10-ball (WPA section 9, every shot after the break called) is played to its end
+/// between two computers in the game, as 9-ball is; its log re-judges the rack.
+#[test]
+fn two_computers_play_a_rack_of_ten_ball_to_its_end() {
+    play_a_rack_between_computers(Game::TenBall, "ten");
+}
+
+/// Two easy computers play a rack of `game` to its end through the game's states; the rack's
+/// recording verifies and its log re-judges every shot.
+fn play_a_rack_between_computers(game: Game, tag: &str) {
+    let folder =
+        std::env::temp_dir().join(format!("billiards-computer-{tag}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&folder);
-    let mut app = start(&folder, Game::NineBall);
-    // Bounded by what was asked, not by the clock: a rack of 9-ball between two computers
+    let mut app = start(&folder, game);
+    // Bounded by what was asked, not by the clock: a rack between two computers
     // ends within this many shots (each shot is a decision thread waited for to its end).
     const MAX_SHOTS: usize = 300;
     while turn(&app) != Turn::GameOver {
