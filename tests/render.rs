@@ -192,7 +192,7 @@ fn recorded_break() -> PathBuf {
 /// The states the layout check visits: the arguments that reach each (a launch script
 /// plays the moves a player would: issue 48) and a text that shows it was reached.
 fn layout_states(recording: &str, missing: &str) -> Vec<(Vec<String>, &'static str)> {
-    let states: [(&[&str], &str); 16] = [
+    let states: [(&[&str], &str); 17] = [
         (&["--open-sections"], "free play"),
         // The stress table's lines in the HUD (issue 48: the HUD grows to hold them).
         (&["--stress", "200"], "stress table"),
