@@ -4,7 +4,7 @@
 //! re-predict only those balls and the balls whose prediction involved them.
 
 use crate::ball::{BallId, BallState, Motion, Segment};
-use crate::event::{Event, EventKind, Shot};
+use crate::event::{Event, EventKind};
 use crate::history::History;
 use crate::limits;
 use crate::math::{Vec2, Vec3};
@@ -19,6 +19,7 @@ use scene::{Bodies, Scene};
 mod cell_lists;
 mod cluster;
 mod deferred;
+mod flight;
 #[cfg(test)]
 mod forge;
 mod pair_table;
@@ -315,23 +316,6 @@ impl Simulation {
         Ok(Advance {
             events: first..self.event_count,
         })
-    }
-
-    /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
-    /// takes the tip offset and the cue's elevation (the paper's model has no spin and
-    /// ignores both).
-    pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
-        self.flush();
-        let state = self.ball_checked(id)?;
-        setup::check_shot(id, self.numbers[id], &shot, self.time)?;
-        let dir = Vec2::from_angle(shot.angle);
-        let cue = Laws::of(&self.params.model).cue;
-        let (v, w) = cue.strike(&self.params.ball, dir, shot.speed, shot.tip, shot.elevation)?;
-        self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v, w);
-        self.record(EventKind::Strike { ball: id, shot });
-        self.inputs_done();
-        self.repredict([id]);
-        Ok(())
     }
 
     /// Sets ball `id`'s position and velocity now (editing, respotting). The new position must

@@ -1,0 +1,34 @@
+//! The strike and a ball's flight: the cue's 3D impulse with the slate's reaction
+//! ([`crate::resolve::cue::strike`]), and the segments of a ball in the air.
+
+use super::{SetupError, Simulation, setup};
+use crate::ball::BallId;
+use crate::event::{EventKind, Shot};
+use crate::math::Vec2;
+use crate::motion;
+use crate::resolve::{self, Laws};
+
+impl Simulation {
+    /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
+    /// takes the tip offset and the cue's elevation (the paper's model has no spin and
+    /// ignores both).
+    pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
+        self.flush();
+        let state = self.ball_checked(id)?;
+        setup::check_shot(id, self.numbers[id], &shot, self.time)?;
+        let dir = Vec2::from_angle(shot.angle);
+        let cue = Laws::of(&self.params.model).cue;
+        let cue_at = resolve::cue::Cue {
+            dir,
+            elevation: shot.elevation,
+        };
+        let (ball, g) = (&self.params.ball, self.params.gravity);
+        let b = cue.strike(ball, g, cue_at, shot.speed, shot.tip)?;
+        let (v, w) = (b.velocity, b.spin);
+        self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v, w);
+        self.record(EventKind::Strike { ball: id, shot });
+        self.inputs_done();
+        self.repredict([id]);
+        Ok(())
+    }
+}
