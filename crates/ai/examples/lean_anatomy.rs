@@ -24,6 +24,7 @@ fn kind(e: &EventKind) -> String {
     let m = |m: Motion| match m {
         Motion::Sliding => "slide",
         Motion::Rolling => "roll",
+        Motion::Airborne => "air",
         Motion::Spinning => "spin",
         Motion::Stationary => "rest",
         Motion::Pocketed(_) => "pocketed",

@@ -159,7 +159,8 @@ fn the_elevated_strike_is_the_impulse_at_the_contact_point() {
 fn swerve_curves_towards_the_english() {
     let p = spin(SpinModel::default());
     let bend = |side: f64, degrees: f64| {
-        let mut sim = struck(p, shot(0.0, 2.0, side, 0.0, degrees));
+        // 1 m/s: the slate's rebound rises under 5 mm at every elevation here (on the cloth).
+        let mut sim = struck(p, shot(0.0, 1.0, side, 0.0, degrees));
         let e = slide_end(&mut sim);
         e.after[0].velocity.angle()
     };
@@ -213,17 +214,17 @@ fn the_swerve_is_the_closed_form_parabola() {
     }
 }
 
-/// The 30-degree limit is a clear error; the miscue limit holds at every elevation, on the
+/// The 85-degree limit is a clear error; the miscue limit holds at every elevation, on the
 /// same offset seen along the cue; neither moves the ball.
 #[test]
-fn elevation_beyond_30_degrees_and_miscues_are_errors() {
+fn elevation_beyond_85_degrees_and_miscues_are_errors() {
     let p = spin(SpinModel::default());
     let mut sim = Simulation::new(huge_table(), p, &[BallSetup::at(0, Vec2::ZERO)]).unwrap();
-    let too_steep = sim.strike(0, shot(0.0, 2.0, 0.2, 0.0, 30.5));
+    let too_steep = sim.strike(0, shot(0.0, 2.0, 0.2, 0.0, 85.5));
     match too_steep {
         Err(SetupError::Limit(e)) => {
             assert_eq!(e.what, "cue elevation");
-            assert!(e.to_string().contains("30 degrees"), "{e}");
+            assert!(e.to_string().contains("85 degrees"), "{e}");
         }
         other => panic!("expected a limit error, got {other:?}"),
     }

@@ -2,7 +2,7 @@
 //! ([`crate::resolve::cue::strike`]), and the segments of a ball in the air.
 
 use super::{SetupError, Simulation, setup};
-use crate::ball::BallId;
+use crate::ball::{BallId, BallState, Motion};
 use crate::event::{EventKind, Shot};
 use crate::math::Vec2;
 use crate::motion;
@@ -24,8 +24,21 @@ impl Simulation {
         };
         let (ball, g) = (&self.params.ball, self.params.gravity);
         let b = cue.strike(ball, g, cue_at, shot.speed, shot.tip)?;
-        let (v, w) = (b.velocity, b.spin);
-        self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v, w);
+        let (p, v, w) = (state.position, b.velocity, b.spin);
+        self.segments[id] = if b.vertical > 0.0 {
+            // The slate's rebound lifts the ball: it flies from the cloth.
+            let state = BallState {
+                position: p,
+                velocity: v,
+                angular_velocity: w,
+                motion: Motion::Airborne,
+                height: 0.0,
+                vertical: b.vertical,
+            };
+            motion::flight::airborne(&self.params, self.time, state)
+        } else {
+            motion::segment_from(&self.params, self.time, p, v, w)
+        };
         self.record(EventKind::Strike { ball: id, shot });
         self.inputs_done();
         self.repredict([id]);

@@ -487,7 +487,7 @@ impl Simulation {
         let (r, acceleration) = (self.params.ball.radius, self.segments[id].acceleration);
         let (v, w) =
             resolve::fixed_body(&laws, s, acceleration, contact, r, &mut self.perturbation);
-        self.segments[id] = motion::segment_from(&self.params, self.time, s.position, v, w);
+        self.segments[id] = motion::segment_after(&self.params, self.time, s, v, w);
     }
 
     /// Balls `a` and `b` touch: a cluster impact if they have neighbours within the reach of
@@ -525,10 +525,8 @@ impl Simulation {
             &mut self.perturbation,
         );
         let params = &self.params;
-        self.segments[a] =
-            motion::segment_from(params, t, sa.position, na.velocity, na.angular_velocity);
-        self.segments[b] =
-            motion::segment_from(params, t, sb.position, nb.velocity, nb.angular_velocity);
+        self.segments[a] = motion::segment_after(params, t, &sa, na.velocity, na.angular_velocity);
+        self.segments[b] = motion::segment_after(params, t, &sb, nb.velocity, nb.angular_velocity);
         self.record(EventKind::BallBall { a, b });
         self.repredict_event(a, Some(b));
     }
