@@ -143,3 +143,106 @@ fn energy_never_grows_in_flight_or_at_a_bounce() {
         assert!(flights >= 1, "{speed} m/s at {degrees} flies");
     }
 }
+
+/// Least distance in space between the centre of a ball flying from the origin (plane speed
+/// `vx`, upward `vz`) and a resting ball's centre `d` ahead, over the first flight: the
+/// closed form sampled finely, then refined by ternary search.
+fn closest_pass(vx: f64, vz: f64, g: f64, d: f64) -> f64 {
+    let dist2 = |t: f64| (vx * t - d).powi(2) + (vz * t - 0.5 * g * t * t).powi(2);
+    let flight = 2.0 * vz / g;
+    let n = 20_000;
+    let k = (0..=n)
+        .min_by(|&i, &j| {
+            let (a, b) = (
+                dist2(flight * i as f64 / n as f64),
+                dist2(flight * j as f64 / n as f64),
+            );
+            a.total_cmp(&b)
+        })
+        .unwrap();
+    let (mut lo, mut hi) = (
+        flight * (k.max(1) - 1) as f64 / n as f64,
+        flight * (k + 1).min(n) as f64 / n as f64,
+    );
+    for _ in 0..200 {
+        let (m1, m2) = (lo + (hi - lo) / 3.0, hi - (hi - lo) / 3.0);
+        if dist2(m1) < dist2(m2) {
+            hi = m2;
+        } else {
+            lo = m1;
+        }
+    }
+    dist2(0.5 * (lo + hi)).sqrt()
+}
+
+/// A jump over a ball 15 cm away (centre to centre) at 50 degrees: the speed at which the
+/// first flight's closed form just clears it (least distance 2R in space) is found
+/// independently; 1% faster the cue ball passes over it without touching and lands beyond,
+/// 1% slower it hits it (a ball-ball event in the air).
+#[test]
+fn a_jump_clears_a_ball_fifteen_centimetres_away_above_the_threshold_and_not_below() {
+    let p = spin();
+    let (r, g, d) = (p.ball.radius, p.gravity, 0.15);
+    let theta = 50f64.to_radians();
+    // Above 43.6 degrees the slate grips: plane speed (5/7) v cos(theta), up e v sin(theta).
+    let clears = |v: f64| closest_pass(5.0 / 7.0 * v * theta.cos(), E * v * theta.sin(), g, d);
+    let (mut lo, mut hi) = (0.5, 10.0);
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if clears(mid) >= 2.0 * r {
+            hi = mid
+        } else {
+            lo = mid
+        }
+    }
+    let threshold = hi;
+    assert!(threshold > 1.0 && threshold < 6.0, "{threshold} m/s");
+    let play = |v: f64| {
+        let balls = [
+            BallSetup::at(0, Vec2::ZERO),
+            BallSetup::at(1, Vec2::new(d, 0.0)),
+        ];
+        let mut sim = Simulation::new(huge_table(), p, &balls).unwrap();
+        let shot = Shot {
+            elevation: theta,
+            ..Shot::new(0.0, v)
+        };
+        sim.strike(0, shot).unwrap();
+        sim.run_to_rest().unwrap();
+        sim
+    };
+    let over = play(threshold * 1.01);
+    let hit = |sim: &Simulation| {
+        let events = sim.history().events();
+        events
+            .iter()
+            .any(|e| matches!(e.kind, EventKind::BallBall { .. }))
+    };
+    assert!(!hit(&over), "cleared at {} m/s", threshold * 1.01);
+    let land = landings(&over)[0].after[0].position.x;
+    assert!(land > d + 2.0 * r, "lands beyond the blocker: {land}");
+    assert_eq!(
+        over.ball(1).position,
+        Vec2::new(d, 0.0),
+        "the blocker never moved"
+    );
+    let short = play(threshold * 0.99);
+    assert!(hit(&short), "hits it at {} m/s", threshold * 0.99);
+    let first = short
+        .history()
+        .events()
+        .iter()
+        .find(|e| matches!(e.kind, EventKind::BallBall { .. }));
+    let e = first.unwrap();
+    // In the air, before the undisturbed flight would land, and touching in space (2R).
+    let v = threshold * 0.99;
+    assert!(
+        e.time > 0.0 && e.time < 2.0 * E * v * theta.sin() / g,
+        "{e:?}"
+    );
+    let (a, b) = (e.after[0], e.after[1]);
+    let gap = ((b.position - a.position).length_squared() + (b.height - a.height).powi(2)).sqrt();
+    assert!((gap - 2.0 * r).abs() < 1e-9, "{gap}");
+    assert!(a.height > 0.0, "the cue ball was in the air: {a:?}");
+    println!("jump over a ball {d} m away at 50 degrees: clears from {threshold:.4} m/s");
+}

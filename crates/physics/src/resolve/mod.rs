@@ -2,6 +2,7 @@
 //! after its source; the model in force is read in one place ([`Laws::of`]), and the loop
 //! resolves every contact through [`fixed_body`] or [`ball_pair`].
 
+pub mod ball_air;
 mod ball_ball;
 mod ball_cushion;
 pub mod cue;

@@ -6,6 +6,8 @@ use crate::ball::{BallId, BallState, Motion};
 use crate::event::{EventKind, Shot};
 use crate::math::Vec2;
 use crate::motion;
+use crate::params::Model;
+use crate::resolve::slate::{SLATE_RESTITUTION, Slate};
 use crate::resolve::{self, Laws};
 
 impl Simulation {
@@ -43,5 +45,34 @@ impl Simulation {
         self.inputs_done();
         self.repredict([id]);
         Ok(())
+    }
+}
+
+impl Simulation {
+    /// Balls `a` and `b`, one of them at least in the air, touch in space
+    /// ([`resolve::ball_air::air_pair`]): each flies on, or goes on along the cloth.
+    pub(super) fn air_pair(&mut self, a: BallId, b: BallId) {
+        let t = self.time;
+        let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
+        let (e, mu) = match self.params.model {
+            Model::Spin(m) => (m.e_ball, m.mu_slide),
+            Model::Paper(m) => (m.e_ball, m.mu_slide),
+        };
+        let table = Slate {
+            restitution: SLATE_RESTITUTION,
+            mu,
+            gravity: self.params.gravity,
+            radius: self.params.ball.radius,
+        };
+        let (na, nb) = resolve::ball_air::air_pair(e, &table, &sa, &sb);
+        for (id, s) in [(a, na), (b, nb)] {
+            self.segments[id] = if s.motion == Motion::Airborne {
+                motion::flight::airborne(&self.params, t, s)
+            } else {
+                motion::segment_from(&self.params, t, s.position, s.velocity, s.angular_velocity)
+            };
+        }
+        self.record(EventKind::BallBall { a, b });
+        self.repredict_event(a, Some(b));
     }
 }
