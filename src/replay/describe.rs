@@ -147,5 +147,6 @@ fn motion_label(motion: Motion) -> &'static str {
         Motion::Airborne => "in the air",
         Motion::Spinning => "spinning in place",
         Motion::Pocketed(_) => "pocketed",
+        Motion::OffTable => "off the table",
     }
 }

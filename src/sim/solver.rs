@@ -220,7 +220,9 @@ pub fn ball_motion(state: &BallState) -> BallMotion {
             Motion::Sliding | Motion::Airborne => MotionState::Sliding,
             Motion::Rolling => MotionState::Rolling,
             // Spinning in place: the centre does not move, so nothing to roll.
-            Motion::Stationary | Motion::Spinning | Motion::Pocketed(_) => MotionState::Stationary,
+            Motion::Stationary | Motion::Spinning | Motion::Pocketed(_) | Motion::OffTable => {
+                MotionState::Stationary
+            }
         },
     }
 }

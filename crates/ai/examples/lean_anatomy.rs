@@ -28,6 +28,7 @@ fn kind(e: &EventKind) -> String {
         Motion::Spinning => "spin",
         Motion::Stationary => "rest",
         Motion::Pocketed(_) => "pocketed",
+        Motion::OffTable => "off",
     };
     match *e {
         EventKind::Transition { from, to, .. } => format!("transition {} to {}", m(from), m(to)),

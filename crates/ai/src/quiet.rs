@@ -51,7 +51,7 @@ pub fn final_layout(sim: &Simulation) -> Option<Layout> {
     for (id, &n) in sim.numbers().iter().enumerate() {
         let seg = sim.segment(id);
         match seg.state.motion {
-            Motion::Pocketed(_) => continue,
+            Motion::Pocketed(_) | Motion::OffTable => continue,
             Motion::Stationary | Motion::Spinning => {
                 let p = seg.position_at(t.max(seg.start));
                 push((n, p, p))?;

@@ -62,6 +62,8 @@ pub enum Motion {
     Airborne,
     /// Out of play, in this pocket.
     Pocketed(Pocket),
+    /// Out of play off the table: it flew over a cushion's nose (spin model).
+    OffTable,
 }
 
 impl Motion {
@@ -72,12 +74,15 @@ impl Motion {
 
     /// In play (not pocketed).
     pub fn on_table(self) -> bool {
-        !matches!(self, Motion::Pocketed(_))
+        !matches!(self, Motion::Pocketed(_) | Motion::OffTable)
     }
 
     /// Nothing about the ball will change until something hits it.
     pub fn is_at_rest(self) -> bool {
-        matches!(self, Motion::Stationary | Motion::Pocketed(_))
+        matches!(
+            self,
+            Motion::Stationary | Motion::Pocketed(_) | Motion::OffTable
+        )
     }
 }
 

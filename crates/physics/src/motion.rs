@@ -67,7 +67,9 @@ pub fn segment_from(
 pub fn segment_with_motion(params: &Params, start: f64, state: &BallState) -> Segment {
     let (p, v, w) = (state.position, state.velocity, state.angular_velocity);
     match (params.model, state.motion) {
-        (_, Motion::Stationary | Motion::Pocketed(_)) => Segment::at_rest(start, p, state.motion),
+        (_, Motion::Stationary | Motion::Pocketed(_) | Motion::OffTable) => {
+            Segment::at_rest(start, p, state.motion)
+        }
         (_, Motion::Airborne) => flight::airborne(params, start, *state),
         (Model::Paper(_), motion) => paper_segment(params, start, p, v, motion),
         (Model::Spin(m), Motion::Sliding) => sliding(

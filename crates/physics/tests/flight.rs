@@ -246,3 +246,53 @@ fn a_jump_clears_a_ball_fifteen_centimetres_away_above_the_threshold_and_not_bel
     assert!(a.height > 0.0, "the cue ball was in the air: {a:?}");
     println!("jump over a ball {d} m away at 50 degrees: clears from {threshold:.4} m/s");
 }
+
+/// A hard shot at 60 degrees from 0.3 m off the foot cushion flies over its nose (its lowest
+/// point far above the nose's 36 mm) and leaves the table: a transition from the air to
+/// off the table, the ball out of play. A soft one at the same elevation rises under the
+/// nose and rebounds from the cushion, staying in play.
+#[test]
+fn a_hard_elevated_shot_into_a_cushion_leaves_the_table() {
+    let p = spin();
+    let table = Table::wpa_8ft();
+    let start = Vec2::new(0.5 * table.length - 0.3, 0.1);
+    let play = |speed: f64| {
+        let mut sim = Simulation::new(table, p, &[BallSetup::at(0, start)]).unwrap();
+        let shot = Shot {
+            elevation: 60f64.to_radians(),
+            ..Shot::new(0.0, speed)
+        };
+        sim.strike(0, shot).unwrap();
+        sim.run_to_rest().unwrap();
+        sim
+    };
+    let hard = play(6.0);
+    let off = |e: &&Event| {
+        matches!(
+            e.kind,
+            EventKind::Transition {
+                from: Motion::Airborne,
+                to: Motion::OffTable,
+                ..
+            }
+        )
+    };
+    let events = hard.history().events();
+    assert_eq!(events.iter().filter(off).count(), 1, "{events:#?}");
+    assert_eq!(hard.ball(0).motion, Motion::OffTable);
+    assert!(!hard.ball(0).motion.on_table());
+    assert!(
+        !events
+            .iter()
+            .any(|e| matches!(e.kind, EventKind::Cushion { .. }))
+    );
+    let soft = play(1.5);
+    let events = soft.history().events();
+    assert!(!events.iter().any(|e| off(&e)), "{events:#?}");
+    assert!(
+        events
+            .iter()
+            .any(|e| matches!(e.kind, EventKind::Cushion { .. }))
+    );
+    assert!(soft.ball(0).motion.on_table());
+}

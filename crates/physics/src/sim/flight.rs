@@ -2,13 +2,14 @@
 //! ([`crate::resolve::cue::strike`]), and the segments of a ball in the air.
 
 use super::{SetupError, Simulation, setup};
-use crate::ball::{BallId, BallState, Motion};
+use crate::ball::{BallId, BallState, Motion, Segment};
 use crate::event::{EventKind, Shot};
 use crate::math::Vec2;
 use crate::motion;
 use crate::params::Model;
 use crate::resolve::slate::{SLATE_RESTITUTION, Slate};
 use crate::resolve::{self, Laws};
+use crate::table::Cushion;
 
 impl Simulation {
     /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
@@ -74,5 +75,43 @@ impl Simulation {
         }
         self.record(EventKind::BallBall { a, b });
         self.repredict_event(a, Some(b));
+    }
+}
+
+impl Simulation {
+    /// Ball `id`, reaching `cushion`'s contact line, is in the air high enough to pass over
+    /// the nose. The nose is `h_n = cushion_height (2R)` above the cloth and the ball's lowest
+    /// point is its rise `z` above the cloth; the ball clears it if `z >= h_n` both now (its
+    /// side level with the nose) and when its centre is over the nose, `R / v_n` later at its
+    /// constant speed `v_n` towards the cushion (the parabola is concave, so `z` is least at
+    /// one of the two). Lower, it meets the nose and rebounds as on the cloth.
+    pub(super) fn clears_cushion(&self, id: BallId, cushion: Cushion) -> bool {
+        let seg = &self.segments[id];
+        let Model::Spin(m) = self.params.model else {
+            return false;
+        };
+        if seg.state.motion != Motion::Airborne {
+            return false;
+        }
+        let r = self.params.ball.radius;
+        let nose = m.cushion_height * 2.0 * r;
+        let towards = -cushion.inward_normal().dot(seg.state.velocity);
+        if towards <= 0.0 {
+            return false;
+        }
+        let t = self.time;
+        let over = t + r / towards;
+        seg.height_at(t) >= nose && seg.height_at(over) >= nose
+    }
+
+    /// Ball `id` flies off the table over a cushion: out of play
+    /// ([`Motion::OffTable`]), recorded as a transition from the air.
+    pub(super) fn off_table(&mut self, id: BallId) {
+        let t = self.time;
+        let s = self.segments[id].state_at(t);
+        self.segments[id] = Segment::at_rest(t, s.position, Motion::OffTable);
+        let (from, to) = (Motion::Airborne, Motion::OffTable);
+        self.record(EventKind::Transition { ball: id, from, to });
+        self.repredict_event(id, None);
     }
 }

@@ -445,6 +445,9 @@ impl Simulation {
     /// Ball `id` reaches `cushion`'s line: in a mouth of the paper's table it drops, anywhere
     /// else (and everywhere on a table without pockets) it rebounds.
     fn cushion(&mut self, id: BallId, cushion: Cushion) {
+        if self.clears_cushion(id, cushion) {
+            return self.off_table(id);
+        }
         let s = self.segments[id].state_at(self.time);
         let table = &self.bodies.table;
         let mouth = match table.pockets {
