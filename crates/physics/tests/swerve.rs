@@ -93,7 +93,8 @@ fn a_level_cue_gives_the_level_strike_bit_for_bit() {
 
 /// The strike, derived again in 3D: `J` along `d` (the cue tilted down by `theta`) at the
 /// contact point `r` (offsets seen along the cue), `v = J / m` along `d`, `w = r x J / I`;
-/// then the slate's reaction to the downward part `v_z` (pooltool's `frictional_inelastic`):
+/// then, when the ball leaves the cloth, the slate's reaction to the downward part `v_z`
+/// (pooltool's `frictional_inelastic`):
 /// a friction impulse `f` against the contact point's slip `u`, the smaller of
 /// `mu (1 + e) |v_z|` (Coulomb, e = 0.5) and `(2/7) |u|` (no slip), `v -= f u_hat`,
 /// `w += r_c x (-f u_hat) / (I/m)` with `r_c = -R z` the slate contact.
@@ -119,7 +120,10 @@ fn expected_strike(p: &Params, s: &Shot) -> (Vec2, Vec3) {
     let (vxy, vz) = ((d * v).xy(), (d * v).z);
     let z = Vec3::new(0.0, 0.0, 1.0);
     let u = vxy - (w.cross(z) * r).xy();
-    if vz == 0.0 || u.length() == 0.0 {
+    // A rebound that would rise under 5 mm (e = 0.5): the ball stays on the cloth with the
+    // planar strike's numbers, the slate taking the vertical part without friction.
+    let stays_down = (0.5 * vz).powi(2) / (2.0 * p.gravity) < 0.005;
+    if vz == 0.0 || u.length() == 0.0 || stays_down {
         return (vxy, w);
     }
     let f = (m.mu_slide * 1.5 * -vz).min(u.length() * 2.0 / 7.0);

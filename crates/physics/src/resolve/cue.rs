@@ -45,9 +45,10 @@ pub struct Cue {
 /// The ball, driven down at `v sin(theta)`, meets the slate at once: the slate's reaction
 /// ([`slate::bounce`]: restitution [`slate::SLATE_RESTITUTION`], the cloth's sliding friction
 /// `mu_slide` or the no-slip limit, whichever is smaller) sets its take-off speed
-/// `e v sin(theta)` (zero when it would rise under [`slate::MIN_BOUNCE_HEIGHT`]) and changes
-/// its velocity and spin by the friction impulse, as pooltool's strike followed by its
-/// `frictional_inelastic` ball-table resolution. A level cue (`theta = 0`) drives nothing
+/// `e v sin(theta)` and changes its velocity and spin by the friction impulse, as pooltool's
+/// strike followed by its `frictional_inelastic` ball-table resolution. A ball that would rise
+/// under [`slate::MIN_BOUNCE_HEIGHT`] stays on the cloth with the planar strike's numbers (the
+/// slate takes the vertical part, no friction), bit for bit as before flight was modelled. A level cue (`theta = 0`) drives nothing
 /// into the slate and gives exactly the level strike's numbers, bit for bit.
 pub fn strike(
     model: &SpinModel,
@@ -87,6 +88,19 @@ pub fn strike(
         });
     }
     w += dir.extend() * (k * tip.side * sin);
+    let up = slate::SLATE_RESTITUTION * v * sin;
+    if up * up / (2.0 * gravity) < slate::MIN_BOUNCE_HEIGHT {
+        // The ball stays on the cloth: the slate takes the impulse's vertical part through
+        // the contact point below the centre, as the strike always did (the cloth's friction
+        // in that instant neglected, as pooltool's strike does), so every shot that stays
+        // down keeps its events bit for bit (issue 51): a swerve, or a level shot with the
+        // computer's elevation noise.
+        return Ok(Bounce {
+            velocity,
+            vertical: 0.0,
+            spin: w,
+        });
+    }
     let slate = Slate {
         restitution: slate::SLATE_RESTITUTION,
         mu: model.mu_slide,
