@@ -145,7 +145,9 @@ fn motion_label(motion: Motion) -> &'static str {
         Motion::Stationary => "rest",
         Motion::Sliding => "sliding",
         Motion::Rolling => "rolling",
+        Motion::Airborne => "in the air",
         Motion::Spinning => "spinning in place",
         Motion::Pocketed(_) => "pocketed",
+        Motion::OffTable => "off the table",
     }
 }

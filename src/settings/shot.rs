@@ -98,7 +98,7 @@ impl ShotSettings {
         unit: " R",
     };
 
-    /// Cue elevation: level to the solver's limit (30 degrees, `limits::MAX_ELEVATION`).
+    /// Cue elevation: level to the solver's limit (85 degrees, `limits::MAX_ELEVATION`).
     pub const ELEVATION: ParamRange = ParamRange {
         label: "cue elevation",
         min: 0.0,

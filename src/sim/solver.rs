@@ -233,10 +233,13 @@ pub fn ball_motion(state: &BallState) -> BallMotion {
             bevy::math::DVec3::new(w.x, w.y, w.z)
         },
         state: match state.motion {
-            Motion::Sliding => MotionState::Sliding,
+            // In the air: moving, drawn on the cloth until the game draws flight (issue 52).
+            Motion::Sliding | Motion::Airborne => MotionState::Sliding,
             Motion::Rolling => MotionState::Rolling,
             // Spinning in place: the centre does not move, so nothing to roll.
-            Motion::Stationary | Motion::Spinning | Motion::Pocketed(_) => MotionState::Stationary,
+            Motion::Stationary | Motion::Spinning | Motion::Pocketed(_) | Motion::OffTable => {
+                MotionState::Stationary
+            }
         },
     }
 }

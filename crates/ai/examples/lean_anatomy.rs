@@ -24,9 +24,11 @@ fn kind(e: &EventKind) -> String {
     let m = |m: Motion| match m {
         Motion::Sliding => "slide",
         Motion::Rolling => "roll",
+        Motion::Airborne => "air",
         Motion::Spinning => "spin",
         Motion::Stationary => "rest",
         Motion::Pocketed(_) => "pocketed",
+        Motion::OffTable => "off",
     };
     match *e {
         EventKind::Transition { from, to, .. } => format!("transition {} to {}", m(from), m(to)),

@@ -28,9 +28,10 @@ pub fn final_layout(sim: &Simulation) -> Option<Layout> {
             && p.y.abs() <= b.y - MARGIN
             && p.x.abs() + p.y.abs() < corner - MARGIN
     };
-    // A ball still sliding (or curving) answers at once, before anything is built.
+    // A ball still sliding (or curving, or in the air) answers at once, before anything is
+    // built.
     let curving = |s: &billiards_physics::Segment| match s.state.motion {
-        Motion::Sliding => true,
+        Motion::Sliding | Motion::Airborne => true,
         Motion::Rolling => !s.straight,
         _ => false,
     };
@@ -50,7 +51,7 @@ pub fn final_layout(sim: &Simulation) -> Option<Layout> {
     for (id, &n) in sim.numbers().iter().enumerate() {
         let seg = sim.segment(id);
         match seg.state.motion {
-            Motion::Pocketed(_) => continue,
+            Motion::Pocketed(_) | Motion::OffTable => continue,
             Motion::Stationary | Motion::Spinning => {
                 let p = seg.position_at(t.max(seg.start));
                 push((n, p, p))?;
@@ -63,7 +64,7 @@ pub fn final_layout(sim: &Simulation) -> Option<Layout> {
                 }
                 push((n, from, to))?;
             }
-            Motion::Rolling | Motion::Sliding => return None,
+            Motion::Rolling | Motion::Sliding | Motion::Airborne => return None,
         }
     }
     let paths = &buffer[..len];

@@ -57,24 +57,32 @@ pub enum Motion {
     Sliding,
     /// Decelerating at the rolling rate.
     Rolling,
+    /// In the air (spin model): a parabola under gravity with constant spin, no cloth
+    /// friction; [`BallState::height`] and [`BallState::vertical`] hold its vertical state.
+    Airborne,
     /// Out of play, in this pocket.
     Pocketed(Pocket),
+    /// Out of play off the table: it flew over a cushion's nose (spin model).
+    OffTable,
 }
 
 impl Motion {
     /// Moving on the table (not stationary, not pocketed).
     pub fn is_moving(self) -> bool {
-        matches!(self, Motion::Sliding | Motion::Rolling)
+        matches!(self, Motion::Sliding | Motion::Rolling | Motion::Airborne)
     }
 
     /// In play (not pocketed).
     pub fn on_table(self) -> bool {
-        !matches!(self, Motion::Pocketed(_))
+        !matches!(self, Motion::Pocketed(_) | Motion::OffTable)
     }
 
     /// Nothing about the ball will change until something hits it.
     pub fn is_at_rest(self) -> bool {
-        matches!(self, Motion::Stationary | Motion::Pocketed(_))
+        matches!(
+            self,
+            Motion::Stationary | Motion::Pocketed(_) | Motion::OffTable
+        )
     }
 }
 
@@ -89,6 +97,18 @@ pub struct BallState {
     pub angular_velocity: Vec3,
     /// Motion state.
     pub motion: Motion,
+    /// Height of the centre above its height on the cloth, metres: 0 unless
+    /// [`Motion::Airborne`] (absent from files of balls on the cloth).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub height: f64,
+    /// Upward speed, m/s: 0 unless [`Motion::Airborne`].
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub vertical: f64,
+}
+
+/// A ball on the cloth is written as before flight existed.
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }
 
 /// The closed-form motion of one ball from one event to its next: constant acceleration, so
@@ -106,6 +126,9 @@ pub struct Segment {
     /// Absolute time at which the motion state changes by itself (slide to roll, stop), if it
     /// ever does.
     pub end: Option<f64>,
+    /// Downward acceleration of the centre, m/s^2: gravity in the air, 0 on the cloth.
+    #[serde(default)]
+    pub fall: f64,
     /// Speed at `start` and magnitude of `acceleration`, cached for the culling bound
     /// [`Segment::reach`] on the hot path.
     pub speed: f64,
@@ -157,7 +180,22 @@ impl Segment {
             speed,
             accel,
             straight,
+            fall: 0.0,
         }
+    }
+
+    /// Height of the centre above its height on the cloth at absolute time `t`
+    /// (`h0 + v_z tau - g tau^2 / 2`; 0 on the cloth).
+    #[inline]
+    pub fn height_at(&self, t: f64) -> f64 {
+        let tau = t - self.start;
+        self.state.height + (self.state.vertical - 0.5 * self.fall * tau) * tau
+    }
+
+    /// Upward speed at absolute time `t` (`v_z - g tau`).
+    #[inline]
+    pub fn vertical_at(&self, t: f64) -> f64 {
+        self.state.vertical - self.fall * (t - self.start)
     }
 
     /// Position at absolute time `t` (within the segment).
@@ -197,11 +235,18 @@ impl Segment {
         if !self.state.motion.is_moving() {
             return self.state;
         }
+        let (height, vertical) = if self.state.motion == Motion::Airborne {
+            (self.height_at(t), self.vertical_at(t))
+        } else {
+            (0.0, 0.0)
+        };
         BallState {
             position: self.position_at(t),
             velocity: self.velocity_at(t),
             angular_velocity: self.angular_velocity_at(t),
             motion: self.state.motion,
+            height,
+            vertical,
         }
     }
 

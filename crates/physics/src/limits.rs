@@ -12,7 +12,7 @@
 //! | shot speed, a ball's speed | 0, or [`MIN_SPEED`] to [`MAX_SPEED`] m/s |
 //! | a ball's spin, as surface speed `\|w\| R` | 0, or [`MIN_SPEED`] to [`MAX_SURFACE_SPEED`] m/s |
 //! | shot angle, tip offset | finite (any angle; the tip also within the miscue limit) |
-//! | cue elevation | 0 to [`MAX_ELEVATION`] rad (30 degrees) |
+//! | cue elevation | 0 to [`MAX_ELEVATION`] rad (85 degrees) |
 //! | positions | finite and on the table ([`crate::sim::PLACEMENT_TOLERANCE`]) |
 //! | the clock at an input, the end of an `advance` | at most [`MAX_TIME`] s |
 //! | parameters | [`crate::Params::validate`]; `max_events` at least 1 |
@@ -44,11 +44,10 @@ pub const MAX_SURFACE_SPEED: f64 = 2.5 * MAX_SPEED;
 /// 1e4 s (2.8 hours of motion) keeps a factor 30 at the fastest speed.
 pub const MAX_TIME: f64 = 1e4;
 
-/// Highest cue elevation, radians (30 degrees): the strike gives the ball only its motion in
-/// the table plane (the slate takes the impulse's vertical part, see
-/// [`crate::resolve::cue::strike`]); a steeper cue would make the ball jump, which the solver
-/// does not model.
-pub const MAX_ELEVATION: f64 = std::f64::consts::FRAC_PI_6;
+/// Highest cue elevation, radians (85 degrees, pooltool's and the range): the strike
+/// drives the ball into the slate, which may make it jump ([`crate::resolve::cue::strike`]);
+/// a vertical cue would leave no direction in the table plane to shoot along.
+pub const MAX_ELEVATION: f64 = 85.0 * (std::f64::consts::PI / 180.0);
 
 /// An input outside the contract: what, its value, and what is accepted.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -129,7 +128,7 @@ pub fn check_shot(shot: &Shot) -> Result<(), LimitError> {
     check_finite("tip side", shot.tip.side, "R")?;
     check_finite("tip height", shot.tip.height, "R")?;
     if !(0.0..=MAX_ELEVATION).contains(&shot.elevation) {
-        let expected = format!("from 0 to {MAX_ELEVATION} rad (level to 30 degrees)");
+        let expected = format!("from 0 to {MAX_ELEVATION} rad (level to 85 degrees)");
         return Err(error("cue elevation", shot.elevation, "rad", expected));
     }
     if shot.speed < 0.0 {
@@ -203,17 +202,18 @@ mod tests {
     }
 
     #[test]
-    fn elevations_from_level_to_30_degrees_pass_and_beyond_fail() {
+    fn elevations_from_level_to_85_degrees_pass_and_beyond_fail() {
         let at = |elevation| {
             check_shot(&Shot {
                 elevation,
                 ..Shot::new(0.0, 1.0)
             })
         };
-        for ok in [0.0, 0.1, 30f64.to_radians(), MAX_ELEVATION] {
+        assert_eq!(MAX_ELEVATION, 85f64.to_radians());
+        for ok in [0.0, 0.1, 30f64.to_radians(), 1.4, MAX_ELEVATION] {
             assert_eq!(at(ok), Ok(()), "{ok}");
         }
-        for bad in [next_up(MAX_ELEVATION), -1e-9, 0.6, f64::NAN, f64::INFINITY] {
+        for bad in [next_up(MAX_ELEVATION), -1e-9, 1.5, f64::NAN, f64::INFINITY] {
             let e = at(bad).unwrap_err();
             assert_eq!(e.what, "cue elevation", "{bad}");
         }

@@ -13,6 +13,8 @@ use crate::ball::{BallState, Motion, Segment};
 use crate::math::{Vec2, Vec3};
 use crate::params::{Model, Params, SpinModel};
 
+pub mod flight;
+
 /// Contact-point slip below which a ball counts as rolling (m/s): rounding noise in
 /// `v - R (w x z)` at break speeds is about 1e-15 m/s.
 const ROLLING_SLIP: f64 = 1e-12;
@@ -46,6 +48,7 @@ pub fn segment_from(
                 velocity,
                 angular_velocity: spin,
                 motion: Motion::Sliding,
+                ..BallState::default()
             };
             let slip = contact_velocity(&state, params.ball.radius);
             if velocity == Vec2::ZERO && spin.xy() == Vec2::ZERO {
@@ -64,7 +67,10 @@ pub fn segment_from(
 pub fn segment_with_motion(params: &Params, start: f64, state: &BallState) -> Segment {
     let (p, v, w) = (state.position, state.velocity, state.angular_velocity);
     match (params.model, state.motion) {
-        (_, Motion::Stationary | Motion::Pocketed(_)) => Segment::at_rest(start, p, state.motion),
+        (_, Motion::Stationary | Motion::Pocketed(_) | Motion::OffTable) => {
+            Segment::at_rest(start, p, state.motion)
+        }
+        (_, Motion::Airborne) => flight::airborne(params, start, *state),
         (Model::Paper(_), motion) => paper_segment(params, start, p, v, motion),
         (Model::Spin(m), Motion::Sliding) => sliding(
             params,
@@ -76,6 +82,28 @@ pub fn segment_with_motion(params: &Params, start: f64, state: &BallState) -> Se
         (Model::Spin(m), Motion::Rolling) => rolling(params, &m, start, p, v, w.z),
         (Model::Spin(m), Motion::Spinning) => spinning_or_still(params, &m, start, p, w.z),
     }
+}
+
+/// The segment a ball in state `before` (its state just before a collision, at `start`)
+/// continues on with the new `velocity` and `spin`: in the air it keeps flying from its
+/// height and upward speed (the collision is in the table plane), on the cloth it is
+/// [`segment_from`].
+pub fn segment_after(
+    params: &Params,
+    start: f64,
+    before: &BallState,
+    velocity: Vec2,
+    spin: Vec3,
+) -> Segment {
+    if before.motion != Motion::Airborne {
+        return segment_from(params, start, before.position, velocity, spin);
+    }
+    let state = BallState {
+        velocity,
+        angular_velocity: spin,
+        ..*before
+    };
+    flight::airborne(params, start, state)
 }
 
 /// Velocity of the ball's contact point with the cloth, `v + w x (-R z)`.
@@ -193,6 +221,7 @@ fn rolling(
         velocity,
         angular_velocity: Vec3::new(-velocity.y / r, velocity.x / r, wz),
         motion: Motion::Rolling,
+        ..BallState::default()
     };
     let alpha = Vec3::new(-a.y / r, a.x / r, spin_decay(params, m, wz));
     let end = (decel > 0.0).then(|| start + speed / decel);
@@ -207,7 +236,7 @@ pub fn under_new_params(params: &Params, t: f64, seg: &Segment) -> Segment {
         return *seg;
     }
     let s = seg.state_at(t);
-    segment_from(params, t, s.position, s.velocity, s.angular_velocity)
+    segment_after(params, t, &s, s.velocity, s.angular_velocity)
 }
 
 /// The segment after `seg` reaches its end by itself. The new motion state is set explicitly,
@@ -236,6 +265,21 @@ pub fn after_transition(params: &Params, seg: &Segment) -> Segment {
         }
         (Model::Spin(m), Motion::Rolling) => {
             spinning_or_still(params, &m, end, position, seg.angular_velocity_at(end).z)
+        }
+        (Model::Spin(m), Motion::Airborne) => {
+            let (end, position, b) = flight::landing(params, &m, seg);
+            if b.vertical > 0.0 {
+                let state = BallState {
+                    position,
+                    velocity: b.velocity,
+                    angular_velocity: b.spin,
+                    motion: Motion::Airborne,
+                    height: 0.0,
+                    vertical: b.vertical,
+                };
+                return flight::airborne(params, end, state);
+            }
+            segment_from(params, end, position, b.velocity, b.spin)
         }
         _ => Segment::at_rest(end, position, Motion::Stationary),
     }

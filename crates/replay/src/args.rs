@@ -107,7 +107,7 @@ pub(crate) fn parse_elevation(s: &str) -> Result<f64, String> {
         elevation: degrees.to_radians(),
         ..Shot::new(0.0, 0.0)
     };
-    limits::check_shot(&shot).map_err(|_| format!("elevation {s:?}: from 0 to 30 degrees"))?;
+    limits::check_shot(&shot).map_err(|_| format!("elevation {s:?}: from 0 to 85 degrees"))?;
     Ok(shot.elevation)
 }
 

@@ -289,7 +289,7 @@ fn model_choices_reach_the_recording_and_need_the_spin_model() {
 }
 
 #[test]
-fn elevation_reaches_every_shot_and_beyond_30_degrees_is_refused() {
+fn elevation_reaches_every_shot_and_beyond_85_degrees_is_refused() {
     let dir = temp("elevation");
     let file = dir.join("swerve.json");
     let (ok, _, err) = run(bin()
@@ -321,7 +321,7 @@ fn elevation_reaches_every_shot_and_beyond_30_degrees_is_refused() {
     }
     let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
     assert!(ok && stdout.contains("bit for bit"), "{stdout} {err}");
-    for bad in ["31", "-1", "x"] {
+    for bad in ["86", "-1", "x"] {
         let flag = format!("--elevation={bad}");
         let (ok, _, err) = run(bin().args(["simulate", "--shot", "0:1", &flag]));
         assert!(!ok && err.contains("elevation"), "{bad}: {err}");

@@ -19,8 +19,19 @@ pub fn kinetic_energy(states: &[BallState], mass: f64, radius: f64) -> f64 {
         .sum()
 }
 
+/// Energy of the balls in the air beyond their kinetic energy in the plane, joules: the
+/// vertical motion's `m v_z^2 / 2` and the height's `m g h` (0 for every ball on the cloth).
+pub fn flight_energy(states: &[BallState], mass: f64, gravity: f64) -> f64 {
+    states
+        .iter()
+        .filter(|s| s.motion.on_table())
+        .map(|s| mass * (0.5 * s.vertical * s.vertical + gravity * s.height))
+        .sum()
+}
+
 /// The deepest overlap among the balls in play (pair and depth), if any pair is closer than
-/// `2 radius`. Sweeps along x, so large layouts stay fast.
+/// `2 radius` in space (a ball in the air may pass over another). Sweeps along x, so large
+/// layouts stay fast.
 pub fn deepest_overlap(states: &[BallState], radius: f64) -> Option<(BallId, BallId, f64)> {
     let mut order: Vec<BallId> = (0..states.len())
         .filter(|&i| states[i].motion.on_table())
@@ -35,7 +46,9 @@ pub fn deepest_overlap(states: &[BallState], radius: f64) -> Option<(BallId, Bal
             if pj.x - pi.x >= contact {
                 break;
             }
-            let depth = contact - (pj - pi).length();
+            let dz = states[j].height - states[i].height;
+            let d = pj - pi;
+            let depth = contact - (d.length_squared() + dz * dz).sqrt();
             if depth > 0.0 && worst.is_none_or(|w| depth > w.2) {
                 worst = Some((i.min(j), i.max(j), depth));
             }

@@ -1,10 +1,11 @@
 //! Ball–ball time of impact: the smallest non-negative root of a quartic.
 
+use super::ball_air::air_contact;
 use super::cull::misses;
 use super::kinematics::Kinematics;
 use super::straight::straight_contact;
 use super::tolerances::{RESTING_DEPTH, RESTING_SPEED, SEPARATION};
-use crate::ball::Segment;
+use crate::ball::{Motion, Segment};
 use crate::math::Vec2;
 use crate::poly::{ContactTolerance, Poly, first_contact};
 
@@ -84,6 +85,9 @@ fn reachable_contact(
         && segments_apart(pa, pb) > (contact + 2.0 * (ra + rb) * 1e-12) * (1.0 + 1e-9) + 1e-9
     {
         return None;
+    }
+    if a.state.motion == Motion::Airborne || b.state.motion == Motion::Airborne {
+        return air_contact(a, b, t, (dp, dv, da), contact, horizon);
     }
     contact_quartic(dp, dv, da, contact, horizon)
 }

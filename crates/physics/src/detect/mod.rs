@@ -1,6 +1,7 @@
 //! Detection: when does the next contact of each kind happen? One time-of-impact function per
 //! pair kind, each returning `None` for "never within the horizon".
 
+mod ball_air;
 mod ball_ball;
 mod ball_cushion;
 mod ball_jaw;

@@ -2,6 +2,7 @@
 //! after its source; the model in force is read in one place ([`Laws::of`]), and the loop
 //! resolves every contact through [`fixed_body`] or [`ball_pair`].
 
+pub mod ball_air;
 mod ball_ball;
 mod ball_cushion;
 pub mod cue;
@@ -9,6 +10,7 @@ mod friction;
 pub mod hertz;
 pub mod mathavan_2010;
 mod resting;
+pub mod slate;
 mod throw;
 
 pub use ball_ball::{equal_mass_restitution, frictional_spheres, resting_contact, unpress};
@@ -92,22 +94,23 @@ pub enum CueLaw {
 }
 
 impl CueLaw {
-    /// Velocity and spin of a ball of `ball` struck along unit direction `dir` at `speed`,
-    /// by a cue `elevation` radians above level.
+    /// Velocity, upward speed and spin of a ball of `ball` struck by `cue` at `speed` on a
+    /// table with `gravity` (the paper's cue never lifts a ball).
     pub fn strike(
         self,
         ball: &BallSpec,
-        dir: Vec2,
+        gravity: f64,
+        cue: cue::Cue,
         speed: f64,
         tip: TipOffset,
-        elevation: f64,
-    ) -> Result<(Vec2, Vec3), Miscue> {
+    ) -> Result<slate::Bounce, Miscue> {
         match self {
-            CueLaw::Centre => Ok((dir * speed, Vec3::ZERO)),
-            CueLaw::Tip(m) => {
-                let cue = cue::Cue { dir, elevation };
-                cue::strike(&m, ball.mass, ball.radius, cue, speed, tip)
-            }
+            CueLaw::Centre => Ok(slate::Bounce {
+                velocity: cue.dir * speed,
+                vertical: 0.0,
+                spin: Vec3::ZERO,
+            }),
+            CueLaw::Tip(m) => cue::strike(&m, ball.mass, ball.radius, gravity, cue, speed, tip),
         }
     }
 }

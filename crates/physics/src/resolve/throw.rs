@@ -53,6 +53,7 @@ mod tests {
             velocity: v,
             angular_velocity: w,
             motion: Motion::Sliding,
+            ..BallState::default()
         }
     }
 

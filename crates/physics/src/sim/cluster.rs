@@ -172,13 +172,9 @@ impl Simulation {
         for (i, &id) in cluster.members.iter().enumerate() {
             if changed[i] {
                 let s = &states[i];
-                self.segments[id] = motion::segment_from(
-                    &self.params,
-                    t,
-                    s.position,
-                    s.velocity,
-                    s.angular_velocity,
-                );
+                // A ball in the air keeps flying (its height and upward speed are in `s`).
+                self.segments[id] =
+                    motion::segment_after(&self.params, t, s, s.velocity, s.angular_velocity);
             }
         }
         for &k in &order {

@@ -4,7 +4,7 @@
 //! re-predict only those balls and the balls whose prediction involved them.
 
 use crate::ball::{BallId, BallState, Motion, Segment};
-use crate::event::{Event, EventKind, Shot};
+use crate::event::{Event, EventKind};
 use crate::history::History;
 use crate::limits;
 use crate::math::{Vec2, Vec3};
@@ -19,6 +19,7 @@ use scene::{Bodies, Scene};
 mod cell_lists;
 mod cluster;
 mod deferred;
+mod flight;
 #[cfg(test)]
 mod forge;
 mod pair_table;
@@ -317,23 +318,6 @@ impl Simulation {
         })
     }
 
-    /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
-    /// takes the tip offset and the cue's elevation (the paper's model has no spin and
-    /// ignores both).
-    pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
-        self.flush();
-        let state = self.ball_checked(id)?;
-        setup::check_shot(id, self.numbers[id], &shot, self.time)?;
-        let dir = Vec2::from_angle(shot.angle);
-        let cue = Laws::of(&self.params.model).cue;
-        let (v, w) = cue.strike(&self.params.ball, dir, shot.speed, shot.tip, shot.elevation)?;
-        self.segments[id] = motion::segment_from(&self.params, self.time, state.position, v, w);
-        self.record(EventKind::Strike { ball: id, shot });
-        self.inputs_done();
-        self.repredict([id]);
-        Ok(())
-    }
-
     /// Sets ball `id`'s position and velocity now (editing, respotting). The new position must
     /// be on the table and clear of the other balls.
     pub fn place(
@@ -461,6 +445,9 @@ impl Simulation {
     /// Ball `id` reaches `cushion`'s line: in a mouth of the paper's table it drops, anywhere
     /// else (and everywhere on a table without pockets) it rebounds.
     fn cushion(&mut self, id: BallId, cushion: Cushion) {
+        if self.clears_cushion(id, cushion) {
+            return self.off_table(id);
+        }
         let s = self.segments[id].state_at(self.time);
         let table = &self.bodies.table;
         let mouth = match table.pockets {
@@ -503,13 +490,18 @@ impl Simulation {
         let (r, acceleration) = (self.params.ball.radius, self.segments[id].acceleration);
         let (v, w) =
             resolve::fixed_body(&laws, s, acceleration, contact, r, &mut self.perturbation);
-        self.segments[id] = motion::segment_from(&self.params, self.time, s.position, v, w);
+        self.segments[id] = motion::segment_after(&self.params, self.time, s, v, w);
     }
 
     /// Balls `a` and `b` touch: a cluster impact if they have neighbours within the reach of
     /// the contact, else the pair's own law.
     fn ball_pair(&mut self, a: BallId, b: BallId) {
         let t = self.time;
+        if self.segments[a].state.motion == Motion::Airborne
+            || self.segments[b].state.motion == Motion::Airborne
+        {
+            return self.air_pair(a, b);
+        }
         let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
         if let Model::Spin(SpinModel {
             cluster: Some(_), ..
@@ -541,10 +533,8 @@ impl Simulation {
             &mut self.perturbation,
         );
         let params = &self.params;
-        self.segments[a] =
-            motion::segment_from(params, t, sa.position, na.velocity, na.angular_velocity);
-        self.segments[b] =
-            motion::segment_from(params, t, sb.position, nb.velocity, nb.angular_velocity);
+        self.segments[a] = motion::segment_after(params, t, &sa, na.velocity, na.angular_velocity);
+        self.segments[b] = motion::segment_after(params, t, &sb, nb.velocity, nb.angular_velocity);
         self.record(EventKind::BallBall { a, b });
         self.repredict_event(a, Some(b));
     }

@@ -1,0 +1,117 @@
+//! The strike and a ball's flight: the cue's 3D impulse with the slate's reaction
+//! ([`crate::resolve::cue::strike`]), and the segments of a ball in the air.
+
+use super::{SetupError, Simulation, setup};
+use crate::ball::{BallId, BallState, Motion, Segment};
+use crate::event::{EventKind, Shot};
+use crate::math::Vec2;
+use crate::motion;
+use crate::params::Model;
+use crate::resolve::slate::{SLATE_RESTITUTION, Slate};
+use crate::resolve::{self, Laws};
+use crate::table::Cushion;
+
+impl Simulation {
+    /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
+    /// takes the tip offset and the cue's elevation (the paper's model has no spin and
+    /// ignores both).
+    pub fn strike(&mut self, id: BallId, shot: Shot) -> Result<(), SetupError> {
+        self.flush();
+        let state = self.ball_checked(id)?;
+        setup::check_shot(id, self.numbers[id], &shot, self.time)?;
+        let dir = Vec2::from_angle(shot.angle);
+        let cue = Laws::of(&self.params.model).cue;
+        let cue_at = resolve::cue::Cue {
+            dir,
+            elevation: shot.elevation,
+        };
+        let (ball, g) = (&self.params.ball, self.params.gravity);
+        let b = cue.strike(ball, g, cue_at, shot.speed, shot.tip)?;
+        let (p, v, w) = (state.position, b.velocity, b.spin);
+        self.segments[id] = if b.vertical > 0.0 {
+            // The slate's rebound lifts the ball: it flies from the cloth.
+            let state = BallState {
+                position: p,
+                velocity: v,
+                angular_velocity: w,
+                motion: Motion::Airborne,
+                height: 0.0,
+                vertical: b.vertical,
+            };
+            motion::flight::airborne(&self.params, self.time, state)
+        } else {
+            motion::segment_from(&self.params, self.time, p, v, w)
+        };
+        self.record(EventKind::Strike { ball: id, shot });
+        self.inputs_done();
+        self.repredict([id]);
+        Ok(())
+    }
+}
+
+impl Simulation {
+    /// Balls `a` and `b`, one of them at least in the air, touch in space
+    /// ([`resolve::ball_air::air_pair`]): each flies on, or goes on along the cloth.
+    pub(super) fn air_pair(&mut self, a: BallId, b: BallId) {
+        let t = self.time;
+        let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
+        let (e, mu) = match self.params.model {
+            Model::Spin(m) => (m.e_ball, m.mu_slide),
+            Model::Paper(m) => (m.e_ball, m.mu_slide),
+        };
+        let table = Slate {
+            restitution: SLATE_RESTITUTION,
+            mu,
+            gravity: self.params.gravity,
+            radius: self.params.ball.radius,
+        };
+        let (na, nb) = resolve::ball_air::air_pair(e, &table, &sa, &sb);
+        for (id, s) in [(a, na), (b, nb)] {
+            self.segments[id] = if s.motion == Motion::Airborne {
+                motion::flight::airborne(&self.params, t, s)
+            } else {
+                motion::segment_from(&self.params, t, s.position, s.velocity, s.angular_velocity)
+            };
+        }
+        self.record(EventKind::BallBall { a, b });
+        self.repredict_event(a, Some(b));
+    }
+}
+
+impl Simulation {
+    /// Ball `id`, reaching `cushion`'s contact line, is in the air high enough to pass over
+    /// the nose. The nose is `h_n = cushion_height (2R)` above the cloth and the ball's lowest
+    /// point is its rise `z` above the cloth; the ball clears it if `z >= h_n` both now (its
+    /// side level with the nose) and when its centre is over the nose, `R / v_n` later at its
+    /// constant speed `v_n` towards the cushion (the parabola is concave, so `z` is least at
+    /// one of the two). Lower, it meets the nose and rebounds as on the cloth.
+    pub(super) fn clears_cushion(&self, id: BallId, cushion: Cushion) -> bool {
+        let seg = &self.segments[id];
+        let Model::Spin(m) = self.params.model else {
+            return false;
+        };
+        if seg.state.motion != Motion::Airborne {
+            return false;
+        }
+        let r = self.params.ball.radius;
+        let nose = m.cushion_height * 2.0 * r;
+        let towards = -cushion.inward_normal().dot(seg.state.velocity);
+        if towards <= 0.0 {
+            return false;
+        }
+        let t = self.time;
+        let over = t + r / towards;
+        seg.height_at(t) >= nose && seg.height_at(over) >= nose
+    }
+
+    /// Ball `id` flies off the table over a cushion: out of play
+    /// ([`Motion::OffTable`]), recorded as a transition from the air.
+    pub(super) fn off_table(&mut self, id: BallId) {
+        let t = self.time;
+        let s = self.segments[id].state_at(t);
+        self.segments[id] = Segment::at_rest(t, s.position, Motion::OffTable);
+        let (from, to) = (Motion::Airborne, Motion::OffTable);
+        self.record(EventKind::Transition { ball: id, from, to });
+        self.repredict_event(id, None);
+    }
+}

@@ -1,0 +1,298 @@
+//! A ball in the air: the strike's take-off, the parabola, the landing and the bounces
+//! against their closed forms (pooltool's airborne state and `frictional_inelastic` slate;
+//! `resolve/slate.rs`, `motion/flight.rs`).
+
+mod common;
+use billiards_physics::*;
+use common::*;
+
+const E: f64 = 0.5;
+
+fn spin() -> Params {
+    Params {
+        model: Model::Spin(SpinModel::default()),
+        ..Params::default()
+    }
+}
+
+/// A centre-ball strike along +x at `speed` and `degrees` of elevation, played to rest.
+fn jumped(speed: f64, degrees: f64) -> Simulation {
+    let mut sim = Simulation::new(huge_table(), spin(), &[BallSetup::at(0, Vec2::ZERO)]).unwrap();
+    let shot = Shot {
+        elevation: degrees.to_radians(),
+        ..Shot::new(0.0, speed)
+    };
+    sim.strike(0, shot).unwrap();
+    sim.run_to_rest().unwrap();
+    sim
+}
+
+/// The events at which ball 0 meets the slate (a transition out of the air).
+fn landings(sim: &Simulation) -> Vec<Event> {
+    let from_air = |e: &&Event| {
+        matches!(
+            e.kind,
+            EventKind::Transition {
+                from: Motion::Airborne,
+                ..
+            }
+        )
+    };
+    sim.history()
+        .events()
+        .iter()
+        .filter(from_air)
+        .copied()
+        .collect()
+}
+
+/// Mechanical energy per unit mass: `v^2 / 2 + (1/5) R^2 w^2 + g h` (solid sphere).
+fn energy(s: &BallState, p: &Params) -> f64 {
+    let r = p.ball.radius;
+    let v2 = s.velocity.length_squared() + s.vertical * s.vertical;
+    let w = s.angular_velocity;
+    0.5 * v2 + 0.2 * r * r * (w.x * w.x + w.y * w.y + w.z * w.z) + p.gravity * s.height
+}
+
+/// 3 m/s at 45 degrees, centre: it takes off at `v_z = e v sin(theta)` rolling at
+/// `(5/7) v cos(theta)` (the slate grips above 43.6 degrees), flies `T = 2 v_z / g`, peaks at
+/// `v_z^2 / 2g` at `T / 2` and lands `(5/7) v cos(theta) T` away, all to 1e-12.
+#[test]
+fn the_first_flight_is_the_closed_form_parabola() {
+    let p = spin();
+    let sim = jumped(3.0, 45.0);
+    let theta = 45f64.to_radians();
+    let (vz, vx) = (E * 3.0 * theta.sin(), 5.0 / 7.0 * 3.0 * theta.cos());
+    let g = p.gravity;
+    let t = 2.0 * vz / g;
+    let first = landings(&sim)[0];
+    assert!((first.time - t).abs() < 1e-12, "{} vs {t}", first.time);
+    let at = first.after[0].position;
+    assert!(
+        (at.x - vx * t).abs() < 1e-12 && at.y.abs() < 1e-15,
+        "{at:?}"
+    );
+    let apex = sim.history().state_at(0, t / 2.0);
+    assert_eq!(apex.motion, Motion::Airborne);
+    assert!(
+        (apex.height - vz * vz / (2.0 * g)).abs() < 1e-12,
+        "{}",
+        apex.height
+    );
+    assert!(apex.vertical.abs() < 1e-12);
+    // About one ball's height (57 mm) and a third of a metre, as the reference derives.
+    assert!((apex.height - 0.0573).abs() < 1e-4 && (at.x - 0.33).abs() < 0.01);
+}
+
+/// Each bounce returns `e` of the landing speed, so each rise is `e^2` of the one before, and
+/// the bouncing stops at the first rebound that would rise under 5 mm.
+#[test]
+fn bounce_heights_follow_e_squared_down_to_five_millimetres() {
+    let p = spin();
+    for (speed, degrees) in [(3.0, 45.0), (6.0, 60.0), (4.0, 30.0)] {
+        let sim = jumped(speed, degrees);
+        let rise = |e: &Event| e.after[0].vertical.powi(2) / (2.0 * p.gravity);
+        let strike = sim.history().events()[0];
+        let mut rises = vec![rise(&strike)];
+        let lands = landings(&sim);
+        rises.extend(lands.iter().map(rise));
+        let last = rises.pop().unwrap();
+        assert_eq!(last, 0.0, "the last landing stays on the cloth");
+        assert!(rises.len() >= 2, "{speed} m/s at {degrees}: {rises:?}");
+        for w in rises.windows(2) {
+            assert!((w[1] / w[0] - E * E).abs() < 1e-12, "{rises:?}");
+        }
+        let smallest = rises[rises.len() - 1];
+        assert!(smallest >= 0.005 && smallest * E * E < 0.005, "{rises:?}");
+        let after = lands.last().unwrap().after[0].motion;
+        assert!(
+            matches!(after, Motion::Sliding | Motion::Rolling),
+            "{after:?}"
+        );
+    }
+}
+
+/// Energy never grows: constant along each flight (sampled), and not more after each landing.
+#[test]
+fn energy_never_grows_in_flight_or_at_a_bounce() {
+    let p = spin();
+    for (speed, degrees, side) in [(3.0, 45.0, 0.0), (5.0, 70.0, 0.3), (4.0, 25.0, -0.2)] {
+        let mut sim = Simulation::new(huge_table(), p, &[BallSetup::at(0, Vec2::ZERO)]).unwrap();
+        let shot = Shot {
+            elevation: f64::to_radians(degrees),
+            tip: TipOffset { side, height: 0.1 },
+            ..Shot::new(1.0, speed)
+        };
+        sim.strike(0, shot).unwrap();
+        sim.run_to_rest().unwrap();
+        let h = sim.history();
+        let events = h.events();
+        let mut flights = 0;
+        for pair in events.windows(2) {
+            let (a, b) = (pair[0], pair[1]);
+            let e0 = energy(&a.after[0], &p);
+            assert!(energy(&b.after[0], &p) <= e0 * (1.0 + 1e-12), "{b:?}");
+            if a.after[0].motion == Motion::Airborne {
+                flights += 1;
+                for f in [0.25, 0.5, 0.75, 1.0 - 1e-9] {
+                    let s = h.state_at(0, a.time + f * (b.time - a.time));
+                    assert!((energy(&s, &p) - e0).abs() <= 1e-12 * e0, "at {f}: {s:?}");
+                }
+            }
+        }
+        assert!(flights >= 1, "{speed} m/s at {degrees} flies");
+    }
+}
+
+/// Least distance in space between the centre of a ball flying from the origin (plane speed
+/// `vx`, upward `vz`) and a resting ball's centre `d` ahead, over the first flight: the
+/// closed form sampled finely, then refined by ternary search.
+fn closest_pass(vx: f64, vz: f64, g: f64, d: f64) -> f64 {
+    let dist2 = |t: f64| (vx * t - d).powi(2) + (vz * t - 0.5 * g * t * t).powi(2);
+    let flight = 2.0 * vz / g;
+    let n = 20_000;
+    let k = (0..=n)
+        .min_by(|&i, &j| {
+            let (a, b) = (
+                dist2(flight * i as f64 / n as f64),
+                dist2(flight * j as f64 / n as f64),
+            );
+            a.total_cmp(&b)
+        })
+        .unwrap();
+    let (mut lo, mut hi) = (
+        flight * (k.max(1) - 1) as f64 / n as f64,
+        flight * (k + 1).min(n) as f64 / n as f64,
+    );
+    for _ in 0..200 {
+        let (m1, m2) = (lo + (hi - lo) / 3.0, hi - (hi - lo) / 3.0);
+        if dist2(m1) < dist2(m2) {
+            hi = m2;
+        } else {
+            lo = m1;
+        }
+    }
+    dist2(0.5 * (lo + hi)).sqrt()
+}
+
+/// A jump over a ball 15 cm away (centre to centre) at 50 degrees: the speed at which the
+/// first flight's closed form just clears it (least distance 2R in space) is found
+/// independently; 1% faster the cue ball passes over it without touching and lands beyond,
+/// 1% slower it hits it (a ball-ball event in the air).
+#[test]
+fn a_jump_clears_a_ball_fifteen_centimetres_away_above_the_threshold_and_not_below() {
+    let p = spin();
+    let (r, g, d) = (p.ball.radius, p.gravity, 0.15);
+    let theta = 50f64.to_radians();
+    // Above 43.6 degrees the slate grips: plane speed (5/7) v cos(theta), up e v sin(theta).
+    let clears = |v: f64| closest_pass(5.0 / 7.0 * v * theta.cos(), E * v * theta.sin(), g, d);
+    let (mut lo, mut hi) = (0.5, 10.0);
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if clears(mid) >= 2.0 * r {
+            hi = mid
+        } else {
+            lo = mid
+        }
+    }
+    let threshold = hi;
+    assert!(threshold > 1.0 && threshold < 6.0, "{threshold} m/s");
+    let play = |v: f64| {
+        let balls = [
+            BallSetup::at(0, Vec2::ZERO),
+            BallSetup::at(1, Vec2::new(d, 0.0)),
+        ];
+        let mut sim = Simulation::new(huge_table(), p, &balls).unwrap();
+        let shot = Shot {
+            elevation: theta,
+            ..Shot::new(0.0, v)
+        };
+        sim.strike(0, shot).unwrap();
+        sim.run_to_rest().unwrap();
+        sim
+    };
+    let over = play(threshold * 1.01);
+    let hit = |sim: &Simulation| {
+        let events = sim.history().events();
+        events
+            .iter()
+            .any(|e| matches!(e.kind, EventKind::BallBall { .. }))
+    };
+    assert!(!hit(&over), "cleared at {} m/s", threshold * 1.01);
+    let land = landings(&over)[0].after[0].position.x;
+    assert!(land > d + 2.0 * r, "lands beyond the blocker: {land}");
+    assert_eq!(
+        over.ball(1).position,
+        Vec2::new(d, 0.0),
+        "the blocker never moved"
+    );
+    let short = play(threshold * 0.99);
+    assert!(hit(&short), "hits it at {} m/s", threshold * 0.99);
+    let first = short
+        .history()
+        .events()
+        .iter()
+        .find(|e| matches!(e.kind, EventKind::BallBall { .. }));
+    let e = first.unwrap();
+    // In the air, before the undisturbed flight would land, and touching in space (2R).
+    let v = threshold * 0.99;
+    assert!(
+        e.time > 0.0 && e.time < 2.0 * E * v * theta.sin() / g,
+        "{e:?}"
+    );
+    let (a, b) = (e.after[0], e.after[1]);
+    let gap = ((b.position - a.position).length_squared() + (b.height - a.height).powi(2)).sqrt();
+    assert!((gap - 2.0 * r).abs() < 1e-9, "{gap}");
+    assert!(a.height > 0.0, "the cue ball was in the air: {a:?}");
+    println!("jump over a ball {d} m away at 50 degrees: clears from {threshold:.4} m/s");
+}
+
+/// A hard shot at 60 degrees from 0.3 m off the foot cushion flies over its nose (its lowest
+/// point far above the nose's 36 mm) and leaves the table: a transition from the air to
+/// off the table, the ball out of play. A soft one at the same elevation rises under the
+/// nose and rebounds from the cushion, staying in play.
+#[test]
+fn a_hard_elevated_shot_into_a_cushion_leaves_the_table() {
+    let p = spin();
+    let table = Table::wpa_8ft();
+    let start = Vec2::new(0.5 * table.length - 0.3, 0.1);
+    let play = |speed: f64| {
+        let mut sim = Simulation::new(table, p, &[BallSetup::at(0, start)]).unwrap();
+        let shot = Shot {
+            elevation: 60f64.to_radians(),
+            ..Shot::new(0.0, speed)
+        };
+        sim.strike(0, shot).unwrap();
+        sim.run_to_rest().unwrap();
+        sim
+    };
+    let hard = play(6.0);
+    let off = |e: &&Event| {
+        matches!(
+            e.kind,
+            EventKind::Transition {
+                from: Motion::Airborne,
+                to: Motion::OffTable,
+                ..
+            }
+        )
+    };
+    let events = hard.history().events();
+    assert_eq!(events.iter().filter(off).count(), 1, "{events:#?}");
+    assert_eq!(hard.ball(0).motion, Motion::OffTable);
+    assert!(!hard.ball(0).motion.on_table());
+    assert!(
+        !events
+            .iter()
+            .any(|e| matches!(e.kind, EventKind::Cushion { .. }))
+    );
+    let soft = play(1.5);
+    let events = soft.history().events();
+    assert!(!events.iter().any(|e| off(&e)), "{events:#?}");
+    assert!(
+        events
+            .iter()
+            .any(|e| matches!(e.kind, EventKind::Cushion { .. }))
+    );
+    assert!(soft.ball(0).motion.on_table());
+}
