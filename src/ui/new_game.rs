@@ -110,7 +110,7 @@ pub(super) fn seat_rows(ui: &mut egui::Ui, form: &mut NewGameForm) {
             if unit == "Best of" && form.race_to.is_multiple_of(2) {
                 form.race_to += 1;
             }
-            ui.label("player 1 opens, then the players alternate");
+            ui.label(format!("{}; player 1 opens", form.game.length_noun()));
         });
         return;
     }

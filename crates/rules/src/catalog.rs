@@ -52,6 +52,8 @@ pub struct GameEntry {
     pub label: &'static str,
     /// What the match's length counts ("race to", "best of", "points to").
     pub length_unit: &'static str,
+    /// What the length is in ("racks", "frames", "points").
+    pub length_noun: &'static str,
     /// The usual length of a match.
     pub default_length: u32,
     /// The game's own table and balls.
@@ -106,6 +108,7 @@ pub const GAMES: &[GameEntry] = &[
         id: "nine-ball",
         label: "9-ball",
         length_unit: "race to",
+        length_noun: "racks",
         default_length: 3,
         equipment: pool_equipment,
         start: |s, t, b| Ok(pool(Game::NineBall, s, t, b)),
@@ -114,6 +117,7 @@ pub const GAMES: &[GameEntry] = &[
         id: "eight-ball",
         label: "8-ball",
         length_unit: "race to",
+        length_noun: "racks",
         default_length: 3,
         equipment: pool_equipment,
         start: |s, t, b| Ok(pool(Game::EightBall, s, t, b)),
@@ -122,6 +126,7 @@ pub const GAMES: &[GameEntry] = &[
         id: "ten-ball",
         label: "10-ball",
         length_unit: "race to",
+        length_noun: "racks",
         default_length: 3,
         equipment: pool_equipment,
         start: |s, t, b| Ok(pool(Game::TenBall, s, t, b)),
@@ -130,6 +135,7 @@ pub const GAMES: &[GameEntry] = &[
         id: "snooker",
         label: "snooker",
         length_unit: "best of",
+        length_noun: "frames",
         default_length: 3,
         equipment: snooker_equipment,
         start: |s, t, b| {
@@ -145,6 +151,7 @@ pub const GAMES: &[GameEntry] = &[
         id: "three-cushion",
         label: "three-cushion",
         length_unit: "points to",
+        length_noun: "points",
         // UMB world cup and championship distance (Art. 29 leaves it to the event).
         default_length: 40,
         equipment: carom_equipment,
@@ -161,6 +168,7 @@ pub const GAMES: &[GameEntry] = &[
         id: "free-play",
         label: "free play",
         length_unit: "race to",
+        length_noun: "racks",
         default_length: 1,
         equipment: pool_equipment,
         start: |s, t, b| Ok(pool(Game::FreePlay, s, t, b)),

@@ -54,6 +54,16 @@ impl GameChoice {
             _ => ("race to", 3),
         }
     }
+
+    /// What the length is in: "racks", "frames", "points".
+    pub fn length_noun(self) -> &'static str {
+        match self {
+            GameChoice::Catalog(id) => {
+                billiards_rules::catalog::find(id).map_or("racks", |e| e.length_noun)
+            }
+            _ => "racks",
+        }
+    }
 }
 
 impl From<Game> for GameChoice {
