@@ -8,7 +8,7 @@
 
 use billiards_ai::noise::stream;
 use billiards_ai::play::{execute, spot_balls, table_and_params_on};
-use billiards_ai::{Decision, Player};
+use billiards_ai::{Decision, Plan, Player};
 use billiards_physics::{Simulation, TableChoice};
 use billiards_rules::{Game, GameState, Outcome, RackStyle, Seat};
 use rand::Rng;
@@ -65,15 +65,7 @@ fn main() -> Result<(), String> {
                 Decision::Shoot(plan) => plan,
             };
             if shots == 0 {
-                let half = sim.table().centre_bounds(sim.params().ball.radius).y;
-                let f = plan
-                    .place
-                    .map_or(f64::NAN, |p| ((p - sim.table().head_spot()).y / half).abs());
-                let key = format!(
-                    "place {f:.2} speed {:4.1} height {:+.2}",
-                    plan.shot.speed, plan.shot.tip.height
-                );
-                *chosen.entry(key).or_default() += 1;
+                *chosen.entry(break_key(&sim, &plan)).or_default() += 1;
             }
             let summary = execute(
                 &mut sim,
@@ -110,8 +102,31 @@ fn main() -> Result<(), String> {
             }
         }
     }
-    let n = n as usize;
-    for (k, c) in &chosen {
+    print_rates(&chosen, [fouls, dry, pots, runs], n as usize);
+    Ok(())
+}
+
+/// The break a player chose, as the tally's key: the cue ball's place as a fraction of the way
+/// to a long cushion, the speed and the tip height, the three things a break varies.
+fn break_key(sim: &Simulation, plan: &Plan) -> String {
+    let half = sim.table().centre_bounds(sim.params().ball.radius).y;
+    let f = plan
+        .place
+        .map_or(f64::NAN, |p| ((p - sim.table().head_spot()).y / half).abs());
+    format!(
+        "place {f:.2} speed {:4.1} height {:+.2}",
+        plan.shot.speed, plan.shot.tip.height
+    )
+}
+
+/// The breaks chosen, then each outcome's count over `n` racks with its Wilson 95 % interval,
+/// so small samples are read with their uncertainty.
+fn print_rates(
+    chosen: &std::collections::BTreeMap<String, usize>,
+    [fouls, dry, pots, runs]: [usize; 4],
+    n: usize,
+) {
+    for (k, c) in chosen {
         println!("{k}: {c}");
     }
     for (name, k) in [
@@ -128,5 +143,4 @@ fn main() -> Result<(), String> {
             100.0 * hi
         );
     }
-    Ok(())
 }

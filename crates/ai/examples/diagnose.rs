@@ -10,7 +10,7 @@
 
 use billiards_ai::noise::stream;
 use billiards_ai::play::{execute, spot_balls, table_and_params_on};
-use billiards_ai::{Decision, Player, ShotKind};
+use billiards_ai::{Decision, Plan, Player, ShotKind};
 use billiards_physics::{Simulation, TableChoice};
 use billiards_rules::{Game, GameState, Outcome, RackStyle, Seat};
 use rand::Rng;
@@ -97,27 +97,7 @@ fn main() -> Result<(), String> {
             let verdict = state.play(&summary, plan.call).map_err(|e| e.to_string())?;
             shots += 1;
             let potted = summary.pocketed_object_balls().next().is_some();
-            let kind = match plan.kind {
-                ShotKind::Pot { .. } => "P",
-                ShotKind::Bank { .. } => "B",
-                ShotKind::Kick { .. } => "K",
-                ShotKind::Combo { .. } => "C",
-                ShotKind::Safety { .. } => "S",
-                ShotKind::PushOut => "U",
-                ShotKind::Break => "X",
-            };
-            line.push_str(&format!(
-                " {}{kind}{:.0}{}",
-                "ab".as_bytes()[who] as char,
-                plan.success * 100.0,
-                if !verdict.legal() {
-                    "F"
-                } else if potted {
-                    "+"
-                } else {
-                    "-"
-                }
-            ));
+            line.push_str(&shot_code(who, &plan, verdict.legal(), potted));
             if verdict.outcome != Outcome::Continues {
                 let over = matches!(verdict.outcome, Outcome::GameOver { .. });
                 let won = matches!(verdict.outcome, Outcome::GameOver { winner, .. } if winner == next.shooter);
@@ -143,6 +123,46 @@ fn main() -> Result<(), String> {
             winner.map(|w| "AB".as_bytes()[w] as char)
         );
     }
+    print_totals(players, wins, n, &lost_after, &endings, &missed_estimates);
+    Ok(())
+}
+
+/// One shot in a game's line, `a`/`b` (the shooter), the kind's letter, the estimated success
+/// in percent and `F` (foul), `+` (potted) or `-`: compact enough to read a whole rack at once.
+fn shot_code(who: usize, plan: &Plan, legal: bool, potted: bool) -> String {
+    let kind = match plan.kind {
+        ShotKind::Pot { .. } => "P",
+        ShotKind::Bank { .. } => "B",
+        ShotKind::Kick { .. } => "K",
+        ShotKind::Combo { .. } => "C",
+        ShotKind::Safety { .. } => "S",
+        ShotKind::PushOut => "U",
+        ShotKind::Break => "X",
+    };
+    format!(
+        " {}{kind}{:.0}{}",
+        "ab".as_bytes()[who] as char,
+        plan.success * 100.0,
+        if !legal {
+            "F"
+        } else if potted {
+            "+"
+        } else {
+            "-"
+        }
+    )
+}
+
+/// The totals over all games: wins, how A's lost games began (its last inning), and how every
+/// inning of each player ended, with the mean estimate of the pots it missed.
+fn print_totals(
+    players: [Player; 2],
+    wins: [usize; 2],
+    n: u64,
+    lost_after: &BTreeMap<String, usize>,
+    endings: &[BTreeMap<String, usize>; 2],
+    missed_estimates: &[Vec<f64>; 2],
+) {
     println!(
         "wins: {} {} {}, {} {}",
         players[0], wins[0], players[1], wins[1], n
@@ -160,5 +180,4 @@ fn main() -> Result<(), String> {
             m.iter().sum::<f64>() / m.len().max(1) as f64
         );
     }
-    Ok(())
 }

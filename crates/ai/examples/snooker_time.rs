@@ -53,31 +53,9 @@ fn main() {
     // The table the break-off leaves (22 balls, the cue ball as it lies): the next decision.
     let mut times = Vec::new();
     for seed in 0..frames.max(3) {
-        let mut frame = frame.clone();
-        let mut sim = sim.clone();
-        let SnookerDecision::Shoot(p) = decide_snooker(&frame, &sim, level, seed).unwrap() else {
+        let Some((frame, sim, left)) = after_break_off(&frame, &sim, level, seed) else {
             continue;
         };
-        sim.place(0, p.place.unwrap(), Vec2::ZERO, Vec3::ZERO)
-            .unwrap();
-        let before = on_table(&sim);
-        let shot = p.executed(level.execution_noise(), sim.params(), seed);
-        sim.strike(0, shot).unwrap();
-        sim.run_to_rest().unwrap();
-        let summary = summarise(sim.history().events(), sim.numbers());
-        let after = on_table(&sim);
-        let v = frame
-            .play(Stroke {
-                summary: &summary,
-                nominated: p.nominated,
-                before: &before,
-                after: &after,
-            })
-            .unwrap();
-        for &(c, at) in &v.spots {
-            sim.place(usize::from(c), at, Vec2::ZERO, Vec3::ZERO)
-                .unwrap();
-        }
         if frame.end.is_some() || !frame.next.choices.is_empty() {
             continue;
         }
@@ -87,9 +65,7 @@ fn main() {
         if let SnookerDecision::Shoot(p) = d {
             println!(
                 "after the break-off, seed {seed}: {} balls, {:?}, {} simulations",
-                after.len(),
-                p.kind,
-                p.simulations
+                left, p.kind, p.simulations
             );
         }
     }
@@ -125,4 +101,41 @@ fn main() {
             all / n as f64
         );
     }
+}
+
+/// Plays the break-off of seed `seed` and judges it, giving the frame, the table and the count
+/// of balls left as they lie: the next decision is the one timed, on the full table the
+/// break-off leaves. `None` when the decision was not a shot.
+fn after_break_off(
+    frame: &Frame,
+    sim: &Simulation,
+    level: Level,
+    seed: u64,
+) -> Option<(Frame, Simulation, usize)> {
+    let mut frame = frame.clone();
+    let mut sim = sim.clone();
+    let SnookerDecision::Shoot(p) = decide_snooker(&frame, &sim, level, seed).unwrap() else {
+        return None;
+    };
+    sim.place(0, p.place.unwrap(), Vec2::ZERO, Vec3::ZERO)
+        .unwrap();
+    let before = on_table(&sim);
+    let shot = p.executed(level.execution_noise(), sim.params(), seed);
+    sim.strike(0, shot).unwrap();
+    sim.run_to_rest().unwrap();
+    let summary = summarise(sim.history().events(), sim.numbers());
+    let after = on_table(&sim);
+    let v = frame
+        .play(Stroke {
+            summary: &summary,
+            nominated: p.nominated,
+            before: &before,
+            after: &after,
+        })
+        .unwrap();
+    for &(c, at) in &v.spots {
+        sim.place(usize::from(c), at, Vec2::ZERO, Vec3::ZERO)
+            .unwrap();
+    }
+    Some((frame, sim, after.len()))
 }

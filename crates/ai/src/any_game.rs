@@ -15,7 +15,7 @@
 //! Every random draw comes from [`stream`], named by the seed and the candidate, so the same
 //! seed gives the same decision on any number of threads.
 
-use crate::candidates::{Layout, direct_aims, rail_aims};
+use crate::candidates::{Aim, Layout, direct_aims, rail_aims};
 use crate::level::Level;
 use crate::noise::{Noise, stream};
 use crate::rounds::{Rounds, Sampler, Stats};
@@ -178,16 +178,28 @@ fn candidates(
         cue: from,
         balls,
     };
-    let declare = |ball: u8, pocket| {
-        if turn.declare.pocket != Need::NotUsed {
-            Declaration::Pocket { ball, pocket }
-        } else if turn.declare.nominate.contains(&ball) {
-            Declaration::Nominate { ball }
-        } else {
-            Declaration::None
-        }
-    };
-    let tips = [
+    let mut out = Vec::new();
+    if turn.opening {
+        out.extend(opening_candidates(turn, &layout, place));
+    }
+    // A table without pockets (carom) has no pots to aim at: the fan alone.
+    let pocketless = layout.table.pockets == PocketShape::Pocketless;
+    let mut aims = Vec::new();
+    if !pocketless {
+        aims = direct_aims(&layout, &turn.legal_first);
+        aims.extend(rail_aims(&layout, &turn.legal_first));
+    }
+    out.extend(aimed_candidates(turn, &aims, place));
+    if aims.is_empty() {
+        out.extend(fan_candidates(place, fan));
+    }
+    out
+}
+
+/// Centre, follow and draw: the tips every aimed shot is tried with, since the cue ball's path
+/// after contact decides the next shot.
+fn aim_tips() -> [TipOffset; 3] {
+    [
         TipOffset::default(),
         TipOffset {
             side: 0.0,
@@ -197,9 +209,77 @@ fn candidates(
             side: 0.0,
             height: -0.3,
         },
-    ];
+    ]
+}
+
+/// The opening stroke: hard at each legal ball, as a break is played; a separate list because
+/// no aim or pocket matters before the rack is open.
+fn opening_candidates(turn: &Turn, layout: &Layout, place: Option<Vec2>) -> Vec<Candidate> {
+    let from = layout.cue;
+    let mut out = Vec::new();
+    for &(n, p) in layout
+        .balls
+        .iter()
+        .filter(|(n, _)| turn.legal_first.contains(n))
+    {
+        let angle = (p.y - from.y).atan2(p.x - from.x);
+        for speed in [3.0, 6.0, 9.0] {
+            out.push(Candidate {
+                place,
+                shot: Shot::new(angle, speed),
+                // No call on an opening stroke (WPA 2.3, 9.3); a nomination stays.
+                declared: if turn.declare.nominate.contains(&n) {
+                    Declaration::Nominate { ball: n }
+                } else {
+                    Declaration::None
+                },
+            });
+        }
+    }
+    out
+}
+
+/// Each aim at two speeds and three tips, carrying the call the game asks for: the call depends
+/// on the game's declaration rule, so it is made here where the aim's pocket is known.
+fn aimed_candidates(turn: &Turn, aims: &[Aim], place: Option<Vec2>) -> Vec<Candidate> {
+    let declare = |ball: u8, pocket| {
+        if turn.declare.pocket != Need::NotUsed {
+            Declaration::Pocket { ball, pocket }
+        } else if turn.declare.nominate.contains(&ball) {
+            Declaration::Nominate { ball }
+        } else {
+            Declaration::None
+        }
+    };
+    let mut out = Vec::new();
+    for aim in aims {
+        let pocket = match aim.kind {
+            crate::ShotKind::Pot { pocket, .. }
+            | crate::ShotKind::Bank { pocket, .. }
+            | crate::ShotKind::Kick { pocket, .. }
+            | crate::ShotKind::Combo { pocket, .. } => Some(pocket),
+            _ => None,
+        };
+        for k in [1.0, 1.6] {
+            for tip in aim_tips() {
+                let mut shot = Shot::new(aim.angle, (aim.speed * k).clamp(0.5, 9.0));
+                shot.tip = tip;
+                out.push(Candidate {
+                    place,
+                    shot,
+                    declared: pocket.map_or(Declaration::None, |p| declare(aim.first, p)),
+                });
+            }
+        }
+    }
+    out
+}
+
+/// No pocket, or no clear line: a fan of directions at several speeds (carom, kicks, escapes).
+fn fan_candidates(place: Option<Vec2>, fan: usize) -> Vec<Candidate> {
     // The fan also tries side and its mixes with follow and draw: english bends a carom's
     // rebounds off the cushions.
+    let tips = aim_tips();
     let tip = |side: f64, height: f64| TipOffset { side, height };
     let d = 0.3 * std::f64::consts::FRAC_1_SQRT_2;
     let fan_tips = [
@@ -214,69 +294,17 @@ fn candidates(
         tip(-d, -d),
     ];
     let mut out = Vec::new();
-    if turn.opening {
-        // The opening stroke: hard at each legal ball, as a break is played.
-        for &(n, p) in layout
-            .balls
-            .iter()
-            .filter(|(n, _)| turn.legal_first.contains(n))
-        {
-            let angle = (p.y - from.y).atan2(p.x - from.x);
-            for speed in [3.0, 6.0, 9.0] {
-                out.push(Candidate {
-                    place,
-                    shot: Shot::new(angle, speed),
-                    // No call on an opening stroke (WPA 2.3, 9.3); a nomination stays.
-                    declared: if turn.declare.nominate.contains(&n) {
-                        Declaration::Nominate { ball: n }
-                    } else {
-                        Declaration::None
-                    },
-                });
-            }
-        }
-    }
-    // A table without pockets (carom) has no pots to aim at: the fan alone.
-    let pocketless = layout.table.pockets == PocketShape::Pocketless;
-    let mut aims = Vec::new();
-    if !pocketless {
-        aims = direct_aims(&layout, &turn.legal_first);
-        aims.extend(rail_aims(&layout, &turn.legal_first));
-    }
-    for aim in &aims {
-        let pocket = match aim.kind {
-            crate::ShotKind::Pot { pocket, .. }
-            | crate::ShotKind::Bank { pocket, .. }
-            | crate::ShotKind::Kick { pocket, .. }
-            | crate::ShotKind::Combo { pocket, .. } => Some(pocket),
-            _ => None,
-        };
-        for k in [1.0, 1.6] {
-            for tip in tips {
-                let mut shot = Shot::new(aim.angle, (aim.speed * k).clamp(0.5, 9.0));
+    for i in 0..fan {
+        let angle = std::f64::consts::TAU * i as f64 / fan as f64;
+        for speed in [1.5, 2.5, 3.5, 5.0] {
+            for tip in fan_tips {
+                let mut shot = Shot::new(angle, speed);
                 shot.tip = tip;
                 out.push(Candidate {
                     place,
                     shot,
-                    declared: pocket.map_or(Declaration::None, |p| declare(aim.first, p)),
+                    declared: Declaration::None,
                 });
-            }
-        }
-    }
-    if aims.is_empty() {
-        // No pocket, or no clear line: a fan of directions (carom, kicks, escapes).
-        for i in 0..fan {
-            let angle = std::f64::consts::TAU * i as f64 / fan as f64;
-            for speed in [1.5, 2.5, 3.5, 5.0] {
-                for tip in fan_tips {
-                    let mut shot = Shot::new(angle, speed);
-                    shot.tip = tip;
-                    out.push(Candidate {
-                        place,
-                        shot,
-                        declared: Declaration::None,
-                    });
-                }
             }
         }
     }

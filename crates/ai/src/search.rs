@@ -12,7 +12,7 @@ use crate::position::{aim_probability, best_success};
 use crate::rounds::Rounds;
 use crate::{AiError, Decision, Plan, ready};
 use billiards_physics::{Shot, Simulation, TipOffset, Vec2};
-use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState, check_placement};
+use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState, NextShot, check_placement};
 use rayon::prelude::*;
 
 /// The computer's decision at `level` for what `state` asks next, on the resting table
@@ -67,11 +67,7 @@ pub fn decide_planned(
         .iter()
         .position(|&n| n == CUE)
         .ok_or(AiError::NoCueBall)?;
-    let in_hand = matches!(
-        next.cue_ball,
-        CueBall::InHandAnywhere | CueBall::InHandBehindHeadString
-    );
-    if !in_hand && !sim.ball(cue).motion.on_table() {
+    if !in_hand(next) && !sim.ball(cue).motion.on_table() {
         return Err(AiError::CueBallOff);
     }
     let mut base = sim.clone();
@@ -85,20 +81,7 @@ pub fn decide_planned(
         mode,
     };
     let budget = budget.clone();
-    let place_list: Vec<Option<Vec2>> = if in_hand {
-        let found = if next.break_shot {
-            break_places(sim, cue, next.cue_ball, budget.breaks.places)
-        } else {
-            let (rule, legal) = (next.cue_ball, &next.legal_first);
-            places(sim, cue, rule, legal, search.noise, budget.placements)
-        };
-        if found.is_empty() {
-            return Err(AiError::NoPlace);
-        }
-        found.into_iter().map(Some).collect()
-    } else {
-        vec![None]
-    };
+    let place_list = cue_places(sim, cue, next, search.noise, &budget)?;
     let mut pool = Pool::default();
     let first: Vec<Candidate> = if next.break_shot {
         breaks(&search, &place_list, &budget)
@@ -118,33 +101,81 @@ pub fn decide_planned(
         budget
     };
     let safeties = |scoring: bool| {
-        let mut more = Vec::new();
         if next.break_shot || scoring {
-            return more;
+            return Vec::new();
         }
-        for &p in &place_list {
-            let Some(layout) = Layout::of(sim, p) else {
-                continue;
-            };
-            let mut s = safeties(&layout, &next.legal_first, budget.safeties, p);
-            if (state.game == Game::EightBall && next.legal_first == [8])
-                || state.game == Game::TenBall
-            {
-                // On the 8, only a called safety is safe from a lucky loss (WPA 3.8); in
-                // 10-ball every shot is called, a safety declared as one (WPA 9.5, 9.6).
-                s.iter_mut().for_each(|c| c.call = Call::Safety);
-            }
-            more.extend(s);
-            if next.push_out_allowed {
-                more.extend(push_outs(p));
-            }
-        }
-        more
+        safety_candidates(state, sim, next, &place_list, budget.safeties)
     };
     pool.play_rounds(&search, first, safeties, (budget.samples, budget.rounds));
     if let Some(two) = budget.second.filter(|_| !next.break_shot) {
         second_ply(&mut pool, &search, two);
     }
+    best_plan(&pool)
+}
+
+/// Whether the cue ball is in hand: then it may be off the table and must be placed first.
+fn in_hand(next: &NextShot) -> bool {
+    matches!(
+        next.cue_ball,
+        CueBall::InHandAnywhere | CueBall::InHandBehindHeadString
+    )
+}
+
+/// The cue ball's places to search from: `None` alone when it is not in hand, else the break
+/// places or the placement search's best, so every later step loops over places the same way.
+fn cue_places(
+    sim: &Simulation,
+    cue: usize,
+    next: &NextShot,
+    noise: Noise,
+    budget: &Budget,
+) -> Result<Vec<Option<Vec2>>, AiError> {
+    if !in_hand(next) {
+        return Ok(vec![None]);
+    }
+    let found = if next.break_shot {
+        break_places(sim, cue, next.cue_ball, budget.breaks.places)
+    } else {
+        let (rule, legal) = (next.cue_ball, &next.legal_first);
+        places(sim, cue, rule, legal, noise, budget.placements)
+    };
+    if found.is_empty() {
+        return Err(AiError::NoPlace);
+    }
+    Ok(found.into_iter().map(Some).collect())
+}
+
+/// The safeties (and push outs) from every place, added only when no pot scores well enough:
+/// their calls follow the game's rule for a safety on the last ball.
+fn safety_candidates(
+    state: &GameState,
+    sim: &Simulation,
+    next: &NextShot,
+    place_list: &[Option<Vec2>],
+    count: usize,
+) -> Vec<Candidate> {
+    let mut more = Vec::new();
+    for &p in place_list {
+        let Some(layout) = Layout::of(sim, p) else {
+            continue;
+        };
+        let mut s = safeties(&layout, &next.legal_first, count, p);
+        if (state.game == Game::EightBall && next.legal_first == [8]) || state.game == Game::TenBall
+        {
+            // On the 8, only a called safety is safe from a lucky loss (WPA 3.8); in
+            // 10-ball every shot is called, a safety declared as one (WPA 9.5, 9.6).
+            s.iter_mut().for_each(|c| c.call = Call::Safety);
+        }
+        more.extend(s);
+        if next.push_out_allowed {
+            more.extend(push_outs(p));
+        }
+    }
+    more
+}
+
+/// The decision the search reached: the best candidate with the figures its samples gave.
+fn best_plan(pool: &Pool) -> Result<Decision, AiError> {
     let found = pool.found().ok_or(AiError::NoBall)?;
     let c = pool.cands[found.index];
     Ok(Decision::Shoot(Plan {

@@ -16,7 +16,7 @@ use billiards_physics::snooker::{default_cue_position, layout};
 use billiards_physics::{BallId, Params, Shot, Simulation, Table, Vec2, Vec3};
 use billiards_rules::snooker::balls::WHITE;
 use billiards_rules::snooker::geometry::replace_moves;
-use billiards_rules::snooker::{Choice, Frame, FrameLog, LoggedStroke, Stroke};
+use billiards_rules::snooker::{Choice, Frame, FrameLog, LoggedStroke, Stroke, Verdict};
 use billiards_rules::{Seat, ShotSummary, summarise};
 use rand::Rng;
 use serde::{Deserialize, Serialize};
@@ -254,16 +254,7 @@ pub fn play_frame(
             })
             .map_err(|e| format!("stroke {}: {e}", strokes + 1))?;
         strokes += 1;
-        let tl = &mut tally[who];
-        tl.strokes += 1;
-        tl.fouls += usize::from(!verdict.fair());
-        tl.potted_points += verdict.points;
-        if verdict.points > 0 {
-            current[who] += verdict.points;
-        } else if current[who] > 0 {
-            tl.breaks.push(current[who]);
-            current[who] = 0;
-        }
+        count_stroke(&mut tally[who], &mut current[who], &verdict);
         for &(c, p) in &verdict.spots {
             let id = t.id(c)?;
             t.place(id, p)?;
@@ -279,14 +270,7 @@ pub fn play_frame(
             tally[who].breaks.push(*c);
         }
     }
-    let (winner, reason) = match frame.end {
-        Some((w, how)) => (Some(w.index()), how.to_string()),
-        None => {
-            let [a, b] = frame.scores;
-            let w = (a != b).then_some(if a > b { 0 } else { 1 });
-            (w, format!("on points after {MAX_STROKES} strokes"))
-        }
-    };
+    let (winner, reason) = frame_winner(&frame);
     let recording = match &t {
         Table2::Recorded(r) => Some(r.recording()),
         Table2::Lean(_) => None,
@@ -306,4 +290,31 @@ pub fn play_frame(
         log,
         recording,
     })
+}
+
+/// Adds one judged stroke to its player's figures; a stroke that scores nothing ends the
+/// player's break (`current`), which is then recorded, since breaks are counted as visits.
+fn count_stroke(tl: &mut FrameTally, current: &mut u32, verdict: &Verdict) {
+    tl.strokes += 1;
+    tl.fouls += usize::from(!verdict.fair());
+    tl.potted_points += verdict.points;
+    if verdict.points > 0 {
+        *current += verdict.points;
+    } else if *current > 0 {
+        tl.breaks.push(*current);
+        *current = 0;
+    }
+}
+
+/// The winner's seat index and how the frame ended; a frame cut off at [`MAX_STROKES`] goes
+/// to the player ahead on points (none on a tie), so a stalled frame still has a result.
+fn frame_winner(frame: &Frame) -> (Option<usize>, String) {
+    match frame.end {
+        Some((w, how)) => (Some(w.index()), how.to_string()),
+        None => {
+            let [a, b] = frame.scores;
+            let w = (a != b).then_some(if a > b { 0 } else { 1 });
+            (w, format!("on points after {MAX_STROKES} strokes"))
+        }
+    }
 }

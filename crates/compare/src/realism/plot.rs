@@ -228,6 +228,8 @@ fn draw_squirt(path: &Path) -> Result<(), Box<dyn Error>> {
     Ok(())
 }
 
+/// The throw figure: throw against cut by speed (stun, rolling), with english, and the friction
+/// law beneath them all, so the throw curves can be traced back to the friction that makes them.
 fn draw_throw(path: &Path) -> Result<(), Box<dyn Error>> {
     let root = SVGBackend::new(path, (1400, 1000)).into_drawing_area();
     root.fill(&WHITE)?;
@@ -237,6 +239,20 @@ fn draw_throw(path: &Path) -> Result<(), Box<dyn Error>> {
         ball_friction: BallFriction::ALCIATORE,
         ..constant
     };
+    throw_by_speed_panels(&panels[..2], speed_dep, constant)?;
+    throw_english_panel(&panels[2], speed_dep)?;
+    friction_panel(&panels[3])?;
+    root.present()?;
+    Ok(())
+}
+
+/// Stun and rolling throw against cut, one curve per measured speed: the speed dependence is
+/// what the speed-dependent friction adds over the constant 0.05.
+fn throw_by_speed_panels(
+    panels: &[DrawingArea<SVGBackend, Shift>],
+    speed_dep: SpinModel,
+    constant: SpinModel,
+) -> Result<(), Box<dyn Error>> {
     for (area, (title, roll)) in panels.iter().zip([
         ("Throw, stun cue ball (TP A-14 Fig. 'stun shot')", 0.0),
         ("Throw, rolling cue ball (TP A-14 Fig. 'natural roll')", 1.0),
@@ -279,6 +295,14 @@ fn draw_throw(path: &Path) -> Result<(), Box<dyn Error>> {
             },
         )?;
     }
+    Ok(())
+}
+
+/// Throw with inside and outside english at medium speed, rolling, against TP A-14's plots.
+fn throw_english_panel(
+    area: &DrawingArea<SVGBackend, Shift>,
+    speed_dep: SpinModel,
+) -> Result<(), Box<dyn Error>> {
     // English: medium speed, rolling and stun, outside/inside 25 and 50 %.
     let mut curves = Vec::new();
     for (k, english) in [-0.5, -0.25, 0.0, 0.25, 0.5].into_iter().enumerate() {
@@ -302,7 +326,7 @@ fn draw_throw(path: &Path) -> Result<(), Box<dyn Error>> {
         )?);
     }
     draw_panel(
-        &panels[2],
+        area,
         Panel {
             title: "Throw with english, rolling, 1.34 m/s (TP A-14 english plots)",
             x: ("cut angle (deg)", 0.0, 90.0),
@@ -311,14 +335,18 @@ fn draw_throw(path: &Path) -> Result<(), Box<dyn Error>> {
             marks: vec![],
         },
     )?;
-    // The friction law itself against Marlow's measurements.
+    Ok(())
+}
+
+/// The friction law itself against Marlow's measurements: the cause of the throw curves' shape.
+fn friction_panel(area: &DrawingArea<SVGBackend, Shift>) -> Result<(), Box<dyn Error>> {
     let mu = |f: BallFriction| {
         range(0.0, 7.5, 150)
             .map(|v| (v, f.mu(0.05, v)))
             .collect::<Vec<_>>()
     };
     draw_panel(
-        &panels[3],
+        area,
         Panel {
             title: "Ball-ball friction against sliding speed",
             x: ("sliding speed at the contact (m/s)", 0.0, 7.5),
@@ -344,14 +372,25 @@ fn draw_throw(path: &Path) -> Result<(), Box<dyn Error>> {
             }],
         },
     )?;
-    root.present()?;
     Ok(())
 }
 
+/// The cushion figure: Fig. 7(a), rebound against incidence, the spin panels and the notes on
+/// what was measured, one panel function each.
 fn draw_cushion(path: &Path) -> Result<(), Box<dyn Error>> {
     let root = SVGBackend::new(path, (1400, 1500)).into_drawing_area();
     root.fill(&WHITE)?;
     let panels = root.split_evenly((3, 2));
+    fig7a_panel(&panels[0])?;
+    incidence_panels(&panels[1..3])?;
+    cushion_spin_panels(&panels[3..5])?;
+    cushion_notes(&panels[5])?;
+    root.present()?;
+    Ok(())
+}
+
+/// Mathavan's Fig. 7(a), the only cushion panel with measured points to judge the models by.
+fn fig7a_panel(area: &DrawingArea<SVGBackend, Shift>) -> Result<(), Box<dyn Error>> {
     // (a) Mathavan's Fig. 7(a): rolling, square, rebound against incident speed.
     let curves = CushionCurve::ALL
         .iter()
@@ -366,7 +405,7 @@ fn draw_cushion(path: &Path) -> Result<(), Box<dyn Error>> {
         })
         .collect();
     draw_panel(
-        &panels[0],
+        area,
         Panel {
             title: "Rolling ball, square: Mathavan 2010 Fig. 7(a)",
             x: ("incident speed (m/s)", 0.0, 3.5),
@@ -379,8 +418,13 @@ fn draw_cushion(path: &Path) -> Result<(), Box<dyn Error>> {
             }],
         },
     )?;
+    Ok(())
+}
+
+/// Rebound angle and speed against incidence, rolling at 1 m/s: where the models part.
+fn incidence_panels(panels: &[DrawingArea<SVGBackend, Shift>]) -> Result<(), Box<dyn Error>> {
     // (b, c) Angle and speed against incidence, rolling at 1 m/s.
-    for (area, (title, ylabel, pick, ymax)) in panels[1..3].iter().zip([
+    for (area, (title, ylabel, pick, ymax)) in panels.iter().zip([
         (
             "Rebound angle, rolling at 1 m/s",
             "rebound angle from the cushion (deg)",
@@ -420,6 +464,11 @@ fn draw_cushion(path: &Path) -> Result<(), Box<dyn Error>> {
             },
         )?;
     }
+    Ok(())
+}
+
+/// Rebound angle with topspin and with side spin, Han (thin) against Mathavan (thick).
+fn cushion_spin_panels(panels: &[DrawingArea<SVGBackend, Shift>]) -> Result<(), Box<dyn Error>> {
     // (d) Topspin and (e) side spin: Han (thin) and Mathavan (thick), 1 m/s.
     let spins: [(&str, &[(f64, f64)]); 2] = [
         (
@@ -431,7 +480,7 @@ fn draw_cushion(path: &Path) -> Result<(), Box<dyn Error>> {
             &[(1.0, -1.0), (1.0, 0.0), (1.0, 1.0)],
         ),
     ];
-    for (area, (title, cases)) in panels[3..5].iter().zip(spins) {
+    for (area, (title, cases)) in panels.iter().zip(spins) {
         let mut curves = Vec::new();
         for (k, &(top, side)) in cases.iter().enumerate() {
             let tag = if title.contains("topspin") {
@@ -461,6 +510,12 @@ fn draw_cushion(path: &Path) -> Result<(), Box<dyn Error>> {
             },
         )?;
     }
+    Ok(())
+}
+
+/// What the cushion panels rest on (ball, cushion, validity), written on the figure itself so it
+/// travels with the SVG.
+fn cushion_notes(area: &DrawingArea<SVGBackend, Shift>) -> Result<(), Box<dyn Error>> {
     let notes = [
         "All panels: the paper's snooker ball (R 26.25 mm) and cushion (nose at 7R/5).",
         "Measured data exist for panel 1 only (Mathavan 2010 Fig. 7(a), p. 1870);",
@@ -471,8 +526,7 @@ fn draw_cushion(path: &Path) -> Result<(), Box<dyn Error>> {
     ];
     let style = ("sans-serif", 16).into_font();
     for (k, line) in notes.iter().enumerate() {
-        panels[5].draw(&Text::new(*line, (20, 40 + 28 * k as i32), style.clone()))?;
+        area.draw(&Text::new(*line, (20, 40 + 28 * k as i32), style.clone()))?;
     }
-    root.present()?;
     Ok(())
 }
