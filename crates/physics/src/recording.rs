@@ -64,6 +64,23 @@ pub enum Action {
     },
 }
 
+impl Action {
+    /// Gives this input to `sim` (a strike, a placement or new parameters), as the recording
+    /// and every replay of it do.
+    pub fn apply_to(self, sim: &mut Simulation) -> Result<(), SetupError> {
+        match self {
+            Action::Strike { ball, shot } => sim.strike(ball, shot),
+            Action::Place {
+                ball,
+                position,
+                velocity,
+                spin,
+            } => sim.place(ball, position, velocity, spin),
+            Action::SetParams { params } => sim.set_params(params),
+        }
+    }
+}
+
 /// A recorded game.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Recording {
@@ -166,17 +183,7 @@ impl Recording {
         for (k, input) in self.inputs.iter().enumerate() {
             let at = |e: &dyn std::fmt::Display| format!("input {k} at t = {}: {e}", input.time);
             sim.advance_to(input.time).map_err(|e: SimError| at(&e))?;
-            let applied = match input.action {
-                Action::Strike { ball, shot } => sim.strike(ball, shot),
-                Action::Place {
-                    ball,
-                    position,
-                    velocity,
-                    spin,
-                } => sim.place(ball, position, velocity, spin),
-                Action::SetParams { params } => sim.set_params(params),
-            };
-            applied.map_err(|e| at(&e))?;
+            input.action.apply_to(&mut sim).map_err(|e| at(&e))?;
         }
         sim.advance_to(self.end_time)
             .map_err(|e| format!("to the end time {}: {e}", self.end_time))?;
@@ -405,16 +412,7 @@ impl Recorder {
     }
 
     fn apply(&mut self, action: Action) -> Result<(), SetupError> {
-        match action {
-            Action::Strike { ball, shot } => self.sim.strike(ball, shot),
-            Action::Place {
-                ball,
-                position,
-                velocity,
-                spin,
-            } => self.sim.place(ball, position, velocity, spin),
-            Action::SetParams { params } => self.sim.set_params(params),
-        }?;
+        action.apply_to(&mut self.sim)?;
         // Only inputs the simulation accepted are recorded.
         self.recording.inputs.push(Input {
             time: self.sim.time(),

@@ -60,24 +60,17 @@ pub fn replay_strokes<J: StrokeJudge>(
         if let Some(stroke) = pending.take() {
             judge.rest(&sim, stroke)?;
         }
-        let done = match input.action {
-            Action::Strike { ball, shot } => {
-                k += 1;
-                judge.strike(k, &sim, ball)?;
-                let before = layout(&sim);
-                let first = sim.history().events().len();
-                pending = Some(Replayed { k, before, first });
-                sim.strike(ball, shot)
-            }
-            Action::Place {
-                ball,
-                position,
-                velocity,
-                spin,
-            } => sim.place(ball, position, velocity, spin),
-            Action::SetParams { params } => sim.set_params(params),
-        };
-        done.map_err(|e| judge.replay_error(at(&e)))?;
+        if let Action::Strike { ball, .. } = input.action {
+            k += 1;
+            judge.strike(k, &sim, ball)?;
+            let before = layout(&sim);
+            let first = sim.history().events().len();
+            pending = Some(Replayed { k, before, first });
+        }
+        input
+            .action
+            .apply_to(&mut sim)
+            .map_err(|e| judge.replay_error(at(&e)))?;
     }
     if let Some(stroke) = pending.take() {
         sim.advance_to(recording.end_time)
