@@ -121,8 +121,9 @@ impl Task {
     }
 }
 
-/// The turn as the computer sees it, in either game.
-struct TurnView {
+/// The turn as the computer sees it, in either game, borrowed from the rules each frame (the
+/// game is copied for a decision only when one starts: [`question`]).
+struct TurnView<'a> {
     key: TurnKey,
     /// Who is to shoot (or to choose).
     name: String,
@@ -137,12 +138,22 @@ struct TurnView {
     hand: Option<HandRule>,
     /// Pool: the call in force.
     call: Call,
-    question: Question,
     /// A game behind the interface: its rules, to carry a decision out as one of its moves.
-    live: Option<Box<dyn GameRules>>,
+    live: Option<&'a dyn GameRules>,
 }
 
-fn turn_view(rules: &Rules) -> Option<TurnView> {
+/// What a decision is asked of, copied from the rules when the search starts.
+fn question(rules: &Rules) -> Option<Question> {
+    if let Some(game) = &rules.live {
+        return Some(Question::Any(game.rules.boxed_clone()));
+    }
+    rules
+        .game
+        .as_ref()
+        .map(|game| Question::Pool(game.rack().clone()))
+}
+
+fn turn_view(rules: &Rules) -> Option<TurnView<'_>> {
     if let Some(game) = &rules.live {
         let turn = game.rules.turn();
         return Some(TurnView {
@@ -161,8 +172,7 @@ fn turn_view(rules: &Rules) -> Option<TurnView> {
                 _ => None,
             },
             call: Call::None,
-            question: Question::Any(game.rules.boxed_clone()),
-            live: Some(game.rules.boxed_clone()),
+            live: Some(game.rules.as_ref()),
         });
     }
     let game = rules.game.as_ref()?;
@@ -176,7 +186,6 @@ fn turn_view(rules: &Rules) -> Option<TurnView> {
         has_human: game.has_human(),
         hand: HandRule::of(next.cue_ball),
         call: game.call,
-        question: Question::Pool(game.rack().clone()),
         live: None,
     })
 }
@@ -203,7 +212,9 @@ fn decision_seed(key: TurnKey) -> u64 {
     seed ^ (shots as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ ((choices as u64) << 56)
 }
 
-fn think(question: Question, sim: &Solver, level: Level, key: TurnKey) -> Task {
+/// Starts the search for the turn in play on a background thread; `None` with no match.
+fn think(rules: &Rules, sim: &Solver, level: Level, key: TurnKey) -> Option<Task> {
+    let question = question(rules)?;
     let sim = sim.simulation().clone();
     let seed = decision_seed(key);
     let handle = std::thread::spawn(move || match question {
@@ -212,12 +223,12 @@ fn think(question: Question, sim: &Solver, level: Level, key: TurnKey) -> Task {
             .map_err(|e: AiError| e.to_string()),
         Question::Any(game) => billiards_ai::game::decide_game(game.as_ref(), &sim, level, seed),
     });
-    Task::Thinking {
+    Some(Task::Thinking {
         key,
         seed,
         level,
         handle,
-    }
+    })
 }
 
 /// The computer's turn: decide in the background, show the aim, then shoot (or choose, or
@@ -291,7 +302,7 @@ fn play_computer_turn(
     match computer.turn.take() {
         None => {
             computer.doing = Some(format!("{name} ({level}) is thinking"));
-            computer.turn = Some(think(seat.question, &solver, level, key));
+            computer.turn = think(&rules, &solver, level, key);
         }
         Some(Task::Thinking {
             key,
@@ -330,10 +341,7 @@ fn play_computer_turn(
         }) if since.elapsed() >= pace.0 => {
             let params = solver.simulation().params();
             let noise = level.execution_noise();
-            let chosen = seat
-                .live
-                .as_ref()
-                .and_then(|g| decision.as_move(g.as_ref()));
+            let chosen = seat.live.and_then(|g| decision.as_move(g));
             match (decision, chosen) {
                 (_, Some(Move::Choose(index))) => {
                     turn_commands.write(TurnCommand::ChooseOption(index));
@@ -371,8 +379,8 @@ fn outcome(handle: JoinHandle<Result<Decided, String>>) -> Result<Decided, Strin
 /// What goes with a decided shot before it is struck: pool's call (when it differs from the
 /// one in force), or a game's declaration (snooker's nomination, a called pocket).
 fn announce(decision: &Decided, seat: &TurnView, commands: &mut MessageWriter<TurnCommand>) {
-    if let Some(game) = &seat.live {
-        if let Some(Move::Strike(stroke)) = decision.as_move(game.as_ref())
+    if let Some(game) = seat.live {
+        if let Some(Move::Strike(stroke)) = decision.as_move(game)
             && stroke.declared != Declaration::None
         {
             commands.write(TurnCommand::Declare(stroke.declared));
@@ -434,7 +442,7 @@ fn give_hint(
     let key = seat.key;
     if asked && status.at_rest && computer.hint_task.is_none() {
         computer.hint = Some((key, Hint::Thinking));
-        computer.hint_task = Some(think(seat.question.clone(), &solver, HINT_LEVEL, key));
+        computer.hint_task = think(&rules, &solver, HINT_LEVEL, key);
     }
     let finished = matches!(
         &computer.hint_task,

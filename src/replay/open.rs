@@ -28,6 +28,8 @@ pub struct OpenRecording {
     /// verdicts): `None` for free play, an error text when it is there but cannot be read (the
     /// recording still replays).
     pub game: Option<Result<RulesLog, String>>,
+    /// The log's line of each shot ([`RulesLog::lines`]), made once when opened.
+    lines: Vec<String>,
 }
 
 impl OpenRecording {
@@ -36,9 +38,15 @@ impl OpenRecording {
         let history = recording
             .history()
             .map_err(|error| format!("{}: {error}", path.display()))?;
+        let game = read_log(path);
+        let lines = match &game {
+            Some(Ok(log)) => log.lines(),
+            _ => Vec::new(),
+        };
         Ok(Self {
             path: path.to_path_buf(),
-            game: read_log(path),
+            game,
+            lines,
             shots: Shots::of(&recording),
             recording: Arc::new(recording),
             history,
@@ -81,7 +89,7 @@ impl OpenRecording {
     pub fn game_line(&self, t: f64) -> Option<String> {
         match self.game.as_ref()? {
             Err(error) => Some(format!("game log: {error}")),
-            Ok(log) => log.line(self.shot_at(t)),
+            Ok(_) => self.lines.get(self.shot_at(t).checked_sub(1)?).cloned(),
         }
     }
 

@@ -73,8 +73,7 @@ pub(super) fn declare(
     use billiards_rules::Declaration;
     let turn = game.rules.turn();
     let nominate = &turn.declare.nominate;
-    // A concession is offered where taking it on a copy of the game is accepted.
-    let concession = !turn.opening && game.rules.boxed_clone().concede().is_ok();
+    let concession = !turn.opening && game.rules.concedes();
     if nominate.is_empty() && !concession {
         return;
     }

@@ -255,16 +255,16 @@ impl RulesLog {
         }
     }
 
-    /// The line of shot `k` (from 1) for a timeline: "shot 3, Bob: foul: ...", "stroke 3:
-    /// ..."; `None` past the log's end.
-    pub fn line(&self, k: usize) -> Option<String> {
+    /// The timeline's line of every shot, in order: "shot 3, Bob: foul: ...", "stroke 3: ...".
+    pub fn lines(&self) -> Vec<String> {
         match self {
-            RulesLog::Pool(log) => Some(format!("shot {k}, {}", log.shot_text(k)?)),
-            RulesLog::Snooker(log) => {
-                let text = &log.strokes.get(k.checked_sub(1)?)?.verdict.text;
-                Some(format!("stroke {k}: {text}"))
-            }
-            RulesLog::Strokes(log) => log.line(k),
+            RulesLog::Pool(log) => (1..=log.shots.len())
+                .filter_map(|k| Some(format!("shot {k}, {}", log.shot_text(k)?)))
+                .collect(),
+            RulesLog::Snooker(log) => (log.strokes.iter().enumerate())
+                .map(|(i, s)| format!("stroke {}: {}", i + 1, s.verdict.text))
+                .collect(),
+            RulesLog::Strokes(log) => log.lines(),
         }
     }
 

@@ -81,19 +81,26 @@ impl StrokeLog {
         Ok(log)
     }
 
-    /// The line of stroke `k` (from 1) for a timeline: "stroke 3, Ann (the 7 in the
-    /// foot-left corner): foul: ...".
-    pub fn line(&self, k: usize) -> Option<String> {
-        let entry = self.strokes.get(k.checked_sub(1)?)?;
-        let who = &self.players[entry.judgement.striker.index()];
-        let declared = restore(&self.start)
-            .ok()
-            .and_then(|g| entry.declared.text(&|b| g.ball_name(b)))
-            .map_or(String::new(), |d| format!(" ({d})"));
-        Some(format!(
-            "stroke {k}, {who}{declared}: {}",
-            entry.judgement.text
-        ))
+    /// The timeline's line of every stroke, in order: "stroke 3, Ann (the 7 in the
+    /// foot-left corner): foul: ...". The game is restored once, for its balls' names.
+    pub fn lines(&self) -> Vec<String> {
+        let game = restore(&self.start).ok();
+        self.strokes
+            .iter()
+            .enumerate()
+            .map(|(i, entry)| {
+                let who = &self.players[entry.judgement.striker.index()];
+                let declared = game
+                    .as_ref()
+                    .and_then(|g| entry.declared.text(&|b| g.ball_name(b)))
+                    .map_or(String::new(), |d| format!(" ({d})"));
+                format!(
+                    "stroke {}, {who}{declared}: {}",
+                    i + 1,
+                    entry.judgement.text
+                )
+            })
+            .collect()
     }
 
     /// Replays `recording` and re-judges each stroke from the game saved at its start:

@@ -116,7 +116,7 @@ fn a_stroke_log_rejudges_its_recording_in_every_game() {
             RulesLog::from_json(&text),
             Ok(RulesLog::Strokes(log.clone()))
         );
-        let line = log.line(1).unwrap();
+        let line = log.lines()[0].clone();
         assert!(line.starts_with("stroke 1, Ann"), "{line}");
 
         let mut edited = log.clone();
@@ -128,5 +128,23 @@ fn a_stroke_log_rejudges_its_recording_in_every_game() {
         short.strokes.pop();
         let err = short.check(&recording).unwrap_err();
         assert!(err.contains("strokes, the recording"), "{err}");
+    }
+}
+
+/// A game says it may be conceded exactly when a concession is taken: at the start of every
+/// game of the catalog (snooker's frame, WPBSA 2.1(a); no other game has one), and not once
+/// the frame is over.
+#[test]
+fn a_game_offers_a_concession_exactly_when_it_takes_one() {
+    for entry in GAMES {
+        let game = entry.start(&settings()).unwrap();
+        let mut copy = game.boxed_clone();
+        assert_eq!(game.concedes(), copy.concede().is_ok(), "{}", entry.id);
+        assert_eq!(game.concedes(), entry.id == "snooker", "{}", entry.id);
+        assert!(
+            !copy.concedes(),
+            "{}: conceded, then offered again",
+            entry.id
+        );
     }
 }

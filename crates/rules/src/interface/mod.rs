@@ -306,6 +306,10 @@ pub trait GameRules: std::fmt::Debug + Send + Sync {
     fn concede(&mut self) -> Result<GameEnd, RulesError> {
         Err(RulesError(format!("{} has no concession", self.name())))
     }
+    /// Whether the striker may concede now ([`GameRules::concede`] would be taken).
+    fn concedes(&self) -> bool {
+        false
+    }
     /// A copy behind a new box (the computer searches on copies).
     fn boxed_clone(&self) -> Box<dyn GameRules>;
     /// The whole state as JSON tagged with its kind ([`saved`]), for a rules log that

@@ -322,6 +322,11 @@ impl GameRules for SnookerGame {
         layout(&self.frame.table, &self.ball, default_cue_position(&marks)).map_err(RulesError)
     }
 
+    /// 2.1(a): while the frame is in play.
+    fn concedes(&self) -> bool {
+        self.frame.end.is_none()
+    }
+
     fn concede(&mut self) -> Result<GameEnd, RulesError> {
         let striker = self.next().striker;
         self.frame.concede(striker).map_err(err)?;
