@@ -163,14 +163,7 @@ fn turn_view(rules: &Rules) -> Option<TurnView<'_>> {
             over: game.rules.end().is_some(),
             choosing: !turn.choices.is_empty(),
             has_human: game.has_human(),
-            hand: match turn.place {
-                billiards_rules::CueBallPlace::InHand { region } => Some(match region {
-                    billiards_rules::HandRegion::Anywhere => HandRule::Anywhere,
-                    billiards_rules::HandRegion::BehindHeadString => HandRule::BehindHeadString,
-                    billiards_rules::HandRegion::D => HandRule::InD,
-                }),
-                _ => None,
-            },
+            hand: HandRule::of_place(turn.place),
             call: Call::None,
             live: Some(game.rules.as_ref()),
         });

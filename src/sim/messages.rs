@@ -283,4 +283,17 @@ impl HandRule {
             CueBall::InHandBehindHeadString => Some(Self::BehindHeadString),
         }
     }
+
+    /// The interface's place of the cue ball as a placement rule (`None`: not in hand).
+    pub fn of_place(place: billiards_rules::CueBallPlace) -> Option<Self> {
+        use billiards_rules::{CueBallPlace, HandRegion};
+        match place {
+            CueBallPlace::InHand { region } => Some(match region {
+                HandRegion::Anywhere => Self::Anywhere,
+                HandRegion::BehindHeadString => Self::BehindHeadString,
+                HandRegion::D => Self::InD,
+            }),
+            CueBallPlace::AsItLies | CueBallPlace::Placed => None,
+        }
+    }
 }

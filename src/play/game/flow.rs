@@ -214,6 +214,8 @@ pub(super) fn follow_rules(
     mut next_turn: ResMut<NextState<Turn>>,
 ) {
     let wanted = phase(&rules, &status, dialog.0);
+    // A game behind the interface: its turn, asked once a frame.
+    let live = rules.live.as_ref().map(|g| (g, g.rules.turn()));
     if turn.is_some_and(|turn| *turn.get() != wanted) {
         next_turn.set(wanted);
     }
@@ -222,12 +224,10 @@ pub(super) fn follow_rules(
         Turn::Verdict => Some("the verdict first: continue or choose"),
         Turn::GameOver => Some("the rack is over"),
         Turn::Calling => Some("click a pocket to call it first"),
-        Turn::Aiming | Turn::BallInHand if let Some(game) = &rules.live => {
-            let turn = game.rules.turn();
-            (turn.declare.pocket == billiards_rules::Need::Required
-                && !matches!(game.declared, billiards_rules::Declaration::Pocket { .. }))
-            .then_some("declare a ball and a pocket first")
-        }
+        Turn::Aiming | Turn::BallInHand if let Some((game, turn)) = &live => (turn.declare.pocket
+            == billiards_rules::Need::Required
+            && !matches!(game.declared, billiards_rules::Declaration::Pocket { .. }))
+        .then_some("declare a ball and a pocket first"),
         Turn::Aiming | Turn::BallInHand => rules.game.as_ref().and_then(|game| {
             (game.next().call == CallRule::EightPocket
                 && !matches!(game.call, Call::Ball { ball: 8, .. }))
@@ -243,26 +243,16 @@ pub(super) fn follow_rules(
     };
     referee.set_if_neq(wanted_referee);
     // The striker's own cue ball (three-cushion: the white or the yellow), 0 otherwise.
-    let cue = rules.live.as_ref().map_or(0, |g| g.rules.turn().cue_ball);
+    let cue = live.as_ref().map_or(0, |(_, turn)| turn.cue_ball);
     if let Some(mut solver) = solver
         && solver.cue_number() != cue
     {
         solver.set_cue_number(cue);
     }
-    if let Some(game) = &rules.live
+    if let Some((game, turn)) = &live
         && status.at_rest
     {
-        use billiards_rules::{CueBallPlace, HandRegion};
-        let turn = game.rules.turn();
-        let hand = match turn.place {
-            _ if game.rules.end().is_some() => None,
-            CueBallPlace::InHand { region } => Some(match region {
-                HandRegion::Anywhere => HandRule::Anywhere,
-                HandRegion::BehindHeadString => HandRule::BehindHeadString,
-                HandRegion::D => HandRule::InD,
-            }),
-            CueBallPlace::AsItLies | CueBallPlace::Placed => None,
-        };
+        let hand = HandRule::of_place(turn.place).filter(|_| game.rules.end().is_none());
         if status.ball_in_hand != hand {
             status.ball_in_hand = hand;
         }
