@@ -205,7 +205,6 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                 "--game" => {
                     let value = args.next().ok_or(ArgsError::MissingValue("--game"))?;
                     use crate::play::game::GameChoice;
-                    use billiards_rules::Game;
                     // Every game of the catalog by its id (`nine-ball`, `three-cushion`).
                     let Ok(entry) = billiards_rules::catalog::find(&value) else {
                         return Err(ArgsError::InvalidValue {
@@ -214,10 +213,7 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                         });
                     };
                     options.game = Some(match entry.id {
-                        "nine-ball" => GameChoice::Pool(Game::NineBall),
-                        "ten-ball" => GameChoice::Pool(Game::TenBall),
-                        "eight-ball" => GameChoice::Pool(Game::EightBall),
-                        "free-play" => GameChoice::Pool(Game::FreePlay),
+                        "free-play" => GameChoice::FreePlay,
                         id => GameChoice::Catalog(id),
                     });
                 }
@@ -367,15 +363,11 @@ mod tests {
         assert!(parse(&["--no-record"]).unwrap().no_record);
         assert_eq!(
             parse(&["--game", "nine-ball"]).unwrap().game,
-            Some(crate::play::game::GameChoice::Pool(
-                billiards_rules::Game::NineBall
-            ))
+            Some(crate::play::game::GameChoice::Catalog("nine-ball"))
         );
         assert_eq!(
             parse(&["--game", "ten-ball"]).unwrap().game,
-            Some(crate::play::game::GameChoice::Pool(
-                billiards_rules::Game::TenBall
-            ))
+            Some(crate::play::game::GameChoice::Catalog("ten-ball"))
         );
         assert_eq!(
             parse(&["--game", "snooker"]).unwrap().game,

@@ -17,7 +17,7 @@ use billiards::{
 };
 use billiards_ai::Level;
 use billiards_physics::recording::{Recording, Verdict};
-use billiards_rules::{Game, GameLog};
+use billiards_rules::{Game, RulesLog, pool::PoolMatch};
 
 fn start(folder: &Path, game: Game) -> App {
     let mut app = common::headless((game::plugin, computer::plugin));
@@ -40,6 +40,20 @@ fn start(folder: &Path, game: Game) -> App {
 
 fn turn(app: &App) -> Turn {
     *app.world().resource::<State<Turn>>().get()
+}
+
+/// The match in play.
+fn live(app: &App) -> &game::LiveGame {
+    app.world().resource::<Rules>().live.as_ref().unwrap()
+}
+
+/// The pool match behind the interface.
+fn pool(app: &App) -> &PoolMatch {
+    live(app)
+        .rules
+        .as_any()
+        .downcast_ref::<PoolMatch>()
+        .unwrap()
 }
 
 #[test]
@@ -65,15 +79,7 @@ fn play_a_rack_between_computers(game: Game, tag: &str) {
     // ends within this many shots (each shot is a decision thread waited for to its end).
     const MAX_SHOTS: usize = 300;
     while turn(&app) != Turn::GameOver {
-        let shots = app
-            .world()
-            .resource::<Rules>()
-            .game
-            .as_ref()
-            .unwrap()
-            .log
-            .shots
-            .len();
+        let shots = live(&app).log.strokes.len();
         assert!(
             shots <= MAX_SHOTS,
             "the rack did not end: {:?} after {shots} shots",
@@ -84,27 +90,24 @@ fn play_a_rack_between_computers(game: Game, tag: &str) {
         // no instructions meant for a human at the mouse.
         if matches!(turn(&app), Turn::Aiming | Turn::BallInHand) {
             assert_eq!(*app.world().resource::<AimLocked>(), AimLocked(true));
-            let rules = app.world().resource::<Rules>();
-            let line = &rules.game.as_ref().unwrap().hud_lines(turn(&app), &[])[1];
+            let line = &live(&app).hud_lines(turn(&app), &[])[1];
             assert!(line.contains("(computer, easy) to "), "{line}");
             assert!(!line.contains("aim and shoot"), "{line}");
         }
     }
-    let rules = app.world().resource::<Rules>();
-    let game = rules.game.as_ref().unwrap();
-    let (winner, reason) = game.rack().over.unwrap();
-    let shots = game.log.shots.len();
+    let game = live(&app);
+    let (winner, reason) = pool(&app).rack().over.unwrap();
+    let shots = game.log.strokes.len();
     println!("{} won in {shots} shots: {reason}", game.name(winner));
     assert!(shots >= 1);
     // The computer's shots went through the recording like a human's.
     let file = app.world().resource::<Autosave>().file.clone().unwrap();
     let recorded = Recording::load(&file).unwrap();
     assert!(matches!(recorded.verify(), Ok(Verdict::Reproduced { .. })));
-    let log: GameLog =
-        serde_json::from_str(&std::fs::read_to_string(GameLog::path_beside(&file)).unwrap())
-            .unwrap();
-    let numbers: Vec<u8> = recorded.balls.iter().map(|b| b.number).collect();
-    assert_eq!(log.check(&recorded.events, &numbers), Ok(shots));
+    let (_, log) = RulesLog::beside(&file).expect("the log beside the recording");
+    let log = log.unwrap();
+    assert!(matches!(log, RulesLog::Strokes(_)), "{log:?}");
+    assert_eq!(log.check(&recorded), Ok(shots));
     let _ = std::fs::remove_dir_all(&folder);
 }
 
@@ -116,7 +119,7 @@ fn a_hint_aims_the_humans_cue_at_the_computers_choice_and_the_pointer_is_locked_
     // Seat A a human: the hint is for them; seat B stays the computer.
     app.world_mut()
         .resource_mut::<Rules>()
-        .game
+        .live
         .as_mut()
         .unwrap()
         .seats[0] = None;
@@ -173,20 +176,11 @@ fn a_verdict_before_the_computers_turn_waits_for_the_human() {
             elevation: 0.0,
         });
     common::update_until(&mut app, |app| turn(app) == Turn::Verdict);
-    let shots = |app: &App| {
-        let rules = app.world().resource::<Rules>();
-        rules.game.as_ref().unwrap().log.shots.len()
-    };
+    let shots = |app: &App| live(app).log.strokes.len();
     assert_eq!(shots(&app), 1);
-    let next = app
-        .world()
-        .resource::<Rules>()
-        .game
-        .as_ref()
-        .unwrap()
-        .next_text();
+    let next = live(&app).next_text();
     assert!(
-        next.starts_with("Bob (computer) shoots next, with ball in hand"),
+        next.starts_with("Bob (computer) plays the cue ball next, with ball in hand"),
         "{next}"
     );
     // However many frames go by, the verdict stays and the computer does not shoot.

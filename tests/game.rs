@@ -9,14 +9,16 @@ use std::path::Path;
 use bevy::{math::DVec2, prelude::*};
 use billiards::{
     input::AimLocked,
-    play::game::{self, GameInPlay, NewGameRequested, Rules, Turn, TurnCommand},
+    play::game::{self, LiveGame, NewGameRequested, Rules, Turn, TurnCommand},
     recording::{Autosave, RecordingsFolder},
     replay::OpenRecording,
     sim::{self, HandError, HandRule, ShotRequested, SimStatus, Solver},
     table::geometry::TableSpec,
 };
 use billiards_physics::recording::Recording;
-use billiards_rules::{Foul, Game, GameLog, Outcome, PlacementError, Seat, WinReason};
+use billiards_rules::{
+    Declaration, Foul, Game, PlacementError, RulesLog, Seat, StrokeLog, WinReason, pool::PoolMatch,
+};
 
 /// A headless game saving into `folder`, with a new match of `game` started.
 fn start(folder: &Path, game: Game, race_to: u32) -> App {
@@ -40,8 +42,26 @@ fn turn(app: &App) -> Turn {
     *app.world().resource::<State<Turn>>().get()
 }
 
-fn rules(app: &App) -> &GameInPlay {
-    app.world().resource::<Rules>().game.as_ref().unwrap()
+/// The match in play, behind the one interface.
+fn rules(app: &App) -> &LiveGame {
+    app.world().resource::<Rules>().live.as_ref().unwrap()
+}
+
+/// The pool match behind the interface (its rack and next shot in pool's own words).
+fn pool(app: &App) -> &PoolMatch {
+    rules(app)
+        .rules
+        .as_any()
+        .downcast_ref::<PoolMatch>()
+        .expect("a pool match")
+}
+
+/// The log beside the recording in play, read back as any game's log.
+fn log_beside(recording: &Path) -> StrokeLog {
+    match RulesLog::beside(recording) {
+        Some((_, Ok(RulesLog::Strokes(log)))) => log,
+        other => panic!("no stroke log beside {recording:?}: {other:?}"),
+    }
 }
 
 fn command(app: &mut App, command: TurnCommand) {
@@ -136,7 +156,7 @@ fn play_rack_of_misses(app: &mut App, breaker: Seat) -> Seat {
         Turn::BallInHand,
         "the break is taken from the hand"
     );
-    let next = rules(app).next().clone();
+    let next = pool(app).play.next().clone();
     assert!(next.break_shot);
     assert_eq!(next.shooter, breaker);
     assert_eq!(
@@ -156,12 +176,14 @@ fn play_rack_of_misses(app: &mut App, breaker: Seat) -> Seat {
     loop {
         assert!(matches!(turn(app), Turn::Verdict | Turn::GameOver));
         let verdict = rules(app).last.clone().unwrap();
-        if let Outcome::GameOver { winner, reason } = verdict.outcome {
+        if let Some(end) = &verdict.end {
             assert_eq!(turn(app), Turn::GameOver);
             let lines = rules(app).hud_lines(Turn::GameOver, &[]).join("\n");
             assert!(lines.contains("wins the rack"), "{lines}");
+            let (winner, reason) = pool(app).rack().over.unwrap();
+            assert_eq!(winner, end.winner);
             if reason == WinReason::ThreeFouls {
-                assert_eq!(winner, verdict.shooter.other());
+                assert_eq!(winner, verdict.striker.other());
             }
             return winner;
         }
@@ -175,9 +197,9 @@ fn play_rack_of_misses(app: &mut App, breaker: Seat) -> Seat {
         app.update();
         assert_eq!(turn(app), Turn::Verdict);
         command(app, TurnCommand::Continue);
-        let next = rules(app).next().clone();
+        let next = pool(app).play.next().clone();
         assert!(next.choices.is_empty(), "no push out is declared");
-        let expected_hand = if verdict.legal() {
+        let expected_hand = if verdict.fair {
             None
         } else {
             // WPA 2.7: ball in hand anywhere after a foul.
@@ -196,13 +218,16 @@ fn play_rack_of_misses(app: &mut App, breaker: Seat) -> Seat {
             }
         );
         let shooter = next.shooter;
-        let fouls_before = rules(app).rack().fouls[shooter.index()];
+        let fouls_before = pool(app).rack().fouls[shooter.index()];
         miss(app);
         shots += 1;
         assert!(shots < 20, "the rack does not end");
         let verdict = rules(app).last.clone().unwrap();
-        assert_eq!(verdict.shooter, shooter);
-        assert!(verdict.fouls.contains(&Foul::NoBallHit), "{:?}", verdict);
+        assert_eq!(verdict.striker, shooter);
+        assert!(
+            verdict.fouls.contains(&Foul::NoBallHit.to_string()),
+            "{verdict:?}"
+        );
         let lines = rules(app).hud_lines(turn(app), &[]).join("\n");
         assert!(
             lines.contains("last foul: the cue ball hit no ball"),
@@ -210,15 +235,16 @@ fn play_rack_of_misses(app: &mut App, breaker: Seat) -> Seat {
         );
         if fouls_before == 2 {
             assert_eq!(
-                verdict.outcome,
-                Outcome::GameOver {
-                    winner: shooter.other(),
-                    reason: WinReason::ThreeFouls
-                }
+                verdict.end.as_ref().map(|e| e.winner),
+                Some(shooter.other())
+            );
+            assert_eq!(
+                pool(app).rack().over,
+                Some((shooter.other(), WinReason::ThreeFouls))
             );
         } else {
-            assert_eq!(verdict.outcome, Outcome::Passes);
-            assert_eq!(verdict.next.unwrap().shooter, shooter.other());
+            assert!(verdict.end.is_none() && !verdict.continues, "{verdict:?}");
+            assert_eq!(rules(app).rules.turn().striker, shooter.other());
         }
     }
 }
@@ -241,31 +267,28 @@ fn a_nine_ball_match_is_played_through_the_turns_to_its_winner() {
     loop {
         let winner = play_rack_of_misses(&mut app, breaker);
         racks += 1;
-        let play = rules(&app).play.clone();
+        let play = pool(&app).play.clone();
         assert_eq!(play.score[0] + play.score[1], racks);
         // The rack's rules log lies beside its recording and re-judges it.
         let recording = app.world().resource::<Autosave>().file.clone().unwrap();
-        let log_path = GameLog::path_beside(&recording);
-        let log: GameLog =
-            serde_json::from_str(&std::fs::read_to_string(&log_path).unwrap()).unwrap();
+        let log = log_beside(&recording);
         let recorded = Recording::load(&recording).unwrap();
-        let numbers: Vec<u8> = recorded.balls.iter().map(|b| b.number).collect();
-        assert_eq!(log.check(&recorded.events, &numbers), Ok(log.shots.len()));
+        assert_eq!(log.check(&recorded), Ok(log.strokes.len()));
         assert_eq!(log.players, ["Ann".to_owned(), "Bob".to_owned()]);
+        assert_eq!(log.game, "9-ball");
         // The replay reads the log: each shot's verdict on the timeline, re-judged by Verify.
         let open = OpenRecording::new(&recording, recorded.clone()).unwrap();
-        assert_eq!(open.check_verdicts(), Some(Ok(log.shots.len())));
+        assert_eq!(open.check_verdicts(), Some(Ok(log.strokes.len())));
         let break_line = open.game_line(open.shots.span(1).unwrap().0).unwrap();
         let breaker_name = ["Ann", "Bob"][breaker.index()];
-        assert!(
-            break_line.starts_with(&format!("shot 1, {breaker_name}: break; ")),
-            "{break_line}"
+        assert_eq!(
+            break_line,
+            format!(
+                "stroke 1, {breaker_name}: {}",
+                log.strokes[0].judgement.text
+            )
         );
-        assert!(
-            break_line.contains(&log.shots[0].verdict.reason()),
-            "{break_line}"
-        );
-        assert_eq!(log.breaker, breaker);
+        assert_eq!(log.strokes[0].judgement.striker, breaker);
         if let Some(champion) = play.winner() {
             assert_eq!(champion, winner);
             assert_eq!(play.score[champion.index()], 2);
@@ -289,7 +312,7 @@ fn a_nine_ball_match_is_played_through_the_turns_to_its_winner() {
     });
     app.update();
     app.update();
-    assert!(app.world().resource::<Rules>().game.is_none());
+    assert!(app.world().resource::<Rules>().live.is_none());
     assert_eq!(turn(&app), Turn::Aiming);
     let _ = std::fs::remove_dir_all(&folder);
 }
@@ -310,15 +333,14 @@ fn eight_ball_needs_a_call_on_the_eight_and_the_dialog_pauses_the_turn() {
     command(&mut app, TurnCommand::StartCalling);
     assert_eq!(turn(&app), Turn::BallInHand);
     shoot(&mut app, 0.0, 9.0);
-    let verdict = rules(&app).last.clone().unwrap();
-    assert!(verdict.break_shot);
+    assert_eq!(rules(&app).log.strokes.len(), 1, "the break was judged");
     assert!(matches!(turn(&app), Turn::Verdict | Turn::GameOver));
     if turn(&app) == Turn::GameOver {
         return;
     }
     // WPA 3.3: after an illegal break or the 8 on the break, the options; take the first.
-    match rules(&app).next().choices.first() {
-        Some(&choice) => command(&mut app, TurnCommand::Choose(choice)),
+    match rules(&app).rules.turn().choices.first() {
+        Some(_) => command(&mut app, TurnCommand::ChooseOption(0)),
         None => command(&mut app, TurnCommand::Continue),
     }
     assert!(matches!(turn(&app), Turn::Aiming | Turn::BallInHand));
@@ -328,15 +350,15 @@ fn eight_ball_needs_a_call_on_the_eight_and_the_dialog_pauses_the_turn() {
     // The click that calls a pocket does not also aim the cue at it.
     assert_eq!(*app.world().resource::<AimLocked>(), AimLocked(true));
     let ball = rules(&app).call_ball.unwrap();
-    assert!(rules(&app).next().legal_first.contains(&ball));
-    let call = billiards_rules::Call::Ball {
+    assert!(pool(&app).play.next().legal_first.contains(&ball));
+    let call = Declaration::Pocket {
         ball,
         pocket: billiards_physics::Pocket::FootLeft,
     };
-    command(&mut app, TurnCommand::Call(call));
+    command(&mut app, TurnCommand::Declare(call));
     assert!(matches!(turn(&app), Turn::Aiming | Turn::BallInHand));
     assert_eq!(*app.world().resource::<AimLocked>(), AimLocked(false));
-    assert_eq!(rules(&app).call, call);
+    assert_eq!(rules(&app).declared, call);
     let lines = rules(&app).hud_lines(turn(&app), &[]).join("\n");
     assert!(lines.contains("call: the "), "{lines}");
     let _ = std::fs::remove_dir_all(&folder);
@@ -368,21 +390,18 @@ fn the_last_shot_says_what_went_in_and_the_computer_seat_is_marked() {
     // The break, straight at the rack.
     shoot(&mut app, 0.0, 7.0);
     let game = rules(&app);
-    let what = game.last_what.clone().expect("what the break did");
     let verdict = game.last.clone().unwrap();
-    // What went in, or that nothing did, unless a foul of the verdict already says so.
-    let fouls_say_it = verdict.fouls.iter().any(|f| {
-        matches!(
-            f,
-            Foul::NoBallHit | Foul::NoRail | Foul::IllegalBreak { .. }
-        )
-    });
+    // What went in, or that nothing did, unless a foul of the verdict already says so
+    // (the cue ball hit no ball, no ball pocketed on an illegal break or without a rail).
+    let fouls_say_it = verdict.fouls.iter().any(|f| f.contains("no ball"));
+    let what = &verdict.text;
     assert!(
-        what.ends_with("nothing pocketed") || what.contains(" in the ") || fouls_say_it,
+        what.contains("nothing pocketed") || what.contains(" in the ") || fouls_say_it,
         "{what} after {verdict:?}"
     );
+    assert_ne!(what, "legal", "the verdict alone is never the whole line");
     let lines = game.hud_lines(turn(&app), &[]);
-    let expected = format!("last shot (Ann): {}", game.verdict_text(&verdict));
+    let expected = format!("last stroke: Ann: {what}");
     assert!(lines.contains(&expected), "{expected:?} not in {lines:?}");
     let _ = std::fs::remove_dir_all(&folder);
 
@@ -425,17 +444,14 @@ fn a_ten_ball_rack_is_called_and_played_to_its_winner() {
     assert_eq!(balls(&mut app).iter().filter(|b| b.1 != 0).count(), 10);
     let winner = play_rack_of_misses(&mut app, Seat::A);
     assert_eq!(
-        rules(&app).rack().over,
+        pool(&app).rack().over,
         Some((winner, WinReason::ThreeFouls))
     );
     let recording = app.world().resource::<Autosave>().file.clone().unwrap();
-    let log: GameLog =
-        serde_json::from_str(&std::fs::read_to_string(GameLog::path_beside(&recording)).unwrap())
-            .unwrap();
-    assert_eq!(log.game, Game::TenBall);
+    let log = log_beside(&recording);
+    assert_eq!(log.game, "10-ball");
     let recorded = Recording::load(&recording).unwrap();
-    let numbers: Vec<u8> = recorded.balls.iter().map(|b| b.number).collect();
-    assert_eq!(log.check(&recorded.events, &numbers), Ok(log.shots.len()));
+    assert_eq!(log.check(&recorded), Ok(log.strokes.len()));
     let _ = std::fs::remove_dir_all(&folder);
 
     let mut app = start(&folder, Game::TenBall, 1);
@@ -445,20 +461,20 @@ fn a_ten_ball_rack_is_called_and_played_to_its_winner() {
     let head = app.world().resource::<TableSpec>().head_spot();
     place(&mut app, head + DVec2::new(-0.05, 0.02)).unwrap();
     shoot(&mut app, 0.0, 9.0);
-    assert_eq!(rules(&app).rack().over, None, "no win on the break (9.9)");
-    match rules(&app).next().choices.first() {
-        Some(&choice) => command(&mut app, TurnCommand::Choose(choice)),
+    assert_eq!(pool(&app).rack().over, None, "no win on the break (9.9)");
+    match rules(&app).rules.turn().choices.first() {
+        Some(_) => command(&mut app, TurnCommand::ChooseOption(0)),
         None => command(&mut app, TurnCommand::Continue),
     }
     command(&mut app, TurnCommand::StartCalling);
     assert_eq!(turn(&app), Turn::Calling);
-    let call = billiards_rules::Call::Ball {
+    let call = Declaration::Pocket {
         ball: 10,
         pocket: billiards_physics::Pocket::FootLeft,
     };
-    command(&mut app, TurnCommand::Call(call));
+    command(&mut app, TurnCommand::Declare(call));
     assert!(matches!(turn(&app), Turn::Aiming | Turn::BallInHand));
-    assert_eq!(rules(&app).call, call);
+    assert_eq!(rules(&app).declared, call);
     let lines = rules(&app).hud_lines(turn(&app), &[]).join("\n");
     assert!(
         lines.contains("call: the 10 in the foot-left corner"),

@@ -46,7 +46,7 @@ fn turn(app: &App) -> Turn {
 
 fn hud(app: &App) -> Vec<String> {
     let rules = app.world().resource::<Rules>();
-    rules.live.as_ref().unwrap().hud_lines(turn(app))
+    rules.live.as_ref().unwrap().hud_lines(turn(app), &[])
 }
 
 /// A soft stroke toward the head cushion, away from both object balls of the opening (the

@@ -10,9 +10,9 @@ use std::{
 };
 
 use bevy::{math::DVec2, prelude::*, window::RequestRedraw};
-use billiards_ai::{AiError, Decision, Level, any_game::Move};
+use billiards_ai::{Level, any_game::Move};
 use billiards_physics::{Shot, Vec2};
-use billiards_rules::{Call, Declaration, GameRules, GameState};
+use billiards_rules::{Declaration, GameRules};
 
 pub use super::decided::{Decided, describe};
 use crate::{
@@ -84,14 +84,6 @@ impl Hint {
 /// Which turn of which rack a decision is for: a decision for another turn is dropped.
 pub type TurnKey = (u64, usize, usize);
 
-/// What a decision is asked of: the rules' state of either game.
-#[derive(Debug, Clone)]
-enum Question {
-    Pool(GameState),
-    /// A game behind the one interface: its own search ([`billiards_ai::game::decide_game`]).
-    Any(Box<dyn GameRules>),
-}
-
 #[derive(Debug)]
 enum Task {
     /// The verdict of the last shot is on screen; the computer continues after a moment.
@@ -136,50 +128,23 @@ struct TurnView<'a> {
     has_human: bool,
     /// Where the cue ball in hand may go.
     hand: Option<HandRule>,
-    /// Pool: the call in force.
-    call: Call,
-    /// A game behind the interface: its rules, to carry a decision out as one of its moves.
-    live: Option<&'a dyn GameRules>,
+    /// The game's rules, to carry a decision out as one of its moves.
+    live: &'a dyn GameRules,
 }
 
-/// What a decision is asked of, copied from the rules when the search starts.
-fn question(rules: &Rules) -> Option<Question> {
-    if let Some(game) = &rules.live {
-        return Some(Question::Any(game.rules.boxed_clone()));
-    }
-    rules
-        .game
-        .as_ref()
-        .map(|game| Question::Pool(game.rack().clone()))
-}
-
+/// The turn in play as the computer sees it; `None` in free play.
 fn turn_view(rules: &Rules) -> Option<TurnView<'_>> {
-    if let Some(game) = &rules.live {
-        let turn = game.rules.turn();
-        return Some(TurnView {
-            key: game.turn_key(),
-            name: game.name(turn.striker).to_owned(),
-            level: game.computer(turn.striker),
-            over: game.rules.end().is_some(),
-            choosing: !turn.choices.is_empty(),
-            has_human: game.has_human(),
-            hand: HandRule::of_place(turn.place),
-            call: Call::None,
-            live: Some(game.rules.as_ref()),
-        });
-    }
-    let game = rules.game.as_ref()?;
-    let next = game.next();
+    let game = rules.live.as_ref()?;
+    let turn = game.rules.turn();
     Some(TurnView {
         key: game.turn_key(),
-        name: game.name(next.shooter).to_owned(),
-        level: game.computer(next.shooter),
-        over: game.rack().over.is_some(),
-        choosing: !next.choices.is_empty(),
+        name: game.name(turn.striker).to_owned(),
+        level: game.computer(turn.striker),
+        over: game.rules.end().is_some(),
+        choosing: !turn.choices.is_empty(),
         has_human: game.has_human(),
-        hand: HandRule::of(next.cue_ball),
-        call: game.call,
-        live: None,
+        hand: HandRule::of_place(turn.place),
+        live: game.rules.as_ref(),
     })
 }
 
@@ -205,16 +170,14 @@ fn decision_seed(key: TurnKey) -> u64 {
     seed ^ (shots as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ ((choices as u64) << 56)
 }
 
-/// Starts the search for the turn in play on a background thread; `None` with no match.
+/// Starts the search for the turn in play on a background thread, on a copy of the game
+/// (each game by its own search: [`billiards_ai::game::decide_game`]); `None` with no match.
 fn think(rules: &Rules, sim: &Solver, level: Level, key: TurnKey) -> Option<Task> {
-    let question = question(rules)?;
+    let game = rules.live.as_ref()?.rules.boxed_clone();
     let sim = sim.simulation().clone();
     let seed = decision_seed(key);
-    let handle = std::thread::spawn(move || match question {
-        Question::Pool(state) => billiards_ai::decide(&state, &sim, level, seed)
-            .map(Decided::Pool)
-            .map_err(|e: AiError| e.to_string()),
-        Question::Any(game) => billiards_ai::game::decide_game(game.as_ref(), &sim, level, seed),
+    let handle = std::thread::spawn(move || {
+        billiards_ai::game::decide_game(game.as_ref(), &sim, level, seed)
     });
     Some(Task::Thinking {
         key,
@@ -334,28 +297,18 @@ fn play_computer_turn(
         }) if since.elapsed() >= pace.0 => {
             let params = solver.simulation().params();
             let noise = level.execution_noise();
-            let chosen = seat.live.and_then(|g| decision.as_move(g));
-            match (decision, chosen) {
-                (_, Some(Move::Choose(index))) => {
+            match decision.as_move(seat.live) {
+                Some(Move::Choose(index)) => {
                     turn_commands.write(TurnCommand::ChooseOption(index));
                 }
-                (_, Some(Move::Strike(stroke))) => {
+                Some(Move::Strike(stroke)) => {
                     // The same stream as a plan's execution ([`billiards_ai::Plan::executed`]).
                     let mut rng = billiards_ai::noise::stream(seed, u64::MAX, 0);
                     let shot = noise.apply(stroke.shot, params, &mut rng);
                     shots.write(ShotRequested::from(shot));
                     computer.fired = Some((key, Instant::now()));
                 }
-                (Decided::Pool(Decision::Choose { choice, .. }), None) => {
-                    turn_commands.write(TurnCommand::Choose(choice));
-                }
-                (Decided::Pool(Decision::Shoot(plan)), None) => {
-                    shots.write(ShotRequested::from(plan.executed(noise, params, seed)));
-                    computer.fired = Some((key, Instant::now()));
-                }
-                (decision, None) => {
-                    warn!("the computer's decision is not for this game: {decision:?}")
-                }
+                None => warn!("the computer's decision is not for this game: {decision:?}"),
             }
         }
         task => computer.turn = task,
@@ -369,21 +322,13 @@ fn outcome(handle: JoinHandle<Result<Decided, String>>) -> Result<Decided, Strin
         .map_err(|_| "the decision thread panicked".to_owned())?
 }
 
-/// What goes with a decided shot before it is struck: pool's call (when it differs from the
-/// one in force), or a game's declaration (snooker's nomination, a called pocket).
+/// What goes with a decided shot before it is struck: its declaration (pool's call,
+/// snooker's nomination).
 fn announce(decision: &Decided, seat: &TurnView, commands: &mut MessageWriter<TurnCommand>) {
-    if let Some(game) = seat.live {
-        if let Some(Move::Strike(stroke)) = decision.as_move(game)
-            && stroke.declared != Declaration::None
-        {
-            commands.write(TurnCommand::Declare(stroke.declared));
-        }
-        return;
-    }
-    if let Decided::Pool(Decision::Shoot(plan)) = decision
-        && plan.call != seat.call
+    if let Some(Move::Strike(stroke)) = decision.as_move(seat.live)
+        && stroke.declared != Declaration::None
     {
-        commands.write(TurnCommand::Call(plan.call));
+        commands.write(TurnCommand::Declare(stroke.declared));
     }
 }
 

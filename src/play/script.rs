@@ -14,7 +14,7 @@ use std::collections::VecDeque;
 
 use bevy::prelude::*;
 use billiards_physics::{Pocket, Vec2};
-use billiards_rules::{Call, Declaration};
+use billiards_rules::Declaration;
 
 use super::game::{Rules, Turn, TurnCommand};
 use crate::{
@@ -189,7 +189,7 @@ fn play_script(
         Step::Call { ball, pocket } => {
             let ready = human_to_play && matches!(turn, Some(Turn::Aiming | Turn::BallInHand));
             if ready {
-                commands.write(TurnCommand::Call(Call::Ball { ball, pocket }));
+                commands.write(TurnCommand::Declare(Declaration::Pocket { ball, pocket }));
             }
             ready
         }
@@ -201,15 +201,12 @@ fn play_script(
             ready
         }
         Step::Choose(k) => {
-            let pool = rules.game.as_ref().map(|g| g.next().choices.clone());
             let offered = rules.live.as_ref().map(|g| g.rules.turn().choices.len());
-            let command = match (pool, offered) {
-                (Some(choices), _) => choices.get(k - 1).map(|&c| TurnCommand::Choose(c)),
-                (_, Some(n)) => (1..=n)
+            let command = offered.and_then(|n| {
+                (1..=n)
                     .contains(&k)
-                    .then(|| TurnCommand::ChooseOption(k - 1)),
-                (None, None) => None,
-            };
+                    .then(|| TurnCommand::ChooseOption(k - 1))
+            });
             let ready = human_to_play && turn == Some(Turn::Verdict) && command.is_some();
             if let Some(command) = command.filter(|_| ready) {
                 commands.write(command);

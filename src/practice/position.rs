@@ -155,7 +155,7 @@ pub(super) fn load_position(
     if p.game != Game::FreePlay {
         note.push_str(&format!(
             " (set up for {}; free play)",
-            crate::play::game::GameChoice::Pool(p.game).label()
+            crate::play::game::GameChoice::from(p.game).label()
         ));
     }
     if ended_match {
@@ -178,7 +178,17 @@ pub fn current_position(
     if !sim.is_at_rest() {
         return Err("wait until every ball rests".to_owned());
     }
-    let game = rules.game.as_ref().map_or(Game::FreePlay, |g| g.play.game);
+    // A position code knows pool's games only; any other game's table is set up as free
+    // play.
+    let game = rules
+        .live
+        .as_ref()
+        .and_then(|g| {
+            g.rules
+                .as_any()
+                .downcast_ref::<billiards_rules::pool::PoolMatch>()
+        })
+        .map_or(Game::FreePlay, |g| g.play.game);
     let mut p = Position::of_simulation(sim, game, with_params);
     p.shot = shot.map(|s| s.shot());
     p.check().map_err(|e| e.to_string())?;

@@ -5,12 +5,10 @@
 
 use bevy::prelude::*;
 use bevy_egui::{EguiContexts, egui};
-use billiards_rules::{Call, CallRule, Game};
 
 use super::layout::{HUD_BUTTON_WIDTH, HudLine, INFO, PANEL_WIDTH, WARNING};
 use super::live_windows;
 use super::new_game::{NewGameForm, seat_rows};
-use super::pool_windows;
 use crate::{
     play::computer::{Computer, HintRequested},
     play::game::{GameChoice, NewGameRequested, Rules, Turn, TurnCommand},
@@ -75,9 +73,11 @@ pub fn snooker(state: &GameParam) -> bool {
 /// The HUD's buttons, one row, each always in its place: disabled when it does not apply
 /// (free play, the computer's turn, a replay), never moved or hidden.
 pub fn hud_buttons(ui: &mut egui::Ui, state: &mut GameParam) {
+    use billiards_rules::{Declaration, Need};
     let turn = state.turn.as_ref().map(|t| *t.get());
-    let game = state.rules.game.as_ref();
-    let next = game.map(|g| g.next());
+    let game = state.rules.live.as_ref();
+    let declare = game.map(|g| g.rules.turn().declare);
+    let declared = game.map_or(Declaration::None, |g| g.declared);
     let human_to_shoot = human_to_shoot(state);
     let size = egui::vec2(HUD_BUTTON_WIDTH, 0.0);
     ui.horizontal(|ui| {
@@ -97,15 +97,19 @@ pub fn hud_buttons(ui: &mut egui::Ui, state: &mut GameParam) {
         if hint.clicked() {
             state.hints.write(HintRequested);
         }
-        let can_call = human_to_shoot && next.is_some_and(|n| n.call != CallRule::NotUsed);
+        let can_call = human_to_shoot
+            && declare
+                .as_ref()
+                .is_some_and(|d| d.pocket != Need::NotUsed && !d.callable.is_empty());
         if ui
             .add_enabled(can_call, egui::Button::new(HUD_BUTTONS[2]).min_size(size))
-            .on_hover_text("8-ball: the ball and pocket, proposed from your aim")
+            .on_hover_text("pool: the ball and pocket, proposed from your aim")
             .clicked()
         {
             state.commands.write(TurnCommand::StartCalling);
         }
-        let called = game.is_some_and(|g| g.call != Call::None);
+        // A nomination has its own window; this clears pool's calls.
+        let called = !matches!(declared, Declaration::None | Declaration::Nominate { .. });
         if ui
             .add_enabled(
                 human_to_shoot && called,
@@ -113,17 +117,21 @@ pub fn hud_buttons(ui: &mut egui::Ui, state: &mut GameParam) {
             )
             .clicked()
         {
-            state.commands.write(TurnCommand::Call(Call::None));
+            state
+                .commands
+                .write(TurnCommand::Declare(Declaration::None));
         }
         let push_out = human_to_shoot
-            && next.is_some_and(|n| n.push_out_allowed)
-            && game.is_some_and(|g| g.call != Call::PushOut);
+            && declare.as_ref().is_some_and(|d| d.push_out)
+            && declared != Declaration::PushOut;
         if ui
             .add_enabled(push_out, egui::Button::new(HUD_BUTTONS[4]).min_size(size))
-            .on_hover_text("9-ball, right after the break: declare a push out (WPA 2.4)")
+            .on_hover_text("9-ball, 10-ball, right after the break: declare a push out (WPA 2.4)")
             .clicked()
         {
-            state.commands.write(TurnCommand::Call(Call::PushOut));
+            state
+                .commands
+                .write(TurnCommand::Declare(Declaration::PushOut));
         }
     });
 }
@@ -134,11 +142,7 @@ pub fn hud_lines(state: &GameParam) -> (Vec<HudLine>, Vec<HudLine>) {
     let Some(turn) = state.turn.as_ref().map(|t| *t.get()) else {
         return (Vec::new(), Vec::new());
     };
-    if let Some(game) = &state.rules.live {
-        let lines = game.hud_lines(turn);
-        return split_lines(state, lines, 1, |_, _| false, game.turn_key());
-    }
-    let Some(game) = &state.rules.game else {
+    let Some(game) = &state.rules.live else {
         return (vec![("free play".to_owned(), None)], Vec::new());
     };
     // Balls the shot in play has dropped so far: "balls left" counts them off at once.
@@ -259,8 +263,7 @@ pub fn game_windows(
     // window was at its last pass; the new-game dialog, modal, sits over the table.
     let docked = match turn {
         Some(Turn::Verdict) => Some("Verdict"),
-        Some(Turn::GameOver) if state.rules.live.is_some() => Some("Game over"),
-        Some(Turn::GameOver) => Some("Rack over"),
+        Some(Turn::GameOver) => Some("Game over"),
         _ => None,
     };
     let height = docked.map_or(0.0, |title| {
@@ -308,28 +311,10 @@ pub fn game_windows(
                 live_windows::game_over(ui, game, &mut state.commands)
             });
         }
-        Turn::Verdict => {
-            let Some(game) = &state.rules.game else {
-                return Ok(());
-            };
-            centre("Verdict").show(&ctx, |ui| {
-                pool_windows::verdict(ui, game, &mut state.commands)
-            });
+        Turn::Calling if let Some(game) = &state.rules.live => {
+            centre("Call").show(&ctx, |ui| live_windows::call(ui, game, &mut state.commands));
         }
-        Turn::Calling => {
-            let Some(game) = &state.rules.game else {
-                return Ok(());
-            };
-            centre("Call").show(&ctx, |ui| pool_windows::call(ui, game, &mut state.commands));
-        }
-        Turn::GameOver => {
-            let Some(game) = &state.rules.game else {
-                return Ok(());
-            };
-            centre("Rack over").show(&ctx, |ui| {
-                pool_windows::rack_over(ui, game, &mut state.commands)
-            });
-        }
+        Turn::Verdict | Turn::GameOver | Turn::Calling => {}
         Turn::Aiming | Turn::BallInHand if human_to_shoot(&state) => {
             if let Some(game) = &state.rules.live {
                 live_windows::declare(&ctx, game, &mut state.commands);
@@ -355,11 +340,13 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
         // Each game's own usual length: three-cushion's 40 points, not a race to 3.
         form.race_to = form.game.length().1;
     }
-    let own_table = matches!(form.game, GameChoice::Catalog(_));
+    let own_table = !form.game.pool_table();
     let setup = form.setup.get_or_insert(*state.setup);
-    // A game of the catalog (snooker, three-cushion) has its own table and layout: the pool
-    // rows give way to it.
-    if let GameChoice::Catalog(id) = form.game {
+    // A game with its own table (snooker, three-cushion) and layout: the pool rows give way
+    // to it.
+    if let GameChoice::Catalog(id) = form.game
+        && own_table
+    {
         ui.label(own_table_text(id));
     } else {
         ui.horizontal(|ui| {
@@ -374,7 +361,7 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
                 });
         });
     }
-    if form.game == GameChoice::Pool(Game::FreePlay) {
+    if form.game == GameChoice::FreePlay {
         drill_row(ui, form, &state.drills, &state.bests);
     } else {
         form.drill = None;

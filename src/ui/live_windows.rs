@@ -1,5 +1,6 @@
 //! The windows of a game behind the one interface ([`LiveGame`]): the verdict with the
-//! options the rules offer, and the end of a game. Every word comes from the game.
+//! options the rules offer, the call of a ball and pocket, the nomination and concession,
+//! and the end of a game. Every word comes from the game.
 
 use bevy::prelude::*;
 use bevy_egui::egui;
@@ -30,14 +31,67 @@ pub(super) fn verdict(
             }
         });
     } else {
-        ui.label(format!(
-            "{striker} plays {} next",
-            game.rules.ball_name(turn.cue_ball)
-        ));
+        ui.label(game.next_text());
+        // Between two computers the verdict goes on by itself.
         if game.has_human() && ui.button("Continue (Enter)").clicked() {
             commands.write(TurnCommand::Continue);
         }
     }
+}
+
+/// The call (WPA 1.6, 3.8, 9.5): the ball and pocket the aim proposes, or a ball chosen and
+/// its pocket clicked on the table; a safety, or no call.
+pub(super) fn call(ui: &mut egui::Ui, game: &LiveGame, commands: &mut MessageWriter<TurnCommand>) {
+    use billiards_rules::Declaration;
+    let turn = game.rules.turn();
+    let name = |ball: u8| game.rules.ball_name(ball);
+    // What the aim sends into a pocket, one click to confirm.
+    if let Some(call) = game.proposed
+        && let Some(text) = call.text(&name)
+    {
+        if ui.button(format!("Call {text} (your aim)")).clicked() {
+            commands.write(TurnCommand::Declare(call));
+        }
+        ui.label("or choose another:");
+    }
+    match turn.declare.callable.as_slice() {
+        [only] => {
+            ui.label(format!(
+                "{}: click the pocket on the table.",
+                capitalised(&name(*only))
+            ));
+        }
+        callable => {
+            ui.horizontal_wrapped(|ui| {
+                ui.label("Ball:");
+                for &ball in callable {
+                    let chosen = game.call_ball == Some(ball);
+                    let label = name(ball);
+                    let label = label.strip_prefix("the ").unwrap_or(&label).to_owned();
+                    if ui.selectable_label(chosen, label).clicked() {
+                        commands.write(TurnCommand::CallBall(ball));
+                    }
+                }
+            });
+            ui.label("Then click the pocket on the table.");
+        }
+    }
+    ui.horizontal(|ui| {
+        if turn.declare.safety && ui.button("Call a safety").clicked() {
+            commands.write(TurnCommand::Declare(Declaration::Safety));
+        }
+        if ui.button("No call").clicked() {
+            commands.write(TurnCommand::Declare(Declaration::None));
+        }
+    });
+}
+
+/// `text` with its first letter in capitals ("the 8" as "The 8").
+fn capitalised(text: &str) -> String {
+    let mut chars = text.chars();
+    chars.next().map_or_else(String::new, |first| {
+        first.to_uppercase().chain(chars).collect()
+    })
 }
 
 /// The end of a game: the winner and why, the score, then the next game of the match or,
@@ -56,7 +110,7 @@ pub(super) fn game_over(
         if ui.button("New game...").clicked() {
             commands.write(TurnCommand::OpenDialog);
         }
-    } else if ui.button("Next game").clicked() {
+    } else if ui.button(format!("Next {}", game.game_noun())).clicked() {
         commands.write(TurnCommand::NextRack);
     }
 }

@@ -12,8 +12,7 @@
 //! - [`timeline`]: the replay timeline strip and the Export form;
 //! - [`hud`]: the HUD in the top-right corner;
 //! - [`new_game`]: the new-game dialog's form, kept between frames;
-//! - `pool_windows`: a pool match's verdict, call and end of a rack;
-//! - `snooker_windows`: a snooker frame's nomination, verdict and end;
+//! - `live_windows`: any game's verdict, call, nomination and concession, and its end;
 //! - [`game`]: the match's HUD lines, the new-game dialog, the verdict, the call, the end of
 //!   a rack.
 //!
@@ -30,7 +29,6 @@ pub mod layout;
 pub mod layout_check;
 mod live_windows;
 pub mod new_game;
-mod pool_windows;
 pub mod practice;
 pub mod recordings;
 pub mod settings;

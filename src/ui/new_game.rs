@@ -4,7 +4,6 @@
 use bevy::prelude::*;
 use bevy_egui::egui;
 use billiards_ai::Level;
-use billiards_rules::Game;
 
 use crate::{
     play::game::{GameChoice, NewGameRequested},
@@ -34,7 +33,7 @@ pub struct NewGameForm {
 impl Default for NewGameForm {
     fn default() -> Self {
         Self {
-            game: GameChoice::Pool(Game::NineBall),
+            game: GameChoice::Catalog("nine-ball"),
             players: ["Player 1".to_owned(), "Player 2".to_owned()],
             race_to: 3,
             computer: [None, Some(Level::Medium)],
@@ -92,8 +91,8 @@ pub(super) fn seat_rows(ui: &mut egui::Ui, form: &mut NewGameForm) {
                 });
         });
     }
-    if let GameChoice::Catalog(_) = form.game {
-        // A game of the catalog says what its length counts ("points to").
+    if !form.game.pool_table() {
+        // A game on its own table says what its length counts ("points to", "best of").
         let (unit, _) = form.game.length();
         ui.horizontal(|ui| {
             let mut unit = unit.to_owned();

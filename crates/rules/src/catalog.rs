@@ -58,6 +58,9 @@ pub struct GameEntry {
     pub default_length: u32,
     /// The game's own table and balls.
     pub equipment: fn() -> (Table, BallSpec),
+    /// Played on any pool table of the player's choosing (its size, pockets, jaws and
+    /// rack style: pool's games); otherwise only on its own ([`GameEntry::equipment`]).
+    pub pool_table: bool,
     start: Start,
 }
 
@@ -111,6 +114,7 @@ pub const GAMES: &[GameEntry] = &[
         length_noun: "racks",
         default_length: 3,
         equipment: pool_equipment,
+        pool_table: true,
         start: |s, t, b| Ok(pool(Game::NineBall, s, t, b)),
     },
     GameEntry {
@@ -120,6 +124,7 @@ pub const GAMES: &[GameEntry] = &[
         length_noun: "racks",
         default_length: 3,
         equipment: pool_equipment,
+        pool_table: true,
         start: |s, t, b| Ok(pool(Game::EightBall, s, t, b)),
     },
     GameEntry {
@@ -129,6 +134,7 @@ pub const GAMES: &[GameEntry] = &[
         length_noun: "racks",
         default_length: 3,
         equipment: pool_equipment,
+        pool_table: true,
         start: |s, t, b| Ok(pool(Game::TenBall, s, t, b)),
     },
     GameEntry {
@@ -138,6 +144,7 @@ pub const GAMES: &[GameEntry] = &[
         length_noun: "frames",
         default_length: 3,
         equipment: snooker_equipment,
+        pool_table: false,
         start: |s, t, b| {
             Ok(Box::new(SnookerGame::new(
                 s.players.clone(),
@@ -155,6 +162,7 @@ pub const GAMES: &[GameEntry] = &[
         // UMB world cup and championship distance (Art. 29 leaves it to the event).
         default_length: 40,
         equipment: carom_equipment,
+        pool_table: false,
         start: |s, t, b| {
             Ok(Box::new(ThreeCushionMatch::new(
                 s.players.clone(),
@@ -171,6 +179,7 @@ pub const GAMES: &[GameEntry] = &[
         length_noun: "racks",
         default_length: 1,
         equipment: pool_equipment,
+        pool_table: true,
         start: |s, t, b| Ok(pool(Game::FreePlay, s, t, b)),
     },
 ];

@@ -111,6 +111,7 @@ impl GameRules for DrillGame {
             ball_on: crate::pool::ball_on_text(&self.state, next),
             declare: Declarations {
                 pocket: crate::pool::need_of(next.call),
+                callable: crate::pool::callable(&self.state, next),
                 ..Declarations::default()
             },
             opening: false,

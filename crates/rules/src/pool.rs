@@ -134,6 +134,17 @@ pub fn game_name(game: Game) -> &'static str {
     }
 }
 
+/// The balls that may be called with a pocket on the next shot ([`Declarations::callable`]).
+pub fn callable(rack: &GameState, next: &NextShot) -> Vec<u8> {
+    match next.call {
+        CallRule::NotUsed => Vec::new(),
+        CallRule::EightPocket => vec![8],
+        CallRule::Optional => next.legal_first.clone(),
+        // WPA 9.5: any ball may be called, the first ball hit must still be the lowest.
+        CallRule::BallAndPocket => rack.on_table.clone(),
+    }
+}
+
 /// Whether the next shot needs a call, in the interface's words.
 pub fn need_of(call: CallRule) -> Need {
     match call {
@@ -186,6 +197,7 @@ impl GameRules for PoolMatch {
             ball_on: ball_on_text(self.rack(), next),
             declare: Declarations {
                 pocket,
+                callable: callable(self.rack(), next),
                 safety: next.call != CallRule::NotUsed,
                 push_out: next.push_out_allowed,
                 nominate: Vec::new(),
@@ -246,11 +258,15 @@ impl GameRules for PoolMatch {
             .play(&summary, call)
             .map_err(RulesError::from_display)?;
         let what = what_happened(&summary, call, &verdict.fouls);
-        let text = if what.is_empty() {
+        let mut text = if what.is_empty() {
             verdict.reason()
         } else {
             format!("{}: {what}", verdict.reason())
         };
+        if let Some(group) = verdict.assigned {
+            // WPA 3.5: the table is no longer open; said with the stroke that closed it.
+            text.push_str(&format!("; the shooter takes the {}", group.name()));
+        }
         let mut put = Vec::new();
         if let Some(next) = &verdict.next {
             put = self.spot_places(&next.spot, stroke.after)?;
@@ -304,6 +320,10 @@ impl GameRules for PoolMatch {
     }
 
     fn status(&self) -> Vec<String> {
+        self.status_while(&[])
+    }
+
+    fn status_while(&self, off: &[u8]) -> Vec<String> {
         let rack = self.rack();
         let next = self.next();
         let mut lines = Vec::new();
@@ -316,7 +336,10 @@ impl GameRules for PoolMatch {
                 Some(_) => [Seat::A, Seat::B]
                     .map(|seat| {
                         let group = rack.group(seat).unwrap_or(Group::Solids);
-                        let left = rack.on_table.iter().filter(|&&b| group.contains(b));
+                        let left = rack
+                            .on_table
+                            .iter()
+                            .filter(|&&b| group.contains(b) && !off.contains(&b));
                         format!(
                             "{}: {} ({} left)",
                             self.play.name(seat),
@@ -327,7 +350,8 @@ impl GameRules for PoolMatch {
                     .join(", "),
             });
         } else {
-            lines.push(format!("balls left: {}", rack.on_table.len()));
+            let left = rack.on_table.iter().filter(|b| !off.contains(b));
+            lines.push(format!("balls left: {}", left.count()));
         }
         lines.push(format!(
             "fouls in a row: {} {}, {} {}",

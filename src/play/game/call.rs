@@ -1,48 +1,43 @@
 //! The call proposed from the aim (issues 28, 48): the ball and pocket the aiming aid sends
-//! a callable ball into, and the ball the call dialog opens on.
+//! a callable ball into, and the ball the call window opens on, for any game whose turn
+//! lets a ball and pocket be called ([`Declarations::callable`](billiards_rules::Declarations)).
 
-use billiards_rules::{Call, CallRule, NextShot};
+use billiards_rules::{Declaration, Turn};
 
 use crate::play::aim::AimPrediction;
 
-/// The ball the call dialog opens on (issue 48: it chose the 1 while the aim was on the 6):
-/// the proposed call's ball, else the 8 when it must be called, else the ball the aim hits
-/// first if it may be called, else the lowest legal ball.
+/// The ball the call window opens on (issue 48: it chose the 1 while the aim was on the 6):
+/// the proposed call's ball, else the only callable ball (the 8 when it is on), else the
+/// ball the aim hits first if it may be called, else the first callable ball.
 pub(super) fn preselected_ball(
-    next: &NextShot,
-    proposed: Option<Call>,
+    turn: &Turn,
+    proposed: Option<Declaration>,
     aim: Option<&AimPrediction>,
 ) -> Option<u8> {
-    if let Some(Call::Ball { ball, .. }) = proposed {
+    if let Some(Declaration::Pocket { ball, .. }) = proposed {
         return Some(ball);
     }
-    if next.call == CallRule::EightPocket {
-        return Some(8);
+    let callable = &turn.declare.callable;
+    if let [only] = callable.as_slice() {
+        return Some(*only);
     }
     let aimed = aim.and_then(|aim| match aim.contact {
         Some((crate::play::aim::FirstContact::Ball { number }, _)) => Some(number),
         _ => None,
     });
     aimed
-        .filter(|n| next.legal_first.contains(n))
-        .or_else(|| next.legal_first.first().copied())
+        .filter(|n| callable.contains(n))
+        .or_else(|| callable.first().copied())
 }
 
 /// The call the aim proposes: the first callable ball (the 8 when it is on, in 10-ball any
-/// ball, else a legal first ball) whose drawn path ends in a pocket.
-pub(super) fn proposed_call(next: &NextShot, aim: &AimPrediction) -> Option<Call> {
-    let callable = |n: u8| match next.call {
-        CallRule::EightPocket => n == 8,
-        CallRule::Optional => next.legal_first.contains(&n),
-        // 10-ball: any ball the aim sends into a pocket (a combination on the 10 too).
-        CallRule::BallAndPocket => true,
-        CallRule::NotUsed => false,
-    };
+/// ball, else the striker's legal balls) whose drawn path ends in a pocket.
+pub(super) fn proposed_call(turn: &Turn, aim: &AimPrediction) -> Option<Declaration> {
     aim.after
         .iter()
-        .filter(|path| path.number != 0 && callable(path.number))
+        .filter(|path| path.number != turn.cue_ball && turn.declare.callable.contains(&path.number))
         .find_map(|path| {
-            path.pocket.map(|pocket| Call::Ball {
+            path.pocket.map(|pocket| Declaration::Pocket {
                 ball: path.number,
                 pocket,
             })
@@ -57,20 +52,27 @@ mod tests {
     };
     use bevy::math::DVec2;
     use billiards_physics::Pocket;
-    use billiards_rules::{Call, CallRule, CueBall, NextShot, Seat};
+    use billiards_rules::{CueBallPlace, Declaration, Declarations, Need, Seat, Turn};
 
-    fn next(call: CallRule, legal_first: Vec<u8>) -> NextShot {
-        NextShot {
-            shooter: Seat::A,
-            cue_ball: CueBall::AsItLies,
-            legal_first,
-            call,
-            break_shot: false,
-            push_out_allowed: false,
+    /// A turn whose balls `callable` may be called (none: no call on this stroke).
+    fn turn(callable: Vec<u8>) -> Turn {
+        Turn {
+            striker: Seat::A,
+            cue_ball: 0,
+            place: CueBallPlace::AsItLies,
+            legal_first: callable.clone(),
+            ball_on: String::new(),
+            declare: Declarations {
+                pocket: if callable.is_empty() {
+                    Need::NotUsed
+                } else {
+                    Need::Optional
+                },
+                callable,
+                ..Declarations::default()
+            },
+            opening: false,
             choices: Vec::new(),
-            spot: Vec::new(),
-            rerack: false,
-            fouls_in_a_row: 0,
         }
     }
 
@@ -96,27 +98,24 @@ mod tests {
             ],
             ..Default::default()
         };
-        let solids = next(CallRule::Optional, vec![1, 2, 3, 4, 5, 6, 7]);
+        let solids = turn(vec![1, 2, 3, 4, 5, 6, 7]);
         assert_eq!(
             proposed_call(&solids, &aim),
-            Some(Call::Ball {
+            Some(Declaration::Pocket {
                 ball: 3,
                 pocket: Pocket::FootRight
             })
         );
-        let stripes = next(CallRule::Optional, vec![9, 10]);
+        let stripes = turn(vec![9, 10]);
         assert_eq!(
             proposed_call(&stripes, &aim),
-            Some(Call::Ball {
+            Some(Declaration::Pocket {
                 ball: 9,
                 pocket: Pocket::SideRight
             })
         );
-        assert_eq!(
-            proposed_call(&next(CallRule::EightPocket, vec![8]), &aim),
-            None
-        );
-        assert_eq!(proposed_call(&next(CallRule::NotUsed, vec![3]), &aim), None);
+        assert_eq!(proposed_call(&turn(vec![8]), &aim), None);
+        assert_eq!(proposed_call(&turn(vec![]), &aim), None);
     }
 
     /// Issue 48: with no pocket in the aim's paths, the dialog opens on the ball the aim
@@ -125,7 +124,7 @@ mod tests {
     #[test]
     fn the_call_dialog_opens_on_the_ball_aimed_at() {
         use crate::play::aim::FirstContact;
-        let solids = next(CallRule::Optional, vec![1, 2, 3, 4, 5, 6, 7]);
+        let solids = turn(vec![1, 2, 3, 4, 5, 6, 7]);
         let on = |number| AimPrediction {
             contact: Some((FirstContact::Ball { number }, DVec2::ZERO)),
             ..Default::default()
@@ -133,12 +132,12 @@ mod tests {
         assert_eq!(preselected_ball(&solids, None, Some(&on(6))), Some(6));
         assert_eq!(preselected_ball(&solids, None, Some(&on(12))), Some(1));
         assert_eq!(preselected_ball(&solids, None, None), Some(1));
-        let proposed = Some(Call::Ball {
+        let proposed = Some(Declaration::Pocket {
             ball: 3,
             pocket: Pocket::FootRight,
         });
         assert_eq!(preselected_ball(&solids, proposed, Some(&on(6))), Some(3));
-        let eight = next(CallRule::EightPocket, vec![8]);
+        let eight = turn(vec![8]);
         assert_eq!(preselected_ball(&eight, None, Some(&on(6))), Some(8));
     }
 }

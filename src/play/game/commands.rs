@@ -1,21 +1,16 @@
 //! The player's commands and new games (`apply_commands`, step 2 of the frame's flow): a new
-//! match of pool or snooker, free play, and each [`TurnCommand`] applied to the match in play.
+//! match of any game, free play, and each [`TurnCommand`] applied to the match in play.
 
-use bevy::ecs::system::SystemParam;
-use bevy::prelude::*;
-use billiards_rules::{Call, CallRule, Choice, Game, GameLog, Match, Seat};
-
-use super::call::{preselected_ball, proposed_call};
-use super::flow::{new_rack, prepare_table, rack_request};
 use super::live_flow::{live_command, start_live};
 use super::state::*;
 use crate::{
     play::aim::AimPrediction,
     settings::{PhysicsSettings, TableSetup},
     sim::{LayoutRequested, RackRequested, SimStatus, Solver, clock_seed, params_for, table_for},
-    table::balls::BallMotion,
     table::geometry::TableSpec,
 };
+use bevy::ecs::system::SystemParam;
+use bevy::prelude::*;
 
 /// What asks the match to change this frame: the player's commands, new games, and racks
 /// from the panel.
@@ -43,13 +38,11 @@ pub(super) struct TableAccess<'w> {
     layouts: MessageWriter<'w, LayoutRequested>,
 }
 
-/// The live simulation a choice changes (balls spotted, the cue ball put back) and the
-/// status line that takes a refused command's reason.
+/// The live simulation (the layout a choice is taken on) and the status line that takes a
+/// refused command's reason.
 #[derive(SystemParam)]
-pub(super) struct Live<'w, 's> {
-    commands: Commands<'w, 's>,
+pub(super) struct Live<'w> {
     solver: Option<Res<'w, Solver>>,
-    balls: Query<'w, 's, &'static mut BallMotion>,
     status: ResMut<'w, SimStatus>,
 }
 
@@ -73,8 +66,8 @@ pub(super) fn apply_commands(
     }
 }
 
-/// A new game from the dialog: the dialog closes, the match in play ends, and snooker, a
-/// pool match or free play starts.
+/// A new game from the dialog: the dialog closes, the match in play ends, and a game of the
+/// catalog or free play starts.
 fn start_game(
     request: &NewGameRequested,
     state: &mut MatchState,
@@ -88,7 +81,7 @@ fn start_game(
             match start_live(
                 request,
                 id,
-                &mut table.spec,
+                (&mut table.spec, &mut table.setup),
                 &table.settings,
                 &mut table.layouts,
             ) {
@@ -96,51 +89,26 @@ fn start_game(
                 Err(error) => status.note = Some(error),
             }
         }
-        GameChoice::Pool(game) => start_pool(request, game, &mut state.rules, table),
+        GameChoice::FreePlay => start_free_play(request, table),
     }
 }
 
-/// A pool game: the table set up first (the rack is set on it, and the table's meshes
-/// follow), then free play's starting rack, or a match's first rack and its log.
-fn start_pool(request: &NewGameRequested, game: Game, rules: &mut Rules, table: &mut TableAccess) {
+/// Free play: the table set up first (the rack is set on it, and the table's meshes
+/// follow), then the starting rack.
+fn start_free_play(request: &NewGameRequested, table: &mut TableAccess) {
     table.setup.set_if_neq(request.setup);
     table.spec.set_if_neq(TableSpec::of(request.setup.table));
-    if game == Game::FreePlay {
-        let physics = table_for(&table.spec, &table.settings);
-        let rack = crate::sim::STARTING_RACK;
-        table.layouts.write(LayoutRequested {
-            balls: rack.layout(&physics, &params_for(&table.spec, &table.settings).ball),
-            rack,
-            name: crate::sim::rack_slug(rack),
-        });
-        return;
-    }
-    let play = Match::new(game, request.players.clone(), request.race_to, Seat::A);
-    let log = GameLog::new(game, request.seed, request.players.clone(), Seat::A);
-    let rack = (request.seed, request.setup.rack_style);
-    table
-        .layouts
-        .write(rack_request(game, rack, &table.spec, &table.settings));
-    rules.game = Some(GameInPlay {
-        play,
-        log,
-        seed: request.seed,
-        call: Call::None,
-        call_ball: None,
-        calling: false,
-        proposed: None,
-        last: None,
-        verdict_shown: false,
-        last_foul: None,
-        last_what: None,
-        choices: Vec::new(),
-        seats: request.computer,
-        rack_style: request.setup.rack_style,
+    let physics = table_for(&table.spec, &table.settings);
+    let rack = crate::sim::STARTING_RACK;
+    table.layouts.write(LayoutRequested {
+        balls: rack.layout(&physics, &params_for(&table.spec, &table.settings).ball),
+        rack,
+        name: crate::sim::rack_slug(rack),
     });
 }
 
-/// One command: the dialog opened or closed, then the command applied to the snooker or
-/// pool match in play (free play has none).
+/// One command: the dialog opened or closed, then the command applied to the match in play
+/// (free play has none).
 fn turn_command(
     command: TurnCommand,
     state: &mut MatchState,
@@ -158,83 +126,13 @@ fn turn_command(
             .solver
             .as_ref()
             .map_or_else(Vec::new, |s| super::put::layout_at(s.simulation(), None));
-        live_command(game, command, &mut live.status, &mut table.layouts, &layout);
-        return;
-    }
-    if let Some(game) = state.rules.game.as_mut() {
-        pool_command(game, command, table, live, aim);
-    }
-}
-
-/// A player's command in a pool match: a verdict dismissed, a choice (WPA 1.6, 2.4), the call
-/// (proposed from the aim, then confirmed), the next rack.
-fn pool_command(
-    game: &mut GameInPlay,
-    command: TurnCommand,
-    table: &mut TableAccess,
-    live: &mut Live,
-    aim: Option<&AimPrediction>,
-) {
-    match command {
-        TurnCommand::OpenDialog
-        | TurnCommand::CloseDialog
-        | TurnCommand::ChooseOption(_)
-        | TurnCommand::Declare(_)
-        | TurnCommand::Concede => {}
-        TurnCommand::Continue => game.verdict_shown = false,
-        TurnCommand::Choose(choice) => choose(game, choice, table, live),
-        TurnCommand::StartCalling if game.next().call == CallRule::NotUsed => {
-            live.status.note = Some("no call on this shot".to_owned());
-        }
-        TurnCommand::Call(Call::PushOut) if !game.next().push_out_allowed => {
-            live.status.note = Some("a push out only right after the break (WPA 2.4)".to_owned());
-        }
-        TurnCommand::StartCalling => {
-            game.calling = true;
-            // The call follows the aim: the ball the aiming aid sends into a pocket, and
-            // that pocket, proposed for the player to confirm or change.
-            game.proposed = aim.and_then(|aim| proposed_call(game.next(), aim));
-            game.call_ball = preselected_ball(game.next(), game.proposed, aim).or(game.call_ball);
-        }
-        TurnCommand::CallBall(ball) => game.call_ball = Some(ball),
-        TurnCommand::Call(call) => {
-            game.call = call;
-            game.calling = false;
-        }
-        TurnCommand::NextRack => {
-            if game.play.next_rack().is_ok() {
-                game.last = None;
-                game.last_foul = None;
-                game.verdict_shown = false;
-                table
-                    .layouts
-                    .write(new_rack(game, &table.spec, &table.settings));
-            }
-        }
-    }
-}
-
-/// The player's choice after a verdict, taken by the rules; the table then made ready for
-/// the shot it leads to (a refused choice's reason goes to the status line).
-fn choose(game: &mut GameInPlay, choice: Choice, table: &mut TableAccess, live: &mut Live) {
-    match game.play.choose(choice) {
-        Ok(next) => {
-            game.choices.push(choice);
-            game.verdict_shown = false;
-            if let Some(solver) = &live.solver {
-                prepare_table(
-                    &mut live.commands,
-                    game,
-                    &next,
-                    solver,
-                    &mut live.balls,
-                    &mut live.status,
-                    &mut table.layouts,
-                    (&table.spec, &table.settings),
-                );
-            }
-        }
-        Err(error) => live.status.note = Some(error.to_string()),
+        live_command(
+            game,
+            command,
+            (&mut live.status, &mut table.layouts),
+            &layout,
+            aim,
+        );
     }
 }
 

@@ -3,8 +3,7 @@
 //! turn, the verdict, the options, the score and the end all come from the interface; the
 //! log ([`StrokeLog`]) is written beside the recording as every game's is.
 //!
-//! Snooker and three-cushion are played through it; pool still has its own state
-//! ([`super::GameInPlay`]) until it moves here.
+//! Every match is played through it: pool's games, snooker, three-cushion.
 
 use billiards_ai::Level;
 use billiards_rules::catalog::GameEntry;
@@ -41,6 +40,13 @@ pub struct LiveGame {
     pub log: StrokeLog,
     /// Balls an option puts back, set on the table after the command.
     pub pending: Vec<(u8, billiards_physics::Vec2)>,
+    /// A ball and pocket are being called (the call window is up, a click on a pocket
+    /// calls it).
+    pub calling: bool,
+    /// The ball being called ([`billiards_rules::Declarations::callable`]).
+    pub call_ball: Option<u8>,
+    /// The call the aim proposed when calling began, for the player to confirm.
+    pub proposed: Option<Declaration>,
 }
 
 impl LiveGame {
@@ -83,6 +89,8 @@ impl LiveGame {
             Turn::GameOver
         } else if self.verdict_shown || !turn.choices.is_empty() {
             Turn::Verdict
+        } else if self.calling {
+            Turn::Calling
         } else if matches!(turn.place, CueBallPlace::InHand { .. }) {
             Turn::BallInHand
         } else {
@@ -101,20 +109,56 @@ impl LiveGame {
         }
     }
 
-    /// The end of the game in words: "Ann wins the game (40 points) and the match".
+    /// What one game of the match is called: a rack (pool), a frame (snooker), a game.
+    pub fn game_noun(&self) -> &'static str {
+        match self.entry.length_noun {
+            "racks" => "rack",
+            "frames" => "frame",
+            _ => "game",
+        }
+    }
+
+    /// The end of the game in words: "Ann wins the rack and the match: the 9 was pocketed
+    /// legally", "Ann wins the game and the match: 40 points".
     pub fn end_text(&self) -> Option<String> {
         let end = self.rules.end()?;
         Some(format!(
-            "{} wins the game ({}){}",
+            "{} wins the {}{}: {}",
             self.name(end.winner),
+            self.game_noun(),
+            if end.match_over { " and the match" } else { "" },
             end.reason,
-            if end.match_over { " and the match" } else { "" }
         ))
     }
 
+    /// Who plays next and how: "Bob (computer) plays the cue ball next, with ball in hand
+    /// anywhere on the table".
+    pub fn next_text(&self) -> String {
+        let turn = self.rules.turn();
+        let hand = match turn.place {
+            CueBallPlace::InHand {
+                region: HandRegion::Anywhere,
+            } => ", with ball in hand anywhere on the table",
+            CueBallPlace::InHand {
+                region: HandRegion::BehindHeadString,
+            } => ", with ball in hand behind the head string",
+            CueBallPlace::InHand {
+                region: HandRegion::D,
+            } => ", with ball in hand in the D",
+            CueBallPlace::AsItLies | CueBallPlace::Placed => "",
+        };
+        format!(
+            "{} plays {} next{hand}",
+            self.seat_name(turn.striker),
+            self.rules.ball_name(turn.cue_ball)
+        )
+    }
+
     /// The HUD's lines: the score (computer seats marked), what to do now, the ball on, the
-    /// game's own status lines, the declaration, the last stroke and the last foul.
-    pub fn hud_lines(&self, phase: Turn) -> Vec<String> {
+    /// game's own status lines, the declaration, the last stroke and the last foul. `off`:
+    /// the balls the stroke in play has pocketed so far, counted off the balls left at once
+    /// ([`GameRules::status_while`]).
+    pub fn hud_lines(&self, phase: Turn, off: &[u8]) -> Vec<String> {
         let turn = self.rules.turn();
         let striker = self.name(turn.striker);
         let mut score = self.rules.score_line();
@@ -123,7 +167,14 @@ impl LiveGame {
                 score = score.replacen(self.name(seat), &self.seat_name(seat), 1);
             }
         }
-        let cue = self.rules.ball_name(turn.cue_ball);
+        // The opening stroke on a table with pockets is a break (pool's, snooker's
+        // break-off); carom's opening stroke is a stroke like the others.
+        let pockets = self.rules.table().pockets != billiards_physics::PocketShape::Pocketless;
+        let to = if turn.opening && pockets {
+            "to break".to_owned()
+        } else {
+            format!("to play {}", self.rules.ball_name(turn.cue_ball))
+        };
         let doing = match phase {
             Turn::NewGame => "new game: choose the game and the players".to_owned(),
             Turn::ShotInPlay => format!("{striker} plays: balls moving"),
@@ -135,10 +186,10 @@ impl LiveGame {
             }
             Turn::Verdict => format!("{striker} to play next: continue"),
             Turn::BallInHand | Turn::Aiming if let Some(level) = self.computer(turn.striker) => {
-                format!("{striker} (computer, {level}) to play {cue}")
+                format!("{striker} (computer, {level}) {to}")
             }
             Turn::BallInHand => format!(
-                "{striker} to play {cue}: ball in hand {}, drag it, aim and shoot",
+                "{striker} {to}: ball in hand {}, drag it, aim and shoot",
                 match turn.place {
                     CueBallPlace::InHand {
                         region: HandRegion::BehindHeadString,
@@ -149,10 +200,14 @@ impl LiveGame {
                     _ => "anywhere",
                 }
             ),
-            Turn::Aiming | Turn::Calling => format!("{striker} to play {cue}: aim and shoot"),
+            Turn::Calling if turn.declare.callable == [8] => {
+                format!("{striker} calls the 8: click a pocket")
+            }
+            Turn::Calling => format!("{striker} calls a ball and a pocket: click the pocket"),
+            Turn::Aiming => format!("{striker} {to}: aim and shoot"),
         };
         let mut lines = vec![score, doing];
-        let status = self.rules.status();
+        let status = self.rules.status_while(off);
         // The ball on, unless the game's own lines say it.
         let said = status.iter().any(|l| l.starts_with("ball on"));
         if self.rules.end().is_none() && !turn.ball_on.is_empty() && !said {
@@ -160,7 +215,12 @@ impl LiveGame {
         }
         lines.extend(status);
         if let Some(text) = self.declared.text(&|b| self.rules.ball_name(b)) {
-            lines.push(format!("declared: {text}"));
+            // Pool's words for its declarations (WPA 1.6, 2.4): a call.
+            let word = match self.declared {
+                Declaration::Nominate { .. } => "declared",
+                _ => "call",
+            };
+            lines.push(format!("{word}: {text}"));
         }
         if let Some(last) = &self.last {
             lines.push(format!("last stroke: {}", self.verdict_text(last)));

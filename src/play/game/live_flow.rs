@@ -5,32 +5,42 @@
 use bevy::prelude::*;
 use billiards_physics::{EventKind, Rack, Simulation, Vec2};
 use billiards_rules::catalog::{self, MatchSettings};
-use billiards_rules::{CueBallPlace, GameRules, Setup, StrokeEntry, StrokeLog, StrokeRecord};
+use billiards_rules::{
+    CueBallPlace, Declaration, GameRules, Need, Setup, StrokeEntry, StrokeLog, StrokeRecord,
+};
 
+use super::call::{preselected_ball, proposed_call};
 use super::live::LiveGame;
 use super::put::{layout_at, set_balls};
 use super::state::{NewGameRequested, Rules, TurnCommand};
 use crate::{
+    play::aim::AimPrediction,
     recording::{RecordingsFolder, save_rules_log},
-    settings::PhysicsSettings,
+    settings::{PhysicsSettings, TableSetup},
     sim::{LayoutRequested, ShotFinished, SimStatus, Solver, params_for, table_for},
     table::balls::{BallMotion, Pocketed},
     table::geometry::TableSpec,
 };
 
-/// Starts a match of catalog game `id` on its own table: the table set first (the layout is
-/// set on it), then the game started on the solver's table and balls, and its layout asked
-/// of the simulation. A refusal (an unknown id, a bad length) goes to the status line.
+/// Starts a match of catalog game `id` on its table: the player's pool table and rack style
+/// for pool's games, the game's own table otherwise, set first (the layout is set on it);
+/// then the game started on the solver's table and balls, and its layout asked of the
+/// simulation. A refusal (an unknown id, a bad length) goes to the status line.
 pub(super) fn start_live(
     request: &NewGameRequested,
     id: &str,
-    spec: &mut ResMut<TableSpec>,
+    (spec, setup): (&mut ResMut<TableSpec>, &mut ResMut<TableSetup>),
     settings: &PhysicsSettings,
     layouts: &mut MessageWriter<LayoutRequested>,
 ) -> Result<LiveGame, String> {
     let entry = catalog::find(id).map_err(|e| e.0)?;
-    let (own_table, _) = (entry.equipment)();
-    spec.set_if_neq(TableSpec::fitting(&own_table));
+    if entry.pool_table {
+        setup.set_if_neq(request.setup);
+        spec.set_if_neq(TableSpec::of(request.setup.table));
+    } else {
+        let (own_table, _) = (entry.equipment)();
+        spec.set_if_neq(TableSpec::fitting(&own_table));
+    }
     let equipment = (table_for(spec, settings), params_for(spec, settings).ball);
     let match_settings = MatchSettings {
         players: request.players.clone(),
@@ -57,6 +67,9 @@ pub(super) fn start_live(
         choices: Vec::new(),
         log,
         pending: Vec::new(),
+        calling: false,
+        call_ball: None,
+        proposed: None,
     })
 }
 
@@ -67,22 +80,28 @@ fn layout_request(
     balls: Vec<billiards_physics::BallSetup>,
 ) -> LayoutRequested {
     LayoutRequested {
+        // The standard rack nearest by its count (9-ball's, 10-ball's, a carom layout's:
+        // the 9-ball diamond; 8-ball's, snooker's: the triangle); the panel's rack buttons
+        // start free play on it.
+        rack: if balls.len() <= 11 {
+            Rack::NineBall
+        } else {
+            Rack::FifteenBall
+        },
         balls,
-        // No standard rack is near a game's own layout; the panel's rack buttons start free
-        // play on the 15-ball triangle.
-        rack: Rack::FifteenBall,
         name: game.name(),
     }
 }
 
 /// A player's command in a match behind the interface. Balls an option puts back wait in
 /// [`LiveGame::pending`] for [`put_pending`]; a new layout restarts the recording and its log.
+/// `aim`: the aiming aid's prediction, whose pocketed ball a call proposes.
 pub(super) fn live_command(
     game: &mut LiveGame,
     command: TurnCommand,
-    status: &mut SimStatus,
-    layouts: &mut MessageWriter<LayoutRequested>,
+    (status, layouts): (&mut SimStatus, &mut MessageWriter<LayoutRequested>),
     layout: &[(u8, Vec2)],
+    aim: Option<&AimPrediction>,
 ) {
     let refused = |status: &mut SimStatus, e: billiards_rules::RulesError| {
         status.note = Some(e.0);
@@ -117,7 +136,39 @@ pub(super) fn live_command(
             }
             Err(e) => refused(status, e),
         },
-        TurnCommand::Declare(declaration) => game.declared = declaration,
+        TurnCommand::StartCalling => {
+            let turn = game.rules.turn();
+            if turn.declare.pocket == Need::NotUsed || turn.declare.callable.is_empty() {
+                status.note = Some("no call on this stroke".to_owned());
+                return;
+            }
+            game.calling = true;
+            // The call follows the aim: the ball the aiming aid sends into a pocket, and
+            // that pocket, proposed for the player to confirm or change.
+            game.proposed = aim.and_then(|aim| proposed_call(&turn, aim));
+            game.call_ball = preselected_ball(&turn, game.proposed, aim).or(game.call_ball);
+        }
+        TurnCommand::CallBall(ball) => game.call_ball = Some(ball),
+        TurnCommand::Declare(declaration) => {
+            let declare = game.rules.turn().declare;
+            let refused = match declaration {
+                Declaration::PushOut if !declare.push_out => {
+                    Some("a push out only right after the break (WPA 2.4)")
+                }
+                Declaration::Safety if !declare.safety => Some("no safety to call here"),
+                Declaration::Pocket { ball, .. } if !declare.callable.contains(&ball) => {
+                    Some("that ball may not be called now")
+                }
+                _ => None,
+            };
+            if let Some(why) = refused {
+                status.note = Some(why.to_owned());
+                return;
+            }
+            game.declared = declaration;
+            game.calling = false;
+            game.call_ball = None;
+        }
         TurnCommand::Concede => match game.rules.concede() {
             Ok(_) => game.verdict_shown = false,
             Err(e) => refused(status, e),
@@ -183,6 +234,8 @@ pub(super) fn judge_live(
     let before = layout_at(sim, Some(events[strike].time));
     let after = layout_at(sim, None);
     let declared = std::mem::take(&mut game.declared);
+    game.calling = false;
+    game.call_ball = None;
     let judged = game.rules.judge(&StrokeRecord {
         events: &events[strike..],
         numbers: sim.numbers(),

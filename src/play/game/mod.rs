@@ -1,19 +1,23 @@
-//! The rules in the game: a match of 8-ball or 9-ball (`billiards-rules`), or free play, and
-//! the turn's phase as a Bevy sub-state of [`GameMode::Play`](crate::mode::GameMode::Play).
+//! The rules in the game: a match of any game of the catalog behind the one interface
+//! ([`LiveGame`] holding a [`billiards_rules::GameRules`]), or free play, and the turn's
+//! phase as a Bevy sub-state of [`GameMode::Play`](crate::mode::GameMode::Play).
 //!
-//! One source of truth: the [`Rules`] resource (the match, the call, whether a verdict or the
-//! call dialog is up). Every frame, in [`SimSystems::Flow`]:
-//! 1. `judge_shot`: on [`ShotFinished`](crate::sim::ShotFinished), the shot's events (from its strike on) are
-//!    summarised ([`billiards_rules::summarise`]) and judged ([`Match::play`](billiards_rules::Match::play)); the verdict is
-//!    logged ([`GameLog`](billiards_rules::GameLog), saved beside the autosaved recording) and the table prepared for
-//!    the next shot (balls spotted, the cue ball back on the table, a new rack);
+//! One source of truth: the [`Rules`] resource (the match, the declaration, whether a
+//! verdict or the call window is up). Every frame, in [`SimSystems::Flow`]:
+//! 1. `judge_live`: on [`ShotFinished`](crate::sim::ShotFinished), the stroke's events (from
+//!    its strike on) and the layouts before and after are judged
+//!    ([`GameRules::judge`](billiards_rules::GameRules::judge)); the judgement is logged
+//!    ([`StrokeLog`](billiards_rules::StrokeLog), saved beside the autosaved recording) and
+//!    the balls it puts back wait for `put_pending`;
 //! 2. `apply_commands`: the player's [`TurnCommand`]s and [`NewGameRequested`];
-//! 3. `follow_rules`: derives the [`Turn`] from the resource, the cue ball in hand
-//!    ([`SimStatus::ball_in_hand`](crate::sim::SimStatus::ball_in_hand)) from the next shot, and tells the simulation's
-//!    [`Referee`](crate::sim::Referee) whether a shot may be taken now.
+//! 3. `put_pending`: the balls a judgement or an option put back set on the table;
+//! 4. `follow_rules`: derives the [`Turn`] from the resource, the cue ball in hand
+//!    ([`SimStatus::ball_in_hand`](crate::sim::SimStatus::ball_in_hand)) from the game's
+//!    turn, and tells the simulation's [`Referee`](crate::sim::Referee) whether a shot may be
+//!    taken now.
 //!
 //! Free play has no match: the turn is [`Turn::Aiming`] or [`Turn::ShotInPlay`], and a
-//! scratch is respotted by the simulation as before.
+//! scratch is respotted by the simulation.
 //!
 //! [`table_plugin`] adds what needs a window: the legal area of the cue ball in hand, the
 //! pockets while calling and the called pocket (gizmos), and the click on a pocket.
@@ -32,7 +36,7 @@ pub use state::*;
 pub use table_input::pocket_near;
 
 use commands::{apply_commands, start_game_at_launch};
-use flow::{follow_rules, judge_shot};
+use flow::follow_rules;
 use table_input::{click_pocket, confirm_key, draw_rules, lock_aim};
 
 use bevy::prelude::*;
@@ -56,7 +60,6 @@ pub fn plugin(app: &mut App) {
         .add_systems(
             Update,
             (
-                judge_shot,
                 live_flow::judge_live,
                 apply_commands,
                 live_flow::put_pending,

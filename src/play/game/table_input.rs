@@ -2,7 +2,7 @@
 
 use bevy::{math::DVec2, prelude::*};
 use billiards_physics::Pocket;
-use billiards_rules::{Call, CallRule};
+use billiards_rules::Declaration;
 
 use super::state::*;
 use crate::{
@@ -12,14 +12,15 @@ use crate::{
     table::geometry::{TableSpec, d_outline, to_world},
 };
 
-/// While calling: a click near a pocket calls it (with the ball chosen, the 8 when it is on).
+/// While calling: a click near a pocket calls it, with the ball chosen (else the first
+/// callable: the 8 when it is on).
 pub(super) fn click_pocket(
     input: PointerInput,
     spec: Res<TableSpec>,
     rules: Res<Rules>,
     mut turn_commands: MessageWriter<TurnCommand>,
 ) {
-    let Some(game) = &rules.game else { return };
+    let Some(game) = &rules.live else { return };
     if !input.clicked() {
         return;
     }
@@ -27,14 +28,11 @@ pub(super) fn click_pocket(
         return;
     };
     if let Some(pocket) = pocket_near(&spec, point) {
-        let ball = match game.next().call {
-            CallRule::EightPocket => 8,
-            _ => game
-                .call_ball
-                .or(game.next().legal_first.first().copied())
-                .unwrap_or(8),
+        let callable = game.rules.turn().declare.callable;
+        let Some(ball) = game.call_ball.or(callable.first().copied()) else {
+            return;
         };
-        turn_commands.write(TurnCommand::Call(Call::Ball { ball, pocket }));
+        turn_commands.write(TurnCommand::Declare(Declaration::Pocket { ball, pocket }));
     }
 }
 
@@ -97,9 +95,10 @@ pub(super) fn draw_rules(
         gizmos.linestrip(d, Color::srgb(0.3, 0.9, 1.0));
         gizmos.line(ends[0], ends[1], Color::srgb(0.3, 0.9, 1.0));
     }
-    let Some(game) = &rules.game else { return };
+    // Pool's areas (WPA 1.5, 2.3); the D is drawn above.
     if turn == Turn::BallInHand
         && let Some(rule) = status.ball_in_hand
+        && rule != HandRule::InD
     {
         let h = spec.half_extents() - DVec2::splat(spec.ball_radius);
         let right = match rule {
@@ -126,7 +125,8 @@ pub(super) fn draw_rules(
                 .resolution(32);
         }
     }
-    if let Call::Ball { pocket, .. } = game.call
+    if let Some(game) = &rules.live
+        && let Declaration::Pocket { pocket, .. } = game.declared
         && let Some(hole) = spec.pocket(pocket)
     {
         for k in [1.0, 1.15] {

@@ -94,6 +94,10 @@ pub enum Need {
 pub struct Declarations {
     /// A ball and a pocket ([`Declaration::Pocket`]).
     pub pocket: Need,
+    /// The balls that may be called with a pocket: the 8 when it is on (WPA 3.8), the
+    /// striker's group or any legal ball (1.6), any ball on the table in 10-ball (9.5, a
+    /// combination too); empty when no pocket is called.
+    pub callable: Vec<u8>,
     /// A safety may be called ([`Declaration::Safety`]).
     pub safety: bool,
     /// A push out may be declared ([`Declaration::PushOut`]).
@@ -295,6 +299,14 @@ pub trait GameRules: std::fmt::Debug + Send + Sync {
     /// The state in a few lines for the HUD: the ball on, groups, balls left, fouls in a
     /// row, the break, innings.
     fn status(&self) -> Vec<String>;
+    /// The status lines while a stroke is in play, with the balls `off` (those it has
+    /// pocketed or driven off so far) already counted off "balls left" and the like, which
+    /// [`GameRules::status`] changes only with the judgement. Games that count no balls
+    /// give [`GameRules::status`].
+    fn status_while(&self, off: &[u8]) -> Vec<String> {
+        let _ = off;
+        self.status()
+    }
     /// The game's end, once it is over.
     fn end(&self) -> Option<GameEnd>;
     /// The match's winner, once it is over.
