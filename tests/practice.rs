@@ -36,7 +36,7 @@ fn start_drill(app: &mut App, file: &str) -> (billiards_rules::Drill, Vec<(u8, D
         app.update();
     }
     assert_eq!(practice_state(app), Practice::Drill, "{file}");
-    let drill = app.world().resource::<DrillSession>().drill.clone();
+    let drill = app.world().resource::<DrillSession>().drill().clone();
     let start: Vec<(u8, DVec2)> = drill
         .position
         .balls
@@ -82,9 +82,17 @@ fn a_drill_attempt_is_judged_as_the_pure_solver_judges_it() {
         at_rest(app) && app.world().resource::<DrillSession>().judged
     });
     let session = app.world().resource::<DrillSession>().clone();
-    let judged = session.last.clone().unwrap();
-    assert_eq!(session.score.tries, 1);
+    let judged = session.game.last.clone().unwrap();
+    assert_eq!(session.score().tries, 1);
     assert_eq!(judged.reasons.len(), drill.goals.len(), "{judged:?}");
+    // Judged through the one interface and logged as any game's stroke: the try's end.
+    assert_eq!(session.log.strokes.len(), 1);
+    let end = session.log.strokes[0]
+        .judgement
+        .end
+        .clone()
+        .expect("the try ended");
+    assert!(end.reason.starts_with("try 1 "), "{}", end.reason);
 
     // The same shot on the pure solver, from the drill's own start.
     let mut sim = drill.simulation(params).unwrap();
@@ -109,7 +117,11 @@ fn a_drill_attempt_is_judged_as_the_pure_solver_judges_it() {
     }
     let session = app.world().resource::<DrillSession>();
     assert!(!session.judged);
-    assert_eq!(session.score.tries, 1);
+    assert_eq!(session.score().tries, 1);
+    assert!(
+        session.log.strokes.is_empty(),
+        "a new try, a new recording and log"
+    );
     assert_eq!(layout(&app), start, "Next try: the drill's position again");
 
     app.world_mut().write_message(DrillCommand::Leave);
@@ -352,8 +364,8 @@ fn each_standard_drill_loads_plays_and_scores() {
             app.update();
         }
         let session = app.world().resource::<DrillSession>();
-        let last = session.last.clone().unwrap();
-        assert_eq!(session.score.tries, 1, "{file}");
+        let last = session.game.last.clone().unwrap();
+        assert_eq!(session.score().tries, 1, "{file}");
         assert!((0.0..=100.0).contains(&last.score), "{file}: {last:?}");
         assert_eq!(last.reasons.len(), drill.goals.len(), "{file}: {last:?}");
         app.world_mut().write_message(DrillCommand::Leave);

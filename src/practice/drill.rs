@@ -1,12 +1,16 @@
-//! Drill sessions in the game: the drill's position set up for each try, every attempt
-//! judged from the solver's own events by [`Drill::judge`], the tries counted, and the best
+//! Drill sessions in the game: the drill's position set up for each try, every stroke judged
+//! through the one game interface by the session's [`DrillGame`] (the position's rules and
+//! the drill's goals, [`billiards_rules::Drill::judge`]) from the solver's own events, the
+//! tries counted, each try's log ([`StrokeLog`]) saved beside its recording, and the best
 //! session of each drill kept in the settings file. The list of drills is in
 //! [`super::drill_list`] (its items re-exported here).
 use std::collections::BTreeMap;
 
 use bevy::prelude::*;
 use billiards_physics::EventKind;
-use billiards_rules::{Attempt, Drill, DrillScore, DrillShot};
+use billiards_rules::{
+    Drill, DrillScore, GameRules, StrokeEntry, StrokeLog, StrokeRecord, drill_game::DrillGame,
+};
 use serde::{Deserialize, Serialize};
 
 pub use super::drill_list::{DrillList, USER_PREFIX, drills_folder, file_name, save_drill};
@@ -15,7 +19,8 @@ use super::{
     state::Practice,
 };
 use crate::{
-    play::game::DialogOpen,
+    play::game::{DialogOpen, put::layout_at},
+    recording::{RecordingsFolder, save_rules_log},
     sim::{ShotFinished, SimStatus, Solver},
 };
 
@@ -96,19 +101,16 @@ pub enum DrillCommand {
     Leave,
 }
 
-/// A drill in session.
+/// A drill in session: a one-player game behind the one interface ([`DrillGame`]).
 #[derive(Resource, Debug, Clone, PartialEq)]
 pub struct DrillSession {
     /// The drill's file name (its key in [`DrillBests`]).
     pub file: String,
-    /// The drill.
-    pub drill: Drill,
-    /// This session's tally.
-    pub score: DrillScore,
-    /// The shots of the attempt in progress.
-    pub shots: Vec<DrillShot>,
-    /// The last attempt's judgement.
-    pub last: Option<Attempt>,
+    /// The session: the drill, the tally, the shots of the try in play, the last try's
+    /// judgement.
+    pub game: DrillGame,
+    /// The log of the try in play, saved beside its recording.
+    pub log: StrokeLog,
     /// The last attempt is judged: the next try waits for the player.
     pub judged: bool,
     /// The session ended with a new best.
@@ -116,15 +118,40 @@ pub struct DrillSession {
 }
 
 impl DrillSession {
+    /// A new session of `drill` (from file `file`), or why it cannot be played.
+    pub fn new(file: &str, drill: Drill) -> Result<Self, String> {
+        let ball = drill.position.params.unwrap_or_default().ball;
+        let game = DrillGame::new(drill, "Player".to_owned(), ball).map_err(|e| e.0)?;
+        let log = StrokeLog::new(&game).map_err(|e| e.0)?;
+        Ok(Self {
+            file: file.to_owned(),
+            game,
+            log,
+            judged: false,
+            new_best: false,
+        })
+    }
+
+    /// The drill.
+    pub fn drill(&self) -> &Drill {
+        &self.game.drill
+    }
+
+    /// This session's tally.
+    pub fn score(&self) -> DrillScore {
+        self.game.score
+    }
+
     /// Every try of the session taken.
     pub fn over(&self) -> bool {
-        self.score.tries >= self.drill.tries
+        self.game.score.tries >= self.game.drill.tries
     }
 
     /// "try 3 of 10".
     pub fn try_text(&self) -> String {
-        let k = (self.score.tries + u32::from(!self.judged)).min(self.drill.tries);
-        format!("try {k} of {}", self.drill.tries)
+        let tries = self.game.drill.tries;
+        let k = (self.game.score.tries + u32::from(!self.judged)).min(tries);
+        format!("try {k} of {tries}")
     }
 }
 
@@ -145,6 +172,13 @@ pub(super) fn start_drill(
         status.note = Some("that drill cannot be played (its file was refused)".to_owned());
         return;
     };
+    let session = match DrillSession::new(file, drill.clone()) {
+        Ok(session) => session,
+        Err(why) => {
+            status.note = Some(format!("that drill cannot be played: {why}"));
+            return;
+        }
+    };
     dialog.0 = false;
     positions.write(PositionRequested {
         position: drill.position.clone(),
@@ -152,26 +186,19 @@ pub(super) fn start_drill(
         own_physics: true,
     });
     status.note = Some(format!("drill: {}", drill.name));
-    commands.insert_resource(DrillSession {
-        file: file.clone(),
-        drill: drill.clone(),
-        score: DrillScore::default(),
-        shots: Vec::new(),
-        last: None,
-        judged: false,
-        new_best: false,
-    });
+    commands.insert_resource(session);
     next.set(Practice::Drill);
 }
 
-/// After each shot of an attempt: the shot taken from the solver's events since its strike;
-/// when the attempt is over (one shot, or the end of the visit), judged and counted, and at
-/// the session's last try, the best kept.
+/// After each shot of an attempt: judged through the interface ([`GameRules::judge`]) from
+/// the solver's events since its strike and the layouts before and after, and logged; when
+/// the attempt is over (one shot, or the end of the visit), counted, and at the session's
+/// last try, the best kept.
 pub(super) fn judge_attempt(
     mut finished: MessageReader<ShotFinished>,
     session: Option<ResMut<DrillSession>>,
     solver: Option<Res<Solver>>,
-    mut bests: ResMut<DrillBests>,
+    (mut bests, folder): (ResMut<DrillBests>, Res<RecordingsFolder>),
     mut status: ResMut<SimStatus>,
 ) {
     if finished.read().count() == 0 {
@@ -192,26 +219,53 @@ pub(super) fn judge_attempt(
     else {
         return;
     };
-    let shot = DrillShot::of(sim, first);
-    session.shots.push(shot);
-    if session.drill.continues(&session.shots) {
+    let before = layout_at(sim, Some(events[first].time));
+    let after = layout_at(sim, None);
+    let declared = billiards_rules::Declaration::None;
+    let judged = session.game.judge(&StrokeRecord {
+        events: &events[first..],
+        numbers: sim.numbers(),
+        before: &before,
+        after: &after,
+        declared,
+    });
+    let judgement = match judged {
+        Ok(judgement) => judgement,
+        Err(error) => {
+            status.note = Some(format!("the drill refused the shot: {error}"));
+            return;
+        }
+    };
+    let session = &mut *session;
+    session.log.strokes.push(StrokeEntry {
+        choices: Vec::new(),
+        declared,
+        judgement: judgement.clone(),
+    });
+    save_rules_log(
+        &folder,
+        &solver,
+        StrokeLog::path_beside,
+        &session.log,
+        &mut status,
+    );
+    if judgement.continues {
         status.note = Some(format!(
             "shot {} of the attempt: go on",
-            session.shots.len()
+            session.game.shots.len()
         ));
         return;
     }
-    let attempt = session.drill.judge(&session.shots);
-    session.score.add(&attempt);
-    status.note = Some(format!(
-        "{}: score {:.0}",
-        if attempt.success { "made it" } else { "missed" },
-        attempt.score
-    ));
-    session.last = Some(attempt);
+    if let Some(attempt) = &session.game.last {
+        status.note = Some(format!(
+            "{}: score {:.0}",
+            if attempt.success { "made it" } else { "missed" },
+            attempt.score
+        ));
+    }
     session.judged = true;
     if session.over() {
-        let (file, score) = (session.file.clone(), session.score);
+        let (file, score) = (session.file.clone(), session.game.score);
         session.new_best = bests.offer(&file, score);
     }
 }
@@ -267,21 +321,38 @@ pub(super) fn drill_commands(
             status.note = Some("drill left: free play".to_owned());
             return;
         }
-        DrillCommand::Restart => {
-            session.score = DrillScore::default();
-            session.new_best = false;
-            session.last = None;
-        }
+        DrillCommand::Restart => match DrillSession::new(&session.file, session.drill().clone()) {
+            Ok(fresh) => *session = fresh,
+            Err(why) => {
+                status.note = Some(format!("the drill cannot restart: {why}"));
+                return;
+            }
+        },
         DrillCommand::NextTry if session.over() => {
             status.note = Some("the session is over: Restart for another".to_owned());
             return;
         }
-        DrillCommand::NextTry => {}
+        DrillCommand::NextTry if !session.judged => {
+            // The try in play given up: its shots are dropped, the try not counted.
+            let fresh = session.drill().game_state();
+            session.game.shots.clear();
+            session.game.state = fresh;
+        }
+        DrillCommand::NextTry => {
+            if let Err(error) = session.game.next_game() {
+                status.note = Some(error.0);
+                return;
+            }
+        }
     }
-    session.shots.clear();
     session.judged = false;
+    // The position again: a new recording, so a new log.
+    match StrokeLog::new(&session.game) {
+        Ok(log) => session.log = log,
+        Err(e) => status.note = Some(format!("the drill's log restarts empty: {e}")),
+    }
     positions.write(PositionRequested {
-        position: session.drill.position.clone(),
+        position: session.drill().position.clone(),
         origin: Origin::Drill,
         own_physics: true,
     });
@@ -360,7 +431,7 @@ pub(super) fn draw_goals(
                 .map(|(b, _)| crate::sim::to_dvec2(b.position))
         })
     };
-    for goal in &session.drill.goals {
+    for goal in &session.drill().goals {
         let ball = match *goal {
             Goal::Pocket { ball, pocket, .. } => {
                 if let Some(hole) = pocket.and_then(|p| spec.pocket(p)) {

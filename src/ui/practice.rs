@@ -346,7 +346,7 @@ pub fn drill_window(ctx: &egui::Context, state: &mut PracticeParam, hud_bottom: 
     let Some(session) = state.session.as_deref() else {
         return;
     };
-    let drill = &session.drill;
+    let drill = session.drill();
     let mut command = None;
     egui::Window::new(format!("Drill: {}", drill.name))
         .id(egui::Id::new("drill window"))
@@ -362,7 +362,7 @@ pub fn drill_window(ctx: &egui::Context, state: &mut PracticeParam, hud_bottom: 
             }
             ui.separator();
             ui.label(session.try_text());
-            if let Some(last) = &session.last {
+            if let Some(last) = &session.game.last {
                 let (verdict, colour) = if last.success {
                     ("made it", SUCCESS)
                 } else {
@@ -372,13 +372,13 @@ pub fn drill_window(ctx: &egui::Context, state: &mut PracticeParam, hud_bottom: 
                 for reason in &last.reasons {
                     ui.label(reason);
                 }
-            } else if !session.shots.is_empty() {
+            } else if !session.game.shots.is_empty() {
                 ui.label(format!(
                     "shot {} of the attempt: go on",
-                    session.shots.len()
+                    session.game.shots.len()
                 ));
             }
-            let s = session.score;
+            let s = session.score();
             ui.label(format!(
                 "this session: {} of {} made, best score {:.0}",
                 s.successes, s.tries, s.best

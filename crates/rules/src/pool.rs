@@ -112,6 +112,8 @@ pub fn ball_on_text(rack: &GameState, next: &NextShot) -> String {
     match (rack.game, next.legal_first.as_slice()) {
         (_, []) => "none".to_owned(),
         (_, [one]) => format!("the {one}"),
+        // WPA 3.3: the break need not hit any particular ball.
+        (Game::EightBall, _) if next.break_shot => "any ball (the break)".to_owned(),
         (Game::EightBall, _) if rack.group(next.shooter).is_none() => {
             // The next line says "open table" (WPA 3.5); not twice.
             "any ball but the 8".to_owned()
