@@ -76,6 +76,34 @@ impl Plugin for GamePlugin {
         ));
         #[cfg(feature = "sound")]
         app.add_plugins(sound::plugin);
+        self.insert_options(app);
+        match &self.options.screenshot {
+            Some(path) => {
+                app.add_plugins(view::screenshot::ScreenshotPlugin {
+                    path: path.clone(),
+                    settle: self.options.screenshot_settle,
+                });
+            }
+            // Redraw only on input or when something asks for it (moving balls, the camera
+            // easing): an idle table costs no CPU.
+            None => {
+                app.add_systems(Update, view::pipelines::redraw_until_ready);
+                // No periodic wake-up either (`desktop_app` updates every 5 s at idle): a frame
+                // is drawn only for input, a window event or a `RequestRedraw`.
+                app.insert_resource(WinitSettings {
+                    focused_mode: UpdateMode::reactive(Duration::MAX),
+                    unfocused_mode: UpdateMode::reactive_low_power(Duration::MAX),
+                });
+            }
+        }
+    }
+}
+
+impl GamePlugin {
+    /// The command line's options as resources the plugins read at startup (the game, the
+    /// script, a position or drill, the stress table, the recordings folder, the config file,
+    /// the layout check, the view).
+    fn insert_options(&self, app: &mut App) {
         if let Some(file) = &self.options.replay {
             app.insert_resource(replay::OpenAtStart(file.clone()));
         }
@@ -121,25 +149,6 @@ impl Plugin for GamePlugin {
         }
         if self.options.top_view {
             app.insert_resource(view::camera::OrbitCamera::top_view());
-        }
-        match &self.options.screenshot {
-            Some(path) => {
-                app.add_plugins(view::screenshot::ScreenshotPlugin {
-                    path: path.clone(),
-                    settle: self.options.screenshot_settle,
-                });
-            }
-            // Redraw only on input or when something asks for it (moving balls, the camera
-            // easing): an idle table costs no CPU.
-            None => {
-                app.add_systems(Update, view::pipelines::redraw_until_ready);
-                // No periodic wake-up either (`desktop_app` updates every 5 s at idle): a frame
-                // is drawn only for input, a window event or a `RequestRedraw`.
-                app.insert_resource(WinitSettings {
-                    focused_mode: UpdateMode::reactive(Duration::MAX),
-                    unfocused_mode: UpdateMode::reactive_low_power(Duration::MAX),
-                });
-            }
         }
     }
 }

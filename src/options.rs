@@ -151,14 +151,7 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                 }
                 "--settle" => {
                     let value = args.next().ok_or(ArgsError::MissingValue("--settle"))?;
-                    options.screenshot_settle = value
-                        .parse::<f64>()
-                        .ok()
-                        .and_then(|s| Duration::try_from_secs_f64(s).ok())
-                        .ok_or(ArgsError::InvalidValue {
-                            flag: "--settle",
-                            value,
-                        })?;
+                    options.screenshot_settle = seconds("--settle", value)?;
                 }
                 "--top-view" => options.top_view = true,
                 "--open-sections" => options.open_sections = true,
@@ -185,16 +178,7 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                     let value = args
                         .next()
                         .ok_or(ArgsError::MissingValue("--count-idle-frames"))?;
-                    options.count_idle_frames = Some(
-                        value
-                            .parse::<f64>()
-                            .ok()
-                            .and_then(|s| Duration::try_from_secs_f64(s).ok())
-                            .ok_or(ArgsError::InvalidValue {
-                                flag: "--count-idle-frames",
-                                value,
-                            })?,
-                    );
+                    options.count_idle_frames = Some(seconds("--count-idle-frames", value)?);
                 }
                 "--recordings" => {
                     let dir = args.next().ok_or(ArgsError::MissingValue("--recordings"))?;
@@ -204,18 +188,7 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                 "--no-config" => options.no_config = true,
                 "--game" => {
                     let value = args.next().ok_or(ArgsError::MissingValue("--game"))?;
-                    use crate::play::game::GameChoice;
-                    // Every game of the catalog by its id (`nine-ball`, `three-cushion`).
-                    let Ok(entry) = billiards_rules::catalog::find(&value) else {
-                        return Err(ArgsError::InvalidValue {
-                            flag: "--game",
-                            value,
-                        });
-                    };
-                    options.game = Some(match entry.id {
-                        "free-play" => GameChoice::FreePlay,
-                        id => GameChoice::Catalog(id),
-                    });
+                    options.game = Some(game_choice(value)?);
                 }
                 "--stress" => {
                     let value = args.next().ok_or(ArgsError::MissingValue("--stress"))?;
@@ -256,39 +229,67 @@ usage: billiards [replay FILE] [--recordings DIR | --no-record] [--top-view]
                 _ => return Err(ArgsError::UnknownArgument(arg)),
             }
         }
+        options.check()?;
+        Ok(options)
+    }
+
+    /// The options the usage marks exclusive, or that need another, refused.
+    fn check(&self) -> Result<(), ArgsError> {
         // The usage marks them exclusive: saving nowhere and saving to DIR.
-        if options.no_record && options.recordings.is_some() {
+        if self.no_record && self.recordings.is_some() {
             return Err(ArgsError::Conflict("--no-record", "--recordings"));
         }
-        if options.stress.is_some() && options.game.is_some() {
+        if self.stress.is_some() && self.game.is_some() {
             return Err(ArgsError::Conflict("--stress", "--game"));
         }
         for (flag, given) in [
-            ("--stress", options.stress.is_some()),
-            ("--game", options.game.is_some()),
+            ("--stress", self.stress.is_some()),
+            ("--game", self.game.is_some()),
         ] {
-            if given && options.position.is_some() {
+            if given && self.position.is_some() {
                 return Err(ArgsError::Conflict("--position", flag));
             }
-            if given && options.drill.is_some() {
+            if given && self.drill.is_some() {
                 return Err(ArgsError::Conflict("--drill", flag));
             }
         }
-        if options.position.is_some() && options.drill.is_some() {
+        if self.position.is_some() && self.drill.is_some() {
             return Err(ArgsError::Conflict("--drill", "--position"));
         }
         for (flag, given) in [
-            ("--computer", options.computer.is_some()),
-            ("--seed", options.seed.is_some()),
+            ("--computer", self.computer.is_some()),
+            ("--seed", self.seed.is_some()),
         ] {
-            if given && options.game.is_none() {
+            if given && self.game.is_none() {
                 return Err(ArgsError::Needs(flag, "--game"));
             }
         }
-        if options.screenshot.is_some() && options.count_idle_frames.is_some() {
+        if self.screenshot.is_some() && self.count_idle_frames.is_some() {
             return Err(ArgsError::Conflict("--screenshot", "--count-idle-frames"));
         }
-        Ok(options)
+        Ok(())
+    }
+}
+
+/// `value` of `flag` as seconds (`--settle 2.5`), refused when not a duration.
+fn seconds(flag: &'static str, value: String) -> Result<Duration, ArgsError> {
+    value
+        .parse::<f64>()
+        .ok()
+        .and_then(|s| Duration::try_from_secs_f64(s).ok())
+        .ok_or(ArgsError::InvalidValue { flag, value })
+}
+
+/// `--game`'s value: any game of the catalog by its id (`nine-ball`, `three-cushion`).
+fn game_choice(value: String) -> Result<crate::play::game::GameChoice, ArgsError> {
+    use crate::play::game::GameChoice;
+    match billiards_rules::catalog::find(&value) {
+        Ok(entry) if entry.id == "free-play" => Ok(GameChoice::FreePlay),
+        Ok(entry) => Ok(GameChoice::Catalog(entry.id)),
+        Err(_) => Err(ArgsError::InvalidValue {
+            flag: "--game",
+            value,
+        }),
     }
 }
 

@@ -228,26 +228,7 @@ fn play_computer_turn(
     // The window draws on demand only: keep frames coming while the computer plays.
     redraw.write(RequestRedraw);
     if *turn.get() == Turn::Verdict && !seat.choosing {
-        // A human at the table reads the verdict (a foul of theirs, ball in hand) and says
-        // when: it stays until they continue. Between two computers it goes on after a moment.
-        // The match's own line already reads "NAME to shoot next: continue" (issue 48, played:
-        // a second line said the same).
-        if seat.has_human {
-            computer.doing = None;
-            return;
-        }
-        let since = match &computer.turn {
-            Some(Task::Reading { since, .. }) => *since,
-            _ => {
-                let since = Instant::now();
-                computer.turn = Some(Task::Reading { key, since });
-                since
-            }
-        };
-        if since.elapsed() >= pace.0 {
-            turn_commands.write(TurnCommand::Continue);
-            computer.turn = None;
-        }
+        read_verdict(&seat, &mut computer, pace.0, &mut turn_commands);
         return;
     }
     // The verdict was continued: what the computer read is done with.
@@ -295,23 +276,73 @@ fn play_computer_turn(
             decision,
             since,
         }) if since.elapsed() >= pace.0 => {
-            let params = solver.simulation().params();
-            let noise = level.execution_noise();
-            match decision.as_move(seat.live) {
-                Some(Move::Choose(index)) => {
-                    turn_commands.write(TurnCommand::ChooseOption(index));
-                }
-                Some(Move::Strike(stroke)) => {
-                    // The same stream as a plan's execution ([`billiards_ai::Plan::executed`]).
-                    let mut rng = billiards_ai::noise::stream(seed, u64::MAX, 0);
-                    let shot = noise.apply(stroke.shot, params, &mut rng);
-                    shots.write(ShotRequested::from(shot));
-                    computer.fired = Some((key, Instant::now()));
-                }
-                None => warn!("the computer's decision is not for this game: {decision:?}"),
+            let shot = carry_out(&decision, &seat, &solver, level, seed, &mut turn_commands);
+            if let Some(shot) = shot {
+                shots.write(shot);
+                computer.fired = Some((key, Instant::now()));
             }
         }
         task => computer.turn = task,
+    }
+}
+
+/// The verdict is up and no choice is offered: a human at the table reads it (a foul of
+/// theirs, ball in hand) and says when, so it stays until they continue; between two
+/// computers it goes on after `pace`. The match's own line already reads "NAME to play next:
+/// continue" (issue 48, played: a second line said the same).
+fn read_verdict(
+    seat: &TurnView,
+    computer: &mut Computer,
+    pace: Duration,
+    turn_commands: &mut MessageWriter<TurnCommand>,
+) {
+    if seat.has_human {
+        computer.doing = None;
+        return;
+    }
+    let since = match &computer.turn {
+        Some(Task::Reading { since, .. }) => *since,
+        _ => {
+            let since = Instant::now();
+            computer.turn = Some(Task::Reading {
+                key: seat.key,
+                since,
+            });
+            since
+        }
+    };
+    if since.elapsed() >= pace {
+        turn_commands.write(TurnCommand::Continue);
+        computer.turn = None;
+    }
+}
+
+/// Carries a shown decision out as one of the game's moves: an option taken (a command), or
+/// the stroke under the level's execution noise (returned, to be struck). The noise stream
+/// is a plan's ([`billiards_ai::Plan::executed`]), so a replayed match decides alike.
+fn carry_out(
+    decision: &Decided,
+    seat: &TurnView,
+    solver: &Solver,
+    level: Level,
+    seed: u64,
+    turn_commands: &mut MessageWriter<TurnCommand>,
+) -> Option<ShotRequested> {
+    match decision.as_move(seat.live) {
+        Some(Move::Choose(index)) => {
+            turn_commands.write(TurnCommand::ChooseOption(index));
+            None
+        }
+        Some(Move::Strike(stroke)) => {
+            let params = solver.simulation().params();
+            let mut rng = billiards_ai::noise::stream(seed, u64::MAX, 0);
+            let shot = level.execution_noise().apply(stroke.shot, params, &mut rng);
+            Some(ShotRequested::from(shot))
+        }
+        None => {
+            warn!("the computer's decision is not for this game: {decision:?}");
+            None
+        }
     }
 }
 

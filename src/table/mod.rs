@@ -111,9 +111,22 @@ fn spawn_table(
         );
     }
 
-    // Diamond sights: small flat rhombi inlaid in the rail tops.
+    spawn_diamonds(&mut commands, &spec, &mut meshes, &pearl);
+    if spec.is_snooker() {
+        spawn_snooker_marks(&mut commands, &spec, &mut meshes, &mut materials);
+    }
+    spawn_legs_and_floor(&mut commands, &spec, &mut meshes, &mut materials, &wood);
+}
+
+/// Diamond sights: small flat rhombi inlaid in the rail tops.
+fn spawn_diamonds(
+    commands: &mut Commands,
+    spec: &TableSpec,
+    meshes: &mut Assets<Mesh>,
+    pearl: &Handle<StandardMaterial>,
+) {
     let diamond = meshes.add(Rhombus::new(0.028, 0.014));
-    for (rail, position) in mesh::diamond_positions(&spec) {
+    for (rail, position) in mesh::diamond_positions(spec) {
         use crate::table::geometry::Rail;
         // Lay the 2D rhombus flat, its long diagonal across the rail.
         let across = match rail {
@@ -131,25 +144,39 @@ fn spawn_table(
             ),
         ));
     }
+}
 
-    if spec.is_snooker() {
-        let chalk = materials.add(StandardMaterial {
-            base_color: Color::srgb(0.85, 0.88, 0.85),
-            perceptual_roughness: 0.95,
-            ..default()
-        });
-        for (name, mark) in snooker_marks(&spec) {
-            commands.spawn((
-                TablePart,
-                Name::new(name),
-                Mesh3d(meshes.add(mark)),
-                MeshMaterial3d(chalk.clone()),
-                NotShadowCaster,
-            ));
-        }
+/// A snooker table's chalked lines and spots (WPBSA 1.1: the baulk-line, the D, the spots).
+fn spawn_snooker_marks(
+    commands: &mut Commands,
+    spec: &TableSpec,
+    meshes: &mut Assets<Mesh>,
+    materials: &mut Assets<StandardMaterial>,
+) {
+    let chalk = materials.add(StandardMaterial {
+        base_color: Color::srgb(0.85, 0.88, 0.85),
+        perceptual_roughness: 0.95,
+        ..default()
+    });
+    for (name, mark) in snooker_marks(spec) {
+        commands.spawn((
+            TablePart,
+            Name::new(name),
+            Mesh3d(meshes.add(mark)),
+            MeshMaterial3d(chalk.clone()),
+            NotShadowCaster,
+        ));
     }
+}
 
-    // Four legs under the corners, and the floor.
+/// Four legs under the corners, and the floor.
+fn spawn_legs_and_floor(
+    commands: &mut Commands,
+    spec: &TableSpec,
+    meshes: &mut Assets<Mesh>,
+    materials: &mut Assets<StandardMaterial>,
+    wood: &Handle<StandardMaterial>,
+) {
     let outer = spec.outer_half_extents();
     let leg_height = (CLOTH_HEIGHT - APRON_DEPTH) as f32;
     let leg = meshes.add(Cuboid::new(0.14, leg_height, 0.14));

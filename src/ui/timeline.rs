@@ -121,78 +121,9 @@ fn timeline(
         &PendingPosition,
     ),
 ) {
+    timeline_header(ui, replay, open, commands, (as_position, pending));
+    transport_row(ui, replay, commands);
     let t = replay.time;
-    ui.horizontal(|ui| {
-        ui.label(RichText::new(format!("Replay: {}", open.file_name())).strong());
-        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-            if ui.button("Close replay").on_hover_text("Esc").clicked() {
-                commands.write(ReplayCommand::Close);
-            }
-            if replay.verifying.is_some() {
-                ui.spinner();
-            }
-            if ui
-                .add_enabled(replay.verifying.is_none(), egui::Button::new("Verify"))
-                .on_hover_text("re-simulate the inputs and compare every event bit for bit")
-                .clicked()
-            {
-                commands.write(ReplayCommand::Verify);
-            }
-            if ui
-                .button("Open shot as position")
-                .on_hover_text("the balls where this shot was struck, live, with its shot lined up")
-                .clicked()
-            {
-                as_position.write(ShotAsPositionRequested);
-            }
-            if let Some(why) = &pending.refused {
-                ui.colored_label(WARNING, why);
-            }
-        });
-    });
-    ui.horizontal(|ui| {
-        let buttons = [
-            (
-                "|< shot",
-                "previous shot (Page Up)",
-                ReplayCommand::PreviousShot,
-            ),
-            (
-                "< event",
-                "previous event (Left)",
-                ReplayCommand::PreviousEvent,
-            ),
-        ];
-        for (label, hover, command) in buttons {
-            if ui.button(label).on_hover_text(hover).clicked() {
-                commands.write(command);
-            }
-        }
-        let play = if replay.playing { "Pause" } else { "Play" };
-        if ui.button(play).on_hover_text("Space").clicked() {
-            commands.write(ReplayCommand::TogglePlay);
-        }
-        let buttons = [
-            ("event >", "next event (Right)", ReplayCommand::NextEvent),
-            ("shot >|", "next shot (Page Down)", ReplayCommand::NextShot),
-        ];
-        for (label, hover, command) in buttons {
-            if ui.button(label).on_hover_text(hover).clicked() {
-                commands.write(command);
-            }
-        }
-        ui.separator();
-        let mut speed = replay.speed;
-        let slider = egui::Slider::new(&mut speed, MIN_SPEED..=MAX_SPEED)
-            .update_while_editing(false)
-            .logarithmic(true)
-            .text("speed")
-            .suffix("x")
-            .max_decimals(2);
-        if ui.add(slider).changed() {
-            commands.write(ReplayCommand::SetSpeed(speed));
-        }
-    });
     ui.scope(|ui| {
         ui.spacing_mut().slider_width = (ui.available_width() - 10.0).max(100.0);
         let mut scrub = t;
@@ -249,6 +180,94 @@ fn timeline(
             None => ui.label(RichText::new("verdicts not re-judged yet").weak()),
         };
     }
+}
+
+/// The replay's title and its buttons on the right: Close, Verify, Open shot as position.
+fn timeline_header(
+    ui: &mut egui::Ui,
+    replay: &Replay,
+    open: &OpenRecording,
+    commands: &mut MessageWriter<ReplayCommand>,
+    (as_position, pending): (
+        &mut MessageWriter<ShotAsPositionRequested>,
+        &PendingPosition,
+    ),
+) {
+    ui.horizontal(|ui| {
+        ui.label(RichText::new(format!("Replay: {}", open.file_name())).strong());
+        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+            if ui.button("Close replay").on_hover_text("Esc").clicked() {
+                commands.write(ReplayCommand::Close);
+            }
+            if replay.verifying.is_some() {
+                ui.spinner();
+            }
+            if ui
+                .add_enabled(replay.verifying.is_none(), egui::Button::new("Verify"))
+                .on_hover_text("re-simulate the inputs and compare every event bit for bit")
+                .clicked()
+            {
+                commands.write(ReplayCommand::Verify);
+            }
+            if ui
+                .button("Open shot as position")
+                .on_hover_text("the balls where this shot was struck, live, with its shot lined up")
+                .clicked()
+            {
+                as_position.write(ShotAsPositionRequested);
+            }
+            if let Some(why) = &pending.refused {
+                ui.colored_label(WARNING, why);
+            }
+        });
+    });
+}
+
+/// The transport: previous shot and event, Play/Pause, next event and shot, the speed.
+fn transport_row(ui: &mut egui::Ui, replay: &Replay, commands: &mut MessageWriter<ReplayCommand>) {
+    ui.horizontal(|ui| {
+        let buttons = [
+            (
+                "|< shot",
+                "previous shot (Page Up)",
+                ReplayCommand::PreviousShot,
+            ),
+            (
+                "< event",
+                "previous event (Left)",
+                ReplayCommand::PreviousEvent,
+            ),
+        ];
+        for (label, hover, command) in buttons {
+            if ui.button(label).on_hover_text(hover).clicked() {
+                commands.write(command);
+            }
+        }
+        let play = if replay.playing { "Pause" } else { "Play" };
+        if ui.button(play).on_hover_text("Space").clicked() {
+            commands.write(ReplayCommand::TogglePlay);
+        }
+        let buttons = [
+            ("event >", "next event (Right)", ReplayCommand::NextEvent),
+            ("shot >|", "next shot (Page Down)", ReplayCommand::NextShot),
+        ];
+        for (label, hover, command) in buttons {
+            if ui.button(label).on_hover_text(hover).clicked() {
+                commands.write(command);
+            }
+        }
+        ui.separator();
+        let mut speed = replay.speed;
+        let slider = egui::Slider::new(&mut speed, MIN_SPEED..=MAX_SPEED)
+            .update_while_editing(false)
+            .logarithmic(true)
+            .text("speed")
+            .suffix("x")
+            .max_decimals(2);
+        if ui.add(slider).changed() {
+            commands.write(ReplayCommand::SetSpeed(speed));
+        }
+    });
 }
 
 /// The Export form of the open replay, in the panel's Recordings section: format and scope,
