@@ -3,8 +3,9 @@
 
 use super::{SetupError, Simulation, setup};
 use crate::ball::{BallId, BallState, Motion, Segment};
+use crate::detect;
 use crate::event::{EventKind, Shot};
-use crate::math::Vec2;
+use crate::math::{Vec2, Vec3};
 use crate::motion;
 use crate::params::Model;
 use crate::resolve::slate::{SLATE_RESTITUTION, Slate};
@@ -50,6 +51,14 @@ impl Simulation {
 }
 
 impl Simulation {
+    /// Ball `id` is level with the cloth at `t`: on it, or in the air under
+    /// [`detect::LEVEL`]. Its contacts with other level balls are in the plane (the pair law,
+    /// a cluster impact); a ball higher up meets others in space ([`Self::air_pair`]).
+    pub(super) fn level_at(&self, id: BallId, t: f64) -> bool {
+        let seg = &self.segments[id];
+        seg.state.motion != Motion::Airborne || seg.height_at(t) <= detect::LEVEL
+    }
+
     /// Balls `a` and `b`, one of them at least in the air, touch in space
     /// ([`resolve::ball_air::air_pair`]): each flies on, or goes on along the cloth.
     pub(super) fn air_pair(&mut self, a: BallId, b: BallId) {
@@ -65,7 +74,11 @@ impl Simulation {
             gravity: self.params.gravity,
             radius: self.params.ball.radius,
         };
-        let (na, nb) = resolve::ball_air::air_pair(e, &table, &sa, &sb);
+        let acc = |id: BallId| {
+            let seg = &self.segments[id];
+            Vec3::new(seg.acceleration.x, seg.acceleration.y, -seg.fall)
+        };
+        let (na, nb) = resolve::ball_air::air_pair(e, &table, (&sa, acc(a)), (&sb, acc(b)));
         for (id, s) in [(a, na), (b, nb)] {
             self.segments[id] = if s.motion == Motion::Airborne {
                 motion::flight::airborne(&self.params, t, s)

@@ -497,9 +497,7 @@ impl Simulation {
     /// the contact, else the pair's own law.
     fn ball_pair(&mut self, a: BallId, b: BallId) {
         let t = self.time;
-        if self.segments[a].state.motion == Motion::Airborne
-            || self.segments[b].state.motion == Motion::Airborne
-        {
+        if !self.level_at(a, t) || !self.level_at(b, t) {
             return self.air_pair(a, b);
         }
         let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
