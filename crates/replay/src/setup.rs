@@ -4,17 +4,18 @@
 //! back (issue 50).
 
 use crate::args::*;
+use crate::flight::FlightEvent;
 use billiards_physics::recording::Recorder;
 use billiards_physics::scene::Scene;
 use billiards_physics::*;
 use billiards_rules::Verdict as RulesVerdict;
 use serde::Serialize;
 
-/// The command line's shots, at the cue elevation of `--elevation`.
+/// The command line's shots, each at its own cue elevation, else at `--elevation`'s.
 pub(crate) fn command_line_shots(a: &SimulateArgs) -> impl Iterator<Item = Shot> + '_ {
     a.shots.iter().map(|s| Shot {
-        elevation: a.elevation,
-        ..*s
+        elevation: s.elevation.unwrap_or(a.elevation),
+        ..s.shot
     })
 }
 
@@ -29,6 +30,9 @@ pub struct ShotSummary {
     pub pocketed: Vec<u8>,
     /// Seconds of simulated time until everything rested.
     pub time_to_rest: f64,
+    /// Take-offs, bounces, landings and flights off the table (none for a shot that stays
+    /// on the cloth).
+    pub flight: Vec<FlightEvent>,
     /// The rules' verdict (with `--game`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub verdict: Option<RulesVerdict>,

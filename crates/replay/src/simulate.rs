@@ -5,6 +5,7 @@
 pub use crate::args::SimulateArgs;
 pub use crate::setup::ShotSummary;
 
+use crate::flight;
 use crate::setup::{respot_cue_ball, setup};
 use billiards_physics::recording::Recorder;
 use billiards_physics::*;
@@ -15,6 +16,7 @@ fn play(rec: &mut Recorder, shot: Shot) -> Result<ShotSummary, String> {
     respot_cue_ball(rec)?;
     let start = rec.sim().time();
     let first = rec.sim().history().events().len();
+    let in_air = flight::airborne(rec.sim());
     rec.strike(0, shot).map_err(|e| e.to_string())?;
     rec.run_to_rest().map_err(|e| e.to_string())?;
     let sim = rec.sim();
@@ -31,6 +33,7 @@ fn play(rec: &mut Recorder, shot: Shot) -> Result<ShotSummary, String> {
         events: events.len(),
         pocketed,
         time_to_rest: sim.time() - start,
+        flight: flight::flight_events(events, sim.numbers(), start, in_air),
         verdict: None,
     })
 }
@@ -76,6 +79,9 @@ pub(crate) fn simulate(a: SimulateArgs) -> Result<(), String> {
                 "shot {k}: {} events, pocketed {:?}, rest after {:.3} s",
                 s.events, s.pocketed, s.time_to_rest
             );
+            for f in &s.flight {
+                println!("  {f}");
+            }
         }
     }
     Ok(())
