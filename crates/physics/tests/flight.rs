@@ -296,3 +296,75 @@ fn a_hard_elevated_shot_into_a_cushion_leaves_the_table() {
     );
     assert!(soft.ball(0).motion.on_table());
 }
+
+/// A ball flying across a pocket's opening drops in (a pocket event, as on the cloth) unless
+/// it flies over the whole hole: its lowest point at or above the cushion nose (0.635 of the
+/// diameter) both as its centre crosses the opening and a mouth's width beyond it. From 5 cm
+/// short of the opening at 50 degrees, every speed here is still in its first flight there,
+/// so the crossing is at `D / u` (`u = (5/7) v cos(theta)`) at the height `v_z tau - g tau^2
+/// / 2`; the solver's event is at that time to 1e-12 s and is the pocket or the flight off
+/// the table as that closed form says, on the jaws table (the opening's line) and on the
+/// paper's (the mouth on the cushion line), at a corner and at a side pocket.
+#[test]
+fn a_ball_flying_into_a_pocket_drops_in_unless_it_flies_over_the_hole() {
+    let p = spin();
+    let (r, g) = (p.ball.radius, p.gravity);
+    let nose = 0.635 * 2.0 * r;
+    let theta = 50f64.to_radians();
+    let d = 0.05;
+    let (jaws, mouths) = (Table::wpa_8ft().with_jaws(0.015), Table::wpa_8ft());
+    let (hx, hy) = (0.5 * jaws.length, 0.5 * jaws.width);
+    // Corner: on the diagonal, the opening's line d away (it passes through (hx - leg, hy)
+    // and (hx, hy - leg)). Side: straight at the side pocket; with the paper's mouths the
+    // ball crosses when its side reaches the cushion line (its centre R inside).
+    let corner_a = 0.5 * (d * std::f64::consts::SQRT_2 + jaws.corner_leg());
+    let cases = [
+        (
+            jaws,
+            Vec2::new(hx - corner_a, hy - corner_a),
+            45.0,
+            Pocket::FootLeft,
+        ),
+        (jaws, Vec2::new(0.0, hy - d), 90.0, Pocket::SideLeft),
+        (mouths, Vec2::new(0.0, hy - r - d), 90.0, Pocket::SideLeft),
+    ];
+    let mut outcomes = [0, 0];
+    for (table, start, degrees, pocket) in cases {
+        let mouth = if pocket.is_corner() {
+            table.corner_mouth
+        } else {
+            table.side_mouth
+        };
+        for v in [1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0] {
+            let mut sim = Simulation::new(table, p, &[BallSetup::at(0, start)]).unwrap();
+            let shot = Shot {
+                elevation: theta,
+                ..Shot::new(f64::to_radians(degrees), v)
+            };
+            sim.strike(0, shot).unwrap();
+            sim.run_to_rest().unwrap();
+            let (u, vz) = (5.0 / 7.0 * v * theta.cos(), E * v * theta.sin());
+            let height = |tau: f64| vz * tau - 0.5 * g * tau * tau;
+            let tau = d / u;
+            assert!(tau < 2.0 * vz / g, "{v} m/s: still in its first flight");
+            let over = height(tau) >= nose && height((d + mouth) / u) >= nose;
+            let events = sim.history().events();
+            assert_eq!(events.len(), 2, "{v} m/s: {events:#?}");
+            let e = events[1];
+            assert!((e.time - tau).abs() < 1e-12, "{v} m/s: {} vs {tau}", e.time);
+            if over {
+                let off = EventKind::Transition {
+                    ball: 0,
+                    from: Motion::Airborne,
+                    to: Motion::OffTable,
+                };
+                assert_eq!(e.kind, off, "{v} m/s flies over the hole");
+            } else {
+                assert_eq!(e.kind, EventKind::Pocketed { ball: 0, pocket }, "{v} m/s");
+                assert!(height(tau) > 0.0, "in the air as it drops in");
+            }
+            outcomes[over as usize] += 1;
+        }
+    }
+    assert!(outcomes[0] >= 6 && outcomes[1] >= 6, "both: {outcomes:?}");
+}

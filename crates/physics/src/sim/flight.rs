@@ -10,7 +10,7 @@ use crate::motion;
 use crate::params::Model;
 use crate::resolve::slate::{SLATE_RESTITUTION, Slate};
 use crate::resolve::{self, Laws};
-use crate::table::Cushion;
+use crate::table::{Cushion, Pocket};
 
 impl Simulation {
     /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
@@ -99,6 +99,16 @@ impl Simulation {
     /// constant speed `v_n` towards the cushion (the parabola is concave, so `z` is least at
     /// one of the two). Lower, it meets the nose and rebounds as on the cloth.
     pub(super) fn clears_cushion(&self, id: BallId, cushion: Cushion) -> bool {
+        let r = self.params.ball.radius;
+        self.clears(id, cushion.inward_normal(), r)
+    }
+
+    /// Ball `id`, in the air, keeps its lowest point at or above the cushion nose's height
+    /// (`cushion_height (2R)` above the cloth) from now until its centre has gone `reach`
+    /// farther across a line of unit normal `inward` (pointing onto the table). The parabola
+    /// is concave, so the least height over that stretch is at one of its two ends. False
+    /// for a ball on the cloth, under the paper's model, or not crossing outwards.
+    fn clears(&self, id: BallId, inward: Vec2, reach: f64) -> bool {
         let seg = &self.segments[id];
         let Model::Spin(m) = self.params.model else {
             return false;
@@ -107,14 +117,37 @@ impl Simulation {
             return false;
         }
         let r = self.params.ball.radius;
+        // The centre's height above its height on the cloth is the lowest point's rise.
         let nose = m.cushion_height * 2.0 * r;
-        let towards = -cushion.inward_normal().dot(seg.state.velocity);
+        let towards = -inward.dot(seg.state.velocity);
         if towards <= 0.0 {
             return false;
         }
         let t = self.time;
-        let over = t + r / towards;
+        let over = t + reach / towards;
         seg.height_at(t) >= nose && seg.height_at(over) >= nose
+    }
+
+    /// Ball `id` crosses `pocket`'s opening (the line across a jaws table's mouth, or a
+    /// mouth of the paper's table on the cushion line, unit normal `inward` onto the table):
+    /// it drops in, a pocket event as on the cloth, unless it is in the air and flies over
+    /// the whole hole. The hole is taken as wide as the pocket's mouth beyond the opening (the
+    /// tables give no depth), and its far edge, the rail, as high as the cushion nose: the
+    /// ball flies over and off the table when its lowest point stays at or above the nose's
+    /// height until its centre is a mouth's width past the opening ([`Self::clears`]); lower,
+    /// it comes down into the pocket or meets the far side below the rail's top and drops.
+    pub(super) fn into_pocket(&mut self, id: BallId, pocket: Pocket, inward: Vec2) {
+        let table = &self.bodies.table;
+        let mouth = if pocket.is_corner() {
+            table.corner_mouth
+        } else {
+            table.side_mouth
+        };
+        if self.clears(id, inward, mouth) {
+            self.off_table(id)
+        } else {
+            self.pocket(id, pocket)
+        }
     }
 
     /// Ball `id` flies off the table over a cushion: out of play
