@@ -136,7 +136,7 @@ impl Simulation {
     /// ball flies over and off the table when its lowest point stays at or above the nose's
     /// height until its centre is a mouth's width past the opening ([`Self::clears`]); lower,
     /// it comes down into the pocket or meets the far side below the rail's top and drops.
-    pub(super) fn into_pocket(&mut self, id: BallId, pocket: Pocket, inward: Vec2) {
+    pub(super) fn across_opening(&mut self, id: BallId, pocket: Pocket, inward: Vec2) {
         let table = &self.bodies.table;
         let mouth = if pocket.is_corner() {
             table.corner_mouth

@@ -418,7 +418,7 @@ impl Simulation {
             PendingKind::Transition(id) => self.transition(id),
             PendingKind::Opening(id, k) => {
                 let o = self.bodies.openings[k];
-                self.into_pocket(id, o.pocket, o.normal)
+                self.across_opening(id, o.pocket, o.normal)
             }
             PendingKind::Cushion(id, cushion) => self.cushion(id, cushion),
             PendingKind::Jaw(id, k) => self.jaw(id, k),
@@ -455,7 +455,7 @@ impl Simulation {
             PocketShape::Jaws { .. } | PocketShape::Pocketless => None,
         };
         if let Some(pocket) = mouth {
-            return self.into_pocket(id, pocket, cushion.inward_normal());
+            return self.across_opening(id, pocket, cushion.inward_normal());
         }
         if self.clears_cushion(id, cushion) {
             return self.off_table(id);
