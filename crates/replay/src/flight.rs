@@ -134,7 +134,8 @@ mod tests {
     }
 
     /// A jump: take-off at the strike, a bounce, a landing; then a second flight off the
-    /// table. Events that keep a ball on the cloth or in the air are not listed.
+    /// table, and a third into a pocket. Events that keep a ball on the cloth or in the air
+    /// are not listed.
     #[test]
     fn take_off_bounce_landing_and_off_the_table_are_told_apart() {
         use Motion::*;
@@ -143,6 +144,10 @@ mod tests {
             ball: 0,
             shot: Shot::new(0.0, 3.0),
         };
+        let pocketed = EventKind::Pocketed {
+            ball: 0,
+            pocket: Pocket::SideLeft,
+        };
         let events = [
             event(1.0, strike, Airborne, 1.0),
             event(1.2, t(Airborne, Airborne), Airborne, 0.5),
@@ -150,11 +155,14 @@ mod tests {
             event(1.5, t(Sliding, Rolling), Rolling, 0.0),
             event(2.0, strike, Airborne, 2.0),
             event(2.1, t(Airborne, OffTable), OffTable, 0.0),
+            event(3.0, strike, Airborne, 1.0),
+            event(3.1, pocketed, Pocketed(Pocket::SideLeft), 0.0),
         ];
         let got = flight_events(&events, &[7], 1.0, vec![false]);
         let kinds: Vec<FlightKind> = got.iter().map(|f| f.kind).collect();
         let (up, bounce, down) = (FlightKind::TakeOff, FlightKind::Bounce, FlightKind::Landing);
-        assert_eq!(kinds, [up, bounce, down, up, FlightKind::OffTable]);
+        let (off, dropped) = (FlightKind::OffTable, FlightKind::Pocketed);
+        assert_eq!(kinds, [up, bounce, down, up, off, up, dropped]);
         assert_eq!(
             (got[1].time, got[1].ball, got[1].vertical),
             (1.2 - 1.0, 7, 0.5)
