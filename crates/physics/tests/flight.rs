@@ -368,3 +368,77 @@ fn a_ball_flying_into_a_pocket_drops_in_unless_it_flies_over_the_hole() {
     }
     assert!(outcomes[0] >= 6 && outcomes[1] >= 6, "both: {outcomes:?}");
 }
+
+/// A scene file sets a ball in the air (`"flights"`): it falls from its height at its upward
+/// speed and lands at the closed-form root `(v_z + sqrt(v_z^2 + 2 g h)) / g`, its plane
+/// velocity kept; the recording of it replays bit for bit. Out of the contract (below the
+/// cloth, falling from it, too high, not finite, the paper's model) it is refused, naming the
+/// value; a ball in the air cannot be struck (the cue's impulse needs the slate's).
+#[test]
+fn a_scene_sets_a_ball_in_the_air_and_it_lands_at_the_closed_form() {
+    use billiards_physics::recording::{self, Recorder};
+    use billiards_physics::scene::Scene;
+    let text = r#"{
+        "params": { "model": { "kind": "spin" } },
+        "balls": [ { "number": 0, "position": { "x": 0.0, "y": 0.0 }, "velocity": { "x": 1.0, "y": 0.0 } } ],
+        "flights": [ { "ball": 0, "height": 0.1, "vertical": 0.5 } ]
+    }"#;
+    let scene = Scene::from_json(text).unwrap();
+    let result = scene.run().unwrap();
+    let g = scene.params.gravity;
+    let (h, vz) = (0.1, 0.5);
+    let tau = (vz + (vz * vz + 2.0 * g * h).sqrt()) / g;
+    let placed = result.events[0];
+    assert_eq!(placed.kind, EventKind::Placed { ball: 0 });
+    assert_eq!((placed.after[0].height, placed.after[0].vertical), (h, vz));
+    let lands = result
+        .events
+        .iter()
+        .find(|e| {
+            matches!(
+                e.kind,
+                EventKind::Transition {
+                    from: Motion::Airborne,
+                    ..
+                }
+            )
+        })
+        .expect("it lands");
+    assert!((lands.time - tau).abs() < 1e-12, "{} vs {tau}", lands.time);
+    assert!((lands.after[0].position.x - tau).abs() < 1e-12);
+    // Recorded and replayed: the same events, bit for bit.
+    let mut rec = Recorder::new(scene.table, scene.params, scene.balls()).unwrap();
+    rec.launch(0, h, vz).unwrap();
+    rec.run_to_rest().unwrap();
+    let recording = rec.recording();
+    let verdict = recording.verify().unwrap();
+    let events = recording.events.len();
+    assert_eq!(verdict, recording::Verdict::Reproduced { events });
+    assert!(events >= 3, "placed, landed, rested: {events}");
+    // Refused, naming the value.
+    let p = spin();
+    let two = [
+        BallSetup::at(0, Vec2::ZERO),
+        BallSetup::at(1, Vec2::new(0.06, 0.0)),
+    ];
+    let mut sim = Simulation::new(huge_table(), p, &two).unwrap();
+    for (height, vertical, says) in [
+        (-0.01, 0.0, "height"),
+        (0.0, -1.0, "upward speed"),
+        (0.0, 0.0, "upward speed"),
+        (0.7, 0.0, "height"),
+        (0.01, f64::NAN, "upward speed"),
+    ] {
+        let e = sim.launch(0, height, vertical).unwrap_err().to_string();
+        assert!(e.contains(says), "{height} {vertical}: {e}");
+    }
+    sim.launch(0, 0.05, 0.0).unwrap();
+    assert_eq!(sim.ball(0).motion, Motion::Airborne);
+    // The cue strikes a ball against the slate: not one in the air.
+    let e = sim.strike(0, Shot::new(0.0, 1.0)).unwrap_err().to_string();
+    assert!(e.contains("cannot be struck"), "{e}");
+    let paper = Params::default();
+    let mut sim = Simulation::new(huge_table(), paper, &two[..1]).unwrap();
+    let e = sim.launch(0, 0.1, 0.0).unwrap_err().to_string();
+    assert!(e.contains("no flight"), "{e}");
+}

@@ -13,7 +13,7 @@ use std::path::Path;
 
 /// Plays `a.shots` as a rack of `game`; see [`SimulateArgs::game`].
 pub(crate) fn play_game(a: &SimulateArgs, game: Game) -> Result<(), String> {
-    let (table, params, _, shots) = setup(a)?;
+    let (table, params, _, _, shots) = setup(a)?;
     if shots.is_empty() {
         return Err("no shots: give --shot ANGLE_DEG:SPEED".into());
     }

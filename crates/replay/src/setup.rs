@@ -6,7 +6,7 @@
 use crate::args::*;
 use crate::flight::FlightEvent;
 use billiards_physics::recording::Recorder;
-use billiards_physics::scene::Scene;
+use billiards_physics::scene::{Scene, SceneFlight};
 use billiards_physics::*;
 use billiards_rules::Verdict as RulesVerdict;
 use serde::Serialize;
@@ -38,10 +38,12 @@ pub struct ShotSummary {
     pub verdict: Option<RulesVerdict>,
 }
 
+/// What a `simulate` run starts from: the table, physics, balls, the balls in the air (a
+/// scene file's `flights`) and the shots.
+pub(crate) type Start = (Table, Params, Vec<BallSetup>, Vec<SceneFlight>, Vec<Shot>);
+
 /// The table, physics, balls and shots of `a`: a scene file's, or a standard rack's.
-pub(crate) fn setup(
-    a: &SimulateArgs,
-) -> Result<(Table, Params, Vec<BallSetup>, Vec<Shot>), String> {
+pub(crate) fn setup(a: &SimulateArgs) -> Result<Start, String> {
     let randomization = a.seed.map(|seed| Randomization {
         spread: 0.005,
         seed,
@@ -62,7 +64,7 @@ pub(crate) fn setup(
             .map(|s| s.shot)
             .chain(command_line_shots(a))
             .collect();
-        return Ok((scene.table, params, scene.balls(), shots));
+        return Ok((scene.table, params, scene.balls(), scene.flights, shots));
     }
     let model = match a.model {
         ModelArg::Paper => Model::Paper(PaperModel::default()),
@@ -90,6 +92,7 @@ pub(crate) fn setup(
         table,
         params,
         rack.layout(&table, &params.ball),
+        Vec::new(),
         command_line_shots(a).collect(),
     ))
 }

@@ -149,3 +149,39 @@ fn a_shots_own_elevation_wins_and_beyond_85_degrees_is_refused() {
     assert!(err.contains("86 degrees: from 0 to 85 degrees"), "{err}");
     std::fs::remove_dir_all(dir).ok();
 }
+
+/// A scene file's ball in the air (`"flights"`): `simulate` records it as an input, the
+/// summary lists its bounces and landing under the first shot, and `verify` reproduces it bit for bit.
+#[test]
+fn a_scene_ball_in_the_air_lands_in_the_summary_and_verifies() {
+    let dir = temp("scene-flight");
+    let (scene, file) = (dir.join("drop.json"), dir.join("drop.rec.json"));
+    let text = r#"{
+      "params": { "model": { "kind": "spin" } },
+      "balls": [
+        { "number": 0, "position": { "x": -0.5, "y": 0.0 } },
+        { "number": 1, "position": { "x": 0.3, "y": 0.2 } }
+      ],
+      "flights": [ { "ball": 1, "height": 0.2 } ]
+    }"#;
+    std::fs::write(&scene, text).unwrap();
+    let (ok, stdout, err) = run(bin()
+        .args(["simulate", "--json", "--shot", "0:1", "--scene"])
+        .arg(&scene)
+        .arg("--out")
+        .arg(&file));
+    assert!(ok, "{err}");
+    let summary: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let flight = summary[0]["flight"].as_array().unwrap();
+    let down: Vec<_> = flight.iter().filter(|f| f["ball"] == 1).collect();
+    // It comes down from 0.2 m at rest sqrt(2 h / g) later (the scene's default gravity),
+    // bounces while the slate's rebound rises 5 mm or more, and lands.
+    assert_eq!(down[0]["kind"], "bounce", "{flight:#?}");
+    let t = down[0]["time"].as_f64().unwrap();
+    let g = Params::default().gravity;
+    assert!((t - (0.4 / g).sqrt()).abs() < 1e-12, "{t}");
+    assert_eq!(down.last().unwrap()["kind"], "landing", "{flight:#?}");
+    let (ok, out, err) = run(bin().arg("verify").arg(&file));
+    assert!(ok && out.contains("bit for bit"), "{out} {err}");
+    std::fs::remove_dir_all(dir).ok();
+}

@@ -20,6 +20,16 @@ impl Simulation {
         self.flush();
         let state = self.ball_checked(id)?;
         setup::check_shot(id, self.numbers[id], &shot, self.time)?;
+        if state.motion == Motion::Airborne {
+            // The cue's impulse is balanced by the slate's (`resolve/cue.rs`): none in the air.
+            return Err(SetupError::Limit(crate::limits::LimitError {
+                ball: Some((id, self.numbers[id])),
+                what: "height",
+                value: state.height,
+                unit: "m",
+                expected: "0: a ball in the air cannot be struck".into(),
+            }));
+        }
         let dir = Vec2::from_angle(shot.angle);
         let cue = Laws::of(&self.params.model).cue;
         let cue_at = resolve::cue::Cue {
@@ -159,5 +169,56 @@ impl Simulation {
         let (from, to) = (Motion::Airborne, Motion::OffTable);
         self.record(EventKind::Transition { ball: id, from, to });
         self.repredict_event(id, None);
+    }
+}
+
+impl Simulation {
+    /// Sets ball `id`, on the table, in the air now: its centre `height` metres above its
+    /// height on the cloth, rising at `vertical` m/s (falling if negative), its velocity in
+    /// the plane and its spin kept (a scene file's ball in the air, an editor). Recorded as
+    /// a placement ([`EventKind::Placed`], its state in the air). Only the spin model flies;
+    /// the values are checked by [`crate::limits::check_flight`], and the ball must be clear
+    /// of the others in space.
+    pub fn launch(&mut self, id: BallId, height: f64, vertical: f64) -> Result<(), SetupError> {
+        self.flush();
+        let state = self.ball_checked(id)?;
+        let number = self.numbers[id];
+        if let Model::Paper(_) = self.params.model {
+            return Err(SetupError::Limit(crate::limits::LimitError {
+                ball: Some((id, number)),
+                what: "height",
+                value: height,
+                unit: "m",
+                expected: "0: the paper's model has no flight (use the spin model)".into(),
+            }));
+        }
+        crate::limits::check_flight(height, vertical)
+            .and_then(|()| crate::limits::check_clock(self.time))
+            .map_err(|e| e.for_ball(id, number))?;
+        let r2 = 2.0 * self.params.ball.radius;
+        for (j, seg) in self.segments.iter().enumerate() {
+            let d = seg.position_at(self.time) - state.position;
+            let dz = seg.height_at(self.time) - height;
+            let gap = (d.length_squared() + dz * dz).sqrt() - r2;
+            if j != id && seg.state.motion.on_table() && gap < 0.0 {
+                return Err(SetupError::Overlap {
+                    a: id,
+                    b: j,
+                    numbers: (number, self.numbers[j]),
+                    overlap: -gap,
+                });
+            }
+        }
+        let flying = BallState {
+            height,
+            vertical,
+            motion: Motion::Airborne,
+            ..state
+        };
+        self.segments[id] = motion::flight::airborne(&self.params, self.time, flying);
+        self.record(EventKind::Placed { ball: id });
+        self.inputs_done();
+        self.repredict([id]);
+        Ok(())
     }
 }
