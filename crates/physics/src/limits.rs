@@ -15,6 +15,7 @@
 //! | cue elevation | 0 to [`MAX_ELEVATION`] rad (85 degrees) |
 //! | positions | finite and on the table ([`crate::sim::PLACEMENT_TOLERANCE`]) |
 //! | the clock at an input, the end of an `advance` | at most [`MAX_TIME`] s |
+//! | a ball set in the air | height 0 to [`MAX_HEIGHT`] m, upward speed within [`MAX_SPEED`] |
 //! | parameters | [`crate::Params::validate`]; `max_events` at least 1 |
 
 use crate::ball::BallId;
@@ -157,6 +158,30 @@ pub fn check_motion(velocity: Vec2, spin: Vec3, radius: f64) -> Result<(), Limit
 pub fn check_setups(balls: &[BallSetup], radius: f64) -> Result<(), LimitError> {
     for (index, b) in balls.iter().enumerate() {
         check_motion(b.velocity, b.spin, radius).map_err(|e| e.for_ball(index, b.number))?;
+    }
+    Ok(())
+}
+
+/// Highest a ball's centre may be set above its height on the cloth, metres: ten diameters,
+/// far above any jump (a 12 m/s shot at 85 degrees rises 1.8 m in theory, but no cue drives
+/// a ball that hard that steeply), and every flight from it lands within the clock's range.
+pub const MAX_HEIGHT: f64 = 0.6;
+
+/// A ball set in the air ([`crate::Simulation::launch`]): its height finite, from 0 to
+/// [`MAX_HEIGHT`], its upward speed finite and at most [`MAX_SPEED`] either way, and one of
+/// them making it fly (above the cloth, or rising from it).
+pub fn check_flight(height: f64, vertical: f64) -> Result<(), LimitError> {
+    if !(0.0..=MAX_HEIGHT).contains(&height) {
+        let expected = format!("from 0 to {MAX_HEIGHT} m above the cloth");
+        return Err(error("height", height, "m", expected));
+    }
+    if !(-MAX_SPEED..=MAX_SPEED).contains(&vertical) {
+        let expected = format!("finite, from -{MAX_SPEED} to {MAX_SPEED} m/s");
+        return Err(error("upward speed", vertical, "m/s", expected));
+    }
+    if height == 0.0 && vertical <= 0.0 {
+        let expected = "above 0 at height 0 (a ball in the air rises from the cloth)".to_string();
+        return Err(error("upward speed", vertical, "m/s", expected));
     }
     Ok(())
 }

@@ -57,6 +57,15 @@ pub enum Action {
         /// New spin.
         spin: Vec3,
     },
+    /// A ball set in the air ([`Simulation::launch`]: a scene file's ball in the air).
+    Launch {
+        /// The ball.
+        ball: BallId,
+        /// Height of its centre above its height on the cloth, metres.
+        height: f64,
+        /// Upward speed, m/s.
+        vertical: f64,
+    },
     /// New parameters (friction, restitution, model, randomization...).
     SetParams {
         /// The parameters.
@@ -76,6 +85,11 @@ impl Action {
                 velocity,
                 spin,
             } => sim.place(ball, position, velocity, spin),
+            Action::Launch {
+                ball,
+                height,
+                vertical,
+            } => sim.launch(ball, height, vertical),
             Action::SetParams { params } => sim.set_params(params),
         }
     }
@@ -364,6 +378,14 @@ fn check_action(sim: &Simulation, action: &Action) -> Result<(), String> {
             let (n, r) = (number(ball)?, sim.params().ball.radius);
             limits::check_motion(velocity, spin, r).map_err(|e| e.for_ball(ball, n).to_string())
         }
+        Action::Launch {
+            ball,
+            height,
+            vertical,
+        } => {
+            let n = number(ball)?;
+            limits::check_flight(height, vertical).map_err(|e| e.for_ball(ball, n).to_string())
+        }
         Action::SetParams { params } => params.validate().map_err(|e| e.to_string()),
     }
 }
@@ -439,6 +461,15 @@ impl Recorder {
             position,
             velocity,
             spin,
+        })
+    }
+
+    /// Sets a ball in the air (recorded; [`Simulation::launch`]).
+    pub fn launch(&mut self, ball: BallId, height: f64, vertical: f64) -> Result<(), SetupError> {
+        self.apply(Action::Launch {
+            ball,
+            height,
+            vertical,
         })
     }
 

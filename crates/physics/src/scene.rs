@@ -49,6 +49,9 @@ pub struct Scene {
     /// The balls.
     #[serde(flatten)]
     pub layout: Layout,
+    /// Balls in the air at time 0 (set before the shots are played).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub flights: Vec<SceneFlight>,
     /// Shots played at time 0, in order: `(ball, shot)`.
     #[serde(default)]
     pub shots: Vec<SceneShot>,
@@ -70,6 +73,18 @@ pub struct SceneShot {
     /// The strike.
     #[serde(flatten)]
     pub shot: Shot,
+}
+
+/// A ball of a scene in the air at time 0 ([`Simulation::launch`]).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SceneFlight {
+    /// The ball (its index among the scene's balls).
+    pub ball: usize,
+    /// Height of its centre above its height on the cloth, metres.
+    pub height: f64,
+    /// Upward speed, m/s (negative: falling).
+    #[serde(default)]
+    pub vertical: f64,
 }
 
 /// The outcome of running a scene.
@@ -116,6 +131,9 @@ impl Scene {
     /// Builds the simulation and plays the shots (at time 0).
     pub fn build(&self) -> Result<Simulation, SceneError> {
         let mut sim = Simulation::new(self.table, self.params, &self.balls())?;
+        for f in &self.flights {
+            sim.launch(f.ball, f.height, f.vertical)?;
+        }
         for s in &self.shots {
             sim.strike(s.ball, s.shot)?;
         }
@@ -148,6 +166,7 @@ impl Default for Scene {
             layout: Layout::Balls {
                 balls: vec![BallSetup::at(0, Vec2::ZERO)],
             },
+            flights: Vec::new(),
             shots: Vec::new(),
             duration: Duration::UntilRest,
         }

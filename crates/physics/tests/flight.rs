@@ -296,3 +296,149 @@ fn a_hard_elevated_shot_into_a_cushion_leaves_the_table() {
     );
     assert!(soft.ball(0).motion.on_table());
 }
+
+/// A ball flying across a pocket's opening drops in (a pocket event, as on the cloth) unless
+/// it flies over the whole hole: its lowest point at or above the cushion nose (0.635 of the
+/// diameter) both as its centre crosses the opening and a mouth's width beyond it. From 5 cm
+/// short of the opening at 50 degrees, every speed here is still in its first flight there,
+/// so the crossing is at `D / u` (`u = (5/7) v cos(theta)`) at the height `v_z tau - g tau^2
+/// / 2`; the solver's event is at that time to 1e-12 s and is the pocket or the flight off
+/// the table as that closed form says, on the jaws table (the opening's line) and on the
+/// paper's (the mouth on the cushion line), at a corner and at a side pocket.
+#[test]
+fn a_ball_flying_into_a_pocket_drops_in_unless_it_flies_over_the_hole() {
+    let p = spin();
+    let (r, g) = (p.ball.radius, p.gravity);
+    let nose = 0.635 * 2.0 * r;
+    let theta = 50f64.to_radians();
+    let d = 0.05;
+    let (jaws, mouths) = (Table::wpa_8ft().with_jaws(0.015), Table::wpa_8ft());
+    let (hx, hy) = (0.5 * jaws.length, 0.5 * jaws.width);
+    // Corner: on the diagonal, the opening's line d away (it passes through (hx - leg, hy)
+    // and (hx, hy - leg)). Side: straight at the side pocket; with the paper's mouths the
+    // ball crosses when its side reaches the cushion line (its centre R inside).
+    let corner_a = 0.5 * (d * std::f64::consts::SQRT_2 + jaws.corner_leg());
+    let cases = [
+        (
+            jaws,
+            Vec2::new(hx - corner_a, hy - corner_a),
+            45.0,
+            Pocket::FootLeft,
+        ),
+        (jaws, Vec2::new(0.0, hy - d), 90.0, Pocket::SideLeft),
+        (mouths, Vec2::new(0.0, hy - r - d), 90.0, Pocket::SideLeft),
+    ];
+    let mut outcomes = [0, 0];
+    for (table, start, degrees, pocket) in cases {
+        let mouth = if pocket.is_corner() {
+            table.corner_mouth
+        } else {
+            table.side_mouth
+        };
+        for v in [1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0] {
+            let mut sim = Simulation::new(table, p, &[BallSetup::at(0, start)]).unwrap();
+            let shot = Shot {
+                elevation: theta,
+                ..Shot::new(f64::to_radians(degrees), v)
+            };
+            sim.strike(0, shot).unwrap();
+            sim.run_to_rest().unwrap();
+            let (u, vz) = (5.0 / 7.0 * v * theta.cos(), E * v * theta.sin());
+            let height = |tau: f64| vz * tau - 0.5 * g * tau * tau;
+            let tau = d / u;
+            assert!(tau < 2.0 * vz / g, "{v} m/s: still in its first flight");
+            let over = height(tau) >= nose && height((d + mouth) / u) >= nose;
+            let events = sim.history().events();
+            assert_eq!(events.len(), 2, "{v} m/s: {events:#?}");
+            let e = events[1];
+            assert!((e.time - tau).abs() < 1e-12, "{v} m/s: {} vs {tau}", e.time);
+            if over {
+                let off = EventKind::Transition {
+                    ball: 0,
+                    from: Motion::Airborne,
+                    to: Motion::OffTable,
+                };
+                assert_eq!(e.kind, off, "{v} m/s flies over the hole");
+            } else {
+                assert_eq!(e.kind, EventKind::Pocketed { ball: 0, pocket }, "{v} m/s");
+                assert!(height(tau) > 0.0, "in the air as it drops in");
+            }
+            outcomes[over as usize] += 1;
+        }
+    }
+    assert!(outcomes[0] >= 6 && outcomes[1] >= 6, "both: {outcomes:?}");
+}
+
+/// A scene file sets a ball in the air (`"flights"`): it falls from its height at its upward
+/// speed and lands at the closed-form root `(v_z + sqrt(v_z^2 + 2 g h)) / g`, its plane
+/// velocity kept; the recording of it replays bit for bit. Out of the contract (below the
+/// cloth, falling from it, too high, not finite, the paper's model) it is refused, naming the
+/// value; a ball in the air cannot be struck (the cue's impulse needs the slate's).
+#[test]
+fn a_scene_sets_a_ball_in_the_air_and_it_lands_at_the_closed_form() {
+    use billiards_physics::recording::{self, Recorder};
+    use billiards_physics::scene::Scene;
+    let text = r#"{
+        "params": { "model": { "kind": "spin" } },
+        "balls": [ { "number": 0, "position": { "x": 0.0, "y": 0.0 }, "velocity": { "x": 1.0, "y": 0.0 } } ],
+        "flights": [ { "ball": 0, "height": 0.1, "vertical": 0.5 } ]
+    }"#;
+    let scene = Scene::from_json(text).unwrap();
+    let result = scene.run().unwrap();
+    let g = scene.params.gravity;
+    let (h, vz) = (0.1, 0.5);
+    let tau = (vz + (vz * vz + 2.0 * g * h).sqrt()) / g;
+    let placed = result.events[0];
+    assert_eq!(placed.kind, EventKind::Placed { ball: 0 });
+    assert_eq!((placed.after[0].height, placed.after[0].vertical), (h, vz));
+    let lands = result
+        .events
+        .iter()
+        .find(|e| {
+            matches!(
+                e.kind,
+                EventKind::Transition {
+                    from: Motion::Airborne,
+                    ..
+                }
+            )
+        })
+        .expect("it lands");
+    assert!((lands.time - tau).abs() < 1e-12, "{} vs {tau}", lands.time);
+    assert!((lands.after[0].position.x - tau).abs() < 1e-12);
+    // Recorded and replayed: the same events, bit for bit.
+    let mut rec = Recorder::new(scene.table, scene.params, scene.balls()).unwrap();
+    rec.launch(0, h, vz).unwrap();
+    rec.run_to_rest().unwrap();
+    let recording = rec.recording();
+    let verdict = recording.verify().unwrap();
+    let events = recording.events.len();
+    assert_eq!(verdict, recording::Verdict::Reproduced { events });
+    assert!(events >= 3, "placed, landed, rested: {events}");
+    // Refused, naming the value.
+    let p = spin();
+    let two = [
+        BallSetup::at(0, Vec2::ZERO),
+        BallSetup::at(1, Vec2::new(0.06, 0.0)),
+    ];
+    let mut sim = Simulation::new(huge_table(), p, &two).unwrap();
+    for (height, vertical, says) in [
+        (-0.01, 0.0, "height"),
+        (0.0, -1.0, "upward speed"),
+        (0.0, 0.0, "upward speed"),
+        (0.7, 0.0, "height"),
+        (0.01, f64::NAN, "upward speed"),
+    ] {
+        let e = sim.launch(0, height, vertical).unwrap_err().to_string();
+        assert!(e.contains(says), "{height} {vertical}: {e}");
+    }
+    sim.launch(0, 0.05, 0.0).unwrap();
+    assert_eq!(sim.ball(0).motion, Motion::Airborne);
+    // The cue strikes a ball against the slate: not one in the air.
+    let e = sim.strike(0, Shot::new(0.0, 1.0)).unwrap_err().to_string();
+    assert!(e.contains("cannot be struck"), "{e}");
+    let paper = Params::default();
+    let mut sim = Simulation::new(huge_table(), paper, &two[..1]).unwrap();
+    let e = sim.launch(0, 0.1, 0.0).unwrap_err().to_string();
+    assert!(e.contains("no flight"), "{e}");
+}

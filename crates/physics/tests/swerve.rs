@@ -1,4 +1,4 @@
-//! Cue elevation and swerve: the strike of an elevated cue (Alciatore TP A-30; pooltool's
+//! Cue elevation, swerve and masse: the strike of an elevated cue (Alciatore TP A-30; pooltool's
 //! `instantaneous_point`) and the sliding motion that curves the ball (Leckie & Greenspan:
 //! the friction force keeps its direction in the contact-point frame, so the path is a
 //! parabola until the ball rolls).
@@ -266,5 +266,83 @@ fn elevated_breaks_keep_every_invariant() {
         if let Err(v) = monitor.run_to_rest(&mut sim) {
             panic!("shot {i} {s:?}: {v}");
         }
+    }
+}
+
+/// The sliding phase from `e`'s state on: with slip `u0 = v0 + w0 x (-R z)` the friction
+/// `-mu_s g u_hat` is constant (Leckie & Greenspan), so the centre is at `p0 + v0 t -
+/// (mu_s g / 2) t^2 u_hat` until `T = 2 |u0| / (7 mu_s g)`. Returns the closed form and `T`.
+fn sliding_closed_form(e: &Event, mu_g: f64, r: f64) -> (impl Fn(f64) -> Vec2, f64) {
+    let s = e.after[0];
+    let w = s.angular_velocity;
+    let u0 = Vec2::new(s.velocity.x - r * w.y, s.velocity.y + r * w.x);
+    let u_hat = u0 / u0.length();
+    let (p0, v0, t0) = (s.position, s.velocity, e.time);
+    let at = move |t: f64| {
+        let tau = t - t0;
+        p0 + v0 * tau - u_hat * (0.5 * mu_g * tau * tau)
+    };
+    (at, 2.0 * u0.length() / (7.0 * mu_g))
+}
+
+/// Masse: a steep cue (60 to 80 degrees) with english drives the ball into the slate, which
+/// takes the vertical part; the cue's impulse at the contact point leaves a spin whose slip is
+/// far off the ball's heading: the path curves by tens of degrees (a few after hops, whose landings grip).
+/// Sampled from the history through its sliding phase (after the strike when it stays down,
+/// after its last landing when it hops), the solver's path is the closed form of the sliding
+/// motion to 1e-9 m, and the slide ends at `T` to 1e-12 s.
+#[test]
+fn a_masse_curves_on_the_closed_form_of_the_sliding_motion() {
+    let m = SpinModel::default();
+    let p = spin(m);
+    let (r, mu_g) = (p.ball.radius, m.mu_slide * p.gravity);
+    // Each with the least turn of its heading over the slide, degrees.
+    for (s, least) in [
+        (shot(0.0, 0.6, 0.4, 0.0, 70.0), 40.0),
+        (shot(1.0, 0.5, -0.35, -0.2, 80.0), 90.0),
+        (shot(-0.5, 0.55, 0.3, 0.2, 60.0), 20.0),
+        // Hard enough to hop first: the curve starts where it comes down, and the slate's
+        // grip at each landing took most of the slip (a few degrees left).
+        (shot(0.3, 2.0, -0.4, -0.2, 55.0), 2.0),
+    ] {
+        let mut sim = struck(p, s);
+        sim.run_to_rest().unwrap();
+        let h = sim.history();
+        let events = h.events();
+        let to_cloth = |e: &&Event| {
+            matches!(
+                e.kind,
+                EventKind::Strike { .. } | EventKind::Transition { .. }
+            ) && e.after[0].motion == Motion::Sliding
+        };
+        let start = *events.iter().rfind(to_cloth).expect("a sliding phase");
+        let end = events.iter().find(|e| {
+            e.time > start.time
+                && matches!(
+                    e.kind,
+                    EventKind::Transition {
+                        from: Motion::Sliding,
+                        ..
+                    }
+                )
+        });
+        let end = *end.expect("the slide ends");
+        let (at, t_slide) = sliding_closed_form(&start, mu_g, r);
+        assert!(
+            (end.time - start.time - t_slide).abs() < 1e-12,
+            "{s:?}: slides {} s, closed form {t_slide}",
+            end.time - start.time
+        );
+        for k in 0..=20 {
+            let t = start.time + t_slide * k as f64 / 20.0;
+            let q = h.state_at(0, t).position;
+            assert!((q - at(t)).length() < 1e-9, "{s:?} at {k}/20: {q:?}");
+        }
+        let turn = (end.after[0].velocity.angle() - start.after[0].velocity.angle()).abs();
+        let turn = turn.min(std::f64::consts::TAU - turn).to_degrees();
+        assert!(
+            turn > least,
+            "{s:?}: a masse curves, turned {turn:.1} degrees"
+        );
     }
 }

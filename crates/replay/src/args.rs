@@ -100,32 +100,63 @@ pub(crate) fn parse_end_mass(s: &str) -> Result<f64, String> {
     }
 }
 
-/// Degrees on the command line, radians in the shot.
+/// Degrees on the command line, radians in the shot: from 0 to 85 degrees
+/// ([`limits::MAX_ELEVATION`]), else the contract's error with the degrees given.
 pub(crate) fn parse_elevation(s: &str) -> Result<f64, String> {
     let degrees = s.trim().parse::<f64>().map_err(|e| format!("{s:?}: {e}"))?;
+    elevation_of(degrees)
+}
+
+fn elevation_of(degrees: f64) -> Result<f64, String> {
     let shot = Shot {
         elevation: degrees.to_radians(),
         ..Shot::new(0.0, 0.0)
     };
-    limits::check_shot(&shot).map_err(|_| format!("elevation {s:?}: from 0 to 85 degrees"))?;
+    limits::check_shot(&shot).map_err(|e| {
+        format!("cue elevation {degrees} degrees: from 0 to 85 degrees (the contract: {e})")
+    })?;
     Ok(shot.elevation)
 }
 
-pub(crate) fn parse_shot(s: &str) -> Result<Shot, String> {
+/// A `--shot`: the shot, and whether it gave its own elevation (which `--elevation` does
+/// not override).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShotArg {
+    /// The shot (its elevation 0 unless given).
+    pub shot: Shot,
+    /// The shot's own elevation, radians, from its fifth field.
+    pub elevation: Option<f64>,
+}
+
+/// `ANGLE_DEG:SPEED[:SIDE:HEIGHT[:ELEVATION_DEG]]`, every value checked against the physics
+/// contract ([`limits::check_shot`]).
+pub(crate) fn parse_shot(s: &str) -> Result<ShotArg, String> {
     let v: Vec<f64> = s
         .split(':')
         .map(|x| x.trim().parse::<f64>().map_err(|e| format!("{x:?}: {e}")))
         .collect::<Result<_, _>>()?;
-    let shot = match v[..] {
-        [a, speed] => Shot::new(a.to_radians(), speed),
-        [a, speed, side, height] => Shot {
-            tip: TipOffset { side, height },
-            ..Shot::new(a.to_radians(), speed)
-        },
-        _ => return Err("expected ANGLE_DEG:SPEED or ANGLE_DEG:SPEED:SIDE:HEIGHT".into()),
+    let tipped = |a: f64, speed, side, height| Shot {
+        tip: TipOffset { side, height },
+        ..Shot::new(f64::to_radians(a), speed)
+    };
+    let (shot, elevation) = match v[..] {
+        [a, speed] => (Shot::new(a.to_radians(), speed), None),
+        [a, speed, side, height] => (tipped(a, speed, side, height), None),
+        [a, speed, side, height, degrees] => {
+            (tipped(a, speed, side, height), Some(elevation_of(degrees)?))
+        }
+        _ => {
+            return Err("expected ANGLE_DEG:SPEED, ANGLE_DEG:SPEED:SIDE:HEIGHT or \
+                 ANGLE_DEG:SPEED:SIDE:HEIGHT:ELEVATION_DEG"
+                .into());
+        }
+    };
+    let shot = Shot {
+        elevation: elevation.unwrap_or(0.0),
+        ..shot
     };
     limits::check_shot(&shot).map_err(|e| e.to_string())?;
-    Ok(shot)
+    Ok(ShotArg { shot, elevation })
 }
 
 pub(crate) fn parse_pocket(s: &str) -> Result<Pocket, String> {
@@ -211,14 +242,17 @@ pub struct SimulateArgs {
     /// for a standard shaft, 0.004 for a low-deflection one. Without it, no squirt.
     #[arg(long, value_parser = parse_end_mass)]
     pub end_mass: Option<f64>,
-    /// A shot of the cue ball, `ANGLE_DEG:SPEED[:SIDE:HEIGHT]`; repeat for several shots,
-    /// each played once everything rests. SPEED in m/s: 0 or from 1e-10 to 100 (a hard break
-    /// is 12); ANGLE_DEG any finite; SIDE and HEIGHT in ball radii, within the miscue limit.
+    /// A shot of the cue ball, `ANGLE_DEG:SPEED[:SIDE:HEIGHT[:ELEVATION_DEG]]`; repeat for
+    /// several shots, each played once everything rests. SPEED in m/s: 0 or from 1e-10 to 100
+    /// (a hard break is 12); ANGLE_DEG any finite; SIDE and HEIGHT in ball radii, within the
+    /// miscue limit; ELEVATION_DEG the cue's, from 0 to 85 (default `--elevation`): steep and
+    /// hard, the cue ball jumps (spin model; the summary lists its flight).
     #[arg(long = "shot", value_parser = parse_shot)]
-    pub shots: Vec<Shot>,
-    /// Cue elevation in degrees for every `--shot` and batch break, from 0 (level, the
-    /// default) to 30; with side english the cue ball swerves towards it (spin model). A
-    /// scene file's shots keep their own `elevation` (radians).
+    pub shots: Vec<ShotArg>,
+    /// Cue elevation in degrees for every `--shot` without its own and every batch break, from
+    /// 0 (level, the default) to 85; with side english the cue ball swerves towards it, steep
+    /// and hard it jumps (spin model). A scene file's shots keep their own `elevation`
+    /// (radians).
     #[arg(long, value_parser = parse_elevation, default_value = "0")]
     pub elevation: f64,
     /// Seed of the collision-normal randomization (off if absent).

@@ -13,7 +13,7 @@ use std::path::Path;
 
 /// Plays `a.shots` as a rack of `game`; see [`SimulateArgs::game`].
 pub(crate) fn play_game(a: &SimulateArgs, game: Game) -> Result<(), String> {
-    let (table, params, _, shots) = setup(a)?;
+    let (table, params, _, _, shots) = setup(a)?;
     if shots.is_empty() {
         return Err("no shots: give --shot ANGLE_DEG:SPEED".into());
     }
@@ -63,6 +63,7 @@ pub(crate) fn play_game(a: &SimulateArgs, game: Game) -> Result<(), String> {
             .find(|(s, _)| *s == k)
             .map_or(Call::None, |&(_, c)| c);
         let (start, first) = (rec.sim().time(), rec.sim().history().events().len());
+        let in_air = crate::flight::airborne(rec.sim());
         rec.strike(0, shot).map_err(|e| at(&e))?;
         rec.run_to_rest().map_err(|e| at(&e))?;
         let sim = rec.sim();
@@ -75,6 +76,7 @@ pub(crate) fn play_game(a: &SimulateArgs, game: Game) -> Result<(), String> {
             events: events.len(),
             pocketed: summary.pocketed_object_balls().collect(),
             time_to_rest: sim.time() - start,
+            flight: crate::flight::flight_events(events, sim.numbers(), start, in_air),
             verdict: Some(verdict.clone()),
         });
         log.shots.push(LoggedShot {

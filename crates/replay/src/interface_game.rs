@@ -23,7 +23,7 @@ fn entry(id: &str) -> Result<&'static GameEntry, String> {
 /// to `--out` after each stroke.
 pub(crate) fn simulate(id: &str, a: &SimulateArgs) -> Result<(), String> {
     let entry = entry(id)?;
-    let (_, params, _, shots) = setup(a)?;
+    let (_, params, _, _, shots) = setup(a)?;
     if shots.is_empty() {
         return Err("no shots: give --shot ANGLE_DEG:SPEED".into());
     }

@@ -10,6 +10,7 @@ pub mod breaks;
 pub mod cli;
 pub mod drill;
 pub mod export;
+pub mod flight;
 pub mod game;
 pub mod interface_game;
 pub mod position;

@@ -4,17 +4,18 @@
 //! back (issue 50).
 
 use crate::args::*;
+use crate::flight::FlightEvent;
 use billiards_physics::recording::Recorder;
-use billiards_physics::scene::Scene;
+use billiards_physics::scene::{Scene, SceneFlight};
 use billiards_physics::*;
 use billiards_rules::Verdict as RulesVerdict;
 use serde::Serialize;
 
-/// The command line's shots, at the cue elevation of `--elevation`.
+/// The command line's shots, each at its own cue elevation, else at `--elevation`'s.
 pub(crate) fn command_line_shots(a: &SimulateArgs) -> impl Iterator<Item = Shot> + '_ {
     a.shots.iter().map(|s| Shot {
-        elevation: a.elevation,
-        ..*s
+        elevation: s.elevation.unwrap_or(a.elevation),
+        ..s.shot
     })
 }
 
@@ -29,15 +30,20 @@ pub struct ShotSummary {
     pub pocketed: Vec<u8>,
     /// Seconds of simulated time until everything rested.
     pub time_to_rest: f64,
+    /// Take-offs, bounces, landings and flights off the table (none for a shot that stays
+    /// on the cloth).
+    pub flight: Vec<FlightEvent>,
     /// The rules' verdict (with `--game`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub verdict: Option<RulesVerdict>,
 }
 
+/// What a `simulate` run starts from: the table, physics, balls, the balls in the air (a
+/// scene file's `flights`) and the shots.
+pub(crate) type Start = (Table, Params, Vec<BallSetup>, Vec<SceneFlight>, Vec<Shot>);
+
 /// The table, physics, balls and shots of `a`: a scene file's, or a standard rack's.
-pub(crate) fn setup(
-    a: &SimulateArgs,
-) -> Result<(Table, Params, Vec<BallSetup>, Vec<Shot>), String> {
+pub(crate) fn setup(a: &SimulateArgs) -> Result<Start, String> {
     let randomization = a.seed.map(|seed| Randomization {
         spread: 0.005,
         seed,
@@ -58,7 +64,7 @@ pub(crate) fn setup(
             .map(|s| s.shot)
             .chain(command_line_shots(a))
             .collect();
-        return Ok((scene.table, params, scene.balls(), shots));
+        return Ok((scene.table, params, scene.balls(), scene.flights, shots));
     }
     let model = match a.model {
         ModelArg::Paper => Model::Paper(PaperModel::default()),
@@ -86,6 +92,7 @@ pub(crate) fn setup(
         table,
         params,
         rack.layout(&table, &params.ball),
+        Vec::new(),
         command_line_shots(a).collect(),
     ))
 }

@@ -5,6 +5,7 @@
 pub use crate::args::SimulateArgs;
 pub use crate::setup::ShotSummary;
 
+use crate::flight;
 use crate::setup::{respot_cue_ball, setup};
 use billiards_physics::recording::Recorder;
 use billiards_physics::*;
@@ -15,6 +16,7 @@ fn play(rec: &mut Recorder, shot: Shot) -> Result<ShotSummary, String> {
     respot_cue_ball(rec)?;
     let start = rec.sim().time();
     let first = rec.sim().history().events().len();
+    let in_air = flight::airborne(rec.sim());
     rec.strike(0, shot).map_err(|e| e.to_string())?;
     rec.run_to_rest().map_err(|e| e.to_string())?;
     let sim = rec.sim();
@@ -31,6 +33,7 @@ fn play(rec: &mut Recorder, shot: Shot) -> Result<ShotSummary, String> {
         events: events.len(),
         pocketed,
         time_to_rest: sim.time() - start,
+        flight: flight::flight_events(events, sim.numbers(), start, in_air),
         verdict: None,
     })
 }
@@ -45,16 +48,21 @@ pub(crate) fn simulate(a: SimulateArgs) -> Result<(), String> {
             None => crate::snooker::simulate(&a),
         };
     }
-    let (table, params, balls, shots) = setup(&a)?;
+    let (table, params, balls, flights, shots) = setup(&a)?;
+    let mut rec = Recorder::new(table, params, balls).map_err(|e| e.to_string())?;
+    for f in &flights {
+        // A scene's balls in the air, recorded as inputs so `verify` replays them.
+        rec.launch(f.ball, f.height, f.vertical)
+            .map_err(|e| format!("flight of ball {}: {e}", f.ball))?;
+    }
     if let Some(n) = a.batch {
-        return batch(table, params, balls, n, &a);
+        return batch(rec, n, &a);
     }
     if shots.is_empty() {
         return Err(
             "no shots: give --shot ANGLE_DEG:SPEED (or a scene with shots), or --batch N".into(),
         );
     }
-    let mut rec = Recorder::new(table, params, balls).map_err(|e| e.to_string())?;
     let mut out = Vec::new();
     // Shots count from 1, as in the game and `export --shot K` (billiards_rules::shots).
     for (k, shot) in (1..).zip(shots) {
@@ -76,18 +84,15 @@ pub(crate) fn simulate(a: SimulateArgs) -> Result<(), String> {
                 "shot {k}: {} events, pocketed {:?}, rest after {:.3} s",
                 s.events, s.pocketed, s.time_to_rest
             );
+            for f in &s.flight {
+                println!("  {f}");
+            }
         }
     }
     Ok(())
 }
 
-fn batch(
-    table: Table,
-    params: Params,
-    balls: Vec<BallSetup>,
-    n: usize,
-    a: &SimulateArgs,
-) -> Result<(), String> {
+fn batch(start: Recorder, n: usize, a: &SimulateArgs) -> Result<(), String> {
     let threads = a
         .threads
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
@@ -103,7 +108,6 @@ fn batch(
     bar.set_style(
         ProgressStyle::with_template("{bar:40} {pos}/{len} shots {eta}").expect("template"),
     );
-    let start = Recorder::new(table, params, balls).map_err(|e| e.to_string())?;
     let chunk = n.div_ceil(threads).max(1);
     let results: Vec<Result<ShotSummary, String>> = std::thread::scope(|s| {
         let handles: Vec<_> = shots

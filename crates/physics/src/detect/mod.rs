@@ -15,4 +15,4 @@ pub use ball_cushion::{ball_cushion, ball_line, cushion_contact, line_contact};
 pub use ball_jaw::ball_jaw;
 pub use cull::{MISS_ABSOLUTE_MARGIN, MISS_RELATIVE_MARGIN, MISS_ROUNDING, misses};
 pub use kinematics::Kinematics;
-pub use tolerances::{RESTING_DEPTH, RESTING_HOP, RESTING_SPEED, SEPARATION};
+pub use tolerances::{LEVEL, RESTING_DEPTH, RESTING_HOP, RESTING_SPEED, SEPARATION};

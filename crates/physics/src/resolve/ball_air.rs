@@ -15,12 +15,30 @@
 
 use super::slate::{self, Slate};
 use crate::ball::{BallState, Motion};
+use crate::detect::RESTING_HOP;
 use crate::math::Vec3;
 
+/// A ball's state at a contact in space with its acceleration there: in the plane (the
+/// cloth's friction) and upward (`-g` in the air, 0 on the cloth).
+pub type Moving<'a> = (&'a BallState, Vec3);
+
 /// States of `a` and `b` (their heights and upward speeds set, a ball on the cloth at height
-/// 0) just after they touch in space; `motion` is `Airborne` for a ball that leaves or stays
-/// off the cloth, and `Sliding` (to be decided by the caller) for one on it.
-pub fn air_pair(e: f64, table: &Slate, sa: &BallState, sb: &BallState) -> (BallState, BallState) {
+/// 0) just after they touch in space, with radius `radius`; `motion` is `Airborne` for a ball
+/// that leaves or stays off the cloth, and `Sliding` (to be decided by the caller) for one on
+/// it.
+///
+/// A resting contact in space ([`super::is_resting`], as on the cloth: sunk past half the
+/// resting depth, or pressed together by gravity along the normal and approaching too slowly
+/// to hop apart on its own; a ball in the air leaning on another's side as it slides down it)
+/// is elastic with the cloth's minimum hop ([`resting_contact_3d`]): with restitution under 1
+/// its bounces would shrink geometrically to an accumulation point, an inelastic collapse of
+/// unboundedly many events (flight soak seed 51, shot 1,084).
+pub fn air_pair(
+    e: f64,
+    table: &Slate,
+    (sa, acc_a): Moving,
+    (sb, acc_b): Moving,
+) -> (BallState, BallState) {
     let d = Vec3::new(
         sb.position.x - sa.position.x,
         sb.position.y - sa.position.y,
@@ -35,12 +53,48 @@ pub fn air_pair(e: f64, table: &Slate, sa: &BallState, sb: &BallState) -> (BallS
     let va = Vec3::new(sa.velocity.x, sa.velocity.y, sa.vertical);
     let vb = Vec3::new(sb.velocity.x, sb.velocity.y, sb.vertical);
     let approach = (va - vb).dot(n);
-    let j = if approach > 0.0 {
-        0.5 * (1.0 + e) * approach
+    // Relative normal acceleration pushing the pair together, less the centripetal term of
+    // their sliding past each other (as on the cloth, `resolve::ball_pair`).
+    let dv = vb - va;
+    let slide = dv - n * dv.dot(n);
+    let pressing = -(acc_b - acc_a).dot(n) - slide.dot(slide) / len.max(f64::MIN_POSITIVE);
+    let depth = 2.0 * table.radius - len;
+    let (va, vb) = if super::is_resting(depth, approach, pressing) {
+        resting_contact_3d(va, vb, n, pressing, RESTING_HOP)
     } else {
-        0.0
+        let j = if approach > 0.0 {
+            0.5 * (1.0 + e) * approach
+        } else {
+            0.0
+        };
+        (va - n * j, vb + n * j)
     };
-    (after(table, sa, va - n * j), after(table, sb, vb + n * j))
+    (after(table, sa, va), after(table, sb, vb))
+}
+
+/// [`super::resting_contact`] in space: the pair leaves elastic and separating at no less
+/// than `sqrt(2 pressing hop)`, the extra normal speed turned from their relative
+/// tangential velocity (never lengthened), each ball taking half the change: momentum kept,
+/// kinetic energy never raised.
+pub fn resting_contact_3d(va: Vec3, vb: Vec3, n: Vec3, pressing: f64, hop: f64) -> (Vec3, Vec3) {
+    let dv = vb - va;
+    let vn = dv.dot(n);
+    let tangential = dv - n * vn;
+    let vt = tangential.length();
+    let want = (-vn).max((2.0 * pressing.max(0.0) * hop).sqrt());
+    if vn >= want {
+        return (va, vb);
+    }
+    let speed2 = vn * vn + vt * vt;
+    let vn2 = want.min(speed2.sqrt());
+    let vt2 = (speed2 - vn2 * vn2).max(0.0).sqrt().min(vt);
+    let t = if vt > 0.0 {
+        tangential * (1.0 / vt)
+    } else {
+        Vec3::ZERO
+    };
+    let half = (n * (vn2 - vn) + t * (vt2 - vt)) * 0.5;
+    (va - half, vb + half)
 }
 
 /// Ball `s` after its velocity became `v`: on the cloth and driven down, the slate's
@@ -99,7 +153,8 @@ mod tests {
             position: Vec2::new(h, 0.0),
             ..BallState::default()
         };
-        let (na, nb) = air_pair(1.0, &SLATE, &a, &b);
+        let fall = Vec3::new(0.0, 0.0, -SLATE.gravity);
+        let (na, nb) = air_pair(1.0, &SLATE, (&a, fall), (&b, Vec3::ZERO));
         // Elastic, equal masses: b takes the whole normal component (1 + 2)/sqrt 2 along n;
         // its downward part 1.5 m/s meets the slate and comes back at 0.75 m/s (28.7 mm).
         let vn = 3.0 / 2f64.sqrt();
@@ -116,5 +171,29 @@ mod tests {
                 + 0.2 * r * r * s.angular_velocity.dot(s.angular_velocity)
         };
         assert!(ke(&na) + ke(&nb) <= ke(&a) + ke(&b));
+    }
+
+    /// The resting contact in space keeps momentum, never raises kinetic energy, and leaves
+    /// the pair separating at `sqrt(2 a hop)` (here 4e-4 m/s at 0.8 m/s^2, 1e-7 m), turned
+    /// from their sliding past each other.
+    #[test]
+    fn a_resting_contact_in_space_hops_apart_without_gaining_energy() {
+        // b leans on a's side 5 mm up (n 0.084 off the plane) and slides down it at 0.076
+        // m/s, approaching along n at 1 um/s.
+        let k = 1.0 / (0.996f64.powi(2) + 0.084f64.powi(2)).sqrt();
+        let n = Vec3::new(0.996, 0.0, 0.084) * k;
+        let t = Vec3::new(-0.084, 0.0, 0.996) * k;
+        let va = Vec3::new(0.3, 0.0, 0.0);
+        let vb = va - t * 0.076 - n * 1e-6;
+        let (a2, b2) = resting_contact_3d(va, vb, n, 0.8, 1e-7);
+        assert!(((a2 + b2) - (va + vb)).length() < 1e-15, "momentum");
+        let ke = |x: Vec3, y: Vec3| x.dot(x) + y.dot(y);
+        assert!(ke(a2, b2) <= ke(va, vb) * (1.0 + 1e-15), "energy");
+        let want = (2.0f64 * 0.8 * 1e-7).sqrt();
+        let apart = (b2 - a2).dot(n);
+        assert!((apart - want).abs() < 1e-12, "{apart} vs {want}");
+        // Already separating faster than that: untouched.
+        let (a3, b3) = (va, va + n * 0.01);
+        assert_eq!(resting_contact_3d(a3, b3, n, 0.8, 1e-7), (a3, b3));
     }
 }

@@ -31,9 +31,11 @@ impl Simulation {
         let near = r2 + reach;
         // Most contacts have no third ball within reach: the search below would find the
         // pair alone. The same test, before anything is allocated.
+        // Only balls level with the cloth: one higher up touches in space, not in the plane
+        // the impact integrates in (its contacts are pairs in the air).
         let position = |id: BallId| {
             let s = &self.segments[id];
-            s.state.motion.on_table().then(|| s.position_at(t))
+            (s.state.motion.on_table() && self.level_at(id, t)).then(|| s.position_at(t))
         };
         let (pa, pb) = (position(a)?, position(b)?);
         let within = |d: Vec2| d.x.abs() < near && d.y.abs() < near && d.length() < near;
@@ -43,11 +45,7 @@ impl Simulation {
         if !third {
             return None;
         }
-        let positions: Vec<Option<Vec2>> = self
-            .segments
-            .iter()
-            .map(|s| s.state.motion.on_table().then(|| s.position_at(t)))
-            .collect();
+        let positions: Vec<Option<Vec2>> = (0..self.segments.len()).map(position).collect();
         let mut local = vec![usize::MAX; positions.len()];
         let mut cluster = Cluster::default();
         for id in [a, b] {

@@ -3,13 +3,14 @@
 
 use super::{SetupError, Simulation, setup};
 use crate::ball::{BallId, BallState, Motion, Segment};
+use crate::detect;
 use crate::event::{EventKind, Shot};
-use crate::math::Vec2;
+use crate::math::{Vec2, Vec3};
 use crate::motion;
 use crate::params::Model;
 use crate::resolve::slate::{SLATE_RESTITUTION, Slate};
 use crate::resolve::{self, Laws};
-use crate::table::Cushion;
+use crate::table::{Cushion, Pocket};
 
 impl Simulation {
     /// Strikes ball `id` now: the paper's cue (an angle and a magnitude); the spin model also
@@ -19,6 +20,16 @@ impl Simulation {
         self.flush();
         let state = self.ball_checked(id)?;
         setup::check_shot(id, self.numbers[id], &shot, self.time)?;
+        if state.motion == Motion::Airborne {
+            // The cue's impulse is balanced by the slate's (`resolve/cue.rs`): none in the air.
+            return Err(SetupError::Limit(crate::limits::LimitError {
+                ball: Some((id, self.numbers[id])),
+                what: "height",
+                value: state.height,
+                unit: "m",
+                expected: "0: a ball in the air cannot be struck".into(),
+            }));
+        }
         let dir = Vec2::from_angle(shot.angle);
         let cue = Laws::of(&self.params.model).cue;
         let cue_at = resolve::cue::Cue {
@@ -50,6 +61,14 @@ impl Simulation {
 }
 
 impl Simulation {
+    /// Ball `id` is level with the cloth at `t`: on it, or in the air under
+    /// [`detect::LEVEL`]. Its contacts with other level balls are in the plane (the pair law,
+    /// a cluster impact); a ball higher up meets others in space ([`Self::air_pair`]).
+    pub(super) fn level_at(&self, id: BallId, t: f64) -> bool {
+        let seg = &self.segments[id];
+        seg.state.motion != Motion::Airborne || seg.height_at(t) <= detect::LEVEL
+    }
+
     /// Balls `a` and `b`, one of them at least in the air, touch in space
     /// ([`resolve::ball_air::air_pair`]): each flies on, or goes on along the cloth.
     pub(super) fn air_pair(&mut self, a: BallId, b: BallId) {
@@ -65,7 +84,11 @@ impl Simulation {
             gravity: self.params.gravity,
             radius: self.params.ball.radius,
         };
-        let (na, nb) = resolve::ball_air::air_pair(e, &table, &sa, &sb);
+        let acc = |id: BallId| {
+            let seg = &self.segments[id];
+            Vec3::new(seg.acceleration.x, seg.acceleration.y, -seg.fall)
+        };
+        let (na, nb) = resolve::ball_air::air_pair(e, &table, (&sa, acc(a)), (&sb, acc(b)));
         for (id, s) in [(a, na), (b, nb)] {
             self.segments[id] = if s.motion == Motion::Airborne {
                 motion::flight::airborne(&self.params, t, s)
@@ -86,6 +109,16 @@ impl Simulation {
     /// constant speed `v_n` towards the cushion (the parabola is concave, so `z` is least at
     /// one of the two). Lower, it meets the nose and rebounds as on the cloth.
     pub(super) fn clears_cushion(&self, id: BallId, cushion: Cushion) -> bool {
+        let r = self.params.ball.radius;
+        self.clears(id, cushion.inward_normal(), r)
+    }
+
+    /// Ball `id`, in the air, keeps its lowest point at or above the cushion nose's height
+    /// (`cushion_height (2R)` above the cloth) from now until its centre has gone `reach`
+    /// farther across a line of unit normal `inward` (pointing onto the table). The parabola
+    /// is concave, so the least height over that stretch is at one of its two ends. False
+    /// for a ball on the cloth, under the paper's model, or not crossing outwards.
+    fn clears(&self, id: BallId, inward: Vec2, reach: f64) -> bool {
         let seg = &self.segments[id];
         let Model::Spin(m) = self.params.model else {
             return false;
@@ -94,14 +127,37 @@ impl Simulation {
             return false;
         }
         let r = self.params.ball.radius;
+        // The centre's height above its height on the cloth is the lowest point's rise.
         let nose = m.cushion_height * 2.0 * r;
-        let towards = -cushion.inward_normal().dot(seg.state.velocity);
+        let towards = -inward.dot(seg.state.velocity);
         if towards <= 0.0 {
             return false;
         }
         let t = self.time;
-        let over = t + r / towards;
+        let over = t + reach / towards;
         seg.height_at(t) >= nose && seg.height_at(over) >= nose
+    }
+
+    /// Ball `id` crosses `pocket`'s opening (the line across a jaws table's mouth, or a
+    /// mouth of the paper's table on the cushion line, unit normal `inward` onto the table):
+    /// it drops in, a pocket event as on the cloth, unless it is in the air and flies over
+    /// the whole hole. The hole is taken as wide as the pocket's mouth beyond the opening (the
+    /// tables give no depth), and its far edge, the rail, as high as the cushion nose: the
+    /// ball flies over and off the table when its lowest point stays at or above the nose's
+    /// height until its centre is a mouth's width past the opening ([`Self::clears`]); lower,
+    /// it comes down into the pocket or meets the far side below the rail's top and drops.
+    pub(super) fn across_opening(&mut self, id: BallId, pocket: Pocket, inward: Vec2) {
+        let table = &self.bodies.table;
+        let mouth = if pocket.is_corner() {
+            table.corner_mouth
+        } else {
+            table.side_mouth
+        };
+        if self.clears(id, inward, mouth) {
+            self.off_table(id)
+        } else {
+            self.pocket(id, pocket)
+        }
     }
 
     /// Ball `id` flies off the table over a cushion: out of play
@@ -113,5 +169,56 @@ impl Simulation {
         let (from, to) = (Motion::Airborne, Motion::OffTable);
         self.record(EventKind::Transition { ball: id, from, to });
         self.repredict_event(id, None);
+    }
+}
+
+impl Simulation {
+    /// Sets ball `id`, on the table, in the air now: its centre `height` metres above its
+    /// height on the cloth, rising at `vertical` m/s (falling if negative), its velocity in
+    /// the plane and its spin kept (a scene file's ball in the air, an editor). Recorded as
+    /// a placement ([`EventKind::Placed`], its state in the air). Only the spin model flies;
+    /// the values are checked by [`crate::limits::check_flight`], and the ball must be clear
+    /// of the others in space.
+    pub fn launch(&mut self, id: BallId, height: f64, vertical: f64) -> Result<(), SetupError> {
+        self.flush();
+        let state = self.ball_checked(id)?;
+        let number = self.numbers[id];
+        if let Model::Paper(_) = self.params.model {
+            return Err(SetupError::Limit(crate::limits::LimitError {
+                ball: Some((id, number)),
+                what: "height",
+                value: height,
+                unit: "m",
+                expected: "0: the paper's model has no flight (use the spin model)".into(),
+            }));
+        }
+        crate::limits::check_flight(height, vertical)
+            .and_then(|()| crate::limits::check_clock(self.time))
+            .map_err(|e| e.for_ball(id, number))?;
+        let r2 = 2.0 * self.params.ball.radius;
+        for (j, seg) in self.segments.iter().enumerate() {
+            let d = seg.position_at(self.time) - state.position;
+            let dz = seg.height_at(self.time) - height;
+            let gap = (d.length_squared() + dz * dz).sqrt() - r2;
+            if j != id && seg.state.motion.on_table() && gap < 0.0 {
+                return Err(SetupError::Overlap {
+                    a: id,
+                    b: j,
+                    numbers: (number, self.numbers[j]),
+                    overlap: -gap,
+                });
+            }
+        }
+        let flying = BallState {
+            height,
+            vertical,
+            motion: Motion::Airborne,
+            ..state
+        };
+        self.segments[id] = motion::flight::airborne(&self.params, self.time, flying);
+        self.record(EventKind::Placed { ball: id });
+        self.inputs_done();
+        self.repredict([id]);
+        Ok(())
     }
 }

@@ -416,7 +416,10 @@ impl Simulation {
                 self.predictions.cross(&scene, id, side, self.time);
             }
             PendingKind::Transition(id) => self.transition(id),
-            PendingKind::Opening(id, k) => self.pocket(id, self.bodies.openings[k].pocket),
+            PendingKind::Opening(id, k) => {
+                let o = self.bodies.openings[k];
+                self.across_opening(id, o.pocket, o.normal)
+            }
             PendingKind::Cushion(id, cushion) => self.cushion(id, cushion),
             PendingKind::Jaw(id, k) => self.jaw(id, k),
             PendingKind::Pair(a, b) => self.ball_pair(a, b),
@@ -445,9 +448,6 @@ impl Simulation {
     /// Ball `id` reaches `cushion`'s line: in a mouth of the paper's table it drops, anywhere
     /// else (and everywhere on a table without pockets) it rebounds.
     fn cushion(&mut self, id: BallId, cushion: Cushion) {
-        if self.clears_cushion(id, cushion) {
-            return self.off_table(id);
-        }
         let s = self.segments[id].state_at(self.time);
         let table = &self.bodies.table;
         let mouth = match table.pockets {
@@ -455,7 +455,10 @@ impl Simulation {
             PocketShape::Jaws { .. } | PocketShape::Pocketless => None,
         };
         if let Some(pocket) = mouth {
-            return self.pocket(id, pocket);
+            return self.across_opening(id, pocket, cushion.inward_normal());
+        }
+        if self.clears_cushion(id, cushion) {
+            return self.off_table(id);
         }
         let normal = cushion.inward_normal();
         let depth = -(self.bodies.cushion_limit(cushion) + normal.dot(s.position));
@@ -497,9 +500,7 @@ impl Simulation {
     /// the contact, else the pair's own law.
     fn ball_pair(&mut self, a: BallId, b: BallId) {
         let t = self.time;
-        if self.segments[a].state.motion == Motion::Airborne
-            || self.segments[b].state.motion == Motion::Airborne
-        {
+        if !self.level_at(a, t) || !self.level_at(b, t) {
             return self.air_pair(a, b);
         }
         let (sa, sb) = (self.segments[a].state_at(t), self.segments[b].state_at(t));
