@@ -54,15 +54,25 @@ pub fn places(
     if proposed.is_empty() {
         proposed = grid(&layout, 0.1).into_iter().filter(ok).collect();
     }
+    best_apart(proposed, count, |p| {
+        layout.cue = p;
+        best_success(&layout, legal, noise)
+    })
+}
+
+/// Up to `count` of `proposed`, best `value` first, each at least [`MIN_APART`] from every
+/// better one kept; equal values in the order proposed (deterministic). Pool's places and
+/// snooker's in the D ([`crate::snooker::value::d_places`]) are ranked by it.
+pub fn best_apart(
+    proposed: Vec<Vec2>,
+    count: usize,
+    mut value: impl FnMut(Vec2) -> f64,
+) -> Vec<Vec2> {
     let mut ranked: Vec<(f64, usize, Vec2)> = proposed
         .into_iter()
         .enumerate()
-        .map(|(i, p)| {
-            layout.cue = p;
-            (best_success(&layout, legal, noise), i, p)
-        })
+        .map(|(i, p)| (value(p), i, p))
         .collect();
-    // Best first; equal estimates in the order proposed (deterministic).
     ranked.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
     let mut out: Vec<Vec2> = Vec::new();
     for (_, _, p) in ranked {

@@ -2,8 +2,13 @@
 //! copy per game): candidates evaluated by noisy samples ([`Sampler`]) on all cores, the
 //! best refined with more samples, the best chosen from the finalists or from a second ply.
 //! A game's search brings its candidates, its sampler (what one noisy sample of a
-//! candidate is worth) and, if any, its second ply.
+//! candidate is worth) and, if any, its second ply ([`Searched`]); [`search`] runs them, the
+//! same for pool and snooker, and gives the one [`Plan`] type.
 
+use crate::AiError;
+use crate::candidates::ShotKind;
+use crate::plan::Plan;
+use billiards_physics::{BallId, Shot, Simulation, Vec2};
 use rayon::prelude::*;
 use std::ops::Range;
 
@@ -285,4 +290,122 @@ impl<C: Sync> Rounds<C> {
     pub fn best(&self) -> Option<usize> {
         best_candidate(&self.two, &self.finalists, &self.stats)
     }
+
+    /// Values the best `finalists` (by [`Rounds::second_ply_order`]) two plies deep; they
+    /// become the only candidates [`Rounds::best`] chooses from. Each is struck `outcomes`
+    /// times, `correction(candidate, k)` giving outcome `k`'s (second-ply value - one-ply
+    /// value, simulations, events); its value is its one-ply mean plus the mean correction
+    /// (a control variate: [`crate::twoply`]). The outcomes run on all cores, each a
+    /// function of its candidate and `k` only, so the values do not depend on the threads.
+    pub fn second_ply(
+        &mut self,
+        finalists: usize,
+        outcomes: usize,
+        correction: impl Fn(&C, u64) -> Correction + Sync,
+    ) {
+        let order = self.second_ply_order(finalists);
+        let jobs: Vec<(usize, u64)> = order
+            .iter()
+            .flat_map(|&i| (0..outcomes as u64).map(move |k| (i, k)))
+            .collect();
+        let corrections: Vec<Correction> = jobs
+            .par_iter()
+            .map(|&(i, k)| correction(&self.cands[i], k))
+            .collect();
+        for (n, &i) in order.iter().enumerate() {
+            let mine = &corrections[n * outcomes..(n + 1) * outcomes];
+            let shift = mine.iter().map(|c| c.0).sum::<f64>() / outcomes.max(1) as f64;
+            self.two.push((i, self.stats[i].mean() + shift));
+            self.simulations += mine.iter().map(|c| c.1).sum::<usize>();
+            self.events += mine.iter().map(|c| c.2).sum::<usize>();
+        }
+    }
+}
+
+/// One outcome of a second ply: (second-ply value - one-ply value), simulations, events.
+pub type Correction = (f64, usize, usize);
+
+/// What a game's search brings to the skeleton ([`search`]): where the cue ball may start,
+/// its candidates and safeties from there, its rounds, its second ply, and what goes with
+/// the chosen candidate to the rules. Sampling is the [`Sampler`]'s.
+pub trait Searched: Sampler {
+    /// How much it searches (a level's budget).
+    type Budget;
+    /// The per-game part of its plan (pool's call, snooker's nomination).
+    type Part;
+    /// The cue ball's places to search from: `None` alone when it is not in hand.
+    fn places(&self, budget: &Self::Budget) -> Result<Vec<Option<Vec2>>, AiError>;
+    /// The first candidates (pots, or the break), from every place.
+    fn offence(&self, places: &[Option<Vec2>], budget: &Self::Budget) -> Vec<Self::Cand>;
+    /// The safeties from every place, `scoring` when the best first candidate succeeds at
+    /// least [`SAFETY_BELOW`] of the time (none when the game's search does not want them).
+    fn safeties(
+        &self,
+        places: &[Option<Vec2>],
+        budget: &Self::Budget,
+        scoring: bool,
+    ) -> Vec<Self::Cand>;
+    /// The first round's samples and the refinement rounds `(k, m)`.
+    fn rounds<'b>(&self, budget: &'b Self::Budget) -> (usize, &'b [(usize, usize)]);
+    /// The second ply, if the budget has one ([`Rounds::second_ply`]).
+    fn second_ply(&self, pool: &mut Rounds<Self::Cand>, budget: &Self::Budget);
+    /// The shot of candidate `cand`, its place, what it tries and its per-game part.
+    fn stroke(&self, cand: &Self::Cand) -> (Shot, Option<Vec2>, ShotKind, Self::Part);
+}
+
+/// The one search skeleton (issue 50): the places, the first candidates sampled, the
+/// safeties when the best does not score, the refinement rounds, the second ply, and the
+/// plan of the best candidate with the figures its samples gave.
+pub fn search<S: Searched>(s: &S, budget: &S::Budget) -> Result<Plan<S::Part>, AiError> {
+    let places = s.places(budget)?;
+    let mut pool = Rounds::default();
+    let first = s.offence(&places, budget);
+    let safeties = |scoring: bool| s.safeties(&places, budget, scoring);
+    pool.play_rounds(s, first, safeties, s.rounds(budget));
+    s.second_ply(&mut pool, budget);
+    let found = pool.found().ok_or(AiError::NoBall)?;
+    let (shot, place, kind, part) = s.stroke(&pool.cands[found.index]);
+    Ok(Plan {
+        shot,
+        place,
+        part,
+        kind,
+        success: found.stats.pot_rate(),
+        foul: found.foul_rate(),
+        value: found.value,
+        samples: found.stats.n,
+        simulations: found.simulations,
+        events: found.events,
+    })
+}
+
+/// Every game's first step: the game must be on (`over` false) and the balls at rest.
+pub fn at_rest(over: bool, sim: &Simulation) -> Result<(), AiError> {
+    if over {
+        return Err(AiError::GameOver);
+    }
+    if !sim.is_at_rest() {
+        return Err(AiError::NotAtRest);
+    }
+    Ok(())
+}
+
+/// The cue ball's index in `sim` (ball number `cue`) and the table a search samples from (a
+/// copy without history). The cue ball must be on the table unless it is `in_hand`.
+pub fn cue_and_base(
+    sim: &Simulation,
+    cue: u8,
+    in_hand: bool,
+) -> Result<(BallId, Simulation), AiError> {
+    let id = sim
+        .numbers()
+        .iter()
+        .position(|&n| n == cue)
+        .ok_or(AiError::NoCueBall)?;
+    if !in_hand && !sim.ball(id).motion.on_table() {
+        return Err(AiError::CueBallOff);
+    }
+    let mut base = sim.clone();
+    base.set_record_history(false);
+    Ok((id, base))
 }
