@@ -30,8 +30,8 @@
 //! [`billiards_rules::NextShot::spot`] names, then call [`decide`]; put the cue ball at
 //! [`Plan::place`] if any (`Simulation::place`), strike the cue ball with
 //! [`Plan::executed`] (the shot with the player's execution noise), run to rest, summarise
-//! the events (`billiards_rules::summarise`) and pass them with [`Plan::call`] to
-//! `GameState::play`. A [`Decision::Choose`] goes to `GameState::choose`.
+//! the events (`billiards_rules::summarise`) and pass them with `plan.call`
+//! ([`Called::call`]) to `GameState::play`. A [`Decision::Choose`] goes to `GameState::choose`.
 
 pub mod any_game;
 pub mod any_match;

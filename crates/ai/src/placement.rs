@@ -60,9 +60,9 @@ pub fn places(
     })
 }
 
-/// Up to `count` of `proposed`, best `value` first, each at least [`MIN_APART`] from every
-/// better one kept; equal values in the order proposed (deterministic). Pool's places and
-/// snooker's in the D ([`crate::snooker::value::d_places`]) are ranked by it.
+/// Up to `count` of `proposed`, best `value` first, each at least `MIN_APART` (5 cm) from
+/// every better one kept; equal values in the order proposed (deterministic). Pool's places
+/// and snooker's in the D ([`crate::snooker::value::d_places`]) are ranked by it.
 pub fn best_apart(
     proposed: Vec<Vec2>,
     count: usize,
@@ -97,4 +97,21 @@ fn grid(layout: &Layout, step: f64) -> Vec<Vec2> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn best_apart_keeps_the_best_first_drops_near_ones_and_breaks_ties_in_order() {
+        // b is best; a lies 1 cm from it (under MIN_APART) and goes; c and d tie and keep
+        // the order proposed; `count` cuts the list.
+        let (a, b) = (Vec2::new(0.0, 0.0), Vec2::new(0.01, 0.0));
+        let (c, d) = (Vec2::new(1.0, 0.0), Vec2::new(2.0, 0.0));
+        let value = |p: Vec2| if p == b { 0.9 } else { 0.5 };
+        assert_eq!(best_apart(vec![a, b, c, d], 3, value), vec![b, c, d]);
+        assert_eq!(best_apart(vec![a, b, d, c], 2, value), vec![b, d]);
+        assert_eq!(best_apart(vec![a, b, c], 0, value), Vec::<Vec2>::new());
+    }
 }

@@ -79,3 +79,36 @@ impl<P> Plan<P> {
         noise.apply(self.shot, params, &mut noise::stream(seed, u64::MAX, 0))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn plan(call: Call) -> Plan {
+        Plan {
+            shot: Shot::new(0.5, 2.0),
+            place: Some(Vec2::new(0.1, -0.2)),
+            part: Called { call },
+            kind: ShotKind::Break,
+            success: 0.25,
+            foul: 0.125,
+            value: -0.5,
+            samples: 8,
+            simulations: 40,
+            events: 900,
+        }
+    }
+
+    #[test]
+    fn a_pool_plan_reads_and_writes_its_call_as_its_own_field() {
+        // The per-game part is flattened: the JSON has "call" at the plan's top level, as
+        // the pool plan had before the part was split off, and `plan.call` reads through.
+        let p = plan(Call::Safety);
+        assert_eq!(p.call, Call::Safety);
+        let json = serde_json::to_value(&p).unwrap();
+        assert!(json.get("call").is_some(), "{json}");
+        assert!(json.get("part").is_none(), "{json}");
+        let back: Plan = serde_json::from_value(json).unwrap();
+        assert_eq!(back, p);
+    }
+}

@@ -409,3 +409,95 @@ pub fn cue_and_base(
     base.set_record_history(false);
     Ok((id, base))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A game whose every sample of candidate `(v, pot)` is worth `v` and pots when `pot`;
+    /// its first candidates are `first`, its one safety is worth 0.6.
+    struct Toy {
+        first: Vec<(f64, bool)>,
+    }
+
+    impl Sampler for Toy {
+        type Cand = (f64, bool);
+        type Scratch = ();
+        fn scratch(&self) {}
+        fn sample(&self, c: &(f64, bool), _: u64, _: u64, _: &mut ()) -> Stats {
+            Stats {
+                n: 1,
+                value: c.0,
+                pots: usize::from(c.1),
+                events: 3,
+                ..Stats::default()
+            }
+        }
+    }
+
+    impl Searched for Toy {
+        type Budget = (usize, Vec<(usize, usize)>);
+        type Part = bool;
+        fn places(&self, _: &Self::Budget) -> Result<Vec<Option<Vec2>>, AiError> {
+            Ok(vec![None])
+        }
+        fn offence(&self, _: &[Option<Vec2>], _: &Self::Budget) -> Vec<(f64, bool)> {
+            self.first.clone()
+        }
+        fn safeties(
+            &self,
+            _: &[Option<Vec2>],
+            _: &Self::Budget,
+            scoring: bool,
+        ) -> Vec<(f64, bool)> {
+            if scoring {
+                Vec::new()
+            } else {
+                vec![(0.6, false)]
+            }
+        }
+        fn rounds<'b>(&self, b: &'b Self::Budget) -> (usize, &'b [(usize, usize)]) {
+            (b.0, &b.1)
+        }
+        fn second_ply(&self, _: &mut Rounds<(f64, bool)>, _: &Self::Budget) {}
+        fn stroke(&self, c: &(f64, bool)) -> (Shot, Option<Vec2>, ShotKind, bool) {
+            (Shot::new(c.0, 1.0), None, ShotKind::Break, c.1)
+        }
+    }
+
+    #[test]
+    fn the_skeleton_adds_safeties_only_when_nothing_scores_and_plans_the_best() {
+        // Two candidates x 2 samples; nothing pots (rate 0 < SAFETY_BELOW), so the safety
+        // comes in with 2 samples; one round gives the best 2 three more: 12 samples, 3
+        // events each. The safety (0.6) wins with 5 samples.
+        let budget = (2, vec![(2, 3)]);
+        let toy = Toy {
+            first: vec![(0.2, false), (0.4, false)],
+        };
+        let plan = search(&toy, &budget).unwrap();
+        assert_eq!((plan.shot.angle, plan.value, plan.samples), (0.6, 0.6, 5));
+        assert_eq!((plan.simulations, plan.events), (12, 36));
+        assert_eq!((plan.success, plan.part), (0.0, false));
+        // Every first candidate pots: no safety, the better pot is played.
+        let toy = Toy {
+            first: vec![(0.2, true), (0.4, true)],
+        };
+        let plan = search(&toy, &budget).unwrap();
+        assert_eq!((plan.shot.angle, plan.success, plan.part), (0.4, 1.0, true));
+        assert_eq!(plan.simulations, 10);
+    }
+
+    #[test]
+    fn a_second_ply_adds_the_mean_correction_to_the_finalists_mean() {
+        // Means 0.1, 0.5, 0.3: the best two finalists are 1 and 2. Correction k of
+        // candidate (v, _) is k v over 4 outcomes: a mean of 1.5 v, so 1 is worth
+        // 0.5 + 0.75 and 2 is worth 0.3 + 0.45; each outcome counts 2 runs and 10 events.
+        let toy = Toy { first: Vec::new() };
+        let mut pool = Rounds::default();
+        pool.add(&toy, vec![(0.1, false), (0.5, false), (0.3, false)], 2);
+        pool.second_ply(2, 4, |c: &(f64, bool), k| (k as f64 * c.0, 2, 10));
+        assert_eq!(pool.two, vec![(1, 0.5 + 0.75), (2, 0.3 + 1.5 * 0.3)]);
+        assert_eq!((pool.simulations, pool.events), (6 + 16, 18 + 80));
+        assert_eq!(pool.best(), Some(1));
+    }
+}
