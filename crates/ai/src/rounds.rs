@@ -379,6 +379,29 @@ pub fn search<S: Searched>(s: &S, budget: &S::Budget) -> Result<Plan<S::Part>, A
     })
 }
 
+/// The option of `choices` the search values best (ties: the first), with its value and
+/// what else `value` gave. Option `k` is valued by `value(choice, salt)` for the chooser
+/// (`None`: it cannot be weighed); `salt` seeds the search behind it, a function of `seed`
+/// and `k` only, so the choice does not depend on the threads. Pool's, snooker's and any
+/// game's choices alike (issue 50).
+pub fn best_choice<C: Copy, E>(
+    choices: &[C],
+    seed: u64,
+    mut value: impl FnMut(C, u64) -> Option<(f64, E)>,
+) -> Option<(C, f64, E)> {
+    let mut best: Option<(C, f64, E)> = None;
+    for (k, &choice) in choices.iter().enumerate() {
+        let salt = seed.wrapping_add(0x9e37_79b9 * (k as u64 + 1));
+        let Some((v, extra)) = value(choice, salt) else {
+            continue;
+        };
+        if best.as_ref().is_none_or(|b| v > b.1) {
+            best = Some((choice, v, extra));
+        }
+    }
+    best
+}
+
 /// Every game's first step: the game must be on (`over` false) and the balls at rest.
 pub fn at_rest(over: bool, sim: &Simulation) -> Result<(), AiError> {
     if over {
@@ -485,6 +508,22 @@ mod tests {
         let plan = search(&toy, &budget).unwrap();
         assert_eq!((plan.shot.angle, plan.success, plan.part), (0.4, 1.0, true));
         assert_eq!(plan.simulations, 10);
+    }
+
+    #[test]
+    fn best_choice_skips_the_unweighed_keeps_the_first_of_equals_and_salts_by_index() {
+        // Options 'a' (cannot be weighed), 'b' 0.5, 'c' 0.5, 'd' 0.2: 'b' wins the tie with
+        // 'c'; option k's salt is the seed plus 0x9e3779b9 (k + 1), whatever else is valued.
+        let values = [None, Some(0.5), Some(0.5), Some(0.2)];
+        let mut salts = Vec::new();
+        let best = best_choice(&['a', 'b', 'c', 'd'], 7, |c, salt| {
+            salts.push(salt);
+            values[(c as u8 - b'a') as usize].map(|v| (v, c))
+        });
+        assert_eq!(best, Some(('b', 0.5, 'b')));
+        let expected: Vec<u64> = (1..=4).map(|k| 7 + 0x9e37_79b9 * k).collect();
+        assert_eq!(salts, expected);
+        assert_eq!(best_choice(&[1, 2], 0, |_, _| None::<(f64, ())>), None);
     }
 
     #[test]

@@ -10,7 +10,7 @@ use crate::noise::Noise;
 use crate::placement::places;
 use crate::plan::{Called, Decision};
 use crate::position::{aim_probability, best_success};
-use crate::rounds::{Rounds, Searched, cue_and_base, search};
+use crate::rounds::{Rounds, Searched, best_choice, cue_and_base, search};
 use crate::{AiError, ready};
 use billiards_physics::{Shot, Simulation, TipOffset, Vec2};
 use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState, NextShot, check_placement};
@@ -332,33 +332,23 @@ fn choose(
     mode: Mode,
 ) -> (Choice, f64) {
     let me = state.next.shooter;
-    let mut best: Option<(f64, Choice, f64)> = None;
-    for (k, &choice) in state.next.choices.iter().enumerate() {
+    let best = best_choice(&state.next.choices, seed, |choice, salt| {
         let mut after = state.clone();
-        let Ok(next) = after.choose(choice) else {
-            continue;
-        };
+        let next = after.choose(choice).ok()?;
         let sign = if next.shooter == me { 1.0 } else { -1.0 };
-        let (value, estimate) = if next.rerack {
-            (sign * BREAK_VALUE, 0.5)
-        } else {
-            let mut table = sim.clone();
-            if crate::play::spot_balls(&mut table, &next.spot).is_err() {
-                continue;
-            }
-            after.next.spot.clear();
-            let salt = seed.wrapping_add(0x9e37_79b9 * (k as u64 + 1));
-            match decide_planned(&after, &table, noise, budget, salt, mode) {
-                Ok(Decision::Shoot(plan)) => (sign * plan.value, plan.success),
-                _ => continue,
-            }
-        };
-        if best.is_none_or(|b| value > b.0) {
-            best = Some((value, choice, estimate));
+        if next.rerack {
+            return Some((sign * BREAK_VALUE, 0.5));
         }
-    }
+        let mut table = sim.clone();
+        crate::play::spot_balls(&mut table, &next.spot).ok()?;
+        after.next.spot.clear();
+        match decide_planned(&after, &table, noise, budget, salt, mode) {
+            Ok(Decision::Shoot(plan)) => Some((sign * plan.value, plan.success)),
+            _ => None,
+        }
+    });
     match best {
-        Some((_, choice, estimate)) => (choice, estimate),
+        Some((choice, _, estimate)) => (choice, estimate),
         None => analytic_choice(state, sim, noise),
     }
 }

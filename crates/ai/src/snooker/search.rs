@@ -10,7 +10,7 @@ use super::value::d_places;
 use crate::AiError;
 use crate::candidates::ShotKind;
 use crate::noise::Noise;
-use crate::rounds::{Rounds, Searched, at_rest, cue_and_base, search};
+use crate::rounds::{Rounds, Searched, at_rest, best_choice, cue_and_base, search};
 use billiards_physics::{BallSetup, Shot, Simulation, Vec2};
 use billiards_rules::snooker::balls::WHITE;
 use billiards_rules::snooker::{Choice, Frame};
@@ -124,31 +124,21 @@ fn choose(
     seed: u64,
 ) -> (Choice, f64) {
     let me = frame.next.striker;
-    let mut best: Option<(f64, Choice)> = None;
-    for (k, &choice) in frame.next.choices.iter().enumerate() {
+    let best = best_choice(&frame.next.choices, seed, |choice, salt| {
         let mut after = frame.clone();
-        let Ok(chosen) = after.choose(choice) else {
-            continue;
-        };
+        let chosen = after.choose(choice).ok()?;
         let table = match &chosen.layout {
-            Some(l) => match replaced(sim, l) {
-                Some(t) => t,
-                None => continue,
-            },
+            Some(l) => replaced(sim, l)?,
             None => sim.clone(),
         };
         let sign = if chosen.next.striker == me { 1.0 } else { -1.0 };
-        let salt = seed.wrapping_add(0x9e37_79b9 * (k as u64 + 1));
-        let value = match decide_snooker_with(&after, &table, noise, budget, salt) {
-            Ok(SnookerDecision::Shoot(plan)) => sign * plan.value,
-            _ => continue,
-        };
-        if best.is_none_or(|b| value > b.0) {
-            best = Some((value, choice));
+        match decide_snooker_with(&after, &table, noise, budget, salt) {
+            Ok(SnookerDecision::Shoot(plan)) => Some((sign * plan.value, ())),
+            _ => None,
         }
-    }
+    });
     match best {
-        Some((v, c)) => (c, v),
+        Some((choice, value, ())) => (choice, value),
         None => (frame.next.choices[0], 0.0),
     }
 }
