@@ -8,7 +8,7 @@ use crate::evaluate::{Mode, Search};
 use crate::level::{Budget, Level};
 use crate::noise::Noise;
 use crate::placement::places;
-use crate::plan::{Called, Decision};
+use crate::plan::{Called, Decision, Plan};
 use crate::position::{aim_probability, best_success};
 use crate::rounds::{Rounds, Searched, best_choice, cue_and_base, search};
 use crate::{AiError, ready};
@@ -60,7 +60,13 @@ pub fn decide_planned(
 ) -> Result<Decision, AiError> {
     let next = ready(state, sim)?;
     if !next.choices.is_empty() {
-        let (choice, estimate) = choose(state, sim, noise, budget, seed, mode);
+        let shot = |after: &GameState, table: &Simulation, salt| match decide_planned(
+            after, table, noise, budget, salt, mode,
+        ) {
+            Ok(Decision::Shoot(plan)) => Some(plan),
+            _ => None,
+        };
+        let (choice, estimate) = choose(state, sim, noise, seed, shot);
         return Ok(Decision::Choose { choice, estimate });
     }
     let (cue, base) = cue_and_base(sim, CUE, in_hand(next))?;
@@ -322,14 +328,14 @@ const BREAK_VALUE: f64 = 0.1;
 /// [`BREAK_VALUE`] to whoever breaks. The estimate is the success of the shot the chosen
 /// option leads to (an even 0.5 for a break, which is not searched here). Options the search
 /// cannot weigh (no place to spot a ball, no legal shot) fall back to the analytic chance of
-/// the table as it lies ([`analytic_choice`]).
+/// the table as it lies ([`analytic_choice`]). `shot(state, table, salt)` is the search
+/// of the shot an option leads to (this decision's, seeded by `salt`).
 fn choose(
     state: &GameState,
     sim: &Simulation,
     noise: Noise,
-    budget: &Budget,
     seed: u64,
-    mode: Mode,
+    shot: impl Fn(&GameState, &Simulation, u64) -> Option<Plan>,
 ) -> (Choice, f64) {
     let me = state.next.shooter;
     let best = best_choice(&state.next.choices, seed, |choice, salt| {
@@ -342,10 +348,8 @@ fn choose(
         let mut table = sim.clone();
         crate::play::spot_balls(&mut table, &next.spot).ok()?;
         after.next.spot.clear();
-        match decide_planned(&after, &table, noise, budget, salt, mode) {
-            Ok(Decision::Shoot(plan)) => Some((sign * plan.value, plan.success)),
-            _ => None,
-        }
+        let plan = shot(&after, &table, salt)?;
+        Some((sign * plan.value, plan.success))
     });
     match best {
         Some((choice, _, estimate)) => (choice, estimate),
