@@ -18,7 +18,7 @@
 use crate::candidates::{Aim, Layout, direct_aims, rail_aims};
 use crate::level::Level;
 use crate::noise::{Noise, stream};
-use crate::rounds::{Rounds, Sampler, Stats};
+use crate::rounds::{Rounds, Sampler, Stats, best_choice};
 use billiards_physics::{Event, PocketShape, Shot, Simulation, TipOffset, Vec2};
 use billiards_rules::{
     CueBallPlace, Declaration, GameRules, Judgement, Need, Seat, StrokeRecord, Turn,
@@ -480,12 +480,11 @@ pub fn decide_any(
     }
     let me: Seat = turn.striker;
     let layout = layout_of(sim);
-    let mut best: Option<(f64, usize)> = None;
-    for index in 0..turn.choices.len() {
+    // The options by index; each search behind one is seeded by `seed` itself (no salt).
+    let options: Vec<usize> = (0..turn.choices.len()).collect();
+    let best = best_choice(&options, seed, |index, _| {
         let mut copy = game.boxed_clone();
-        let Ok(setup) = copy.choose(index, &layout) else {
-            continue;
-        };
+        let setup = copy.choose(index, &layout).ok()?;
         // A re-rack or a replace cannot be valued on this table: an even chance.
         let value = match setup {
             billiards_rules::Setup::Keep => {
@@ -499,10 +498,8 @@ pub fn decide_any(
             }
             _ => 0.0,
         };
-        if best.is_none_or(|(b, _)| value > b) {
-            best = Some((value, index));
-        }
-    }
-    best.map(|(_, i)| Move::Choose(i))
+        Some((value, ()))
+    });
+    best.map(|(i, _, ())| Move::Choose(i))
         .ok_or_else(|| format!("{}: no option offered could be taken", game.name()))
 }

@@ -7,7 +7,7 @@
 
 use crate::candidates::{Aim, Layout, ShotKind, call_for, direct_aims};
 use crate::placement::places;
-use crate::{AiError, Decision, Plan};
+use crate::{AiError, Called, Decision, Plan};
 use billiards_physics::{Shot, Simulation, Vec2};
 use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState, NextShot, check_placement};
 
@@ -51,7 +51,7 @@ pub fn decide(state: &GameState, sim: &Simulation) -> Result<Decision, AiError> 
     Ok(Decision::Shoot(Plan {
         shot,
         place,
-        call,
+        part: Called { call },
         kind,
         success: 0.0,
         foul: 0.0,

@@ -30,8 +30,8 @@
 //! [`billiards_rules::NextShot::spot`] names, then call [`decide`]; put the cue ball at
 //! [`Plan::place`] if any (`Simulation::place`), strike the cue ball with
 //! [`Plan::executed`] (the shot with the player's execution noise), run to rest, summarise
-//! the events (`billiards_rules::summarise`) and pass them with [`Plan::call`] to
-//! `GameState::play`. A [`Decision::Choose`] goes to `GameState::choose`.
+//! the events (`billiards_rules::summarise`) and pass them with `plan.call`
+//! ([`Called::call`]) to `GameState::play`. A [`Decision::Choose`] goes to `GameState::choose`.
 
 pub mod any_game;
 pub mod any_match;
@@ -43,6 +43,7 @@ pub mod greedy;
 pub mod level;
 pub mod noise;
 pub mod placement;
+pub mod plan;
 pub mod play;
 pub mod position;
 pub mod quiet;
@@ -55,61 +56,14 @@ pub use candidates::{Candidate, Layout, ShotKind};
 pub use evaluate::{Mode, Stats};
 pub use level::{Breaks, Budget, Level, TwoPly, UnknownLevel};
 pub use noise::Noise;
+pub use plan::{Called, Decision, Plan};
 pub use search::{decide, decide_planned, decide_with};
 pub use snooker::{SnookerDecision, SnookerPlan, decide_snooker};
 
-use billiards_physics::{Params, Shot, Simulation, Vec2};
-use billiards_rules::{Call, Choice, GameState, NextShot};
+use billiards_physics::Simulation;
+use billiards_rules::{GameState, NextShot};
 use std::fmt;
 use std::str::FromStr;
-
-/// What the player does next.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum Decision {
-    /// Take one of the choices the rules offer ([`GameState::choose`]).
-    Choose {
-        /// The choice.
-        choice: Choice,
-        /// Estimated success probability of the best shot the choice leads to.
-        estimate: f64,
-    },
-    /// Play this shot.
-    Shoot(Plan),
-}
-
-/// A shot decided on.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct Plan {
-    /// The strike meant (angle, speed, tip), before execution noise.
-    pub shot: Shot,
-    /// Ball in hand: where to put the cue ball first.
-    pub place: Option<Vec2>,
-    /// The call that goes with the shot (8-ball ball and pocket, safety; 9-ball push out).
-    pub call: Call,
-    /// What the shot tries.
-    pub kind: ShotKind,
-    /// Estimated probability of a legal pot (or of winning): the hint's number.
-    pub success: f64,
-    /// Estimated probability of a foul.
-    pub foul: f64,
-    /// The search's mean value of the shot, -1 (loses) to 1 (wins).
-    pub value: f64,
-    /// Noisy samples behind the estimates of this shot.
-    pub samples: usize,
-    /// Noisy simulations the whole decision ran.
-    pub simulations: usize,
-    /// Solver events those simulations processed.
-    pub events: usize,
-}
-
-impl Plan {
-    /// The shot as a player of execution noise `noise` strikes it, from the stream of
-    /// `seed` (a function of the seed only).
-    pub fn executed(&self, noise: Noise, params: &Params, seed: u64) -> Shot {
-        noise.apply(self.shot, params, &mut noise::stream(seed, u64::MAX, 0))
-    }
-}
 
 /// Why no decision can be made.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -136,12 +90,7 @@ pub enum AiError {
 
 /// The next shot, once the common preconditions hold: the game is on and the balls rest.
 pub(crate) fn ready<'a>(state: &'a GameState, sim: &Simulation) -> Result<&'a NextShot, AiError> {
-    if state.over.is_some() {
-        return Err(AiError::GameOver);
-    }
-    if !sim.is_at_rest() {
-        return Err(AiError::NotAtRest);
-    }
+    rounds::at_rest(state.over.is_some(), sim)?;
     Ok(&state.next)
 }
 

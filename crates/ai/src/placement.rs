@@ -54,15 +54,25 @@ pub fn places(
     if proposed.is_empty() {
         proposed = grid(&layout, 0.1).into_iter().filter(ok).collect();
     }
+    best_apart(proposed, count, |p| {
+        layout.cue = p;
+        best_success(&layout, legal, noise)
+    })
+}
+
+/// Up to `count` of `proposed`, best `value` first, each at least `MIN_APART` (5 cm) from
+/// every better one kept; equal values in the order proposed (deterministic). Pool's places
+/// and snooker's in the D ([`crate::snooker::value::d_places`]) are ranked by it.
+pub fn best_apart(
+    proposed: Vec<Vec2>,
+    count: usize,
+    mut value: impl FnMut(Vec2) -> f64,
+) -> Vec<Vec2> {
     let mut ranked: Vec<(f64, usize, Vec2)> = proposed
         .into_iter()
         .enumerate()
-        .map(|(i, p)| {
-            layout.cue = p;
-            (best_success(&layout, legal, noise), i, p)
-        })
+        .map(|(i, p)| (value(p), i, p))
         .collect();
-    // Best first; equal estimates in the order proposed (deterministic).
     ranked.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
     let mut out: Vec<Vec2> = Vec::new();
     for (_, _, p) in ranked {
@@ -87,4 +97,21 @@ fn grid(layout: &Layout, step: f64) -> Vec<Vec2> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn best_apart_keeps_the_best_first_drops_near_ones_and_breaks_ties_in_order() {
+        // b is best; a lies 1 cm from it (under MIN_APART) and goes; c and d tie and keep
+        // the order proposed; `count` cuts the list.
+        let (a, b) = (Vec2::new(0.0, 0.0), Vec2::new(0.01, 0.0));
+        let (c, d) = (Vec2::new(1.0, 0.0), Vec2::new(2.0, 0.0));
+        let value = |p: Vec2| if p == b { 0.9 } else { 0.5 };
+        assert_eq!(best_apart(vec![a, b, c, d], 3, value), vec![b, c, d]);
+        assert_eq!(best_apart(vec![a, b, d, c], 2, value), vec![b, d]);
+        assert_eq!(best_apart(vec![a, b, c], 0, value), Vec::<Vec2>::new());
+    }
 }

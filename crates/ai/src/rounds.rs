@@ -2,8 +2,13 @@
 //! copy per game): candidates evaluated by noisy samples ([`Sampler`]) on all cores, the
 //! best refined with more samples, the best chosen from the finalists or from a second ply.
 //! A game's search brings its candidates, its sampler (what one noisy sample of a
-//! candidate is worth) and, if any, its second ply.
+//! candidate is worth) and, if any, its second ply ([`Searched`]); [`search`] runs them, the
+//! same for pool and snooker, and gives the one [`Plan`] type.
 
+use crate::AiError;
+use crate::candidates::ShotKind;
+use crate::plan::Plan;
+use billiards_physics::{BallId, Shot, Simulation, Vec2};
 use rayon::prelude::*;
 use std::ops::Range;
 
@@ -284,5 +289,254 @@ impl<C: Sync> Rounds<C> {
     /// The best candidate so far ([`best_candidate`]).
     pub fn best(&self) -> Option<usize> {
         best_candidate(&self.two, &self.finalists, &self.stats)
+    }
+
+    /// Values the best `finalists` (by [`Rounds::second_ply_order`]) two plies deep; they
+    /// become the only candidates [`Rounds::best`] chooses from. Each is struck `outcomes`
+    /// times, `correction(candidate, k)` giving outcome `k`'s (second-ply value - one-ply
+    /// value, simulations, events); its value is its one-ply mean plus the mean correction
+    /// (a control variate: [`crate::twoply`]). The outcomes run on all cores, each a
+    /// function of its candidate and `k` only, so the values do not depend on the threads.
+    pub fn second_ply(
+        &mut self,
+        finalists: usize,
+        outcomes: usize,
+        correction: impl Fn(&C, u64) -> Correction + Sync,
+    ) {
+        let order = self.second_ply_order(finalists);
+        let jobs: Vec<(usize, u64)> = order
+            .iter()
+            .flat_map(|&i| (0..outcomes as u64).map(move |k| (i, k)))
+            .collect();
+        let corrections: Vec<Correction> = jobs
+            .par_iter()
+            .map(|&(i, k)| correction(&self.cands[i], k))
+            .collect();
+        for (n, &i) in order.iter().enumerate() {
+            let mine = &corrections[n * outcomes..(n + 1) * outcomes];
+            let shift = mine.iter().map(|c| c.0).sum::<f64>() / outcomes.max(1) as f64;
+            self.two.push((i, self.stats[i].mean() + shift));
+            self.simulations += mine.iter().map(|c| c.1).sum::<usize>();
+            self.events += mine.iter().map(|c| c.2).sum::<usize>();
+        }
+    }
+}
+
+/// One outcome of a second ply: (second-ply value - one-ply value), simulations, events.
+pub type Correction = (f64, usize, usize);
+
+/// What a game's search brings to the skeleton ([`search`]): where the cue ball may start,
+/// its candidates and safeties from there, its rounds, its second ply, and what goes with
+/// the chosen candidate to the rules. Sampling is the [`Sampler`]'s.
+pub trait Searched: Sampler {
+    /// How much it searches (a level's budget).
+    type Budget;
+    /// The per-game part of its plan (pool's call, snooker's nomination).
+    type Part;
+    /// The cue ball's places to search from: `None` alone when it is not in hand.
+    fn places(&self, budget: &Self::Budget) -> Result<Vec<Option<Vec2>>, AiError>;
+    /// The first candidates (pots, or the break), from every place.
+    fn offence(&self, places: &[Option<Vec2>], budget: &Self::Budget) -> Vec<Self::Cand>;
+    /// The safeties from every place, `scoring` when the best first candidate succeeds at
+    /// least [`SAFETY_BELOW`] of the time (none when the game's search does not want them).
+    fn safeties(
+        &self,
+        places: &[Option<Vec2>],
+        budget: &Self::Budget,
+        scoring: bool,
+    ) -> Vec<Self::Cand>;
+    /// The first round's samples and the refinement rounds `(k, m)`.
+    fn rounds<'b>(&self, budget: &'b Self::Budget) -> (usize, &'b [(usize, usize)]);
+    /// The second ply, if the budget has one ([`Rounds::second_ply`]).
+    fn second_ply(&self, pool: &mut Rounds<Self::Cand>, budget: &Self::Budget);
+    /// The shot of candidate `cand`, its place, what it tries and its per-game part.
+    fn stroke(&self, cand: &Self::Cand) -> (Shot, Option<Vec2>, ShotKind, Self::Part);
+}
+
+/// The one search skeleton (issue 50): the places, the first candidates sampled, the
+/// safeties when the best does not score, the refinement rounds, the second ply, and the
+/// plan of the best candidate with the figures its samples gave.
+pub fn search<S: Searched>(s: &S, budget: &S::Budget) -> Result<Plan<S::Part>, AiError> {
+    let places = s.places(budget)?;
+    let mut pool = Rounds::default();
+    let first = s.offence(&places, budget);
+    let safeties = |scoring: bool| s.safeties(&places, budget, scoring);
+    pool.play_rounds(s, first, safeties, s.rounds(budget));
+    s.second_ply(&mut pool, budget);
+    let found = pool.found().ok_or(AiError::NoBall)?;
+    let (shot, place, kind, part) = s.stroke(&pool.cands[found.index]);
+    Ok(Plan {
+        shot,
+        place,
+        part,
+        kind,
+        success: found.stats.pot_rate(),
+        foul: found.foul_rate(),
+        value: found.value,
+        samples: found.stats.n,
+        simulations: found.simulations,
+        events: found.events,
+    })
+}
+
+/// The option of `choices` the search values best (ties: the first), with its value and
+/// what else `value` gave. Option `k` is valued by `value(choice, salt)` for the chooser
+/// (`None`: it cannot be weighed); `salt` seeds the search behind it, a function of `seed`
+/// and `k` only, so the choice does not depend on the threads. Pool's, snooker's and any
+/// game's choices alike (issue 50).
+pub fn best_choice<C: Copy, E>(
+    choices: &[C],
+    seed: u64,
+    mut value: impl FnMut(C, u64) -> Option<(f64, E)>,
+) -> Option<(C, f64, E)> {
+    let mut best: Option<(C, f64, E)> = None;
+    for (k, &choice) in choices.iter().enumerate() {
+        let salt = seed.wrapping_add(0x9e37_79b9 * (k as u64 + 1));
+        let Some((v, extra)) = value(choice, salt) else {
+            continue;
+        };
+        if best.as_ref().is_none_or(|b| v > b.1) {
+            best = Some((choice, v, extra));
+        }
+    }
+    best
+}
+
+/// Every game's first step: the game must be on (`over` false) and the balls at rest.
+pub fn at_rest(over: bool, sim: &Simulation) -> Result<(), AiError> {
+    if over {
+        return Err(AiError::GameOver);
+    }
+    if !sim.is_at_rest() {
+        return Err(AiError::NotAtRest);
+    }
+    Ok(())
+}
+
+/// The cue ball's index in `sim` (ball number `cue`) and the table a search samples from (a
+/// copy without history). The cue ball must be on the table unless it is `in_hand`.
+pub fn cue_and_base(
+    sim: &Simulation,
+    cue: u8,
+    in_hand: bool,
+) -> Result<(BallId, Simulation), AiError> {
+    let id = sim
+        .numbers()
+        .iter()
+        .position(|&n| n == cue)
+        .ok_or(AiError::NoCueBall)?;
+    if !in_hand && !sim.ball(id).motion.on_table() {
+        return Err(AiError::CueBallOff);
+    }
+    let mut base = sim.clone();
+    base.set_record_history(false);
+    Ok((id, base))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A game whose every sample of candidate `(v, pot)` is worth `v` and pots when `pot`;
+    /// its first candidates are `first`, its one safety is worth 0.6.
+    struct Toy {
+        first: Vec<(f64, bool)>,
+    }
+
+    impl Sampler for Toy {
+        type Cand = (f64, bool);
+        type Scratch = ();
+        fn scratch(&self) {}
+        fn sample(&self, c: &(f64, bool), _: u64, _: u64, _: &mut ()) -> Stats {
+            Stats {
+                n: 1,
+                value: c.0,
+                pots: usize::from(c.1),
+                events: 3,
+                ..Stats::default()
+            }
+        }
+    }
+
+    impl Searched for Toy {
+        type Budget = (usize, Vec<(usize, usize)>);
+        type Part = bool;
+        fn places(&self, _: &Self::Budget) -> Result<Vec<Option<Vec2>>, AiError> {
+            Ok(vec![None])
+        }
+        fn offence(&self, _: &[Option<Vec2>], _: &Self::Budget) -> Vec<(f64, bool)> {
+            self.first.clone()
+        }
+        fn safeties(
+            &self,
+            _: &[Option<Vec2>],
+            _: &Self::Budget,
+            scoring: bool,
+        ) -> Vec<(f64, bool)> {
+            if scoring {
+                Vec::new()
+            } else {
+                vec![(0.6, false)]
+            }
+        }
+        fn rounds<'b>(&self, b: &'b Self::Budget) -> (usize, &'b [(usize, usize)]) {
+            (b.0, &b.1)
+        }
+        fn second_ply(&self, _: &mut Rounds<(f64, bool)>, _: &Self::Budget) {}
+        fn stroke(&self, c: &(f64, bool)) -> (Shot, Option<Vec2>, ShotKind, bool) {
+            (Shot::new(c.0, 1.0), None, ShotKind::Break, c.1)
+        }
+    }
+
+    #[test]
+    fn the_skeleton_adds_safeties_only_when_nothing_scores_and_plans_the_best() {
+        // Two candidates x 2 samples; nothing pots (rate 0 < SAFETY_BELOW), so the safety
+        // comes in with 2 samples; one round gives the best 2 three more: 12 samples, 3
+        // events each. The safety (0.6) wins with 5 samples.
+        let budget = (2, vec![(2, 3)]);
+        let toy = Toy {
+            first: vec![(0.2, false), (0.4, false)],
+        };
+        let plan = search(&toy, &budget).unwrap();
+        assert_eq!((plan.shot.angle, plan.value, plan.samples), (0.6, 0.6, 5));
+        assert_eq!((plan.simulations, plan.events), (12, 36));
+        assert_eq!((plan.success, plan.part), (0.0, false));
+        // Every first candidate pots: no safety, the better pot is played.
+        let toy = Toy {
+            first: vec![(0.2, true), (0.4, true)],
+        };
+        let plan = search(&toy, &budget).unwrap();
+        assert_eq!((plan.shot.angle, plan.success, plan.part), (0.4, 1.0, true));
+        assert_eq!(plan.simulations, 10);
+    }
+
+    #[test]
+    fn best_choice_skips_the_unweighed_keeps_the_first_of_equals_and_salts_by_index() {
+        // Options 'a' (cannot be weighed), 'b' 0.5, 'c' 0.5, 'd' 0.2: 'b' wins the tie with
+        // 'c'; option k's salt is the seed plus 0x9e3779b9 (k + 1), whatever else is valued.
+        let values = [None, Some(0.5), Some(0.5), Some(0.2)];
+        let mut salts = Vec::new();
+        let best = best_choice(&['a', 'b', 'c', 'd'], 7, |c, salt| {
+            salts.push(salt);
+            values[(c as u8 - b'a') as usize].map(|v| (v, c))
+        });
+        assert_eq!(best, Some(('b', 0.5, 'b')));
+        let expected: Vec<u64> = (1..=4).map(|k| 7 + 0x9e37_79b9 * k).collect();
+        assert_eq!(salts, expected);
+        assert_eq!(best_choice(&[1, 2], 0, |_, _| None::<(f64, ())>), None);
+    }
+
+    #[test]
+    fn a_second_ply_adds_the_mean_correction_to_the_finalists_mean() {
+        // Means 0.1, 0.5, 0.3: the best two finalists are 1 and 2. Correction k of
+        // candidate (v, _) is k v over 4 outcomes: a mean of 1.5 v, so 1 is worth
+        // 0.5 + 0.75 and 2 is worth 0.3 + 0.45; each outcome counts 2 runs and 10 events.
+        let toy = Toy { first: Vec::new() };
+        let mut pool = Rounds::default();
+        pool.add(&toy, vec![(0.1, false), (0.5, false), (0.3, false)], 2);
+        pool.second_ply(2, 4, |c: &(f64, bool), k| (k as f64 * c.0, 2, 10));
+        assert_eq!(pool.two, vec![(1, 0.5 + 0.75), (2, 0.3 + 1.5 * 0.3)]);
+        assert_eq!((pool.simulations, pool.events), (6 + 16, 18 + 80));
+        assert_eq!(pool.best(), Some(1));
     }
 }

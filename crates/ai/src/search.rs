@@ -5,12 +5,13 @@ use crate::candidates::{
     Candidate, Layout, ShotKind, combo_aims, direct_aims, expand, rail_aims, safeties,
 };
 use crate::evaluate::{Mode, Search};
-use crate::level::{Budget, Level, TwoPly};
+use crate::level::{Budget, Level};
 use crate::noise::Noise;
 use crate::placement::places;
+use crate::plan::{Called, Decision, Plan};
 use crate::position::{aim_probability, best_success};
-use crate::rounds::Rounds;
-use crate::{AiError, Decision, Plan, ready};
+use crate::rounds::{Rounds, Searched, best_choice, cue_and_base, search};
+use crate::{AiError, ready};
 use billiards_physics::{Shot, Simulation, TipOffset, Vec2};
 use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState, NextShot, check_placement};
 use rayon::prelude::*;
@@ -59,20 +60,17 @@ pub fn decide_planned(
 ) -> Result<Decision, AiError> {
     let next = ready(state, sim)?;
     if !next.choices.is_empty() {
-        let (choice, estimate) = choose(state, sim, noise, budget, seed, mode);
+        let shot = |after: &GameState, table: &Simulation, salt| match decide_planned(
+            after, table, noise, budget, salt, mode,
+        ) {
+            Ok(Decision::Shoot(plan)) => Some(plan),
+            _ => None,
+        };
+        let (choice, estimate) = choose(state, sim, noise, seed, shot);
         return Ok(Decision::Choose { choice, estimate });
     }
-    let cue = sim
-        .numbers()
-        .iter()
-        .position(|&n| n == CUE)
-        .ok_or(AiError::NoCueBall)?;
-    if !in_hand(next) && !sim.ball(cue).motion.on_table() {
-        return Err(AiError::CueBallOff);
-    }
-    let mut base = sim.clone();
-    base.set_record_history(false);
-    let search = Search {
+    let (cue, base) = cue_and_base(sim, CUE, in_hand(next))?;
+    let pool_search = Search {
         state,
         base,
         cue,
@@ -80,37 +78,57 @@ pub fn decide_planned(
         seed,
         mode,
     };
-    let budget = budget.clone();
-    let place_list = cue_places(sim, cue, next, search.noise, &budget)?;
-    let mut pool = Pool::default();
-    let first: Vec<Candidate> = if next.break_shot {
-        breaks(&search, &place_list, &budget)
-    } else {
-        place_list
-            .iter()
-            .flat_map(|&p| offence(&search, p, &budget))
-            .collect()
-    };
-    let budget = if next.break_shot {
-        Budget {
-            samples: budget.breaks.samples,
-            rounds: budget.breaks.rounds,
-            ..budget
+    search(&pool_search, budget).map(Decision::Shoot)
+}
+
+/// Pool's parts of the one search skeleton ([`search`]): the break or the pots, the
+/// safeties and push outs, the second ply ([`crate::twoply`]) and the call.
+impl Searched for Search<'_> {
+    type Budget = Budget;
+    type Part = Called;
+
+    fn places(&self, budget: &Budget) -> Result<Vec<Option<Vec2>>, AiError> {
+        cue_places(&self.base, self.cue, &self.state.next, self.noise, budget)
+    }
+
+    fn offence(&self, places: &[Option<Vec2>], budget: &Budget) -> Vec<Candidate> {
+        if self.state.next.break_shot {
+            breaks(self, places, budget)
+        } else {
+            places
+                .iter()
+                .flat_map(|&p| offence(self, p, budget))
+                .collect()
         }
-    } else {
-        budget
-    };
-    let safeties = |scoring: bool| {
+    }
+
+    fn safeties(&self, places: &[Option<Vec2>], budget: &Budget, scoring: bool) -> Vec<Candidate> {
+        let next = &self.state.next;
         if next.break_shot || scoring {
             return Vec::new();
         }
-        safety_candidates(state, sim, next, &place_list, budget.safeties)
-    };
-    pool.play_rounds(&search, first, safeties, (budget.samples, budget.rounds));
-    if let Some(two) = budget.second.filter(|_| !next.break_shot) {
-        second_ply(&mut pool, &search, two);
+        safety_candidates(self.state, &self.base, next, places, budget.safeties)
     }
-    best_plan(&pool)
+
+    /// A break is sampled on the break's budget.
+    fn rounds<'b>(&self, budget: &'b Budget) -> (usize, &'b [(usize, usize)]) {
+        if self.state.next.break_shot {
+            (budget.breaks.samples, budget.breaks.rounds)
+        } else {
+            (budget.samples, budget.rounds)
+        }
+    }
+
+    fn second_ply(&self, pool: &mut Pool, budget: &Budget) {
+        if let Some(two) = budget.second.filter(|_| !self.state.next.break_shot) {
+            let correct = |c: &Candidate, k| crate::twoply::correction(self, c, k, two);
+            pool.second_ply(two.finalists, two.outcomes, correct);
+        }
+    }
+
+    fn stroke(&self, c: &Candidate) -> (Shot, Option<Vec2>, ShotKind, Called) {
+        (c.shot, c.place, c.kind, Called { call: c.call })
+    }
 }
 
 /// Whether the cue ball is in hand: then it may be off the table and must be placed first.
@@ -174,37 +192,8 @@ fn safety_candidates(
     more
 }
 
-/// The decision the search reached: the best candidate with the figures its samples gave.
-fn best_plan(pool: &Pool) -> Result<Decision, AiError> {
-    let found = pool.found().ok_or(AiError::NoBall)?;
-    let c = pool.cands[found.index];
-    Ok(Decision::Shoot(Plan {
-        shot: c.shot,
-        place: c.place,
-        call: c.call,
-        kind: c.kind,
-        success: found.stats.pot_rate(),
-        foul: found.foul_rate(),
-        value: found.value,
-        samples: found.stats.n,
-        simulations: found.simulations,
-        events: found.events,
-    }))
-}
-
-/// Every candidate evaluated so far, with its samples ([`Rounds`], the skeleton every
-/// game's search shares).
+/// Every candidate evaluated so far, with its samples ([`Rounds`]).
 type Pool = Rounds<Candidate>;
-
-/// Values the best finalists two plies deep ([`crate::twoply`]); they become the only
-/// candidates [`Rounds::best`] chooses from.
-fn second_ply(pool: &mut Pool, search: &Search, two: TwoPly) {
-    let order = pool.second_ply_order(two.finalists);
-    let valued = crate::twoply::value(search, &pool.cands, &pool.stats, &order, two);
-    pool.simulations += valued.simulations;
-    pool.events += valued.events;
-    pool.two = valued.values;
-}
 
 /// Pots, banks, kicks and combinations from the cue ball at `place` (or where it is): the
 /// `budget.aims` best aims by analytic success, each in the budget's speeds and tips, aims
@@ -339,43 +328,31 @@ const BREAK_VALUE: f64 = 0.1;
 /// [`BREAK_VALUE`] to whoever breaks. The estimate is the success of the shot the chosen
 /// option leads to (an even 0.5 for a break, which is not searched here). Options the search
 /// cannot weigh (no place to spot a ball, no legal shot) fall back to the analytic chance of
-/// the table as it lies ([`analytic_choice`]).
+/// the table as it lies ([`analytic_choice`]). `shot(state, table, salt)` is the search
+/// of the shot an option leads to (this decision's, seeded by `salt`).
 fn choose(
     state: &GameState,
     sim: &Simulation,
     noise: Noise,
-    budget: &Budget,
     seed: u64,
-    mode: Mode,
+    shot: impl Fn(&GameState, &Simulation, u64) -> Option<Plan>,
 ) -> (Choice, f64) {
     let me = state.next.shooter;
-    let mut best: Option<(f64, Choice, f64)> = None;
-    for (k, &choice) in state.next.choices.iter().enumerate() {
+    let best = best_choice(&state.next.choices, seed, |choice, salt| {
         let mut after = state.clone();
-        let Ok(next) = after.choose(choice) else {
-            continue;
-        };
+        let next = after.choose(choice).ok()?;
         let sign = if next.shooter == me { 1.0 } else { -1.0 };
-        let (value, estimate) = if next.rerack {
-            (sign * BREAK_VALUE, 0.5)
-        } else {
-            let mut table = sim.clone();
-            if crate::play::spot_balls(&mut table, &next.spot).is_err() {
-                continue;
-            }
-            after.next.spot.clear();
-            let salt = seed.wrapping_add(0x9e37_79b9 * (k as u64 + 1));
-            match decide_planned(&after, &table, noise, budget, salt, mode) {
-                Ok(Decision::Shoot(plan)) => (sign * plan.value, plan.success),
-                _ => continue,
-            }
-        };
-        if best.is_none_or(|b| value > b.0) {
-            best = Some((value, choice, estimate));
+        if next.rerack {
+            return Some((sign * BREAK_VALUE, 0.5));
         }
-    }
+        let mut table = sim.clone();
+        crate::play::spot_balls(&mut table, &next.spot).ok()?;
+        after.next.spot.clear();
+        let plan = shot(&after, &table, salt)?;
+        Some((sign * plan.value, plan.success))
+    });
     match best {
-        Some((_, choice, estimate)) => (choice, estimate),
+        Some((choice, _, estimate)) => (choice, estimate),
         None => analytic_choice(state, sim, noise),
     }
 }

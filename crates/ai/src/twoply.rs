@@ -27,12 +27,12 @@
 //! searched: their difference is 0.
 
 use crate::candidates::{Candidate, Layout};
-use crate::evaluate::{Search, Stats};
+use crate::evaluate::Search;
 use crate::level::{Budget, TwoPly};
 use crate::noise::stream;
+use crate::rounds::Correction;
 use crate::{Decision, decide_planned};
 use rand::Rng;
-use rayon::prelude::*;
 
 /// The stream of the outcomes' draws: common to every shot (common random numbers: shots
 /// that differ a little meet the same execution errors, so the second ply compares their
@@ -42,52 +42,10 @@ const OUTCOMES: u64 = 1 << 62;
 /// The stream of the seeds of the next-shot searches, draw `k` at `(seed, STREAMS, k)`.
 const STREAMS: u64 = (1 << 62) + 1;
 
-/// Candidates valued two plies deep and the work it took.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Valued {
-    /// Candidate index and its two-ply value.
-    pub values: Vec<(usize, f64)>,
-    /// Noisy simulations run (outcomes and the next-shot searches).
-    pub simulations: usize,
-    /// Solver events they processed.
-    pub events: usize,
-}
-
-/// One outcome: (second-ply value - one-ply value), simulations, events.
-type Correction = (f64, usize, usize);
-
-/// The two-ply values of candidates `order` (indices into `cands` and `stats`), by
-/// [`TwoPly`]. The outcomes are searched in parallel; each search is seeded by its draw,
-/// so the values do not depend on the threads.
-pub fn value(
-    search: &Search,
-    cands: &[Candidate],
-    stats: &[Stats],
-    order: &[usize],
-    two: TwoPly,
-) -> Valued {
-    let jobs: Vec<(usize, u64)> = order
-        .iter()
-        .flat_map(|&i| (0..two.outcomes as u64).map(move |k| (i, k)))
-        .collect();
-    let corrections: Vec<Correction> = jobs
-        .par_iter()
-        .map(|&(i, k)| correction(search, &cands[i], k, two))
-        .collect();
-    let mut out = Valued::default();
-    for (n, &i) in order.iter().enumerate() {
-        let mine = &corrections[n * two.outcomes..(n + 1) * two.outcomes];
-        let shift = mine.iter().map(|c| c.0).sum::<f64>() / two.outcomes.max(1) as f64;
-        out.values.push((i, stats[i].mean() + shift));
-        out.simulations += mine.iter().map(|c| c.1).sum::<usize>();
-        out.events += mine.iter().map(|c| c.2).sum::<usize>();
-    }
-    out
-}
-
 /// Draw `k` of the outcomes' stream struck as `cand`: its second-ply value minus its one-ply
-/// value, and the work it took.
-fn correction(search: &Search, cand: &Candidate, k: u64, two: TwoPly) -> Correction {
+/// value, and the work it took ([`crate::rounds::Rounds::second_ply`] runs the outcomes and
+/// blends them).
+pub(crate) fn correction(search: &Search, cand: &Candidate, k: u64, two: TwoPly) -> Correction {
     let Some((mut table, summary, events)) = search.outcome(cand, OUTCOMES, k) else {
         return (0.0, 1, 0);
     };

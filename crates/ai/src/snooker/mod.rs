@@ -36,7 +36,7 @@ use billiards_physics::Simulation;
 use billiards_rules::snooker::Frame;
 
 pub use budget::{SnookerBudget, SnookerTwoPly};
-pub use decision::{SnookerDecision, SnookerPlan};
+pub use decision::{Nominated, SnookerDecision, SnookerPlan};
 pub use search::decide_snooker_with;
 
 /// The computer's decision at `level` for what `frame` asks next, on the resting table

@@ -11,12 +11,12 @@ use crate::noise::stream;
 use crate::quiet::final_layout;
 use billiards_physics::{EventKind, Simulation, Vec2, Vec3};
 use billiards_rules::ShotSummary;
-use billiards_rules::snooker::Stroke;
 use billiards_rules::snooker::balls::WHITE;
+use billiards_rules::snooker::{Frame, Stroke, Verdict};
 use rand::Rng;
 
 /// The stream of the second ply's outcomes: common to every finalist (close strokes meet the
-/// same errors), far from the candidates' own streams and [`SnookerPlan::executed`]'s.
+/// same errors), far from the candidates' own streams and [`crate::Plan::executed`]'s.
 const OUTCOMES: u64 = 1 << 62;
 /// The stream of the seeds of the second ply's searches.
 const STREAMS: u64 = (1 << 62) + 1;
@@ -35,6 +35,49 @@ pub(super) fn on_table(sim: &Simulation) -> Vec<(u8, Vec2)> {
 }
 
 impl Snook<'_> {
+    /// `c` placed and struck in `sim` (a copy of the base) with draw `k` of stream `id`: the
+    /// balls before the stroke and the solver's event count at the strike; `None` when the
+    /// solver refuses the place or the strike.
+    fn strike(
+        &self,
+        c: &Cand,
+        sim: &mut Simulation,
+        id: u64,
+        k: u64,
+    ) -> Option<(Vec<(u8, Vec2)>, usize)> {
+        if let Some(p) = c.cand.place {
+            sim.place(self.cue, p, Vec2::ZERO, Vec3::ZERO).ok()?;
+        }
+        let before = on_table(sim);
+        let shot = self
+            .noise
+            .apply(c.cand.shot, sim.params(), &mut stream(self.seed, id, k));
+        let first = sim.event_count();
+        sim.strike(self.cue, shot).ok()?;
+        Some((before, first))
+    }
+
+    /// The frame after `c` as the rules judge it (`summary`, the balls `before` and `after`)
+    /// and their verdict; `None` when the rules refuse the stroke.
+    fn judge(
+        &self,
+        c: &Cand,
+        summary: &ShotSummary,
+        before: &[(u8, Vec2)],
+        after: &[(u8, Vec2)],
+    ) -> Option<(Frame, Verdict)> {
+        let mut frame = self.frame.clone();
+        let verdict = frame
+            .play(Stroke {
+                summary,
+                nominated: c.nominated,
+                before,
+                after,
+            })
+            .ok()?;
+        Some((frame, verdict))
+    }
+
     /// One noisy sample of `c` (draw `k` of stream `id`) in the scratch simulation `sim`.
     pub(super) fn sample(&self, c: &Cand, id: u64, k: u64, sim: &mut Simulation) -> Stats {
         let refused = Stats {
@@ -44,19 +87,9 @@ impl Snook<'_> {
             ..Stats::default()
         };
         sim.clone_from(&self.base);
-        if let Some(p) = c.cand.place
-            && sim.place(self.cue, p, Vec2::ZERO, Vec3::ZERO).is_err()
-        {
+        let Some((before, first)) = self.strike(c, sim, id, k) else {
             return refused;
-        }
-        let before = on_table(sim);
-        let shot = self
-            .noise
-            .apply(c.cand.shot, sim.params(), &mut stream(self.seed, id, k));
-        let first = sim.event_count();
-        if sim.strike(self.cue, shot).is_err() {
-            return refused;
-        }
+        };
         let mut summary = ShotSummary::default();
         let mut layout = None;
         while let Some(e) = sim.step_event() {
@@ -76,13 +109,7 @@ impl Snook<'_> {
             Some(l) => std::iter::once((WHITE, l.cue)).chain(l.balls).collect(),
             None => on_table(sim),
         };
-        let mut frame = self.frame.clone();
-        let Ok(verdict) = frame.play(Stroke {
-            summary: &summary,
-            nominated: c.nominated,
-            before: &before,
-            after: &after,
-        }) else {
+        let Some((frame, verdict)) = self.judge(c, &summary, &before, &after) else {
             return Stats { events, ..refused };
         };
         let value = self.score(&frame, &verdict, &after);
@@ -108,21 +135,9 @@ impl Snook<'_> {
         reply: &SnookerBudget,
     ) -> (f64, usize, usize) {
         let mut sim = self.base.clone();
-        if let Some(p) = c.cand.place
-            && sim.place(self.cue, p, Vec2::ZERO, Vec3::ZERO).is_err()
-        {
+        let Some((before, first)) = self.strike(c, &mut sim, OUTCOMES, k) else {
             return (0.0, 1, 0);
-        }
-        let before = on_table(&sim);
-        let shot = self.noise.apply(
-            c.cand.shot,
-            sim.params(),
-            &mut stream(self.seed, OUTCOMES, k),
-        );
-        let first = sim.event_count();
-        if sim.strike(self.cue, shot).is_err() {
-            return (0.0, 1, 0);
-        }
+        };
         let mut summary = ShotSummary::default();
         while let Some(e) = sim.step_event() {
             summary.record(&e.kind, sim.numbers());
@@ -132,13 +147,7 @@ impl Snook<'_> {
         }
         let events = sim.event_count() - first;
         let after = on_table(&sim);
-        let mut frame = self.frame.clone();
-        let Ok(verdict) = frame.play(Stroke {
-            summary: &summary,
-            nominated: c.nominated,
-            before: &before,
-            after: &after,
-        }) else {
+        let Some((frame, verdict)) = self.judge(c, &summary, &before, &after) else {
             return (0.0, 1, events);
         };
         let Some(next) = verdict.next.clone() else {

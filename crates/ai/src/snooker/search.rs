@@ -1,19 +1,19 @@
-//! The snooker search: the rounds of noisy evaluation, the second ply and the choices after
-//! a foul. Candidates are built in `strokes.rs`, sampled in `sample.rs`, valued in
+//! The snooker search: its parts of the one search skeleton ([`search`]: places in the D,
+//! strokes, second ply) and the choices after a foul. Candidates are built in `strokes.rs`, sampled in `sample.rs`, valued in
 //! `value.rs`.
 
-use super::budget::{SnookerBudget, SnookerTwoPly};
+use super::budget::SnookerBudget;
 use super::context::Snook;
-use super::decision::{SnookerDecision, SnookerPlan};
+use super::decision::{Nominated, SnookerDecision};
 use super::strokes::Cand;
 use super::value::d_places;
 use crate::AiError;
+use crate::candidates::ShotKind;
 use crate::noise::Noise;
-use crate::rounds::Rounds;
-use billiards_physics::{BallSetup, Simulation, Vec2};
+use crate::rounds::{Rounds, Searched, at_rest, best_choice, cue_and_base, search};
+use billiards_physics::{BallSetup, Shot, Simulation, Vec2};
 use billiards_rules::snooker::balls::WHITE;
 use billiards_rules::snooker::{Choice, Frame};
-use rayon::prelude::*;
 
 /// [`super::decide_snooker`] planned under `noise` with `budget`.
 pub fn decide_snooker_with(
@@ -23,28 +23,13 @@ pub fn decide_snooker_with(
     budget: &SnookerBudget,
     seed: u64,
 ) -> Result<SnookerDecision, AiError> {
-    if frame.end.is_some() {
-        return Err(AiError::GameOver);
-    }
-    if !sim.is_at_rest() {
-        return Err(AiError::NotAtRest);
-    }
+    at_rest(frame.end.is_some(), sim)?;
     if !frame.next.choices.is_empty() {
         let inner = budget.choice.as_deref().unwrap_or(budget);
         let (choice, estimate) = choose(frame, sim, noise, inner, seed);
         return Ok(SnookerDecision::Choose { choice, estimate });
     }
-    let cue = sim
-        .numbers()
-        .iter()
-        .position(|&n| n == WHITE)
-        .ok_or(AiError::NoCueBall)?;
-    let in_hand = frame.next.in_hand;
-    if !in_hand && !sim.ball(cue).motion.on_table() {
-        return Err(AiError::CueBallOff);
-    }
-    let mut base = sim.clone();
-    base.set_record_history(false);
+    let (cue, base) = cue_and_base(sim, WHITE, frame.next.in_hand)?;
     let me = frame.next.striker;
     let s = Snook {
         frame,
@@ -55,67 +40,67 @@ pub fn decide_snooker_with(
         me,
         needs: frame.snookers_required(me) > 0,
     };
-    let places: Vec<Option<Vec2>> = if in_hand {
-        let found = d_places(frame, sim, noise, budget.placements);
+    search(&s, budget).map(SnookerDecision::Shoot)
+}
+
+/// Snooker's parts of the one search skeleton ([`search`]): places in the D, pots and
+/// safeties valued in points (safeties even when a pot scores, if snookers are needed), the
+/// second ply and the nomination.
+impl Searched for Snook<'_> {
+    type Budget = SnookerBudget;
+    type Part = Nominated;
+
+    fn places(&self, budget: &SnookerBudget) -> Result<Vec<Option<Vec2>>, AiError> {
+        if !self.frame.next.in_hand {
+            return Ok(vec![None]);
+        }
+        let found = d_places(self.frame, &self.base, self.noise, budget.placements);
         if found.is_empty() {
             return Err(AiError::NoPlace);
         }
-        found.into_iter().map(Some).collect()
-    } else {
-        vec![None]
-    };
-    let mut pool = Pool::default();
-    let first: Vec<Cand> = places.iter().flat_map(|&p| s.offence(p, budget)).collect();
-    let safeties = |scoring: bool| {
-        if scoring && !s.needs {
+        Ok(found.into_iter().map(Some).collect())
+    }
+
+    fn offence(&self, places: &[Option<Vec2>], budget: &SnookerBudget) -> Vec<Cand> {
+        places
+            .iter()
+            .flat_map(|&p| self.offence(p, budget))
+            .collect()
+    }
+
+    fn safeties(
+        &self,
+        places: &[Option<Vec2>],
+        budget: &SnookerBudget,
+        scoring: bool,
+    ) -> Vec<Cand> {
+        if scoring && !self.needs {
             return Vec::new();
         }
-        places.iter().flat_map(|&p| s.safeties(p, budget)).collect()
-    };
-    pool.play_rounds(&s, first, safeties, (budget.samples, &budget.rounds));
-    if let Some(two) = &budget.second {
-        second_ply(&mut pool, &s, two);
+        places
+            .iter()
+            .flat_map(|&p| self.safeties(p, budget))
+            .collect()
     }
-    let found = pool.found().ok_or(AiError::NoBall)?;
-    let c = pool.cands[found.index];
-    Ok(SnookerDecision::Shoot(SnookerPlan {
-        shot: c.cand.shot,
-        place: c.cand.place,
-        nominated: c.nominated,
-        kind: c.cand.kind,
-        success: found.stats.pot_rate(),
-        foul: found.foul_rate(),
-        value: found.value,
-        samples: found.stats.n,
-        simulations: found.simulations,
-        events: found.events,
-    }))
-}
 
-/// Every candidate evaluated so far, with its samples ([`Rounds`], the skeleton every
-/// game's search shares).
-type Pool = Rounds<Cand>;
+    fn rounds<'b>(&self, budget: &'b SnookerBudget) -> (usize, &'b [(usize, usize)]) {
+        (budget.samples, &budget.rounds)
+    }
 
-/// Values the best finalists two plies deep; they become the only candidates
-/// [`Rounds::best`] chooses from. A stroke's value: its one-ply mean plus the mean, over
-/// its searched outcomes, of (second-ply value - one-ply value) of the same outcome (a
-/// control variate, as [`crate::twoply`]).
-fn second_ply(pool: &mut Pool, s: &Snook, two: &SnookerTwoPly) {
-    let order = pool.second_ply_order(two.finalists);
-    let jobs: Vec<(usize, u64)> = order
-        .iter()
-        .flat_map(|&i| (0..two.outcomes as u64).map(move |k| (i, k)))
-        .collect();
-    let corrections: Vec<(f64, usize, usize)> = jobs
-        .par_iter()
-        .map(|&(i, k)| s.correction(&pool.cands[i], k, &two.reply))
-        .collect();
-    for (n, &i) in order.iter().enumerate() {
-        let mine = &corrections[n * two.outcomes..(n + 1) * two.outcomes];
-        let shift = mine.iter().map(|c| c.0).sum::<f64>() / two.outcomes.max(1) as f64;
-        pool.two.push((i, pool.stats[i].mean() + shift));
-        pool.simulations += mine.iter().map(|c| c.1).sum::<usize>();
-        pool.events += mine.iter().map(|c| c.2).sum::<usize>();
+    /// A stroke's two-ply value is as [`crate::twoply`]'s, its outcomes' corrections by
+    /// [`Snook::correction`].
+    fn second_ply(&self, pool: &mut Rounds<Cand>, budget: &SnookerBudget) {
+        if let Some(two) = &budget.second {
+            let correct = |c: &Cand, k| self.correction(c, k, &two.reply);
+            pool.second_ply(two.finalists, two.outcomes, correct);
+        }
+    }
+
+    fn stroke(&self, c: &Cand) -> (Shot, Option<Vec2>, ShotKind, Nominated) {
+        let nominated = Nominated {
+            nominated: c.nominated,
+        };
+        (c.cand.shot, c.cand.place, c.cand.kind, nominated)
     }
 }
 
@@ -139,31 +124,21 @@ fn choose(
     seed: u64,
 ) -> (Choice, f64) {
     let me = frame.next.striker;
-    let mut best: Option<(f64, Choice)> = None;
-    for (k, &choice) in frame.next.choices.iter().enumerate() {
+    let best = best_choice(&frame.next.choices, seed, |choice, salt| {
         let mut after = frame.clone();
-        let Ok(chosen) = after.choose(choice) else {
-            continue;
-        };
+        let chosen = after.choose(choice).ok()?;
         let table = match &chosen.layout {
-            Some(l) => match replaced(sim, l) {
-                Some(t) => t,
-                None => continue,
-            },
+            Some(l) => replaced(sim, l)?,
             None => sim.clone(),
         };
         let sign = if chosen.next.striker == me { 1.0 } else { -1.0 };
-        let salt = seed.wrapping_add(0x9e37_79b9 * (k as u64 + 1));
-        let value = match decide_snooker_with(&after, &table, noise, budget, salt) {
-            Ok(SnookerDecision::Shoot(plan)) => sign * plan.value,
-            _ => continue,
-        };
-        if best.is_none_or(|b| value > b.0) {
-            best = Some((value, choice));
+        match decide_snooker_with(&after, &table, noise, budget, salt) {
+            Ok(SnookerDecision::Shoot(plan)) => Some((sign * plan.value, ())),
+            _ => None,
         }
-    }
+    });
     match best {
-        Some((v, c)) => (c, v),
+        Some((choice, value, ())) => (choice, value),
         None => (frame.next.choices[0], 0.0),
     }
 }

@@ -5,6 +5,7 @@
 use super::context::Snook;
 use crate::candidates::{Layout, best_open, each_direct_aim};
 use crate::noise::Noise;
+use crate::placement::best_apart;
 use crate::position::aim_probability;
 use billiards_physics::{Simulation, SnookerMarks, Vec2};
 use billiards_rules::snooker::balls::{WHITE, is_red, value};
@@ -75,9 +76,10 @@ fn chance_in_hand(layout: &Layout, marks: &SnookerMarks, on: &[u8], noise: Noise
 }
 
 /// Up to `count` places in the D for the cue ball in hand (3.4), best first: a fan of
-/// points behind the baulk-line clear of every ball, ranked by [`chance`] at the balls on;
-/// equal values keep the order proposed, whose first two are the usual break-off places
-/// between the brown and the yellow or the green.
+/// points behind the baulk-line clear of every ball, ranked by [`chance`] at the balls on
+/// and kept apart as pool's places ([`best_apart`]); equal values keep the order proposed,
+/// whose first two are the usual break-off places between the brown and the yellow or the
+/// green.
 pub fn d_places(frame: &Frame, sim: &Simulation, noise: Noise, count: usize) -> Vec<Vec2> {
     let Some(mut layout) = Layout::of(sim, Some(Vec2::ZERO)) else {
         return Vec::new();
@@ -107,25 +109,10 @@ pub fn d_places(frame: &Frame, sim: &Simulation, noise: Noise, count: usize) -> 
                 .all(|&(_, q)| (p - q).length() > 2.0 * r + 1e-4)
     });
     let on = frame.balls_on(frame.next.on);
-    let mut ranked: Vec<(f64, usize, Vec2)> = proposed
-        .into_iter()
-        .enumerate()
-        .map(|(i, p)| {
-            layout.cue = p;
-            (chance(&layout, &on, noise), i, p)
-        })
-        .collect();
-    ranked.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
-    let mut out: Vec<Vec2> = Vec::new();
-    for (_, _, p) in ranked {
-        if out.len() == count {
-            break;
-        }
-        if out.iter().all(|q| (*q - p).length() >= 0.05) {
-            out.push(p);
-        }
-    }
-    out
+    best_apart(proposed, count, |p| {
+        layout.cue = p;
+        chance(&layout, &on, noise)
+    })
 }
 
 impl Snook<'_> {
