@@ -50,6 +50,9 @@ pub enum FirstContact {
 pub struct AimPrediction {
     /// Cue-ball centre from the strike to the first contact (or to where it stops).
     pub path: Vec<DVec2>,
+    /// The cue ball's height above the cloth at each point of [`AimPrediction::path`]
+    /// (a jump's arc, its bounces; 0 on the cloth).
+    pub path_heights: Vec<f64>,
     /// What the cue ball touches first, and the cue ball's centre there (the ghost ball).
     pub contact: Option<(FirstContact, DVec2)>,
     /// After the first contact, the path of every ball that moves (the cue ball first), each
@@ -66,6 +69,8 @@ pub struct BallPath {
     pub number: u8,
     /// Its centre, sampled along each piece of its motion (every event it takes is a point).
     pub points: Vec<DVec2>,
+    /// Its height above the cloth at each point (empty: on the cloth throughout).
+    pub heights: Vec<f64>,
     /// The pocket its drawn path ends in, if it drops.
     pub pocket: Option<billiards_physics::Pocket>,
 }
@@ -130,6 +135,11 @@ pub fn predict(
     }
     let start = sim.time();
     let mut contact = None;
+    // The cue ball's own events before the contact (a take-off, a landing, a bounce): the
+    // path is sampled piece by piece between them, so each landing is a point of it.
+    // A jump leaves the cloth at the strike itself.
+    let mut flew = sim.ball(cue_id).motion == billiards_physics::Motion::Airborne;
+    let mut breaks = Vec::new();
     for _ in 0..EVENT_BUDGET {
         let Some(event) = sim.step_event() else { break };
         let hit = match event.kind {
@@ -149,13 +159,27 @@ pub fn predict(
             contact = Some((kind, event));
             break;
         }
+        if event.kind.balls().any(|b| b == cue_id) {
+            breaks.push(event.time);
+            flew |= sim.ball(cue_id).motion == billiards_physics::Motion::Airborne;
+        }
         if !sim.ball(cue_id).motion.on_table() || sim.ball(cue_id).motion.is_at_rest() {
             break;
         }
     }
     let end_of_path = contact.map_or(sim.time(), |(_, event)| event.time);
+    // A path on the cloth as before: one piece, evenly sampled.
+    let (path, path_heights) = if !flew {
+        (
+            sample(&sim, cue_id, start, end_of_path, SAMPLES),
+            Vec::new(),
+        )
+    } else {
+        pieces(&sim, cue_id, start, &breaks, end_of_path)
+    };
     let mut prediction = AimPrediction {
-        path: sample(&sim, cue_id, start, end_of_path, SAMPLES),
+        path,
+        path_heights,
         ..default()
     };
     let ghost = to_dvec2(sim.history().state_at(cue_id, end_of_path).position);
@@ -274,9 +298,11 @@ fn follow(sim: &mut Simulation, first: billiards_physics::Event, contacts: u32) 
                 }
             }
             let moved = points.windows(2).any(|w| w[0] != w[1]);
+            let heights = heights_of(sim, id, trace.from, &trace.breaks, until, &points);
             moved.then(|| BallPath {
                 number: sim.numbers()[id],
                 points,
+                heights,
                 pocket: trace.pocket,
             })
         })
@@ -302,6 +328,55 @@ fn sample(sim: &Simulation, id: usize, from: f64, to: f64, samples: usize) -> Ve
         .map(|k| from + (to - from) * k as f64 / samples as f64)
         .map(|t| to_dvec2(sim.history().state_at(id, t.min(sim.time())).position))
         .collect()
+}
+
+/// Ball `id`'s centre and height over `[from, to]`, sampled piece by piece between the
+/// times `breaks` (its events), [`SAMPLES_PER_PIECE`] samples a piece.
+fn pieces(
+    sim: &Simulation,
+    id: usize,
+    from: f64,
+    breaks: &[f64],
+    to: f64,
+) -> (Vec<DVec2>, Vec<f64>) {
+    let (mut points, mut heights) = (Vec::new(), Vec::new());
+    let mut start = from;
+    for end in breaks.iter().copied().filter(|&t| t < to).chain([to]) {
+        // A piece of no length (two events at one instant) adds no point, as in [`follow`].
+        if end <= start && !points.is_empty() {
+            continue;
+        }
+        let skip = usize::from(!points.is_empty());
+        for k in skip..=SAMPLES_PER_PIECE {
+            let t = start + (end - start) * k as f64 / SAMPLES_PER_PIECE as f64;
+            let state = sim.history().state_at(id, t.min(sim.time()));
+            points.push(to_dvec2(state.position));
+            heights.push(state.height);
+        }
+        start = end;
+    }
+    (points, heights)
+}
+
+/// The heights along a traced path whose `points` were sampled as [`follow`] samples them
+/// (piece by piece between `breaks`, to `until`); empty when the ball never left the cloth.
+fn heights_of(
+    sim: &Simulation,
+    id: usize,
+    from: f64,
+    breaks: &[f64],
+    until: f64,
+    points: &[DVec2],
+) -> Vec<f64> {
+    let ends: Vec<f64> = breaks.iter().copied().filter(|&t| t < until).collect();
+    let (resampled, heights) = pieces(sim, id, from, &ends, until);
+    // Only when the two samplings agree point for point are the heights the points'.
+    let flew = heights.iter().any(|&h| h > 0.0);
+    if flew && resampled.len() == points.len() {
+        heights
+    } else {
+        Vec::new()
+    }
 }
 
 /// Recomputes the prediction when the shot, the settings or the table changed.
@@ -351,12 +426,28 @@ fn draw_prediction(
     }
     let radius = spec.ball_radius;
     let at = |p: DVec2, lift: f64| to_world(p.extend(lift));
-    // Just above the cloth; drawn straight from the stored points, nothing allocated per frame.
-    fn line(points: &[DVec2]) -> impl Iterator<Item = Vec3> + '_ {
-        points.iter().map(|&p| to_world(p.extend(0.002)))
+    // Just above the cloth, or at the ball's height in flight; drawn straight from the
+    // stored points, nothing allocated per frame.
+    fn line<'a>(points: &'a [DVec2], heights: &'a [f64]) -> impl Iterator<Item = Vec3> + 'a {
+        let height = |k: usize| heights.get(k).copied().unwrap_or(0.0);
+        (0..points.len()).map(move |k| to_world(points[k].extend(0.002 + height(k))))
     }
     let white = Color::srgba(1.0, 1.0, 1.0, 0.85);
-    gizmos.linestrip(line(&prediction.path), white);
+    gizmos.linestrip(line(&prediction.path, &prediction.path_heights), white);
+    let flat = Quat::from_rotation_x(FRAC_PI_2);
+    // Each landing (a bounce, the last one) ringed on the cloth where the ball comes down.
+    let mut landings = |points: &[DVec2], heights: &[f64], colour: Color| {
+        for k in landings_in(heights) {
+            gizmos
+                .circle(
+                    Isometry3d::new(at(points[k], 0.002), flat),
+                    radius as f32 * 0.6,
+                    colour,
+                )
+                .resolution(24);
+        }
+    };
+    landings(&prediction.path, &prediction.path_heights, white);
     if let Some((kind, ghost)) = prediction.contact {
         let colour = match kind {
             FirstContact::Ball { .. } => white,
@@ -364,7 +455,6 @@ fn draw_prediction(
             FirstContact::Pocket => Color::srgb(1.0, 0.3, 0.2),
         };
         // The ghost ball: its outline at the equator and its footprint on the cloth.
-        let flat = Quat::from_rotation_x(FRAC_PI_2);
         gizmos
             .circle(
                 Isometry3d::new(at(ghost, radius), flat),
@@ -386,193 +476,27 @@ fn draw_prediction(
         } else {
             Color::srgba(1.0, 0.85, 0.2, 0.8)
         };
-        gizmos.linestrip(line(&path.points), colour);
+        gizmos.linestrip(line(&path.points, &path.heights), colour);
+        for k in landings_in(&path.heights) {
+            gizmos
+                .circle(
+                    Isometry3d::new(at(path.points[k], 0.002), flat),
+                    radius as f32 * 0.6,
+                    colour,
+                )
+                .resolution(24);
+        }
     }
+}
+
+/// Where a sampled flight comes down: the indices at which the height, above the cloth at
+/// the point before, is back on it (each bounce and the last landing).
+pub fn landings_in(heights: &[f64]) -> impl Iterator<Item = usize> + '_ {
+    /// Under this the ball is on the cloth (the solver's resting hop is 1e-7 m).
+    const ON_CLOTH: f64 = 1e-6;
+    (1..heights.len()).filter(|&k| heights[k - 1] > ON_CLOTH && heights[k] <= ON_CLOTH)
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use billiards_physics::{Params, Table, Vec2};
-
-    fn resting(number: u8, x: f64, y: f64) -> (u8, BallState) {
-        let setup = BallSetup::at(number, Vec2::new(x, y));
-        let sim = Simulation::new(Table::wpa_8ft(), Params::default(), &[setup]).unwrap();
-        (number, sim.ball(0))
-    }
-
-    #[test]
-    fn ghost_ball_touches_the_object_ball_on_a_straight_shot() {
-        let balls = [resting(0, -0.5, 0.0), resting(1, 0.3, 0.0)];
-        let params = Params::default();
-        let p = predict(Table::wpa_8ft(), params, &balls, 0, Shot::new(0.0, 2.0), 1);
-        let (kind, ghost) = p.contact.unwrap();
-        assert_eq!(kind, FirstContact::Ball { number: 1 });
-        // Centre to centre 2R at contact, on the line of the shot.
-        let two_r = 2.0 * params.ball.radius;
-        assert!((ghost.x - (0.3 - two_r)).abs() < 1e-9, "{ghost:?}");
-        assert!(ghost.y.abs() < 1e-12);
-        // Head on with equal masses: the object ball goes straight on.
-        let last = *p.after_of(1).unwrap().last().unwrap();
-        assert!(last.x > 0.3 && last.y.abs() < 1e-9);
-    }
-
-    #[test]
-    fn a_cut_sends_the_object_ball_along_the_line_of_centres() {
-        let balls = [resting(0, -0.5, 0.0), resting(1, 0.3, 0.03)];
-        let params = Params::default();
-        let p = predict(Table::wpa_8ft(), params, &balls, 0, Shot::new(0.0, 2.0), 1);
-        let (_, ghost) = p.contact.unwrap();
-        let centres = (DVec2::new(0.3, 0.03) - ghost).normalize();
-        let moved =
-            (p.after_of(1).unwrap()[SAMPLES_PER_PIECE / 2] - DVec2::new(0.3, 0.03)).normalize();
-        // The paper's model has no ball friction: no throw, so exactly the line of centres.
-        assert!(centres.angle_to(moved).abs() < 1e-9);
-    }
-
-    #[test]
-    fn a_miscue_is_reported_not_drawn() {
-        let balls = [resting(0, -0.5, 0.0)];
-        let params = Params {
-            model: billiards_physics::Model::Spin(Default::default()),
-            ..Params::default()
-        };
-        let shot = Shot {
-            tip: billiards_physics::TipOffset {
-                side: 0.6,
-                height: 0.0,
-            },
-            ..Shot::new(0.0, 2.0)
-        };
-        let p = predict(Table::wpa_8ft(), params, &balls, 0, shot, 1);
-        assert!(p.note.unwrap().contains("miscue"));
-        assert!(p.path.is_empty());
-    }
-
-    #[test]
-    fn a_lone_cue_ball_hits_a_cushion() {
-        let balls = [resting(0, 0.0, 0.0)];
-        let p = predict(
-            Table::wpa_8ft(),
-            Params::default(),
-            &balls,
-            0,
-            Shot::new(0.0, 3.0),
-            1,
-        );
-        let (kind, ghost) = p.contact.unwrap();
-        assert_eq!(kind, FirstContact::Cushion);
-        let radius = Params::default().ball.radius;
-        assert!((ghost.x - (Table::wpa_8ft().length / 2.0 - radius)).abs() < 1e-9);
-    }
-
-    /// A full-draw stop shot: the object ball goes on and the cue ball comes back by more
-    /// than a metre; the aid shows all of that, not a centimetre of it.
-    #[test]
-    fn a_draw_shot_shows_the_cue_ball_coming_back() {
-        let balls = [resting(0, -0.6, 0.0), resting(1, 0.0, 0.0)];
-        let params = Params {
-            model: billiards_physics::Model::Spin(Default::default()),
-            ..Params::default()
-        };
-        let shot = Shot {
-            tip: billiards_physics::TipOffset {
-                side: 0.0,
-                height: -0.45,
-            },
-            ..Shot::new(0.0, 6.0)
-        };
-        let p = predict(Table::wpa_8ft(), params, &balls, 0, shot, 2);
-        assert_eq!(p.contact.unwrap().0, FirstContact::Ball { number: 1 });
-        let cue = p.after_of(0).expect("the cue ball moves after the contact");
-        let ghost = p.contact.unwrap().1;
-        let back = cue.iter().map(|q| ghost.x - q.x).fold(0.0, f64::max);
-        assert!(back > 1.0, "the cue ball comes back {back} m");
-        // The same shot run by the solver to rest: the cue ball's path reaches where it
-        // really goes (its next two contacts or rest), so the drawn end is a real position.
-        assert!(p.after_of(1).unwrap().len() > SAMPLES_PER_PIECE);
-    }
-
-    /// An elevated cue with right english: the drawn path curves right of the cue line
-    /// (swerve, the cue ball alone on the table), where a level cue's stays on it.
-    #[test]
-    fn an_elevated_cue_with_english_draws_a_curved_path() {
-        let balls = [resting(0, -0.8, 0.0)];
-        let params = Params {
-            model: billiards_physics::Model::Spin(Default::default()),
-            ..Params::default()
-        };
-        let shot = |elevation: f64| Shot {
-            tip: billiards_physics::TipOffset {
-                side: 0.3,
-                height: 0.0,
-            },
-            elevation: elevation.to_radians(),
-            ..Shot::new(0.0, 2.0)
-        };
-        let off_line = |p: &AimPrediction| p.path.iter().map(|q| q.y).fold(0.0, f64::min);
-        let level = predict(Table::wpa_8ft(), params, &balls, 0, shot(0.0), 2);
-        let raised = predict(Table::wpa_8ft(), params, &balls, 0, shot(20.0), 2);
-        assert!(off_line(&level).abs() < 1e-9, "{}", off_line(&level));
-        // Right english (+side) curves toward -y (right of a cue pointing +x).
-        assert!(off_line(&raised) < -0.01, "{}", off_line(&raised));
-    }
-
-    /// Each ball's path ends at its N-th contact after the first: more contacts, longer paths.
-    #[test]
-    fn paths_end_after_the_chosen_number_of_contacts() {
-        let balls = [resting(0, -0.5, 0.05), resting(1, 0.3, 0.0)];
-        let params = Params::default();
-        let length = |p: &AimPrediction, n| {
-            p.after_of(n)
-                .unwrap()
-                .windows(2)
-                .map(|w| w[0].distance(w[1]))
-                .sum::<f64>()
-        };
-        let shot = Shot::new(0.0, 4.0);
-        let one = predict(Table::wpa_8ft(), params, &balls, 0, shot, 1);
-        let three = predict(Table::wpa_8ft(), params, &balls, 0, shot, 3);
-        // The object ball takes three cushions; the cue ball drops in a corner pocket (its
-        // path ends there however many contacts are asked for).
-        let (a, b) = (length(&one, 1), length(&three, 1));
-        assert!(b > a + 1.0, "{a} m after one contact, {b} m after three");
-        assert_eq!(length(&one, 0), length(&three, 0));
-    }
-
-    /// A ball hit after a drawn path has ended (here: the object ball's path ends at its first
-    /// cushion, then it rolls on into the 2) is not drawn: the aid would show a ball set moving
-    /// by nothing it shows (issue 28, item 10).
-    #[test]
-    fn a_ball_hit_past_the_end_of_a_drawn_path_is_not_drawn() {
-        let params = Params::default();
-        let shot = Shot::new(0.0, 3.0);
-        let two = [resting(0, -0.5, 0.05), resting(1, 0.3, 0.0)];
-        let free = predict(Table::wpa_8ft(), params, &two, 0, shot, 3);
-        let cushion = *predict(Table::wpa_8ft(), params, &two, 0, shot, 1)
-            .after_of(1)
-            .unwrap()
-            .last()
-            .unwrap();
-        // A point of the object ball's free path 0.3 m past its first cushion.
-        let path = free.after_of(1).unwrap();
-        let at = path.iter().position(|p| *p == cushion).unwrap();
-        let mut run = 0.0;
-        let beyond = path[at..]
-            .windows(2)
-            .find(|w| {
-                run += w[0].distance(w[1]);
-                run > 0.3
-            })
-            .unwrap()[1];
-        let three = [two[0], two[1], resting(2, beyond.x, beyond.y)];
-        let open = predict(Table::wpa_8ft(), params, &three, 0, shot, 2);
-        assert!(open.after_of(2).is_some(), "the 2 is hit on a drawn path");
-        let ended = predict(Table::wpa_8ft(), params, &three, 0, shot, 1);
-        assert!(ended.after_of(1).is_some());
-        assert!(
-            ended.after_of(2).is_none(),
-            "the 2 is hit after the 1's drawn path ended"
-        );
-    }
-}
+#[path = "aim_tests.rs"]
+mod tests;

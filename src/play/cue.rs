@@ -285,8 +285,8 @@ fn aim_with_mouse(
     apply_shot_edit(next, &mut shot, &mut report);
 }
 
-/// Arrow keys turn the aim and change the power, a tap by one step and a held key at a rate
-/// in real time ([`HeldKeys`]); Space shoots.
+/// Arrow keys turn the aim and change the power, E and D raise and lower the cue, a tap by
+/// one step and a held key at a rate in real time ([`HeldKeys`]); Space shoots.
 #[allow(clippy::too_many_arguments)]
 fn cue_keys(
     keys: Res<ButtonInput<KeyCode>>,
@@ -324,6 +324,10 @@ fn cue_keys(
     let mut next = *shot;
     next.angle += motion(KeyCode::ArrowLeft, turn) - motion(KeyCode::ArrowRight, turn);
     next.power += motion(KeyCode::ArrowUp, (0.1, 3.0)) - motion(KeyCode::ArrowDown, (0.1, 3.0));
+    // The cue's elevation (a jump, a masse): a tap 1 degree (0.1 with Shift); held 15 (2)
+    // degrees a second.
+    let raise = if fine { (0.1, 2.0) } else { (1.0, 15.0) };
+    next.elevation += motion(KeyCode::KeyE, raise) - motion(KeyCode::KeyD, raise);
     if held.any_held() {
         // The window draws on input only: keep frames coming while a key is held.
         redraw.write(RequestRedraw);

@@ -98,11 +98,12 @@ impl ShotSettings {
         unit: " R",
     };
 
-    /// Cue elevation: level to the solver's limit (85 degrees, `limits::MAX_ELEVATION`).
+    /// Cue elevation: level to the solver's limit (85 degrees, `limits::MAX_ELEVATION`): a
+    /// jump shot at 30-60 degrees, a masse above (issue 52).
     pub const ELEVATION: ParamRange = ParamRange {
         label: "cue elevation",
         min: 0.0,
-        max: 30.0,
+        max: 85.0,
         unit: " deg",
     };
 
@@ -117,7 +118,7 @@ impl ShotSettings {
             angle: self.angle,
             speed: self.power,
             tip: self.tip,
-            // 30 degrees in radians may round a hair above the solver's pi / 6.
+            // 85 degrees in radians may round a hair above the solver's limit.
             elevation: self
                 .elevation
                 .to_radians()

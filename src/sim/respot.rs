@@ -91,6 +91,7 @@ pub fn respot_ball(
         velocity: DVec2::ZERO,
         state: MotionState::Stationary,
         spin: bevy::math::DVec3::ZERO,
+        height: 0.0,
     };
     commands.entity(entity).remove::<Pocketed>();
     true

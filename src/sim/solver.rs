@@ -233,14 +233,14 @@ pub fn ball_motion(state: &BallState) -> BallMotion {
             bevy::math::DVec3::new(w.x, w.y, w.z)
         },
         state: match state.motion {
-            // In the air: moving, drawn on the cloth until the game draws flight (issue 52).
-            Motion::Sliding | Motion::Airborne => MotionState::Sliding,
+            Motion::Sliding => MotionState::Sliding,
+            Motion::Airborne => MotionState::Airborne,
             Motion::Rolling => MotionState::Rolling,
+            Motion::OffTable => MotionState::OffTable,
             // Spinning in place: the centre does not move, so nothing to roll.
-            Motion::Stationary | Motion::Spinning | Motion::Pocketed(_) | Motion::OffTable => {
-                MotionState::Stationary
-            }
+            Motion::Stationary | Motion::Spinning | Motion::Pocketed(_) => MotionState::Stationary,
         },
+        height: state.height,
     }
 }
 

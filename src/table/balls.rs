@@ -1,5 +1,5 @@
 //! The balls: their components, their look (generated number textures) and how their
-//! table-plane state is drawn.
+//! state is drawn (at their height when in the air).
 //!
 //! The simulation owns [`BallMotion`]; this plugin only reads it, so the same components
 //! work headless (no meshes) and in the game.
@@ -91,6 +91,10 @@ pub enum MotionState {
     Sliding,
     /// Rolling without slipping (rolling resistance).
     Rolling,
+    /// In the air, on its parabola (spin model, issue 51).
+    Airborne,
+    /// Out of play off the table: it flew over a cushion (drawn fallen to the floor).
+    OffTable,
 }
 
 /// A ball's state in the physics table plane (see [`crate::table::geometry`] for the axes).
@@ -104,6 +108,8 @@ pub struct BallMotion {
     pub state: MotionState,
     /// Angular velocity, rad/s, in the table's axes (z up); zero under the paper's model.
     pub spin: DVec3,
+    /// Height of the centre above where it rests on the cloth, metres (0 on the cloth).
+    pub height: f64,
 }
 
 /// Marks a ball that has dropped into a pocket and left play.
@@ -352,7 +358,8 @@ fn draw_ball_motion(
     let dt = (shown.0 - *last_shown).clamp(-MAX_TURN_STEP, MAX_TURN_STEP);
     *last_shown = shown.0;
     for (motion, mut transform) in &mut balls {
-        let target = spec.ball_world_position(motion.position);
+        // A ball in the air is drawn at its height ([`super::flight`] draws its shadow).
+        let target = spec.ball_world_position(motion.position) + Vec3::Y * motion.height as f32;
         let step = target - transform.translation;
         let distance = step.length();
         if motion.spin != DVec3::ZERO {

@@ -1,7 +1,8 @@
 //! The table: cloth, cushions, wooden rails, pockets (none on the carom table), diamond
-//! sights, legs and the floor.
+//! sights, legs and the floor; balls in the air and off the table ([`flight`]).
 
 pub mod balls;
+pub mod flight;
 pub mod geometry;
 pub mod mesh;
 
@@ -14,6 +15,7 @@ use geometry::{TableKind, TableSpec, to_world};
 /// changed), after a game started at launch has set its table: a snooker match set in that
 /// frame would otherwise be drawn on the pool table spawned at startup.
 pub fn plugin(app: &mut App) {
+    app.add_plugins(flight::plugin);
     app.init_resource::<TableSpec>().add_systems(
         PostUpdate,
         (despawn_table, spawn_table)
@@ -39,7 +41,7 @@ pub const CLOTH_COLOUR: Color = Color::srgb(0.05, 0.42, 0.20);
 pub const CAROM_CLOTH_COLOUR: Color = Color::srgb(0.06, 0.25, 0.55);
 
 /// Height of the cloth above the floor (WPA: 29.25-31 in).
-const CLOTH_HEIGHT: f64 = 0.78;
+pub(crate) const CLOTH_HEIGHT: f64 = 0.78;
 /// How far the apron reaches below the cloth.
 const APRON_DEPTH: f64 = 0.18;
 /// Depth of the pocket liners below the cloth.

@@ -159,8 +159,8 @@ fn column(ui: &mut egui::Ui, id: &str, width: f32, height: f32, lines: &[HudLine
 
 /// How to aim and shoot, in the HUD whenever a human may: a newcomer should not have to find
 /// the Controls section at the bottom of the panel (issue 28, item 8).
-const HOW_TO_SHOOT: &str =
-    "aim: drag on the table or Left/Right; power: Up/Down or Shift+wheel; shoot: Space";
+const HOW_TO_SHOOT: &str = "aim: drag on the table or Left/Right; power: Up/Down or Shift+wheel; cue elevation: E/D; \
+     shoot: Space";
 
 /// While the renderer still compiles its shaders (seconds on a software renderer) the table
 /// is drawn unlit: say so, with the progress.

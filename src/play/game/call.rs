@@ -80,6 +80,7 @@ mod tests {
         BallPath {
             number,
             points: Vec::new(),
+            heights: Vec::new(),
             pocket,
         }
     }

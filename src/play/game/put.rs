@@ -59,6 +59,7 @@ pub fn set_balls(
                     velocity: DVec2::ZERO,
                     state: MotionState::Stationary,
                     spin: bevy::math::DVec3::ZERO,
+                    height: 0.0,
                 };
                 motion.set_changed();
                 if pocketed {

@@ -57,6 +57,7 @@ pub fn file_and_controls(ui: &mut egui::Ui, state: &mut SettingsParam) {
             "Left drag on the table: aim\n\
              Shift + left drag down, Shift + wheel: power\n\
              Arrows: aim (Shift: fine) and power\n\
+             E / D: raise / lower the cue (a jump, a masse)\n\
              Space: shoot\n\
              Right or middle drag: orbit; wheel: zoom\n\
              T: top view; F: follow the cue ball; Home: reset view",
