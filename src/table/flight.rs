@@ -8,9 +8,8 @@ use std::collections::HashMap;
 
 use bevy::{light::NotShadowCaster, math::DVec2, prelude::*};
 
-use super::CLOTH_HEIGHT;
 use super::balls::{Ball, BallMotion, MotionState};
-use super::geometry::{TableSpec, to_world};
+use super::geometry::{CLOTH_HEIGHT, TableSpec, to_world};
 
 /// Adds the shadows of balls in the air and the fall of balls off the table.
 pub fn plugin(app: &mut App) {
@@ -224,7 +223,7 @@ mod tests {
     fn a_ball_off_the_table_lands_beyond_the_rail_it_crossed() {
         let spec = TableSpec::default();
         let outer = spec.outer_half_extents();
-        let floor_y = (spec.ball_radius - super::CLOTH_HEIGHT) as f32;
+        let floor_y = (spec.ball_radius - crate::table::geometry::CLOTH_HEIGHT) as f32;
         // Over the foot rail (+x), near a side.
         let spot = floor_spot(&spec, DVec2::new(outer.x - 0.01, 0.2));
         let edge = to_world(DVec2::new(outer.x, 0.2).extend(0.0));

@@ -9,6 +9,9 @@ use bevy::math::{DVec2, DVec3, Vec3};
 use bevy::prelude::Resource;
 use billiards_physics::TableChoice;
 
+/// Height of the cloth above the floor (WPA: 29.25-31 in).
+pub const CLOTH_HEIGHT: f64 = 0.78;
+
 /// One inch in metres: equipment specifications are in inches, everything else is SI.
 pub const INCH: f64 = 0.0254;
 

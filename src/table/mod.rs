@@ -8,7 +8,7 @@ pub mod mesh;
 
 use bevy::{light::NotShadowCaster, math::DVec3, prelude::*};
 
-use geometry::{TableKind, TableSpec, to_world};
+use geometry::{CLOTH_HEIGHT, TableKind, TableSpec, to_world};
 
 /// Spawns the table from the [`TableSpec`] resource, and again when another table is chosen.
 /// The first spawn is in the first frame's `PostUpdate` (an added resource counts as
@@ -40,8 +40,6 @@ pub const CLOTH_COLOUR: Color = Color::srgb(0.05, 0.42, 0.20);
 /// The carom table's cloth.
 pub const CAROM_CLOTH_COLOUR: Color = Color::srgb(0.06, 0.25, 0.55);
 
-/// Height of the cloth above the floor (WPA: 29.25-31 in).
-pub(crate) const CLOTH_HEIGHT: f64 = 0.78;
 /// How far the apron reaches below the cloth.
 const APRON_DEPTH: f64 = 0.18;
 /// Depth of the pocket liners below the cloth.
