@@ -1,6 +1,11 @@
 //! 8-ball, WPA Rules of Play section 3: the break and its options (3.3), the open table and
 //! the groups (3.5), called shots (1.6, 3.6), ball in hand after a foul (3.7, 1.5) and the
-//! ways to lose the rack with the 8 (3.8). There is no three-foul rule (6.14: "some games
+//! ways to lose the rack with the 8 (3.8). A ball driven off the table is a foul (6.1 the cue
+//! ball, 6.5 an object ball: "whether that ball is spotted depends on the rules of the
+//! game"); in 8-ball the jumped object balls are spotted (WPA 1.4 spotting on the long
+//! string) and the 8 driven off the table loses the rack (3.8) — as games.md ("Balls off
+//! the table") says; the number of 8-ball's own jumped-ball clause could not be confirmed
+//! from the text at hand, so none is cited. There is no three-foul rule (6.14: "some games
 //! such as eight ball do not include this rule").
 
 use crate::foul::{BallOn, Foul, Group, WinReason, common_fouls};
@@ -79,6 +84,7 @@ pub(crate) fn play(
     let foul = !fouls.is_empty();
     let eight = shot.pocket_of(8);
     state.take_off(shot);
+    let spot = spot_jumped(state, shot);
     let me = shooter.index();
     state.fouls[me] = if foul { state.fouls[me] + 1 } else { 0 };
     let verdict = |fouls, outcome, assigned, next| Verdict {
@@ -90,6 +96,14 @@ pub(crate) fn play(
         assigned,
         next,
     };
+    if shot.is_off_table(8) {
+        // WPA 3.8: the 8 driven off the table loses the rack, whatever else happened.
+        let outcome = Outcome::GameOver {
+            winner: shooter.other(),
+            reason: WinReason::EightOffTable,
+        };
+        return Ok(verdict(fouls, outcome, None, None));
+    }
     if let Some(went) = eight {
         // WPA 3.6 wins; 3.8 loses: early, on a foul, in another pocket than the called one.
         let lost = match call {
@@ -115,8 +129,10 @@ pub(crate) fn play(
         return Ok(verdict(fouls, outcome, None, None));
     }
     if foul {
-        // WPA 3.7, 1.5: ball in hand anywhere; balls pocketed stay down.
-        let next = normal_next(state, shooter.other(), CueBall::InHandAnywhere);
+        // WPA 3.7, 1.5: ball in hand anywhere; balls pocketed stay down, jumped ones are
+        // spotted (6.5).
+        let mut next = normal_next(state, shooter.other(), CueBall::InHandAnywhere);
+        next.spot = spot;
         return Ok(verdict(fouls, Outcome::Passes, None, Some(next)));
     }
     // The ball that counts: the called ball in the called pocket; without a call, any ball
@@ -151,24 +167,45 @@ fn break_shot(state: &mut GameState, shot: &ShotSummary, call: Call) -> Result<V
     let pocketed = shot.pocketed_object_balls().next().is_some();
     let to_rail = shot.object_balls_to_rail();
     let legal = pocketed || to_rail >= 4;
-    let scratched = shot.scratch();
+    // A ball driven off the table on the break (WPA 6.1, 6.5) is a foul the break's rule
+    // treats as the scratch: the opponent's options are those after a scratch (3.3). The
+    // 2008 BCA text gives the same option for a jumped object ball on the break.
+    let scratched = shot.scratch() || !shot.off_table.is_empty();
     let mut fouls = Vec::new();
-    if scratched {
+    if shot.scratch() {
         fouls.push(Foul::Scratch);
     }
+    fouls.extend(shot.off_table.iter().map(|&ball| Foul::OffTable { ball }));
     if !legal {
         fouls.push(Foul::IllegalBreak { to_rail });
     }
     let eight = shot.pocket_of(8).is_some();
     state.take_off(shot);
+    let spot = spot_jumped(state, shot);
     let me = breaker.index();
     state.fouls[me] = if fouls.is_empty() {
         0
     } else {
         state.fouls[me] + 1
     };
+    if shot.is_off_table(8) {
+        // WPA 3.8: the 8 driven off the table loses the rack, on the break too.
+        let outcome = Outcome::GameOver {
+            winner: breaker.other(),
+            reason: WinReason::EightOffTable,
+        };
+        return Ok(Verdict {
+            shooter: breaker,
+            break_shot: true,
+            push_out: false,
+            fouls,
+            outcome,
+            assigned: None,
+            next: None,
+        });
+    }
     // The table stays open after the break, whatever dropped (WPA 3.5).
-    let (outcome, next) = if eight {
+    let (outcome, mut next) = if eight {
         // WPA 3.3: spot the 8 or re-rack; the breaker chooses, or after a foul the opponent.
         state.pending = Some(Pending::EightOnBreak {
             breaker,
@@ -206,6 +243,7 @@ fn break_shot(state: &mut GameState, shot: &ShotSummary, call: Call) -> Result<V
         let next = normal_next(state, breaker.other(), CueBall::AsItLies);
         (Outcome::Passes, next)
     };
+    next.spot.extend(spot);
     Ok(Verdict {
         shooter: breaker,
         break_shot: true,
@@ -215,4 +253,14 @@ fn break_shot(state: &mut GameState, shot: &ShotSummary, call: Call) -> Result<V
         assigned: None,
         next: Some(next),
     })
+}
+
+/// Puts the object balls driven off the table (the 8 apart: it loses the rack, 3.8) back
+/// among the balls on the table and lists them for the spot (WPA 6.5, 1.4).
+fn spot_jumped(state: &mut GameState, shot: &ShotSummary) -> Vec<u8> {
+    let jumped: Vec<u8> = shot.off_table_object_balls().filter(|&b| b != 8).collect();
+    for &b in &jumped {
+        state.put_back(b);
+    }
+    jumped
 }

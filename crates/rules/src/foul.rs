@@ -79,6 +79,12 @@ pub enum Foul {
     },
     /// WPA 6.3: no ball was pocketed and no ball touched a rail after the first contact.
     NoRail,
+    /// WPA 6.5 "Ball Driven off the Table" (an object ball) or 6.1 "Cue Ball Scratch or off
+    /// the Table" (the cue ball, number 0): whether the ball is spotted is each game's rule.
+    OffTable {
+        /// The ball driven off the table.
+        ball: u8,
+    },
     /// WPA 2.3 / 3.3 / 9.3: on the break no ball was pocketed and fewer than four object balls
     /// were driven to a rail.
     IllegalBreak {
@@ -92,6 +98,8 @@ impl fmt::Display for Foul {
         match *self {
             Foul::Scratch => write!(f, "the cue ball was pocketed"),
             Foul::NoBallHit => write!(f, "the cue ball hit no ball"),
+            Foul::OffTable { ball: 0 } => write!(f, "the cue ball was driven off the table"),
+            Foul::OffTable { ball } => write!(f, "the {ball} was driven off the table"),
             Foul::WrongBallFirst { hit, on } => match on {
                 BallOn::Lowest(low) => {
                     write!(f, "the {hit} was hit first, the {low} was the lowest ball")
@@ -129,6 +137,9 @@ pub enum WinReason {
     EightEarly,
     /// WPA 3.8: the loser fouled on the shot that pocketed the 8.
     EightOnFoul,
+    /// WPA 3.8 (loss of rack): the loser drove the 8 off the table (games.md, "Balls off
+    /// the table": "the 8 off the table loses the game").
+    EightOffTable,
     /// WPA 3.8: the loser pocketed the 8 in a pocket other than the called one.
     EightWrongPocket {
         /// The pocket called (none called).
@@ -147,6 +158,7 @@ impl fmt::Display for WinReason {
             WinReason::EightPocketed => write!(f, "the 8 was pocketed in the called pocket"),
             WinReason::EightEarly => write!(f, "the 8 was pocketed before the group was cleared"),
             WinReason::EightOnFoul => write!(f, "the 8 was pocketed on a foul"),
+            WinReason::EightOffTable => write!(f, "the 8 was driven off the table"),
             WinReason::EightWrongPocket { called, went } => match called {
                 Some(c) => write!(
                     f,
@@ -176,7 +188,8 @@ pub fn pocket_name(p: Pocket) -> &'static str {
     }
 }
 
-/// The common fouls of a shot (WPA 6.1, 6.2, 6.3), the scratch first; `on` is what the cue
+/// The common fouls of a shot (WPA 6.1, 6.5, 6.2, 6.3), the scratch and the balls driven
+/// off the table first (they are fouls on a push out too); `on` is what the cue
 /// ball had to hit first and `allowed` the balls that satisfy it. `rails` is false for a push
 /// out, which needs no contact and no rail (WPA 2.4).
 pub(crate) fn common_fouls(
@@ -189,6 +202,8 @@ pub(crate) fn common_fouls(
     if shot.scratch() {
         fouls.push(Foul::Scratch);
     }
+    // WPA 6.1 (the cue ball) and 6.5 (an object ball): driven off the table.
+    fouls.extend(shot.off_table.iter().map(|&ball| Foul::OffTable { ball }));
     if !contact_and_rail {
         return fouls;
     }

@@ -189,14 +189,15 @@ impl GameState {
         self.next.clone()
     }
 
-    /// Free play: never a foul, the shooter stays, a scratch respots the cue ball.
+    /// Free play: never a foul, the shooter stays, a scratch (or the cue ball off the table)
+    /// respots the cue ball; object balls off the table stay off.
     fn free_play(&mut self, shot: &ShotSummary, call: Call) -> Result<Verdict, RuleError> {
         if call != Call::None {
             return Err(RuleError::CallNotUsed(Game::FreePlay, "calls"));
         }
         self.take_off(shot);
         let shooter = self.next.shooter;
-        let cue_ball = if shot.scratch() {
+        let cue_ball = if shot.scratch() || shot.cue_off_table() {
             CueBall::Respot
         } else {
             CueBall::AsItLies

@@ -1,6 +1,7 @@
 //! 9-ball, WPA Rules of Play section 2: the lowest ball first (2.5, 6.2), then a pocket or a
 //! rail (6.3); the 9 on a legal shot wins (2.5), on a foul or a push out it is spotted
-//! (2.6); a push out right after a legal break (2.4); ball in hand anywhere after a foul
+//! (2.6), and so is the 9 driven off the table while the other object balls driven off it
+//! stay off (2.6 with 6.5: "only the 9 is ever spotted"); a push out right after a legal break (2.4); ball in hand anywhere after a foul
 //! (2.7, 1.5); three fouls in a row lose the rack (2.8, 6.14).
 
 use crate::foul::WinReason;
@@ -42,12 +43,14 @@ pub(crate) fn play(
     // WPA 2.4: a push out needs no contact and no rail; WPA 2.3: the break's rail rule.
     let fouls = rotation::fouls(state, shot, lowest, push_out);
     let nine_down = shot.pocket_of(9).is_some();
+    // WPA 6.5 with 2.6: the 9 driven off the table is spotted (always on a foul, 6.5).
+    let nine_off = shot.is_off_table(9);
     let any_down = shot.pocketed_object_balls().next().is_some();
     state.take_off(shot);
     let foul = !fouls.is_empty();
     let mut spot = Vec::new();
     // WPA 2.6: the 9 pocketed on a foul or a push out is spotted; no other ball is.
-    if nine_down && (foul || push_out) {
+    if (nine_down && (foul || push_out)) || nine_off {
         state.put_back(9);
         spot.push(9);
     }

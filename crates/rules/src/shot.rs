@@ -7,13 +7,16 @@
 //!   jaw is the rounded end of the cushion rubber at the pocket mouth (the solver's
 //!   [`EventKind::Jaw`] is "the rounded end of a cushion"), so a ball rattled in the jaws has
 //!   touched the cushion. Jaw contacts are also listed apart, for a HUD or a stricter reading.
-//! - the solver has no "ball driven off the table" (balls never leave the cloth's plane), so
-//!   rule 6.5 (ball driven off the table) can never apply; there is no field for it.
+//! - a ball "driven off the table" (WPA 6.5 "Ball Driven off the Table"; for the cue ball
+//!   6.1 "Cue Ball Scratch or off the Table") is one the solver's spin model flies over a
+//!   cushion's nose: its motion turns to [`Motion::OffTable`] by an
+//!   [`EventKind::Transition`]. [`ShotSummary::off_table`] lists them; they are never
+//!   pocketed balls (WPA 8.3: a ball is pocketed when it comes to rest in a pocket).
 //! - a ball frozen to a cushion that is pushed along it without a cushion event is not
 //!   "driven to" it, as the definitions require; the solver reports a contact only when the
 //!   ball comes into the cushion, which matches.
 
-use billiards_physics::{BallId, Event, EventKind, Pocket};
+use billiards_physics::{BallId, Event, EventKind, Motion, Pocket};
 use serde::{Deserialize, Serialize};
 
 /// The number of the cue ball in every rack of the project.
@@ -37,6 +40,10 @@ pub struct ShotSummary {
     pub pocketed: Vec<(u8, Pocket)>,
     /// Jaw contacts, in order (ball, pocket of the jaw); they also count in the rail lists.
     pub jaws: Vec<(u8, Pocket)>,
+    /// Balls driven off the table (the cue ball included), each once, in the order they
+    /// left it (WPA 6.1, 6.5). Absent from logs written before flight: empty.
+    #[serde(default)]
+    pub off_table: Vec<u8>,
 }
 
 impl ShotSummary {
@@ -50,6 +57,7 @@ impl ShotSummary {
             cue_rail,
             pocketed,
             jaws,
+            off_table,
         } = self;
         *first_contact = None;
         rails_after_contact.clear();
@@ -57,11 +65,27 @@ impl ShotSummary {
         *cue_rail = false;
         pocketed.clear();
         jaws.clear();
+        off_table.clear();
     }
 
     /// The cue ball was pocketed (rule 6.1).
     pub fn scratch(&self) -> bool {
         self.pocketed.iter().any(|&(b, _)| b == CUE)
+    }
+
+    /// The cue ball was driven off the table (WPA 6.1 "Cue Ball Scratch or off the Table").
+    pub fn cue_off_table(&self) -> bool {
+        self.off_table.contains(&CUE)
+    }
+
+    /// Object balls driven off the table, in order (WPA 6.5).
+    pub fn off_table_object_balls(&self) -> impl Iterator<Item = u8> + '_ {
+        self.off_table.iter().copied().filter(|&b| b != CUE)
+    }
+
+    /// Was ball `n` driven off the table?
+    pub fn is_off_table(&self, n: u8) -> bool {
+        self.off_table.contains(&n)
     }
 
     /// Object balls pocketed, in order.
@@ -148,6 +172,11 @@ impl ShotSummary {
                 }
             }
             EventKind::Pocketed { ball, pocket } => self.pocketed.push((number(ball), pocket)),
+            EventKind::Transition {
+                ball,
+                to: Motion::OffTable,
+                ..
+            } => push(&mut self.off_table, number(ball)),
             EventKind::Strike { .. }
             | EventKind::Placed { .. }
             | EventKind::ParamsChanged

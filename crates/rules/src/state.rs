@@ -166,9 +166,11 @@ impl GameState {
         }
     }
 
-    /// Takes the pocketed object balls off the table.
+    /// Takes the pocketed object balls and those driven off the table (WPA 6.5) out of
+    /// play; a game's rules put back the ones it spots.
     pub(crate) fn take_off(&mut self, shot: &ShotSummary) {
-        self.on_table
-            .retain(|b| !shot.pocketed.iter().any(|&(p, _)| p == *b));
+        self.on_table.retain(|b| {
+            !shot.pocketed.iter().any(|&(p, _)| p == *b) && !shot.off_table.contains(b)
+        });
     }
 }

@@ -16,6 +16,10 @@
 //!   spotted, and the incoming player shoots or hands the table back;
 //! - 9.10 fouls (6.1 to 6.3): ball in hand anywhere, balls made stay down, the 10 spotted;
 //! - 9.11 with 6.14: the third foul in a row loses the rack.
+//! - 6.5 (a ball driven off the table is a foul, "whether that ball is spotted depends on
+//!   the rules of the game") with 9.9: as in 9-ball (2.6), only the 10 is spotted, the other
+//!   object balls driven off the table stay off. The clause of 9.9 that names a ball driven
+//!   off the table could not be confirmed from the text at hand; 10-ball follows 9-ball here.
 
 use crate::foul::WinReason;
 use crate::rotation;
@@ -73,7 +77,8 @@ pub(crate) fn play(
         _ => false,
     };
     let ten_wins = made && matches!(call, Call::Ball { ball: TEN, .. });
-    let ten_down = shot.pocket_of(TEN).is_some();
+    // WPA 9.9 with 6.5: the 10 driven off the table is spotted like the 10 pocketed illegally.
+    let ten_down = shot.pocket_of(TEN).is_some() || shot.is_off_table(TEN);
     let any_down = shot.pocketed_object_balls().next().is_some();
     state.take_off(shot);
     let mut spot = Vec::new();

@@ -225,6 +225,9 @@ impl Drill {
                 if s.summary.scratch() {
                     out.push(format!("shot {n}: the cue ball was pocketed"));
                 }
+                if s.summary.cue_off_table() {
+                    out.push(format!("shot {n}: the cue ball was driven off the table"));
+                }
                 if s.summary.first_contact.is_none() {
                     out.push(format!("shot {n}: no ball was hit"));
                 }
@@ -251,7 +254,9 @@ impl Drill {
                 why: Some(why),
             };
             let legal = if free {
-                !s.summary.scratch() && s.summary.first_contact.is_some()
+                !s.summary.scratch()
+                    && !s.summary.cue_off_table()
+                    && s.summary.first_contact.is_some()
             } else {
                 matches!(state.play(&s.summary, crate::game::Call::None), Ok(v) if v.legal())
             };

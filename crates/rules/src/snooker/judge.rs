@@ -111,6 +111,7 @@ impl Frame {
             .first_contact
             .iter()
             .chain(s.pocketed.iter().map(|(n, _)| n))
+            .chain(s.off_table.iter())
         {
             self.check_ball(*n)?;
         }
@@ -171,7 +172,8 @@ impl Frame {
     }
 
     /// The stroke's fouls (3.10): no ball hit, the wrong ball first, a ball not on potted,
-    /// in-off, and (3.12) a free ball that snookers the opponent.
+    /// in-off, a ball forced off the table, and (3.12) a free ball that snookers the
+    /// opponent.
     fn fouls(&self, stroke: &Stroke<'_>, aim: &Aim, potted: &[u8]) -> Vec<Foul> {
         let s = stroke.summary;
         let mut fouls = Vec::new();
@@ -190,6 +192,8 @@ impl Frame {
         if s.scratch() {
             fouls.push(Foul::InOff);
         }
+        // 3.10: forcing a ball off the table, whichever it is (the cue ball included).
+        fouls.extend(s.off_table.iter().map(|&ball| Foul::OffTable { ball }));
         let scored = fouls.is_empty() && !potted.is_empty();
         if let Some(f) = aim.free
             && fouls.is_empty()
@@ -210,9 +214,11 @@ impl Frame {
         fouls
     }
 
-    /// Takes the potted balls off the table and spots the colours that come back (3.3(c):
-    /// the colour on potted in order stays down; none after the re-spotted black). Returns
-    /// the spots and every ball at rest once they are placed.
+    /// Takes the potted balls and those forced off the table out of play and spots the
+    /// colours that come back (3.3(c): the colour on potted in order stays down; none after
+    /// the re-spotted black; a colour forced off the table is re-spotted, a red is not
+    /// replaced, games.md "Balls off the table"). Returns the spots and every ball at rest
+    /// once they are placed.
     fn spot_colours(
         &mut self,
         stroke: &Stroke<'_>,
@@ -220,8 +226,19 @@ impl Frame {
         fouls: &[Foul],
         potted: &[u8],
     ) -> Result<(Layout, Layout), SnookerError> {
-        self.on_table.retain(|n| !potted.contains(n));
-        let mut to_spot: Vec<u8> = potted.iter().copied().filter(|&n| is_colour(n)).collect();
+        let off: Vec<u8> = stroke
+            .summary
+            .off_table_object_balls()
+            .filter(|n| !potted.contains(n))
+            .collect();
+        self.on_table
+            .retain(|n| !potted.contains(n) && !off.contains(n));
+        let mut to_spot: Vec<u8> = potted
+            .iter()
+            .chain(off.iter())
+            .copied()
+            .filter(|&n| is_colour(n))
+            .collect();
         if fouls.is_empty()
             && let BallOn::Next { colour } = aim.on
         {
@@ -231,7 +248,7 @@ impl Frame {
             to_spot.clear();
         }
         let mut rest = stroke.after.to_vec();
-        rest.retain(|&(n, _)| !potted.contains(&n));
+        rest.retain(|&(n, _)| !potted.contains(&n) && !off.contains(&n));
         let spots = respot_all(&to_spot, &self.marks, &self.table, self.radius, &rest)?;
         self.on_table.extend(to_spot.iter().copied());
         self.on_table.sort_unstable();
@@ -239,8 +256,8 @@ impl Frame {
         Ok((spots, rest))
     }
 
-    /// 3.10: the value of the ball on, or of the ball hit first, or of a ball potted wrongly,
-    /// whichever is highest, at least 4. 3.10(d)(i): after a red, a foul before a colour is
+    /// 3.10: the value of the ball on, or of the ball hit first, or of a ball potted wrongly
+    /// or forced off the table, whichever is highest, at least 4. 3.10(d)(i): after a red, a foul before a colour is
     /// nominated (2.12: none named, none hit first) costs 7; that covers (d)(iii), playing at
     /// reds in successive strokes.
     fn penalty(aim: &Aim, fouls: &[Foul]) -> u32 {
@@ -251,7 +268,7 @@ impl Frame {
         for f in fouls {
             let v = match *f {
                 Foul::WrongBallFirst { hit, .. } => value(hit).unwrap_or(0),
-                Foul::PottedNotOn { ball } => value(ball).unwrap_or(0),
+                Foul::PottedNotOn { ball } | Foul::OffTable { ball } => value(ball).unwrap_or(0),
                 _ => 0,
             };
             penalty = penalty.max(v);
@@ -366,7 +383,8 @@ impl Frame {
                 ..before.next
             },
         });
-        let in_hand = stroke.summary.scratch();
+        // 3.5 (in hand in the D) after an in-off, and after the cue ball forced off the table.
+        let in_hand = stroke.summary.scratch() || stroke.summary.cue_off_table();
         let next_on = self.ball_on();
         let free_ball = !in_hand
             && cue_of(rest).is_some_and(|c| {

@@ -57,6 +57,14 @@ pub enum Foul {
     },
     /// 3.10: the cue ball was potted ("in-off").
     InOff,
+    /// 3.10: a ball (the cue ball included) was forced off the table; the penalty is the
+    /// value of the ball on or of the ball concerned, at least four. A colour is re-spotted,
+    /// a red is not replaced, the cue ball is in hand in the D as after an in-off (games.md,
+    /// "Balls off the table"; the sub-paragraph of 3.10 that lists it is not confirmed here).
+    OffTable {
+        /// The ball forced off the table.
+        ball: u8,
+    },
     /// 3.12: the striker on a free ball left the opponent snookered behind it.
     SnookeredByFreeBall {
         /// The free ball.
@@ -73,6 +81,7 @@ impl fmt::Display for Foul {
             }
             Foul::PottedNotOn { ball } => write!(f, "the {} was potted, it was not on", name(ball)),
             Foul::InOff => write!(f, "the cue ball went in-off"),
+            Foul::OffTable { ball } => write!(f, "the {} was forced off the table", name(ball)),
             Foul::SnookeredByFreeBall { free_ball } => {
                 write!(
                     f,

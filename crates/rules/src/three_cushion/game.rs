@@ -89,6 +89,9 @@ pub struct Verdict {
     pub innings: [u32; 2],
     /// How the game ended, if it did.
     pub end: Option<Outcome>,
+    /// Balls that jumped off the table set up again on their spots (Art. 28), and where.
+    #[serde(default)]
+    pub spotted: Vec<(Ball, Vec2)>,
 }
 
 /// A game of three-cushion: the layout (kept from the events' states), the striker, the
@@ -256,6 +259,17 @@ impl ThreeCushionGame {
         let point = fouls.is_empty() && facts.carom();
         let striker = self.striker;
         self.positions = facts.positions;
+        // Art. 28: the balls off the table back on their spots, the incoming striker's cue
+        // ball taking the bottom spot (a foul always passes the inning).
+        let incoming = Ball::cue_of(striker.other());
+        self.positions =
+            self.spots
+                .respot_off_table(self.positions, &facts.off_table, incoming, self.radius);
+        let spotted = facts
+            .off_table
+            .iter()
+            .map(|&b| (b, self.positions[b.index()]))
+            .collect();
         self.opening = false;
         if point {
             self.score(striker);
@@ -276,6 +290,7 @@ impl ThreeCushionGame {
             scores: self.scores,
             innings: self.innings,
             end: self.end,
+            spotted,
         })
     }
 

@@ -1,10 +1,10 @@
 //! One stroke judged from the solver's events: the cue ball's contacts and cushions in order
 //! (Art. 83, the point), and the fouls the events show (3.3 / Art. 23 the opening, Art. 27 a
-//! frozen ball, Art. 41 the wrong ball).
+//! frozen ball, Art. 28 a ball off the table, Art. 41 the wrong ball).
 
 use super::balls::{Ball, BallIds};
 use super::error::ThreeCushionError;
-use billiards_physics::{Event, EventKind, Vec2};
+use billiards_physics::{Event, EventKind, Motion, Vec2};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -32,6 +32,14 @@ pub enum Foul {
     /// ball or a cushion first); playing straight into it is a foul.
     IntoTheFrozenBall {
         /// The ball the cue ball was frozen to.
+        ball: Ball,
+    },
+    /// Art. 28 ("Balls bounding out of the billiard", 1989 edition): a ball jumped off the
+    /// table. The article's text could not be confirmed from the text at hand; the stroke is
+    /// taken as a foul ending the inning without a point (Art. 41), and the ball is set up
+    /// again on its spot as the balls are under Art. 27 ([`super::Spots::respot_off_table`]).
+    OffTable {
+        /// The ball that left the table.
         ball: Ball,
     },
 }
@@ -66,6 +74,9 @@ impl fmt::Display for Foul {
                 "the cue ball was played straight into the {} it was frozen to (UMB Art. 27)",
                 ball.name()
             ),
+            Foul::OffTable { ball } => {
+                write!(f, "the {} jumped off the table (UMB Art. 28)", ball.name())
+            }
         }
     }
 }
@@ -81,8 +92,13 @@ pub struct StrokeFacts {
     pub second: Option<(Ball, u32)>,
     /// Cushions it touched in the whole stroke.
     pub cushions: u32,
-    /// Where each ball rests after the stroke (by [`Ball::index`]), from the events' states.
+    /// Where each ball rests after the stroke (by [`Ball::index`]), from the events' states
+    /// (a ball off the table: where it left the game).
     pub positions: [Vec2; 3],
+    /// The balls that jumped off the table, in order (Art. 28); empty in facts saved before
+    /// flight.
+    #[serde(default)]
+    pub off_table: Vec<Ball>,
 }
 
 impl StrokeFacts {
@@ -131,9 +147,23 @@ pub fn read_stroke(
                     second: None,
                     cushions: 0,
                     positions,
+                    off_table: Vec::new(),
                 });
             }
             (EventKind::Pocketed { ball, .. }, _) => return Err(ThreeCushionError::Pocketed(ball)),
+            (
+                EventKind::Transition {
+                    ball,
+                    to: Motion::OffTable,
+                    ..
+                },
+                Some(f),
+            ) => {
+                let b = ids.ball(ball)?;
+                if !f.off_table.contains(&b) {
+                    f.off_table.push(b);
+                }
+            }
             (EventKind::Placed { ball }, Some(_)) => {
                 return Err(ThreeCushionError::PlacedDuringStroke(ball));
             }
@@ -170,6 +200,8 @@ pub fn read_stroke(
 /// opening or not, with the cue ball frozen to the balls `frozen` when it was struck.
 pub fn fouls(facts: &StrokeFacts, cue: Ball, opening: bool, frozen: &[Ball]) -> Vec<Foul> {
     let mut out = Vec::new();
+    // Art. 28: a ball off the table, whatever else the stroke did.
+    out.extend(facts.off_table.iter().map(|&ball| Foul::OffTable { ball }));
     if facts.struck != cue {
         out.push(Foul::WrongBall {
             played: facts.struck,

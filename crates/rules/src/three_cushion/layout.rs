@@ -1,5 +1,6 @@
 //! Where the balls stand: the spots of the carom table, the opening position (UMB 3.3,
-//! Art. 23 of the 1989 edition), frozen balls and their re-spotting (Art. 27).
+//! Art. 23 of the 1989 edition), frozen balls and their re-spotting (Art. 27), balls off
+//! the table set up again (Art. 28).
 //!
 //! Ends: the project's head (`-x`) is the UMB "bottom" of the table, its foot (`+x`) the "top".
 
@@ -124,8 +125,28 @@ impl Spots {
         }
         let mut moved = frozen;
         moved.push(cue);
+        Ok(self.set_up(positions, &moved, cue, radius))
+    }
+
+    /// Art. 28 (balls bounding out of the table; its text not confirmed, see
+    /// [`super::Foul::OffTable`]): the balls `off` are set up again on Art. 27's spots, `cue`
+    /// the next striker's ball (the red on the top spot, that cue ball on the bottom spot,
+    /// the other white on the centre spot), a spot taken by a ball that stays giving the spot
+    /// of that ball, as in [`Spots::respot_frozen`].
+    pub fn respot_off_table(
+        &self,
+        positions: [Vec2; 3],
+        off: &[Ball],
+        cue: Ball,
+        radius: f64,
+    ) -> [Vec2; 3] {
+        self.set_up(positions, off, cue, radius)
+    }
+
+    /// Sets the balls `moved` on their spots (Art. 27), the others staying.
+    fn set_up(&self, positions: [Vec2; 3], moved: &[Ball], cue: Ball, radius: f64) -> [Vec2; 3] {
         let mut out = positions;
-        for &b in &moved {
+        for &b in moved {
             let mut spot = self.spot_for(b, cue);
             let staying = Ball::ALL.into_iter().filter(|s| !moved.contains(s));
             for s in staying {
@@ -135,7 +156,7 @@ impl Spots {
             }
             out[b.index()] = spot;
         }
-        Ok(out)
+        out
     }
 }
 

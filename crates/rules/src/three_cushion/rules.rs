@@ -220,7 +220,11 @@ impl GameRules for ThreeCushionMatch {
             fair: verdict.fouls.is_empty(),
             fouls: verdict.fouls.iter().map(ToString::to_string).collect(),
             text: verdict.reason.clone(),
-            put: Vec::new(),
+            put: verdict
+                .spotted
+                .iter()
+                .map(|&(b, at)| (Self::number(b), at))
+                .collect(),
             continues: verdict.next.is_some_and(|n| n.striker == verdict.striker),
             end,
         })

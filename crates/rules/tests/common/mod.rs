@@ -18,6 +18,7 @@ pub fn shot(first: Option<u8>, rails: &[u8], pocketed: &[(u8, Pocket)]) -> ShotS
         cue_rail: rails.contains(&0),
         pocketed: pocketed.to_vec(),
         jaws: Vec::new(),
+        off_table: Vec::new(),
     }
 }
 
