@@ -176,9 +176,11 @@ fn closest_pass(vx: f64, vz: f64, g: f64, d: f64) -> f64 {
 }
 
 /// A jump over a ball 15 cm away (centre to centre) at 50 degrees: the speed at which the
-/// first flight's closed form just clears it (least distance 2R in space) is found
+/// first flight's closed form just clears it (least distance 2R in space; 2.779 m/s) is found
 /// independently; 1% faster the cue ball passes over it without touching and lands beyond,
-/// 1% slower it hits it (a ball-ball event in the air).
+/// 1% slower it hits it (a ball-ball event in the air). The threshold is the model's own
+/// closed form, not a published chart: none was found (the searches are listed in
+/// crates/physics/README.md, "Balls in the air").
 #[test]
 fn a_jump_clears_a_ball_fifteen_centimetres_away_above_the_threshold_and_not_below() {
     let p = spin();
