@@ -482,3 +482,45 @@ fn a_ten_ball_rack_is_called_and_played_to_its_winner() {
     );
     let _ = std::fs::remove_dir_all(&folder);
 }
+
+/// Issue 52 with WPA 6.1 ("Cue Ball Scratch or off the Table"): in a 9-ball match the break
+/// is jumped off the table (6 m/s with the cue at 60 degrees, 30 cm from the head cushion,
+/// the physics' own case of a ball leaving the table); the verdict names it a foul, the
+/// opponent has ball in hand anywhere, the cue ball is back on the table where the rules
+/// accept it, and the recording's log re-judges the stroke.
+#[test]
+fn a_cue_ball_jumped_off_the_table_is_a_foul_and_comes_back_in_hand() {
+    let folder = std::env::temp_dir().join(format!("billiards-game-off-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&folder);
+    let mut app = start(&folder, Game::NineBall, 1);
+    let spec = app.world().resource::<TableSpec>().clone();
+    let from = DVec2::new(-spec.half_extents().x + 0.3, 0.1);
+    place(&mut app, from).unwrap();
+    app.world_mut()
+        .write_message(ShotRequested::from(billiards_physics::Shot {
+            elevation: 60f64.to_radians(),
+            ..billiards_physics::Shot::new(std::f64::consts::PI, 6.0)
+        }));
+    common::update_until(&mut app, |app| turn(app) == Turn::Verdict);
+    let verdict = rules(&app).last.clone().unwrap();
+    assert!(!verdict.fair, "{verdict:?}");
+    assert!(
+        verdict
+            .fouls
+            .contains(&"the cue ball was driven off the table".to_owned()),
+        "{verdict:?}"
+    );
+    command(&mut app, TurnCommand::Continue);
+    assert_eq!(turn(&app), Turn::BallInHand);
+    assert_eq!(rules(&app).rules.turn().striker, Seat::B);
+    assert_eq!(
+        app.world().resource::<SimStatus>().ball_in_hand,
+        Some(HandRule::Anywhere)
+    );
+    let cue = balls(&mut app).into_iter().find(|b| b.1 == 0);
+    assert!(cue.is_some(), "the cue ball is back on the table");
+    let recording = app.world().resource::<Autosave>().file.clone().unwrap();
+    let log = log_beside(&recording);
+    assert_eq!(log.check(&Recording::load(&recording).unwrap()), Ok(1));
+    let _ = std::fs::remove_dir_all(&folder);
+}
