@@ -51,12 +51,17 @@ pub fn respot_after_scratch(
     }
     let Some(solver) = solver else { return };
     let Some(cue) = solver.cue_ball() else { return };
+    // Over a cushion (issue 52) or into a pocket: said as it happened.
+    let how = if solver.simulation().ball(cue).motion == billiards_physics::Motion::OffTable {
+        "the cue ball flew off the table"
+    } else {
+        "scratch"
+    };
     if respot_ball(&mut commands, &solver, cue, &mut balls, &mut status) {
-        status.note = Some(
-            "scratch: the cue ball is back on the head string (ball in hand: drag it, or \
-             the slider moves it along the string)"
-                .to_owned(),
-        );
+        status.note = Some(format!(
+            "{how}: the cue ball is back on the head string (ball in hand: drag it, or the \
+             slider moves it along the string)"
+        ));
         status.ball_in_hand = Some(HandRule::Respot);
     }
 }
