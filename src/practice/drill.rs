@@ -7,9 +7,8 @@
 use std::collections::BTreeMap;
 
 use bevy::prelude::*;
-use billiards_physics::EventKind;
 use billiards_rules::{
-    Drill, DrillScore, GameRules, StrokeEntry, StrokeLog, StrokeRecord, drill_game::DrillGame,
+    Drill, DrillScore, GameRules, StrokeEntry, StrokeLog, drill_game::DrillGame,
 };
 use serde::{Deserialize, Serialize};
 
@@ -19,7 +18,7 @@ use super::{
     state::Practice,
 };
 use crate::{
-    play::game::{DialogOpen, put::layout_at},
+    play::game::{DialogOpen, stroke::judge_last_stroke},
     recording::{RecordingsFolder, save_rules_log},
     sim::{ShotFinished, SimStatus, Solver},
 };
@@ -211,24 +210,10 @@ pub(super) fn judge_attempt(
         status.note = Some("this try is judged: Next try for another".to_owned());
         return;
     }
-    let sim = solver.simulation();
-    let events = sim.history().events();
-    let Some(first) = events
-        .iter()
-        .rposition(|e| matches!(e.kind, EventKind::Strike { .. }))
-    else {
+    let declared = billiards_rules::Declaration::None;
+    let Some(judged) = judge_last_stroke(&mut session.game, solver.simulation(), declared) else {
         return;
     };
-    let before = layout_at(sim, Some(events[first].time));
-    let after = layout_at(sim, None);
-    let declared = billiards_rules::Declaration::None;
-    let judged = session.game.judge(&StrokeRecord {
-        events: &events[first..],
-        numbers: sim.numbers(),
-        before: &before,
-        after: &after,
-        declared,
-    });
     let judgement = match judged {
         Ok(judgement) => judgement,
         Err(error) => {

@@ -3,16 +3,15 @@
 //! option puts back, and the player's commands. Nothing here asks which game it is.
 
 use bevy::prelude::*;
-use billiards_physics::{EventKind, Rack, Simulation, Vec2};
+use billiards_physics::{Rack, Simulation, Vec2};
 use billiards_rules::catalog::{self, MatchSettings};
-use billiards_rules::{
-    CueBallPlace, Declaration, GameRules, Need, Setup, StrokeEntry, StrokeLog, StrokeRecord,
-};
+use billiards_rules::{CueBallPlace, Declaration, GameRules, Need, Setup, StrokeEntry, StrokeLog};
 
 use super::call::{preselected_ball, proposed_call};
 use super::live::LiveGame;
 use super::put::{layout_at, set_balls};
 use super::state::{NewGameRequested, Rules, TurnCommand};
+use super::stroke::judge_last_stroke;
 use crate::{
     play::aim::AimPrediction,
     recording::{RecordingsFolder, save_rules_log},
@@ -223,26 +222,12 @@ pub(super) fn judge_live(
     let (Some(game), Some(solver)) = (rules.live.as_mut(), solver) else {
         return;
     };
-    let sim = solver.simulation();
-    let events = sim.history().events();
-    let Some(strike) = events
-        .iter()
-        .rposition(|e| matches!(e.kind, EventKind::Strike { .. }))
-    else {
-        return;
-    };
-    let before = layout_at(sim, Some(events[strike].time));
-    let after = layout_at(sim, None);
     let declared = std::mem::take(&mut game.declared);
     game.calling = false;
     game.call_ball = None;
-    let judged = game.rules.judge(&StrokeRecord {
-        events: &events[strike..],
-        numbers: sim.numbers(),
-        before: &before,
-        after: &after,
-        declared,
-    });
+    let Some(judged) = judge_last_stroke(game.rules.as_mut(), solver.simulation(), declared) else {
+        return;
+    };
     let judgement = match judged {
         Ok(judgement) => judgement,
         Err(error) => {

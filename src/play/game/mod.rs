@@ -29,6 +29,7 @@ mod live;
 mod live_flow;
 pub mod put;
 mod state;
+pub mod stroke;
 mod table_input;
 mod turn;
 

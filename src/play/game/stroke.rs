@@ -1,0 +1,30 @@
+//! The last stroke on the table judged by a game behind the interface: the solver's events
+//! from its strike and the layouts at the strike and at rest, as a [`StrokeRecord`]. The
+//! match's flow and a drill session judge their strokes through it.
+
+use billiards_physics::{EventKind, Simulation};
+use billiards_rules::{Declaration, GameRules, Judgement, RulesError, StrokeRecord};
+
+use super::put::layout_at;
+
+/// Judges the last stroke of `sim` (from its last strike) with `game`, `declared` having
+/// been declared for it; `None` when nothing was struck.
+pub fn judge_last_stroke(
+    game: &mut dyn GameRules,
+    sim: &Simulation,
+    declared: Declaration,
+) -> Option<Result<Judgement, RulesError>> {
+    let events = sim.history().events();
+    let strike = events
+        .iter()
+        .rposition(|e| matches!(e.kind, EventKind::Strike { .. }))?;
+    let before = layout_at(sim, Some(events[strike].time));
+    let after = layout_at(sim, None);
+    Some(game.judge(&StrokeRecord {
+        events: &events[strike..],
+        numbers: sim.numbers(),
+        before: &before,
+        after: &after,
+        declared,
+    }))
+}
