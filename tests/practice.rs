@@ -79,7 +79,7 @@ fn a_drill_attempt_is_judged_as_the_pure_solver_judges_it() {
     app.world_mut().write_message(ShotRequested::from(shot));
     app.update();
     common::update_until(&mut app, |app| {
-        at_rest(app) && app.world().resource::<DrillSession>().judged
+        at_rest(app) && app.world().resource::<DrillSession>().judged()
     });
     let session = app.world().resource::<DrillSession>().clone();
     let judged = session.game.last.clone().unwrap();
@@ -116,7 +116,7 @@ fn a_drill_attempt_is_judged_as_the_pure_solver_judges_it() {
         app.update();
     }
     let session = app.world().resource::<DrillSession>();
-    assert!(!session.judged);
+    assert!(!session.judged());
     assert_eq!(session.score().tries, 1);
     assert!(
         session.log.strokes.is_empty(),
@@ -344,7 +344,7 @@ fn each_standard_drill_loads_plays_and_scores() {
         loop {
             common::update_until(&mut app, |app| at_rest(app));
             app.update();
-            if app.world().resource::<DrillSession>().judged {
+            if app.world().resource::<DrillSession>().judged() {
                 break;
             }
             shots += 1;

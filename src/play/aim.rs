@@ -168,14 +168,18 @@ pub fn predict(
         }
     }
     let end_of_path = contact.map_or(sim.time(), |(_, event)| event.time);
-    // A path on the cloth as before: one piece, evenly sampled.
-    let (path, path_heights) = if !flew {
-        (
-            sample(&sim, cue_id, start, end_of_path, SAMPLES),
-            Vec::new(),
+    // A path on the cloth in one piece, evenly sampled; a flight piece by piece, so each
+    // landing is a point of it.
+    let (path, path_heights) = if flew {
+        pieces(
+            &sim,
+            cue_id,
+            (start, end_of_path),
+            &breaks,
+            SAMPLES_PER_PIECE,
         )
     } else {
-        pieces(&sim, cue_id, start, &breaks, end_of_path)
+        pieces(&sim, cue_id, (start, end_of_path), &[], SAMPLES)
     };
     let mut prediction = AimPrediction {
         path,
@@ -283,22 +287,14 @@ fn follow(sim: &mut Simulation, first: billiards_physics::Event, contacts: u32) 
         .filter_map(|(id, trace)| {
             let trace = trace?;
             let until = trace.until.unwrap_or(now);
-            let mut points = Vec::new();
-            let mut from = trace.from;
-            for to in trace.breaks.iter().copied().chain([until]) {
-                if to > from || points.is_empty() {
-                    let piece = sample(sim, id, from, to, SAMPLES_PER_PIECE);
-                    // Each piece starts where the last one ended.
-                    let skip = usize::from(!points.is_empty());
-                    points.extend(piece.into_iter().skip(skip));
-                }
-                from = to;
-                if to >= until {
-                    break;
-                }
-            }
+            let (points, heights) = pieces(
+                sim,
+                id,
+                (trace.from, until),
+                &trace.breaks,
+                SAMPLES_PER_PIECE,
+            );
             let moved = points.windows(2).any(|w| w[0] != w[1]);
-            let heights = heights_of(sim, id, trace.from, &trace.breaks, until, &points);
             moved.then(|| BallPath {
                 number: sim.numbers()[id],
                 points,
@@ -321,62 +317,37 @@ impl AimPrediction {
     }
 }
 
-/// Ball `id`'s centre at `samples + 1` evenly spaced times over `[from, to]`, from the exact
-/// history.
-fn sample(sim: &Simulation, id: usize, from: f64, to: f64, samples: usize) -> Vec<DVec2> {
-    (0..=samples)
-        .map(|k| from + (to - from) * k as f64 / samples as f64)
-        .map(|t| to_dvec2(sim.history().state_at(id, t.min(sim.time())).position))
-        .collect()
-}
-
-/// Ball `id`'s centre and height over `[from, to]`, sampled piece by piece between the
-/// times `breaks` (its events), [`SAMPLES_PER_PIECE`] samples a piece.
+/// Ball `id`'s centre and height over `[from, to]` from the exact history, sampled piece by
+/// piece between the times `breaks` (its events: each is a point of the path), `samples`
+/// samples a piece, each piece starting where the last ended; a piece of no length (two
+/// events at one instant) adds no point. The heights are empty when the ball never left the
+/// cloth.
 fn pieces(
     sim: &Simulation,
     id: usize,
-    from: f64,
+    (from, to): (f64, f64),
     breaks: &[f64],
-    to: f64,
+    samples: usize,
 ) -> (Vec<DVec2>, Vec<f64>) {
     let (mut points, mut heights) = (Vec::new(), Vec::new());
     let mut start = from;
     for end in breaks.iter().copied().filter(|&t| t < to).chain([to]) {
-        // A piece of no length (two events at one instant) adds no point, as in [`follow`].
         if end <= start && !points.is_empty() {
             continue;
         }
         let skip = usize::from(!points.is_empty());
-        for k in skip..=SAMPLES_PER_PIECE {
-            let t = start + (end - start) * k as f64 / SAMPLES_PER_PIECE as f64;
+        for k in skip..=samples {
+            let t = start + (end - start) * k as f64 / samples as f64;
             let state = sim.history().state_at(id, t.min(sim.time()));
             points.push(to_dvec2(state.position));
             heights.push(state.height);
         }
         start = end;
     }
-    (points, heights)
-}
-
-/// The heights along a traced path whose `points` were sampled as [`follow`] samples them
-/// (piece by piece between `breaks`, to `until`); empty when the ball never left the cloth.
-fn heights_of(
-    sim: &Simulation,
-    id: usize,
-    from: f64,
-    breaks: &[f64],
-    until: f64,
-    points: &[DVec2],
-) -> Vec<f64> {
-    let ends: Vec<f64> = breaks.iter().copied().filter(|&t| t < until).collect();
-    let (resampled, heights) = pieces(sim, id, from, &ends, until);
-    // Only when the two samplings agree point for point are the heights the points'.
-    let flew = heights.iter().any(|&h| h > 0.0);
-    if flew && resampled.len() == points.len() {
-        heights
-    } else {
-        Vec::new()
+    if heights.iter().all(|&h| h <= 0.0) {
+        heights.clear();
     }
+    (points, heights)
 }
 
 /// Recomputes the prediction when the shot, the settings or the table changed.
@@ -432,22 +403,27 @@ fn draw_prediction(
         let height = |k: usize| heights.get(k).copied().unwrap_or(0.0);
         (0..points.len()).map(move |k| to_world(points[k].extend(0.002 + height(k))))
     }
-    let white = Color::srgba(1.0, 1.0, 1.0, 0.85);
-    gizmos.linestrip(line(&prediction.path, &prediction.path_heights), white);
     let flat = Quat::from_rotation_x(FRAC_PI_2);
-    // Each landing (a bounce, the last one) ringed on the cloth where the ball comes down.
-    let mut landings = |points: &[DVec2], heights: &[f64], colour: Color| {
+    // A path at its heights, each landing (a bounce, the last one) ringed on the cloth.
+    let mut path = |points: &[DVec2], heights: &[f64], colour: Color| {
+        gizmos.linestrip(line(points, heights), colour);
         for k in landings_in(heights) {
+            let ring = Isometry3d::new(at(points[k], 0.002), flat);
             gizmos
-                .circle(
-                    Isometry3d::new(at(points[k], 0.002), flat),
-                    radius as f32 * 0.6,
-                    colour,
-                )
+                .circle(ring, radius as f32 * 0.6, colour)
                 .resolution(24);
         }
     };
-    landings(&prediction.path, &prediction.path_heights, white);
+    let white = Color::srgba(1.0, 1.0, 1.0, 0.85);
+    path(&prediction.path, &prediction.path_heights, white);
+    for after in &prediction.after {
+        let colour = if after.number == 0 {
+            Color::srgba(0.8, 0.9, 1.0, 0.7)
+        } else {
+            Color::srgba(1.0, 0.85, 0.2, 0.8)
+        };
+        path(&after.points, &after.heights, colour);
+    }
     if let Some((kind, ghost)) = prediction.contact {
         let colour = match kind {
             FirstContact::Ball { .. } => white,
@@ -469,23 +445,6 @@ fn draw_prediction(
                 colour.with_alpha(0.35),
             )
             .resolution(16);
-    }
-    for path in &prediction.after {
-        let colour = if path.number == 0 {
-            Color::srgba(0.8, 0.9, 1.0, 0.7)
-        } else {
-            Color::srgba(1.0, 0.85, 0.2, 0.8)
-        };
-        gizmos.linestrip(line(&path.points, &path.heights), colour);
-        for k in landings_in(&path.heights) {
-            gizmos
-                .circle(
-                    Isometry3d::new(at(path.points[k], 0.002), flat),
-                    radius as f32 * 0.6,
-                    colour,
-                )
-                .resolution(24);
-        }
     }
 }
 

@@ -18,8 +18,11 @@ use super::{
     state::Practice,
 };
 use crate::{
-    play::game::{DialogOpen, stroke::judge_last_stroke},
-    recording::{RecordingsFolder, save_rules_log},
+    play::game::{
+        DialogOpen,
+        stroke::{judge_last_stroke, log_stroke},
+    },
+    recording::RecordingsFolder,
     sim::{ShotFinished, SimStatus, Solver},
 };
 
@@ -110,8 +113,6 @@ pub struct DrillSession {
     pub game: DrillGame,
     /// The log of the try in play, saved beside its recording.
     pub log: StrokeLog,
-    /// The last attempt is judged: the next try waits for the player.
-    pub judged: bool,
     /// The session ended with a new best.
     pub new_best: bool,
 }
@@ -126,7 +127,6 @@ impl DrillSession {
             file: file.to_owned(),
             game,
             log,
-            judged: false,
             new_best: false,
         })
     }
@@ -141,6 +141,11 @@ impl DrillSession {
         self.game.score
     }
 
+    /// The last attempt is judged: the next try waits for the player.
+    pub fn judged(&self) -> bool {
+        self.game.try_over()
+    }
+
     /// Every try of the session taken.
     pub fn over(&self) -> bool {
         self.game.score.tries >= self.game.drill.tries
@@ -149,7 +154,7 @@ impl DrillSession {
     /// "try 3 of 10".
     pub fn try_text(&self) -> String {
         let tries = self.game.drill.tries;
-        let k = (self.game.score.tries + u32::from(!self.judged)).min(tries);
+        let k = (self.game.score.tries + u32::from(!self.judged())).min(tries);
         format!("try {k} of {tries}")
     }
 }
@@ -206,7 +211,7 @@ pub(super) fn judge_attempt(
     let (Some(mut session), Some(solver)) = (session, solver) else {
         return;
     };
-    if session.judged {
+    if session.judged() {
         status.note = Some("this try is judged: Next try for another".to_owned());
         return;
     }
@@ -222,18 +227,12 @@ pub(super) fn judge_attempt(
         }
     };
     let session = &mut *session;
-    session.log.strokes.push(StrokeEntry {
+    let entry = StrokeEntry {
         choices: Vec::new(),
         declared,
         judgement: judgement.clone(),
-    });
-    save_rules_log(
-        &folder,
-        &solver,
-        StrokeLog::path_beside,
-        &session.log,
-        &mut status,
-    );
+    };
+    log_stroke(&mut session.log, entry, (&folder, &solver), &mut status);
     if judgement.continues {
         status.note = Some(format!(
             "shot {} of the attempt: go on",
@@ -248,7 +247,6 @@ pub(super) fn judge_attempt(
             attempt.score
         ));
     }
-    session.judged = true;
     if session.over() {
         let (file, score) = (session.file.clone(), session.game.score);
         session.new_best = bests.offer(&file, score);
@@ -281,7 +279,7 @@ pub(super) fn drill_keys(
     session: Option<Res<DrillSession>>,
     mut commands: MessageWriter<DrillCommand>,
 ) {
-    if keys.just_pressed(KeyCode::Enter) && session.is_some_and(|s| s.judged && !s.over()) {
+    if keys.just_pressed(KeyCode::Enter) && session.is_some_and(|s| s.judged() && !s.over()) {
         commands.write(DrillCommand::NextTry);
     }
 }
@@ -317,7 +315,7 @@ pub(super) fn drill_commands(
             status.note = Some("the session is over: Restart for another".to_owned());
             return;
         }
-        DrillCommand::NextTry if !session.judged => {
+        DrillCommand::NextTry if !session.judged() => {
             // The try in play given up: its shots are dropped, the try not counted.
             let fresh = session.drill().game_state();
             session.game.shots.clear();
@@ -330,7 +328,6 @@ pub(super) fn drill_commands(
             }
         }
     }
-    session.judged = false;
     // The position again: a new recording, so a new log.
     match StrokeLog::new(&session.game) {
         Ok(log) => session.log = log,

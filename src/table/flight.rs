@@ -59,24 +59,26 @@ pub fn shadow_size(r: f64, h: f64) -> (f64, f64) {
     (r * (1.0 - 0.5 * k), 1.0 - 2.0 / 3.0 * k)
 }
 
-/// Puts a shadow under every ball in the air (spawned on first need), hides the others, and
-/// despawns the shadows of balls that are gone.
+/// Balls whose motion changed.
+type MovedBall = (With<Ball>, Changed<BallMotion>);
+
+/// Puts a shadow under every ball in the air (spawned on first need) and hides it once the
+/// ball is down, for the balls whose motion changed; despawns the shadows of balls gone.
 fn follow_shadows(
     mut commands: Commands,
     assets: Option<Res<ShadowAssets>>,
     spec: Res<TableSpec>,
-    balls: Query<(Entity, &BallMotion), With<Ball>>,
+    balls: Query<(Entity, &BallMotion), MovedBall>,
+    mut gone: RemovedComponents<Ball>,
     mut shadows: Query<(&mut Transform, &mut Visibility), With<FlightShadow>>,
     mut of_ball: Local<HashMap<Entity, Entity>>,
 ) {
     let Some(assets) = assets else { return };
-    of_ball.retain(|&ball, &mut shadow| {
-        let kept = balls.contains(ball);
-        if !kept {
+    for ball in gone.read() {
+        if let Some(shadow) = of_ball.remove(&ball) {
             commands.entity(shadow).try_despawn();
         }
-        kept
-    });
+    }
     let flat = Quat::from_rotation_x(-std::f32::consts::FRAC_PI_2);
     for (ball, motion) in &balls {
         let flying = motion.state == MotionState::Airborne && motion.height > SHADOW_MIN_HEIGHT;
@@ -177,11 +179,12 @@ fn start_floor_drops(
 /// Moves falling balls over the rail and down to the floor (a quarter of the time over the
 /// rail's top, then the fall), on virtual time so the fall pauses with the game.
 fn animate_floor_drops(
+    mut commands: Commands,
     time: Res<Time>,
-    mut balls: Query<(&mut FloorDrop, &mut Transform)>,
+    mut balls: Query<(Entity, &mut FloorDrop, &mut Transform)>,
     mut redraw: MessageWriter<bevy::window::RequestRedraw>,
 ) {
-    for (mut drop, mut transform) in &mut balls {
+    for (entity, mut drop, mut transform) in &mut balls {
         drop.elapsed = (drop.elapsed + time.delta_secs()).min(FALL_SECONDS);
         let t = drop.elapsed / FALL_SECONDS;
         // Out over the floor spot at its height, then down.
@@ -194,6 +197,9 @@ fn animate_floor_drops(
         };
         if t < 1.0 {
             redraw.write(bevy::window::RequestRedraw);
+        } else {
+            // On the floor: it lies there until its state changes.
+            commands.entity(entity).remove::<FloorDrop>();
         }
     }
 }

@@ -406,7 +406,7 @@ pub fn drill_window(ctx: &egui::Context, state: &mut PracticeParam, hud_bottom: 
             ui.horizontal(|ui| {
                 let next = egui::Button::new("Next try (Enter)");
                 if ui
-                    .add_enabled(session.judged && !session.over(), next)
+                    .add_enabled(session.judged() && !session.over(), next)
                     .clicked()
                 {
                     command = Some(DrillCommand::NextTry);

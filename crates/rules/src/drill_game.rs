@@ -50,7 +50,9 @@ impl DrillGame {
         })
     }
 
-    fn try_over(&self) -> bool {
+    /// The try in play has been judged (its end is [`GameRules::end`]); the next one
+    /// starts with [`GameRules::next_game`].
+    pub fn try_over(&self) -> bool {
         self.last.is_some() && self.shots.is_empty()
     }
 

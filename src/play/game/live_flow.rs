@@ -11,10 +11,10 @@ use super::call::{preselected_ball, proposed_call};
 use super::live::LiveGame;
 use super::put::{layout_at, set_balls};
 use super::state::{NewGameRequested, Rules, TurnCommand};
-use super::stroke::judge_last_stroke;
+use super::stroke::{judge_last_stroke, log_stroke};
 use crate::{
     play::aim::AimPrediction,
-    recording::{RecordingsFolder, save_rules_log},
+    recording::RecordingsFolder,
     settings::{PhysicsSettings, TableSetup},
     sim::{LayoutRequested, ShotFinished, SimStatus, Solver, params_for, table_for},
     table::balls::{BallMotion, Pocketed},
@@ -243,18 +243,12 @@ pub(super) fn judge_live(
         };
         game.last_foul = Some(format!("{what} ({})", game.name(judgement.striker)));
     }
-    game.log.strokes.push(StrokeEntry {
+    let entry = StrokeEntry {
         choices: std::mem::take(&mut game.choices),
         declared,
         judgement: judgement.clone(),
-    });
-    save_rules_log(
-        &folder,
-        &solver,
-        StrokeLog::path_beside,
-        &game.log,
-        &mut status,
-    );
+    };
+    log_stroke(&mut game.log, entry, (&folder, &solver), &mut status);
     let mut moves = judgement.put.clone();
     game.last = Some(judgement);
     game.verdict_shown = true;

@@ -1,11 +1,17 @@
 //! The last stroke on the table judged by a game behind the interface: the solver's events
 //! from its strike and the layouts at the strike and at rest, as a [`StrokeRecord`]. The
-//! match's flow and a drill session judge their strokes through it.
+//! match's flow and a drill session judge their strokes through it, and log them.
 
 use billiards_physics::{EventKind, Simulation};
-use billiards_rules::{Declaration, GameRules, Judgement, RulesError, StrokeRecord};
+use billiards_rules::{
+    Declaration, GameRules, Judgement, RulesError, StrokeEntry, StrokeLog, StrokeRecord,
+};
 
 use super::put::layout_at;
+use crate::{
+    recording::{RecordingsFolder, save_rules_log},
+    sim::{SimStatus, Solver},
+};
 
 /// Judges the last stroke of `sim` (from its last strike) with `game`, `declared` having
 /// been declared for it; `None` when nothing was struck.
@@ -27,4 +33,16 @@ pub fn judge_last_stroke(
         after: &after,
         declared,
     }))
+}
+
+/// Adds a judged stroke (`entry`) to the recording's `log` and saves the log beside the
+/// recording (a failure is said in the status line).
+pub fn log_stroke(
+    log: &mut StrokeLog,
+    entry: StrokeEntry,
+    (folder, solver): (&RecordingsFolder, &Solver),
+    status: &mut SimStatus,
+) {
+    log.strokes.push(entry);
+    save_rules_log(folder, solver, StrokeLog::path_beside, log, status);
 }
