@@ -5,8 +5,6 @@ use std::time::{SystemTime, UNIX_EPOCH};
 use bevy::prelude::*;
 use billiards_physics::{self as physics, Rack};
 
-use billiards_rules::CueBall;
-
 /// The racks the panel offers, in its order.
 pub const RACKS: [Rack; 4] = [
     Rack::PaperDefault,
@@ -274,16 +272,6 @@ pub enum HandRule {
 }
 
 impl HandRule {
-    /// The pool rules' cue ball as a placement rule (`None`: not in hand).
-    pub fn of(cue: CueBall) -> Option<Self> {
-        match cue {
-            CueBall::AsItLies => None,
-            CueBall::Respot => Some(Self::Respot),
-            CueBall::InHandAnywhere => Some(Self::Anywhere),
-            CueBall::InHandBehindHeadString => Some(Self::BehindHeadString),
-        }
-    }
-
     /// The interface's place of the cue ball as a placement rule (`None`: not in hand).
     pub fn of_place(place: billiards_rules::CueBallPlace) -> Option<Self> {
         use billiards_rules::{CueBallPlace, HandRegion};
