@@ -110,6 +110,7 @@ fn call_of(declared: Declaration) -> Result<Call, RulesError> {
 /// "the solids", "any of [1, 2]".
 pub fn ball_on_text(rack: &GameState, next: &NextShot) -> String {
     match (rack.game, next.legal_first.as_slice()) {
+        (Game::FreePlay, _) => "any ball".to_owned(),
         (_, []) => "none".to_owned(),
         (_, [one]) => format!("the {one}"),
         // WPA 3.3: the break need not hit any particular ball.
@@ -255,12 +256,20 @@ impl GameRules for PoolMatch {
     fn judge(&mut self, stroke: &StrokeRecord<'_>) -> Result<Judgement, RulesError> {
         let call = call_of(stroke.declared)?;
         let summary = stroke.summary()?;
+        if self.sandbox() {
+            // Free play's table is the player's: the balls on it are those the strike
+            // finds, whatever was placed, taken off or racked since the last stroke.
+            self.play.rack.take_stock(stroke.before);
+        }
         let verdict = self
             .play
             .play(&summary, call)
             .map_err(RulesError::from_display)?;
         let what = what_happened(&summary, call, &verdict.fouls);
-        let mut text = if what.is_empty() {
+        let mut text = if self.sandbox() {
+            // Free play judges no fouls: what the stroke did, in words, no "legal".
+            what.clone()
+        } else if what.is_empty() {
             verdict.reason()
         } else {
             format!("{}: {what}", verdict.reason())
@@ -283,6 +292,16 @@ impl GameRules for PoolMatch {
                 let at = head_string_spot(&self.table, self.ball.radius, &others)
                     .ok_or_else(|| RulesError("no free place on the head string".to_owned()))?;
                 put.push((CUE, at));
+                let how = if summary.cue_off_table() {
+                    "the cue ball flew off the table"
+                } else {
+                    "scratch"
+                };
+                text = if text.is_empty() {
+                    format!("{how}: the cue ball is back on the head string")
+                } else {
+                    format!("{text}; {how}: the cue ball is back on the head string")
+                };
             }
         }
         let end = match verdict.outcome {
@@ -306,6 +325,10 @@ impl GameRules for PoolMatch {
 
     fn score_line(&self) -> String {
         let play = &self.play;
+        if self.sandbox() {
+            // No match is kept in free play: no race, no score.
+            return format!("free play: {}", play.name(self.next().shooter));
+        }
         format!(
             "{}, race to {}: {} {} - {} {}",
             self.name(),
@@ -329,8 +352,13 @@ impl GameRules for PoolMatch {
         let rack = self.rack();
         let next = self.next();
         let mut lines = Vec::new();
-        if rack.over.is_none() && !next.break_shot {
+        if rack.over.is_none() && !next.break_shot && !self.sandbox() {
             lines.push(format!("ball on: {}", ball_on_text(rack, next)));
+        }
+        if self.sandbox() {
+            let left = rack.on_table.iter().filter(|b| !off.contains(b));
+            lines.push(format!("balls left: {}", left.count()));
+            return lines;
         }
         if rack.game == Game::EightBall {
             lines.push(match rack.group(Seat::A) {
@@ -381,6 +409,10 @@ impl GameRules for PoolMatch {
         self.play.next_rack().map_err(RulesError::from_display)?;
         self.seed = self.seed.wrapping_add(1);
         Ok(self.rack_layout())
+    }
+
+    fn sandbox(&self) -> bool {
+        self.play.game == Game::FreePlay
     }
 
     fn boxed_clone(&self) -> Box<dyn GameRules> {

@@ -166,6 +166,20 @@ impl GameState {
         }
     }
 
+    /// Free play: the object balls on the table are those of `layout` (number and centre,
+    /// the cue ball among them or not), as placed by hand; the next shot may hit any.
+    pub(crate) fn take_stock(&mut self, layout: &[(u8, billiards_physics::Vec2)]) {
+        let mut balls: Vec<u8> = layout
+            .iter()
+            .map(|&(n, _)| n)
+            .filter(|&n| n != crate::shot::CUE)
+            .collect();
+        balls.sort_unstable();
+        balls.dedup();
+        self.next.legal_first.clone_from(&balls);
+        self.on_table = balls;
+    }
+
     /// Takes the pocketed object balls and those driven off the table (WPA 6.5) out of
     /// play; a game's rules put back the ones it spots.
     pub(crate) fn take_off(&mut self, shot: &ShotSummary) {

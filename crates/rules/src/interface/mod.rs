@@ -322,6 +322,13 @@ pub trait GameRules: std::fmt::Debug + Send + Sync {
     fn concedes(&self) -> bool {
         false
     }
+    /// Free play's sandbox: the table may be set by hand between strokes (balls placed or
+    /// taken off, a new rack, a stroke taken back), so each stroke is judged on the table
+    /// its strike finds ([`StrokeRecord::before`]), and a judgement needs no reading before
+    /// the next stroke. Every game with rules of its own keeps its table: `false`.
+    fn sandbox(&self) -> bool {
+        false
+    }
     /// A copy behind a new box (the computer searches on copies).
     fn boxed_clone(&self) -> Box<dyn GameRules>;
     /// The whole state as JSON tagged with its kind ([`saved`]), for a rules log that
