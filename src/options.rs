@@ -284,7 +284,6 @@ fn seconds(flag: &'static str, value: String) -> Result<Duration, ArgsError> {
 fn game_choice(value: String) -> Result<crate::play::game::GameChoice, ArgsError> {
     use crate::play::game::GameChoice;
     match billiards_rules::catalog::find(&value) {
-        Ok(entry) if entry.id == "free-play" => Ok(GameChoice::FreePlay),
         Ok(entry) => Ok(GameChoice::Catalog(entry.id)),
         Err(_) => Err(ArgsError::InvalidValue {
             flag: "--game",

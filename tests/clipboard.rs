@@ -19,13 +19,17 @@ use billiards::{
     sim::SimStatus,
 };
 
-/// An Xvfb server on the first free display from :91, ended when dropped.
-struct Xvfb(Child);
+/// An Xvfb server on the first free display from :91 (its number), ended when dropped.
+struct Xvfb(Child, u32);
 
 impl Drop for Xvfb {
     fn drop(&mut self) {
         let _ = self.0.kill();
         let _ = self.0.wait();
+        // Killed, the server leaves its lock and socket behind; left there, they would
+        // take the display from every later run until none of :91-:119 is free.
+        let _ = std::fs::remove_file(format!("/tmp/.X{}-lock", self.1));
+        let _ = std::fs::remove_file(format!("/tmp/.X11-unix/X{}", self.1));
     }
 }
 
@@ -41,7 +45,7 @@ fn start_xvfb() -> Option<(Xvfb, String)> {
             .stderr(std::process::Stdio::null())
             .spawn()
             .ok()?;
-        let mut server = Xvfb(child);
+        let mut server = Xvfb(child, n);
         // The socket appears once the server listens; a server that exits instead (the
         // display was taken) leaves the next number to try. However long a loaded machine
         // takes, the wait is for one or the other, not for a time.

@@ -312,7 +312,11 @@ fn a_nine_ball_match_is_played_through_the_turns_to_its_winner() {
     });
     app.update();
     app.update();
-    assert!(app.world().resource::<Rules>().live.is_none());
+    // Free play is the sandbox behind the same interface: no match, the table the player's.
+    let rules_now = app.world().resource::<Rules>();
+    assert!(!rules_now.in_match());
+    assert!(rules_now.live.as_ref().is_some_and(|g| g.rules.sandbox()));
+    assert!(app.world().resource::<billiards::sim::Referee>().edits);
     assert_eq!(turn(&app), Turn::Aiming);
     let _ = std::fs::remove_dir_all(&folder);
 }

@@ -291,7 +291,7 @@ pub(super) fn drill_commands(
     mut positions: MessageWriter<PositionRequested>,
     mut commands: Commands,
     mut next: ResMut<NextState<Practice>>,
-    mut status: ResMut<SimStatus>,
+    (mut status, mut rules): (ResMut<SimStatus>, ResMut<crate::play::game::Rules>),
 ) {
     let Some(&command) = requests.read().last() else {
         return;
@@ -301,6 +301,7 @@ pub(super) fn drill_commands(
         DrillCommand::Leave => {
             commands.remove_resource::<DrillSession>();
             next.set(Practice::Off);
+            rules.free_play();
             status.note = Some("drill left: free play".to_owned());
             return;
         }

@@ -151,7 +151,7 @@ fn place_tool_key(
     if !keys.just_pressed(KeyCode::KeyP) {
         return;
     }
-    match (*state.get(), referee.active) {
+    match (*state.get(), !referee.edits) {
         (Practice::Placing, _) => next.set(Practice::Off),
         (Practice::Off, false) => next.set(Practice::Placing),
         (Practice::Off, true) => {

@@ -97,7 +97,12 @@ pub(super) fn load_position(
         return;
     }
     let ended_match = rules.in_match();
-    rules.clear();
+    if request.origin == Origin::Drill {
+        // The drill session judges the strokes (drill::judge_attempt).
+        rules.clear();
+    } else {
+        rules.free_play();
+    }
     // A drill in session ends (drill::end_drill_on_new_table) unless this is its own.
     let own = request.own_physics && p.params.is_some();
     match table_choice_of(&p.table).filter(|_| !own) {

@@ -25,7 +25,7 @@ pub(super) fn follow_table_setup(
 ) {
     // Added is not chosen: the kept table reaches the spec as the settings load, and a game
     // started at launch (snooker's own table) must not be laid over by it.
-    if !setup.is_changed() || setup.is_added() || referee.active {
+    if !setup.is_changed() || setup.is_added() || !referee.edits {
         return;
     }
     if spec.set_if_neq(TableSpec::of(setup.table)) {

@@ -99,17 +99,32 @@ pub struct SceneRequested {
     pub name: &'static str,
 }
 
-/// What a rules game (`crate::play::game`) asks of the simulation: it takes over the cue ball after
-/// a scratch (so the free-play respot stays out of its way) and may refuse a shot (a choice
-/// or a call is pending). The default is free play: no referee.
-#[derive(Resource, Debug, Clone, Default, PartialEq, Eq)]
+/// What the game in play (`crate::play::game`, behind the one interface) asks of the
+/// simulation: it takes over the cue ball after a scratch (so the respot of a table without
+/// a game stays out of its way), says whether the table may be set by hand, and may refuse a
+/// shot (a choice or a call is pending). The default: no game, the table the player's.
+#[derive(Resource, Debug, Clone, PartialEq, Eq)]
 pub struct Referee {
-    /// A rules game is in play: a scratch is the referee's to handle.
+    /// A game judges the strokes: a scratch is its to handle.
     pub active: bool,
+    /// The table may be set by hand: balls placed, racks from the panel, scenes, a shot taken
+    /// back (free play's sandbox, or no game); a match's table is its own.
+    pub edits: bool,
     /// Why the next shot may not be taken yet, if it may not.
     pub refuse_shot: Option<String>,
     /// The rack is over: no shot until the next rack (the cue is put away).
     pub rack_over: bool,
+}
+
+impl Default for Referee {
+    fn default() -> Self {
+        Self {
+            active: false,
+            edits: true,
+            refuse_shot: None,
+            rack_over: false,
+        }
+    }
 }
 
 /// Asks for the cue ball to be struck. Only honoured while every ball rests.
@@ -281,7 +296,9 @@ impl HandRule {
                 HandRegion::BehindHeadString => Self::BehindHeadString,
                 HandRegion::D => Self::InD,
             }),
-            CueBallPlace::AsItLies | CueBallPlace::Placed => None,
+            // Put back by the rules (free play's respot): it may slide along the head string.
+            CueBallPlace::Placed => Some(Self::Respot),
+            CueBallPlace::AsItLies => None,
         }
     }
 }

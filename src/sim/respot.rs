@@ -34,10 +34,11 @@ impl From<PlacementError> for HandError {
     }
 }
 
-/// Free play: after a scratch the cue ball goes back on the head string, where
-/// [`billiards_rules::cue_ball_spot`] says (the rule the command line plays by too). The edit
-/// reaches the solver like any other (change detection). In a rules game the [`Referee`]
-/// handles the scratch instead.
+/// A table without a game (a drill session, which judges its own strokes): after a scratch
+/// the cue ball goes back on the head string, where [`billiards_rules::cue_ball_spot`] says
+/// (the rule the command line plays by too). The edit reaches the solver like any other
+/// (change detection). With a game in play, free play's sandbox included, the game's
+/// judgement puts it back instead ([`Referee::active`]).
 pub fn respot_after_scratch(
     mut commands: Commands,
     mut finished: MessageReader<ShotFinished>,

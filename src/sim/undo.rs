@@ -27,7 +27,7 @@ pub(super) fn undo_last_shot(
         return;
     }
     let Some(mut solver) = solver else { return };
-    if referee.active {
+    if !referee.edits {
         status.note = Some("undo is for practice (free play): a match's shots stand".to_owned());
         return;
     }

@@ -163,7 +163,7 @@ fn request_stress(
     if requests.read().last().is_none() {
         return;
     }
-    if referee.active {
+    if !referee.edits {
         monitor.refused = Some("the stress table is free play: end the match first".into());
         return;
     }

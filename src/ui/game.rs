@@ -361,7 +361,7 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
                 });
         });
     }
-    if form.game == GameChoice::FreePlay {
+    if form.game.sandbox() {
         drill_row(ui, form, &state.drills, &state.bests);
     } else {
         form.drill = None;

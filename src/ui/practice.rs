@@ -92,7 +92,7 @@ pub fn section(ui: &mut egui::Ui, state: &mut PracticeParam) {
 
 fn rows(ui: &mut egui::Ui, state: &mut PracticeParam) {
     let mode = *state.state.get();
-    let free_play = !state.referee.active && mode != Practice::Drill;
+    let free_play = state.referee.edits && mode != Practice::Drill;
     let at_rest = state
         .solver
         .as_ref()

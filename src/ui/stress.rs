@@ -36,7 +36,7 @@ pub fn section(ui: &mut egui::Ui, state: &mut StressParam) {
 }
 
 fn rows(ui: &mut egui::Ui, state: &mut StressParam) {
-    let free_play = !state.referee.active;
+    let free_play = state.referee.edits;
     let mut next = *state.settings;
     ui.add_enabled_ui(free_play, |ui| {
         ui.add(

@@ -326,8 +326,9 @@ impl GameRules for PoolMatch {
     fn score_line(&self) -> String {
         let play = &self.play;
         if self.sandbox() {
-            // No match is kept in free play: no race, no score.
-            return format!("free play: {}", play.name(self.next().shooter));
+            // No match is kept in free play: no race, no score (the turn's line names the
+            // shooter).
+            return self.name().to_owned();
         }
         format!(
             "{}, race to {}: {} {} - {} {}",

@@ -6,7 +6,7 @@ use super::state::*;
 use crate::{
     play::aim::AimPrediction,
     settings::{PhysicsSettings, TableSetup},
-    sim::{LayoutRequested, RackRequested, SimStatus, Solver, clock_seed, params_for, table_for},
+    sim::{LayoutRequested, RackRequested, SimStatus, Solver, clock_seed},
     table::geometry::TableSpec,
 };
 use bevy::ecs::system::SystemParam;
@@ -54,9 +54,10 @@ pub(super) fn apply_commands(
     mut live: Live,
     aim: Option<Res<AimPrediction>>,
 ) {
-    // A rack from the panel is free play.
+    // A rack from the panel is free play (the sandbox follows the new table at its first
+    // stroke).
     if requests.racks.read().count() > 0 {
-        state.rules.clear();
+        state.rules.free_play();
     }
     for request in requests.new_games.read() {
         start_game(request, &mut state, &mut table, &mut live.status);
@@ -66,8 +67,8 @@ pub(super) fn apply_commands(
     }
 }
 
-/// A new game from the dialog: the dialog closes, the match in play ends, and a game of the
-/// catalog or free play starts.
+/// A new game from the dialog: the dialog closes, the game in play ends, and a game of the
+/// catalog (free play's sandbox among them) starts.
 fn start_game(
     request: &NewGameRequested,
     state: &mut MatchState,
@@ -76,39 +77,20 @@ fn start_game(
 ) {
     state.dialog.0 = false;
     state.rules.clear();
-    match request.game {
-        GameChoice::Catalog(id) => {
-            match start_live(
-                request,
-                id,
-                (&mut table.spec, &mut table.setup),
-                &table.settings,
-                &mut table.layouts,
-            ) {
-                Ok(game) => state.rules.live = Some(game),
-                Err(error) => status.note = Some(error),
-            }
-        }
-        GameChoice::FreePlay => start_free_play(request, table),
+    let GameChoice::Catalog(id) = request.game;
+    match start_live(
+        request,
+        id,
+        (&mut table.spec, &mut table.setup),
+        &table.settings,
+        &mut table.layouts,
+    ) {
+        Ok(game) => state.rules.live = Some(game),
+        Err(error) => status.note = Some(error),
     }
 }
 
-/// Free play: the table set up first (the rack is set on it, and the table's meshes
-/// follow), then the starting rack.
-fn start_free_play(request: &NewGameRequested, table: &mut TableAccess) {
-    table.setup.set_if_neq(request.setup);
-    table.spec.set_if_neq(TableSpec::of(request.setup.table));
-    let physics = table_for(&table.spec, &table.settings);
-    let rack = crate::sim::STARTING_RACK;
-    table.layouts.write(LayoutRequested {
-        balls: rack.layout(&physics, &params_for(&table.spec, &table.settings).ball),
-        rack,
-        name: crate::sim::rack_slug(rack),
-    });
-}
-
-/// One command: the dialog opened or closed, then the command applied to the match in play
-/// (free play has none).
+/// One command: the dialog opened or closed, then the command applied to the game in play.
 fn turn_command(
     command: TurnCommand,
     state: &mut MatchState,

@@ -51,7 +51,8 @@ pub(super) fn follow_rules(
     }
     .map(str::to_owned);
     let wanted_referee = Referee {
-        active: rules.in_match(),
+        active: rules.live.is_some(),
+        edits: !rules.in_match(),
         refuse_shot,
         rack_over: wanted == Turn::GameOver,
     };

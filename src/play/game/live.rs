@@ -6,7 +6,7 @@
 //! Every match is played through it: pool's games, snooker, three-cushion.
 
 use billiards_ai::Level;
-use billiards_rules::catalog::GameEntry;
+use billiards_rules::catalog::{GameEntry, MatchSettings};
 use billiards_rules::{
     CueBallPlace, Declaration, GameRules, HandRegion, Judgement, Seat, StrokeLog,
 };
@@ -47,9 +47,76 @@ pub struct LiveGame {
     pub call_ball: Option<u8>,
     /// The call the aim proposed when calling began, for the player to confirm.
     pub proposed: Option<Declaration>,
+    /// The recording (by its start) the log belongs to; `None` until free play's first
+    /// stroke binds it ([`LiveGame::bind_sandbox`]).
+    pub recording: Option<std::time::SystemTime>,
 }
 
 impl LiveGame {
+    /// `rules` as started from `entry`, with each seat's computer level and the match's
+    /// seed; its log empty from the game as it stands.
+    pub fn new(
+        rules: Box<dyn GameRules>,
+        entry: &'static GameEntry,
+        seats: [Option<Level>; 2],
+        seed: u64,
+    ) -> Result<Self, billiards_rules::RulesError> {
+        let log = StrokeLog::new(rules.as_ref())?;
+        Ok(Self {
+            rules,
+            entry,
+            seats,
+            seed,
+            games: 0,
+            declared: Declaration::None,
+            last: None,
+            verdict_shown: false,
+            last_foul: None,
+            choices: Vec::new(),
+            log,
+            pending: Vec::new(),
+            calling: false,
+            call_ball: None,
+            proposed: None,
+            recording: None,
+        })
+    }
+
+    /// Free play between `players` on the table as it is: the sandbox, bound to the table
+    /// and the recording at its first stroke ([`LiveGame::bind_sandbox`]). `None` if the
+    /// catalog cannot start it (never for its own equipment).
+    pub fn sandbox(players: [String; 2], seats: [Option<Level>; 2]) -> Option<Self> {
+        let entry = billiards_rules::catalog::find("free-play").ok()?;
+        let settings = MatchSettings::new(players, 1, 0);
+        let rules = entry.start(&settings).ok()?;
+        Self::new(rules, entry, seats, 0).ok()
+    }
+
+    /// Free play's game follows the table: when the recording in play is not the one its log
+    /// belongs to (a rack, a position, a scene or a new table since), it starts again on
+    /// `table` and `ball`, its log empty, bound to `recording`. Other games keep theirs
+    /// (their layouts are the rules' own). Returns why it could not, if it could not.
+    pub fn bind_sandbox(
+        &mut self,
+        recording: std::time::SystemTime,
+        table: billiards_physics::Table,
+        ball: billiards_physics::BallSpec,
+    ) -> Result<(), billiards_rules::RulesError> {
+        if !self.rules.sandbox() || self.recording == Some(recording) {
+            return Ok(());
+        }
+        let settings = MatchSettings {
+            equipment: Some((table, ball)),
+            ..MatchSettings::new(self.rules.players().clone(), 1, self.seed)
+        };
+        let rules = self.entry.start(&settings)?;
+        *self = Self {
+            recording: Some(recording),
+            last: self.last.take(),
+            ..Self::new(rules, self.entry, self.seats, self.seed)?
+        };
+        Ok(())
+    }
     /// The name of `seat`.
     pub fn name(&self, seat: Seat) -> &str {
         &self.rules.players()[seat.index()]

@@ -51,25 +51,8 @@ pub(super) fn start_live(
     let cannot = |e: billiards_rules::RulesError| format!("cannot start {}: {e}", entry.label);
     let rules = entry.start(&match_settings).map_err(cannot)?;
     let balls = rules.layout().map_err(cannot)?;
-    let log = StrokeLog::new(rules.as_ref()).map_err(cannot)?;
     layouts.write(layout_request(rules.as_ref(), balls));
-    Ok(LiveGame {
-        rules,
-        entry,
-        seats: request.computer,
-        seed: request.seed,
-        games: 0,
-        declared: Default::default(),
-        last: None,
-        verdict_shown: false,
-        last_foul: None,
-        choices: Vec::new(),
-        log,
-        pending: Vec::new(),
-        calling: false,
-        call_ball: None,
-        proposed: None,
-    })
+    LiveGame::new(rules, entry, request.computer, request.seed).map_err(cannot)
 }
 
 /// The layout `balls` of `game` as asked of the simulation; the recording is named after
@@ -222,6 +205,11 @@ pub(super) fn judge_live(
     let (Some(game), Some(solver)) = (rules.live.as_mut(), solver) else {
         return;
     };
+    let sim = solver.simulation();
+    if let Err(error) = game.bind_sandbox(solver.started(), *sim.table(), sim.params().ball) {
+        status.note = Some(format!("free play could not follow the table: {error}"));
+        return;
+    }
     let declared = std::mem::take(&mut game.declared);
     game.calling = false;
     game.call_ball = None;
@@ -250,8 +238,19 @@ pub(super) fn judge_live(
     };
     log_stroke(&mut game.log, entry, (&folder, &solver), &mut status);
     let mut moves = judgement.put.clone();
+    if game.rules.sandbox() {
+        // Free play's strokes need no reading: the HUD says what each did, and the note
+        // what the rules put back (a scratch's cue ball on the head string).
+        if !moves.is_empty() {
+            status.note = Some(format!(
+                "{} (drag it, or the Shot section's slider moves it along the string)",
+                judgement.text
+            ));
+        }
+    } else {
+        game.verdict_shown = true;
+    }
     game.last = Some(judgement);
-    game.verdict_shown = true;
     moves.extend(hand_place(game.rules.as_ref(), solver.simulation(), &moves));
     // Set on the table by `put_pending`, later in this frame's flow.
     game.pending = moves;

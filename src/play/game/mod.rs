@@ -1,5 +1,5 @@
-//! The rules in the game: a match of any game of the catalog behind the one interface
-//! ([`LiveGame`] holding a [`billiards_rules::GameRules`]), or free play, and the turn's
+//! The rules in the game: any game of the catalog behind the one interface ([`LiveGame`]
+//! holding a [`billiards_rules::GameRules`]), free play included, and the turn's
 //! phase as a Bevy sub-state of [`GameMode::Play`](crate::mode::GameMode::Play).
 //!
 //! One source of truth: the [`Rules`] resource (the match, the declaration, whether a
@@ -16,8 +16,12 @@
 //!    turn, and tells the simulation's [`Referee`](crate::sim::Referee) whether a shot may be
 //!    taken now.
 //!
-//! Free play has no match: the turn is [`Turn::Aiming`] or [`Turn::ShotInPlay`], and a
-//! scratch is respotted by the simulation.
+//! Free play is a game of the catalog like the others, the sandbox
+//! ([`billiards_rules::GameRules::sandbox`]): its table may be set by hand (the
+//! [`Referee`](crate::sim::Referee)'s `edits`), its strokes are judged on the table their
+//! strike finds and need no reading, a scratch's cue ball is put back by its judgement, and
+//! it follows a new table or recording at its next stroke ([`LiveGame::bind_sandbox`]). Only
+//! a drill session has no game here (it judges its own strokes, `crate::practice`).
 //!
 //! [`table_plugin`] adds what needs a window: the legal area of the cue ball in hand, the
 //! pockets while calling and the called pocket (gizmos), and the click on a pocket.

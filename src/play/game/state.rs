@@ -8,15 +8,17 @@ pub use super::live::LiveGame;
 pub use super::turn::Turn;
 use crate::settings::TableSetup;
 
-/// A game the player can start: a game of the catalog, or free play.
+/// A game the player can start: a game of the catalog, played behind the one interface.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum GameChoice {
-    /// A game of the catalog by its id ([`billiards_rules::catalog::find`]), played behind
-    /// the one interface: 9-ball, 10-ball, 8-ball, snooker, three-cushion.
+    /// A game of the catalog by its id ([`billiards_rules::catalog::find`]): 9-ball, 10-ball,
+    /// 8-ball, snooker, three-cushion, free play (the sandbox: the panel's racks, placing
+    /// balls, undo and drills).
     Catalog(&'static str),
-    /// The sandbox: no match, the panel's racks and drills.
-    FreePlay,
 }
+
+/// Free play's id in the catalog.
+pub const FREE_PLAY: GameChoice = GameChoice::Catalog("free-play");
 
 impl GameChoice {
     /// Every choice, in the dialog's order.
@@ -26,23 +28,28 @@ impl GameChoice {
         GameChoice::Catalog("eight-ball"),
         GameChoice::Catalog("snooker"),
         GameChoice::Catalog("three-cushion"),
-        GameChoice::FreePlay,
+        FREE_PLAY,
     ];
 
-    /// The game's catalog entry; `None` for free play.
+    /// The game's catalog entry (`None` for an id the catalog does not hold).
     pub fn entry(self) -> Option<&'static billiards_rules::catalog::GameEntry> {
         match self {
             GameChoice::Catalog(id) => billiards_rules::catalog::find(id).ok(),
-            GameChoice::FreePlay => None,
         }
     }
 
     /// The player's name for it.
     pub fn label(self) -> &'static str {
-        match self {
-            GameChoice::FreePlay => "free play",
-            GameChoice::Catalog(_) => self.entry().map_or("unknown game", |e| e.label),
-        }
+        self.entry().map_or("unknown game", |e| e.label)
+    }
+
+    /// Whether it is the sandbox whose table the player sets by hand
+    /// ([`billiards_rules::GameRules::sandbox`], asked of a game started for the question).
+    pub fn sandbox(self) -> bool {
+        let settings = billiards_rules::catalog::MatchSettings::new(Default::default(), 1, 0);
+        self.entry()
+            .and_then(|e| e.start(&settings).ok())
+            .is_some_and(|g| g.sandbox())
     }
 
     /// What the match's length counts ("race to", "best of", "points to") and its usual
@@ -70,7 +77,7 @@ impl From<Game> for GameChoice {
             Game::NineBall => GameChoice::Catalog("nine-ball"),
             Game::TenBall => GameChoice::Catalog("ten-ball"),
             Game::EightBall => GameChoice::Catalog("eight-ball"),
-            Game::FreePlay => GameChoice::FreePlay,
+            Game::FreePlay => FREE_PLAY,
         }
     }
 }
@@ -78,7 +85,7 @@ impl From<Game> for GameChoice {
 /// Starts a new game (the dialog's Start).
 #[derive(Message, Debug, Clone, PartialEq, Eq)]
 pub struct NewGameRequested {
-    /// The game; free play is the sandbox (no match).
+    /// The game; free play is the sandbox ([`GameChoice::sandbox`]).
     pub game: GameChoice,
     /// The players' names.
     pub players: [String; 2],
@@ -118,26 +125,51 @@ pub enum TurnCommand {
     NextRack,
 }
 
-/// The rules side of the live game: `None` in free play.
-#[derive(Resource, Debug, Default)]
+/// The rules side of the live game: the game in play behind the one interface, free play's
+/// sandbox included; `None` only while a drill session judges the strokes instead.
+#[derive(Resource, Debug)]
 pub struct Rules {
-    /// The match in play, behind the one interface, if any.
+    /// The game in play, behind the one interface, if any.
     pub live: Option<LiveGame>,
 }
 
+/// At launch: free play ([`Rules::free_play`]) until a game is started.
+impl Default for Rules {
+    fn default() -> Self {
+        let mut rules = Self { live: None };
+        rules.free_play();
+        rules
+    }
+}
+
 impl Rules {
-    /// Whether a match (of any game) is in play.
+    /// Whether a match whose table is its own is in play (any game but free play's
+    /// sandbox): no ball is placed by hand, no shot taken back.
     pub fn in_match(&self) -> bool {
-        self.live.is_some()
+        self.live.as_ref().is_some_and(|g| !g.rules.sandbox())
     }
 
-    /// No match: free play.
+    /// No game: a drill session takes the strokes.
     pub fn clear(&mut self) {
         self.live = None;
     }
 
-    /// The match's next player: whether the computer plays that seat (its level, `None` for
-    /// a human) and whether choices are offered first; `None` in free play.
+    /// Free play from now on: the sandbox in play is kept, a match ends and free play
+    /// starts with its players (its table and log bound at its first stroke,
+    /// [`LiveGame::sandbox`]).
+    pub fn free_play(&mut self) {
+        if self.live.as_ref().is_some_and(|g| g.rules.sandbox()) {
+            return;
+        }
+        let (players, seats) = self.live.as_ref().map_or_else(
+            || (["Player 1".to_owned(), "Player 2".to_owned()], [None, None]),
+            |g| (g.rules.players().clone(), g.seats),
+        );
+        self.live = LiveGame::sandbox(players, seats);
+    }
+
+    /// The game's next player: whether the computer plays that seat (its level, `None` for
+    /// a human) and whether choices are offered first; `None` without a game.
     pub fn to_play(&self) -> Option<(Option<Level>, bool)> {
         let game = self.live.as_ref()?;
         let turn = game.rules.turn();

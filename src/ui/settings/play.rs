@@ -57,7 +57,7 @@ pub(super) fn play_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
         });
     // Free play only: a match's table is chosen in its new-game dialog. Changing it racks the
     // same rack afresh on the new table.
-    let free_play = !state.referee.active;
+    let free_play = state.referee.edits;
     ui.add_enabled_ui(free_play, |ui| {
         ui.horizontal(|ui| {
             ui.label("Table:");

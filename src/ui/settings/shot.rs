@@ -90,7 +90,7 @@ pub(super) fn shot_section(ui: &mut egui::Ui, state: &mut SettingsParam) {
         let undoable = state.solver.as_ref().map_or(0, |s| s.undoable_shots());
         let undo = ui
             .add_enabled(
-                undoable > 0 && !state.referee.active,
+                undoable > 0 && state.referee.edits,
                 egui::Button::new("Undo shot").min_size(egui::vec2(BUTTON_WIDTH, 0.0)),
             )
             .on_hover_text(
