@@ -40,6 +40,7 @@ pub mod drill;
 pub mod evaluate;
 pub mod game;
 pub mod greedy;
+pub mod jump;
 pub mod level;
 pub mod noise;
 pub mod placement;
@@ -54,7 +55,7 @@ pub mod twoply;
 
 pub use candidates::{Candidate, Layout, ShotKind};
 pub use evaluate::{Mode, Stats};
-pub use level::{Breaks, Budget, Level, TwoPly, UnknownLevel};
+pub use level::{Breaks, Budget, Jumps, Level, TwoPly, UnknownLevel};
 pub use noise::Noise;
 pub use plan::{Called, Decision, Plan};
 pub use search::{decide, decide_planned, decide_with};
