@@ -16,7 +16,8 @@ pub enum Level {
     Medium,
     /// The reference noise (FastFiz magnitude 1); the whole one-ply search over a wider set
     /// of strokes (seven speeds, ten tips), then the best few shots valued two plies deep by
-    /// a small search of the next shot ([`TwoPly`]).
+    /// a small search of the next shot ([`TwoPly`]); jump shots when every legal ball is
+    /// hidden ([`Jumps`]).
     Hard,
     /// The reference noise; hard's search with a larger second ply (up to 5 s a decision).
     Expert,
