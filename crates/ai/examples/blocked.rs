@@ -15,7 +15,7 @@ use billiards_ai::evaluate::Mode;
 use billiards_ai::jump::hidden;
 use billiards_ai::noise::stream;
 use billiards_ai::play::{execute, table_and_params};
-use billiards_ai::{Budget, Decision, Layout, Level, ShotKind, decide_planned};
+use billiards_ai::{Budget, Decision, Layout, Level, Plan, ShotKind, decide_planned};
 use billiards_physics::{BallSetup, Simulation, Vec2};
 use billiards_rules::{CueBall, Game, GameState, Seat};
 use rand::{Rng, SeedableRng};
@@ -92,6 +92,73 @@ struct Tally {
     secs: f64,
 }
 
+/// The 9-ball state with `balls` (the cue ball first) on the table, the 1 on, A to shoot
+/// where the cue ball lies.
+fn state_of(balls: &[(u8, Vec2)]) -> GameState {
+    let mut state = GameState::new(Game::NineBall, Seat::A);
+    state.on_table = balls[1..].iter().map(|b| b.0).collect();
+    state.on_table.sort_unstable();
+    state.next.break_shot = false;
+    state.next.cue_ball = CueBall::AsItLies;
+    state.next.legal_first = vec![1];
+    state
+}
+
+impl Tally {
+    /// Plays `plan` (a jump or a kick as flagged) `plays` times on `sim` under hard's
+    /// execution noise, streams `(seed, position, k)`, each judged on a copy of `state`.
+    fn play(&mut self, plan: &Plan, (state, sim): (&GameState, &Simulation), seeds: [u64; 3]) {
+        let [seed, position, plays] = seeds;
+        let jump = plan.shot.elevation.to_degrees() >= JUMP_DEGREES;
+        let kick = matches!(plan.kind, ShotKind::Kick { .. });
+        self.decisions += 1;
+        self.jumps += usize::from(jump);
+        self.kicks += usize::from(kick);
+        for k in 0..plays {
+            let mut table = sim.clone();
+            let exec_seed = stream(seed, position, k).random::<u64>();
+            let noise = Level::Hard.execution_noise();
+            let Ok(summary) = execute(&mut table, plan, noise, exec_seed) else {
+                continue;
+            };
+            let mut after = state.clone();
+            let Ok(verdict) = after.play(&summary, plan.call) else {
+                continue;
+            };
+            let potted = summary.pocketed_object_balls().next().is_some();
+            let made = verdict.legal() && potted;
+            self.plays += 1;
+            self.jump_plays += usize::from(jump);
+            self.kick_plays += usize::from(kick);
+            self.made += usize::from(made);
+            self.made_jump += usize::from(made && jump);
+            self.made_kick += usize::from(made && kick);
+            self.fouls += usize::from(!verdict.legal());
+        }
+    }
+
+    /// One line of figures under `name`.
+    fn print(&self, name: &str) {
+        let pct = |a: usize, b: usize| 100.0 * a as f64 / b.max(1) as f64;
+        println!(
+            "{name}: decisions {} (jump {}, kick {}), plays {}: made with a jump {:.1} % \
+             ({:.1} % of the jumps), with a kick {:.1} % ({:.1} % of the kicks), overall \
+             {:.1} %, fouls {:.1} %; {:.2} s a decision",
+            self.decisions,
+            self.jumps,
+            self.kicks,
+            self.plays,
+            pct(self.made_jump, self.plays),
+            pct(self.made_jump, self.jump_plays),
+            pct(self.made_kick, self.plays),
+            pct(self.made_kick, self.kick_plays),
+            pct(self.made, self.plays),
+            pct(self.fouls, self.plays),
+            self.secs / self.decisions.max(1) as f64,
+        );
+    }
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let arg = |i: usize, d: u64| args.get(i).and_then(|s| s.parse().ok()).unwrap_or(d);
@@ -105,83 +172,30 @@ fn main() {
         }
         drawn += 1;
     }
-    let hard = Level::Hard;
-    let on = hard.budget();
+    let on = Level::Hard.budget();
     let off = Budget {
         jumps: None,
         ..on.clone()
     };
     let mut tallies = [Tally::default(), Tally::default()];
     for (i, balls) in positions.iter().enumerate() {
-        let numbers: Vec<u8> = balls[1..].iter().map(|b| b.0).collect();
-        let mut state = GameState::new(Game::NineBall, Seat::A);
-        state.on_table = numbers.clone();
-        state.on_table.sort_unstable();
-        state.next.break_shot = false;
-        state.next.cue_ball = CueBall::AsItLies;
-        state.next.legal_first = vec![1];
+        let state = state_of(balls);
         let setups: Vec<BallSetup> = balls.iter().map(|&(n, p)| BallSetup::at(n, p)).collect();
         let mut sim = Simulation::new(table, params, &setups).expect("a valid layout");
         sim.set_record_history(false);
         for (tally, budget) in tallies.iter_mut().zip([&off, &on]) {
             let start = Instant::now();
-            let noise = hard.planning_noise();
+            let noise = Level::Hard.planning_noise();
             let decision = decide_planned(&state, &sim, noise, budget, i as u64, Mode::Lean);
             tally.secs += start.elapsed().as_secs_f64();
-            let Ok(Decision::Shoot(plan)) = decision else {
-                continue;
-            };
-            tally.decisions += 1;
-            let jump = plan.shot.elevation.to_degrees() >= JUMP_DEGREES;
-            let kick = matches!(plan.kind, ShotKind::Kick { .. });
-            tally.jumps += usize::from(jump);
-            tally.kicks += usize::from(kick);
-            for k in 0..plays {
-                let mut table = sim.clone();
-                let exec_seed = stream(seed, i as u64, k).random::<u64>();
-                let noise = hard.execution_noise();
-                let Ok(summary) = execute(&mut table, &plan, noise, exec_seed) else {
-                    continue;
-                };
-                let mut after = state.clone();
-                let Ok(verdict) = after.play(&summary, plan.call) else {
-                    continue;
-                };
-                let potted = summary.pocketed_object_balls().next().is_some();
-                let made = verdict.legal() && potted;
-                tally.plays += 1;
-                tally.jump_plays += usize::from(jump);
-                tally.kick_plays += usize::from(kick);
-                tally.made += usize::from(made);
-                tally.made_jump += usize::from(made && jump);
-                tally.made_kick += usize::from(made && kick);
-                tally.fouls += usize::from(!verdict.legal());
+            if let Ok(Decision::Shoot(plan)) = decision {
+                tally.play(&plan, (&state, &sim), [seed, i as u64, plays]);
             }
         }
     }
     println!(
         "{count} hidden positions (seed {seed}, {drawn} drawn), {plays} plays of each decision"
     );
-    let pct = |a: usize, b: usize| 100.0 * a as f64 / b.max(1) as f64;
-    for (name, t) in ["jumps off (before)", "jumps on (hard now)"]
-        .iter()
-        .zip(&tallies)
-    {
-        println!(
-            "{name}: decisions {} (jump {}, kick {}), plays {}: made with a jump {:.1} % \
-             ({:.1} % of the jumps), with a kick {:.1} % ({:.1} % of the kicks), overall \
-             {:.1} %, fouls {:.1} %; {:.2} s a decision",
-            t.decisions,
-            t.jumps,
-            t.kicks,
-            t.plays,
-            pct(t.made_jump, t.plays),
-            pct(t.made_jump, t.jump_plays),
-            pct(t.made_kick, t.plays),
-            pct(t.made_kick, t.kick_plays),
-            pct(t.made, t.plays),
-            pct(t.fouls, t.plays),
-            t.secs / t.decisions.max(1) as f64,
-        );
-    }
+    tallies[0].print("jumps off (before)");
+    tallies[1].print("jumps on (hard now)");
 }
