@@ -241,8 +241,22 @@ pub(crate) struct Lines {
 impl Lines {
     /// Whether no other ball blocks either line (the costly part of an aim).
     pub(crate) fn open(&self, layout: &Layout) -> bool {
+        self.cue_open(layout) && self.pocket_open(layout)
+    }
+
+    /// Whether no other ball blocks the cue ball's path to the ghost ball.
+    pub(crate) fn cue_open(&self, layout: &Layout) -> bool {
         layout.clear(self.cue, self.ghost, &[CUE, self.number])
-            && layout.clear(self.ball, self.target, &[self.number])
+    }
+
+    /// Whether no other ball blocks the object ball's path to its pocket.
+    pub(crate) fn pocket_open(&self, layout: &Layout) -> bool {
+        layout.clear(self.ball, self.target, &[self.number])
+    }
+
+    /// Where the cue ball's centre must be at contact (the ghost ball).
+    pub(crate) fn ghost(&self) -> Vec2 {
+        self.ghost
     }
 }
 

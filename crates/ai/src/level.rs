@@ -16,7 +16,8 @@ pub enum Level {
     Medium,
     /// The reference noise (FastFiz magnitude 1); the whole one-ply search over a wider set
     /// of strokes (seven speeds, ten tips), then the best few shots valued two plies deep by
-    /// a small search of the next shot ([`TwoPly`]).
+    /// a small search of the next shot ([`TwoPly`]); jump shots when every legal ball is
+    /// hidden ([`Jumps`]).
     Hard,
     /// The reference noise; hard's search with a larger second ply (up to 5 s a decision).
     Expert,
@@ -51,7 +52,36 @@ pub struct Budget {
     pub second: Option<TwoPly>,
     /// The break's search (the opening shot of a rack).
     pub breaks: Breaks,
+    /// Jump shots when every legal ball is hidden ([`crate::jump`]); `None`: the cue stays
+    /// level, as before issue 52 (the switch the measurement turns off).
+    pub jumps: Option<Jumps>,
 }
+
+/// The jump shots a search adds when no legal ball can be reached in a straight line
+/// ([`crate::jump`]): pots and full hits over the blocking balls, centre-ball strikes at
+/// each elevation, at multiples of the least speed that clears the blockers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Jumps {
+    /// Jump pots kept (best analytic chance first, those a jump can reach).
+    pub aims: usize,
+    /// Cue elevations, degrees.
+    pub elevations: &'static [f64],
+    /// Cue speeds, as multiples of the least speed that clears every blocker at that
+    /// elevation.
+    pub speeds: &'static [f64],
+    /// Legal balls (nearest first) given jump safeties: a full hit over the blockers.
+    pub hits: usize,
+}
+
+/// Hard's, expert's and perfect's jumps: the three best pots and the two nearest legal
+/// balls, at 30, 45 and 60 degrees, 5, 15 and 30 % above the least clearing speed: at most
+/// 27 pots and 18 safeties, and only in a hidden position.
+const JUMPS: Jumps = Jumps {
+    aims: 3,
+    elevations: &[30.0, 45.0, 60.0],
+    speeds: &[1.05, 1.15, 1.3],
+    hits: 2,
+};
 
 /// The break's search: candidates full on the apex ball from the head string's places, at
 /// these speeds and tip heights; a break runs about ten times the events of a shot and its
@@ -164,6 +194,7 @@ const ONE_PLY: Budget = Budget {
     safeties: 9,
     second: None,
     breaks: BREAK_NARROW,
+    jumps: None,
 };
 
 /// The two-ply levels' first ply: the one-ply search over a wider set of strokes for
@@ -207,6 +238,7 @@ const HARD_REPLY: Budget = Budget {
     safeties: 3,
     second: None,
     breaks: BREAK_NARROW,
+    jumps: None,
 };
 
 /// Hard's second ply: the best 4 shots, 16 outcomes each (against the one-ply baseline, 4
@@ -233,6 +265,7 @@ const EXPERT_REPLY: Budget = Budget {
     safeties: 5,
     second: None,
     breaks: BREAK_NARROW,
+    jumps: None,
 };
 
 /// Expert's second ply: the best 6 shots, 16 outcomes each.
@@ -290,6 +323,7 @@ impl Level {
                     speeds: &[10.0],
                     ..BREAK_NARROW
                 },
+                jumps: None,
             },
             Level::Medium => Budget {
                 samples: 12,
@@ -303,15 +337,18 @@ impl Level {
                 safeties: 5,
                 second: None,
                 breaks: BREAK_NARROW,
+                jumps: None,
             },
             Level::Hard | Level::Perfect => Budget {
                 second: Some(HARD_SECOND),
                 breaks: BREAK_WIDE,
+                jumps: Some(JUMPS),
                 ..TWO_PLY_FIRST
             },
             Level::Expert => Budget {
                 second: Some(EXPERT_SECOND),
                 breaks: BREAK_WIDE,
+                jumps: Some(JUMPS),
                 ..TWO_PLY_FIRST
             },
         }

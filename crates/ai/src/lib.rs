@@ -14,6 +14,8 @@
 //! - [`placement`]: ball in hand, by the same search from the best few places;
 //! - [`twoply`]: the best few shots valued two plies deep, by a search of the next shot
 //!   from their noisy outcomes;
+//! - [`jump`]: with every legal ball hidden, jump pots and safeties over the blocker (hard
+//!   and up), sampled like every other candidate;
 //! - [`drill`]: the computer at a drill, by the rules' search or one scored by the drill;
 //! - [`level`]: skill levels (noise and budget); [`greedy`]: a baseline without simulation;
 //! - [`any_game`]: the computer at any game through the one game interface
@@ -40,6 +42,7 @@ pub mod drill;
 pub mod evaluate;
 pub mod game;
 pub mod greedy;
+pub mod jump;
 pub mod level;
 pub mod noise;
 pub mod placement;
@@ -54,7 +57,7 @@ pub mod twoply;
 
 pub use candidates::{Candidate, Layout, ShotKind};
 pub use evaluate::{Mode, Stats};
-pub use level::{Breaks, Budget, Level, TwoPly, UnknownLevel};
+pub use level::{Breaks, Budget, Jumps, Level, TwoPly, UnknownLevel};
 pub use noise::Noise;
 pub use plan::{Called, Decision, Plan};
 pub use search::{decide, decide_planned, decide_with};

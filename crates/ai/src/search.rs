@@ -5,6 +5,7 @@ use crate::candidates::{
     Candidate, Layout, ShotKind, combo_aims, direct_aims, expand, rail_aims, safeties,
 };
 use crate::evaluate::{Mode, Search};
+use crate::jump::{hidden, jump_hits, jump_pots};
 use crate::level::{Budget, Level};
 use crate::noise::Noise;
 use crate::placement::places;
@@ -107,7 +108,7 @@ impl Searched for Search<'_> {
         if next.break_shot || scoring {
             return Vec::new();
         }
-        safety_candidates(self.state, &self.base, next, places, budget.safeties)
+        safety_candidates(self.state, &self.base, next, places, budget)
     }
 
     /// A break is sampled on the break's budget.
@@ -163,21 +164,28 @@ fn cue_places(
     Ok(found.into_iter().map(Some).collect())
 }
 
-/// The safeties (and push outs) from every place, added only when no pot scores well enough:
-/// their calls follow the game's rule for a safety on the last ball.
+/// The safeties (and push outs) from every place, added only when no pot scores well enough,
+/// with the budget's jump safeties when no legal ball is in view: their calls follow the
+/// game's rule for a safety on the last ball.
 fn safety_candidates(
     state: &GameState,
     sim: &Simulation,
     next: &NextShot,
     place_list: &[Option<Vec2>],
-    count: usize,
+    budget: &Budget,
 ) -> Vec<Candidate> {
     let mut more = Vec::new();
+    let legal = &next.legal_first;
     for &p in place_list {
         let Some(layout) = Layout::of(sim, p) else {
             continue;
         };
-        let mut s = safeties(&layout, &next.legal_first, count, p);
+        let mut s = safeties(&layout, legal, budget.safeties, p);
+        if let Some(jumps) = &budget.jumps
+            && hidden(&layout, legal)
+        {
+            s.extend(jump_hits(&layout, legal, sim.params(), jumps, p));
+        }
         if (state.game == Game::EightBall && next.legal_first == [8]) || state.game == Game::TenBall
         {
             // On the 8, only a called safety is safe from a lucky loss (WPA 3.8); in
@@ -236,7 +244,15 @@ fn offence(search: &Search, place: Option<Vec2>, budget: &Budget) -> Vec<Candida
         .take(aims_kept)
         .map(|&(_, i)| aims[i])
         .collect();
-    let cands = expand(&kept, budget.speeds, budget.tips, called, place);
+    let mut cands = expand(&kept, budget.speeds, budget.tips, called, place);
+    // Issue 52: no legal ball in view, the cue ball may jump the blocker (hard and up).
+    if let Some(jumps) = &budget.jumps
+        && hidden(&layout, legal)
+    {
+        let params = search.base.params();
+        let how = (called, place);
+        cands.extend(jump_pots(&layout, legal, params, search.noise, jumps, how));
+    }
     if budget.correct_aim {
         cands
             .into_par_iter()
