@@ -68,13 +68,30 @@ fn describe_pool(decision: &Decision, view: &OrbitCamera) -> String {
                 other => other.text().map_or(String::new(), |c| format!(", {c}")),
             };
             format!(
-                "{what}{call}, {:.0} % to succeed, {:.0} % foul",
+                "{what}{call}{}, {:.0} % to succeed, {:.0} % foul",
+                jump_text(plan.shot.elevation),
                 100.0 * plan.success,
                 100.0 * plan.foul
             )
         }
     }
 }
+
+/// A jump shot said as one: the computer raises the cue 30 to 60 degrees to fly the cue
+/// ball over a blocker (`billiards_ai::jump`); a level shot (or the few degrees of a
+/// swerve) says nothing.
+fn jump_text(elevation: f64) -> String {
+    let degrees = elevation.to_degrees();
+    if degrees >= JUMP_DEGREES {
+        format!(", a jump shot (cue raised {degrees:.0} degrees)")
+    } else {
+        String::new()
+    }
+}
+
+/// The least cue elevation, degrees, named a jump shot in words (below the 30 degrees of the
+/// computer's lowest jump, above any swerve or masse it plans).
+const JUMP_DEGREES: f64 = 20.0;
 
 /// A cushion's name as `view` shows it. The short ones keep the players' "head" and "foot";
 /// a long one is named by where it lies on the screen: "left" or "right", and "far" or
@@ -176,5 +193,18 @@ mod tests {
         };
         assert_eq!(cushion_name(Cushion::Left, &across), "far");
         assert_eq!(cushion_name(Cushion::Right, &across), "near");
+    }
+
+    /// Issue 52: Hint says when its shot is a jump (the computer's 30 to 60 degrees), and a
+    /// level shot or a swerve's few degrees is not called one.
+    #[test]
+    fn a_jump_shot_is_said_as_one() {
+        assert_eq!(
+            jump_text(45f64.to_radians()),
+            ", a jump shot (cue raised 45 degrees)"
+        );
+        assert!(jump_text(30f64.to_radians()).contains("jump shot"));
+        assert_eq!(jump_text(0.0), "");
+        assert_eq!(jump_text(8f64.to_radians()), "");
     }
 }
