@@ -541,8 +541,21 @@ fn free_play_is_the_sandbox_behind_the_interface() {
     let status = app.world().resource::<SimStatus>().clone();
     let note = status.note.unwrap_or_default();
     assert!(
-        note.contains("scratch: the cue ball is back on the head string"),
+        note.contains("the cue ball is on the head string"),
         "{note}"
+    );
+    let last = app
+        .world()
+        .resource::<Rules>()
+        .live
+        .as_ref()
+        .unwrap()
+        .last
+        .clone();
+    let said = last.map(|j| j.text).unwrap_or_default();
+    assert!(
+        said.contains("scratch: the cue ball is back on the head string"),
+        "{said}"
     );
     assert_eq!(status.ball_in_hand, Some(HandRule::Respot), "it may slide");
     let first = app.world().resource::<Autosave>().file.clone().unwrap();

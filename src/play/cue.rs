@@ -328,6 +328,17 @@ fn cue_keys(
     // degrees a second.
     let raise = if fine { (0.1, 2.0) } else { (1.0, 15.0) };
     next.elevation += motion(KeyCode::KeyE, raise) - motion(KeyCode::KeyD, raise);
+    // A key held at the end of its range stops there: the player asked for the end, not for
+    // a value beyond it to be clamped and warned about (played: "cue elevation
+    // 95.50192516999994 deg is outside 0..85 deg").
+    for (value, range, before) in [
+        (&mut next.power, ShotSettings::POWER, shot.power),
+        (&mut next.elevation, ShotSettings::ELEVATION, shot.elevation),
+    ] {
+        if *value != before && before.is_finite() {
+            *value = value.clamp(range.min.min(before), range.max.max(before));
+        }
+    }
     if held.any_held() {
         // The window draws on input only: keep frames coming while a key is held.
         redraw.write(RequestRedraw);

@@ -59,8 +59,26 @@ impl fmt::Display for ClampNote {
         write!(
             f,
             "{} {}{} is outside {}..{}{}: clamped to {}{}",
-            r.label, self.requested, r.unit, r.min, r.max, r.unit, self.applied, r.unit
+            r.label,
+            short(self.requested),
+            r.unit,
+            r.min,
+            r.max,
+            r.unit,
+            short(self.applied),
+            r.unit
         )
+    }
+}
+
+/// `v` as a player reads it: as written when short ("20", "-3.5", "NaN"), else to three
+/// decimals ("95.502", not "95.50192516999994").
+fn short(v: f64) -> String {
+    let plain = v.to_string();
+    if plain.len() <= 8 {
+        plain
+    } else {
+        format!("{v:.3}")
     }
 }
 
@@ -69,4 +87,38 @@ impl fmt::Display for ClampNote {
 pub struct ClampReport {
     /// Notes of the last edit that needed clamping.
     pub notes: Vec<ClampNote>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Played (issue 52): a held key sent the elevation past its end and the note read
+    /// "95.50192516999994 deg"; a long request is said to three decimals, a short one as
+    /// written.
+    #[test]
+    fn a_clamp_note_says_a_long_request_to_three_decimals() {
+        let range = ParamRange {
+            label: "cue elevation",
+            min: 0.0,
+            max: 85.0,
+            unit: " deg",
+        };
+        let note = |requested| {
+            ClampNote {
+                range,
+                requested,
+                applied: 85.0,
+            }
+            .to_string()
+        };
+        assert_eq!(
+            note(95.50192516999994),
+            "cue elevation 95.502 deg is outside 0..85 deg: clamped to 85 deg"
+        );
+        assert_eq!(
+            note(90.0),
+            "cue elevation 90 deg is outside 0..85 deg: clamped to 85 deg"
+        );
+    }
 }

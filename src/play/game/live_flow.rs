@@ -242,10 +242,12 @@ pub(super) fn judge_live(
         // Free play's strokes need no reading: the HUD says what each did, and the note
         // what the rules put back (a scratch's cue ball on the head string).
         if !moves.is_empty() {
-            status.note = Some(format!(
-                "{} (drag it, or the Shot section's slider moves it along the string)",
-                judgement.text
-            ));
+            // The HUD's last stroke says what happened; this says what the player may do.
+            status.note = Some(
+                "the cue ball is on the head string: drag it, or the Shot section's slider \
+                 moves it along the string"
+                    .to_owned(),
+            );
         }
     } else {
         game.verdict_shown = true;
