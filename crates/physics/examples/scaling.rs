@@ -13,8 +13,8 @@
 //! from the same minutes of a noisy machine. Each figure is the best of three rounds.
 //! Peak memory is the process's high-water mark (Linux `VmHWM`) after building the
 //! 100,000-ball gas and running 20,000 of its events with the history off, over the balls.
-//! `--million` adds a line for a gas of 1,000,000 balls (a fortieth of the events, its
-//! set-up taking seconds) and its peak memory, measured the same way in a process of its own.
+//! `--million` adds a line for a gas of 1,000,000 balls (a tenth of the events, its set-up
+//! taking seconds) and its peak memory, measured the same way in a process of its own.
 
 use billiards_physics::*;
 use std::process::Command;
@@ -81,7 +81,7 @@ fn main() {
     for n in sizes {
         // Fewer events for the big gases, whose set-up (every ball predicted) is costly.
         let events = match n {
-            MILLION => events / 40,
+            MILLION => events / 10,
             100_000.. => events / 4,
             _ => events,
         };
