@@ -59,14 +59,19 @@ impl<K: Copy> Tournament<K> {
         debug_assert_eq!(key.is_none(), rank == Self::EMPTY);
         self.keys[i] = key;
         self.ties[i] = rank as u64;
+        // Indices masked to the tree's `2 size` nodes (a power of two, so the mask changes
+        // none of them): the compiler then drops the bounds checks of the replay.
+        let mask = 2 * self.size - 1;
+        let nodes = &mut self.nodes[..=mask];
+        let ties = &self.ties[..self.size];
         let mut node = self.size + i;
         let mut best = ((rank >> 64) as u64, i);
-        self.nodes[node] = best;
+        nodes[node & mask] = best;
         // Every level is replayed, with selects rather than branches: which side wins is as
         // good as random, and a mispredicted branch costs more than the few levels an early
         // stop (when the winner above is unchanged) would save.
         while node > 1 {
-            let other = self.nodes[node ^ 1];
+            let other = nodes[(node ^ 1) & mask];
             // Ties go to the left child, whose slots are all lower: the lower (rank, slot)
             // wins. So the rank alone decides, and an equal rank only from the left (`node`
             // is a right child). Equal high halves (rare: two events at one instant, or two
@@ -75,12 +80,12 @@ impl<K: Copy> Tournament<K> {
             let take = if other.0 != best.0 {
                 other.0 < best.0
             } else {
-                let (a, b) = (self.ties[other.1], self.ties[best.1]);
+                let (a, b) = (ties[other.1], ties[best.1]);
                 (a < b) | ((a == b) & right)
             };
             best = std::hint::select_unpredictable(take, other, best);
             node /= 2;
-            self.nodes[node] = best;
+            nodes[node & mask] = best;
         }
     }
 
