@@ -7,6 +7,7 @@
 //! cargo run --release -p billiards-physics --example fingerprint -- 2000 0 --pairwise
 //! cargo run --release -p billiards-physics --example fingerprint -- 2000 0 --no-near
 //! cargo run --release -p billiards-physics --example fingerprint -- 2000 0 --dump=/tmp/ev
+//! cargo run --release -p billiards-physics --example fingerprint -- --gas=10000:200000
 //! ```
 //!
 //! `--pairwise` turns the cluster impacts off (`SpinModel::cluster = None`: every contact
@@ -18,6 +19,9 @@
 //! `--dump=PATH` also writes every event of the soak scenes to PATH, a line each (seed,
 //! index, time, kind, the positions after it, bit-exact), so that two solvers' runs can be
 //! compared event by event (where a last-bit change first shows, and how it grows).
+//! `--gas=BALLS:EVENTS` fingerprints only the frictionless gas of `BALLS` balls over `EVENTS`
+//! events (`racks::frictionless_gas`; from 250 balls on, the cell lists, which the soak
+//! scenes never use), so that a change to the cell lists can be shown to change no event.
 
 use billiards_physics::soak::scenario;
 use billiards_physics::*;
@@ -170,6 +174,10 @@ fn main() {
         args.get(1).copied().unwrap_or(0),
     );
     let flag = |f: &str| flags.iter().any(|a| a == f);
+    if let Some(spec) = flags.iter().find_map(|f| f.strip_prefix("--gas=")) {
+        gas_only(spec);
+        return;
+    }
     if flag("--no-near") {
         let (mut hp, mut hc) = (Fnv(0xcbf2_9ce4_8422_2325), Fnv(0xcbf2_9ce4_8422_2325));
         let (mut scenes, mut events, mut impacts) = (0, 0, 0);
@@ -232,4 +240,29 @@ fn main() {
     }
     events += sim.history().events().len();
     println!("{:016x} ({events} events)", h.0);
+}
+
+/// `--gas=BALLS:EVENTS`: the fingerprint of that gas's events alone.
+fn gas_only(spec: &str) {
+    let mut parts = spec.split(':').map(str::parse::<usize>);
+    let (Some(Ok(balls)), Some(Ok(count)), None) = (parts.next(), parts.next(), parts.next())
+    else {
+        eprintln!("usage: fingerprint --gas=BALLS:EVENTS (two whole numbers)");
+        std::process::exit(2);
+    };
+    let (table, params, rack) = racks::frictionless_gas(balls);
+    let mut sim = match Simulation::new(table, params, &rack) {
+        Ok(sim) => sim,
+        Err(e) => {
+            eprintln!("no gas of {balls} balls: {e}");
+            std::process::exit(1);
+        }
+    };
+    for _ in 0..count {
+        sim.step_event();
+    }
+    let mut h = Fnv(0xcbf2_9ce4_8422_2325);
+    sim.history().events().iter().for_each(|e| h.event(e));
+    let events = sim.history().events().len();
+    println!("gas of {balls} balls: {:016x} ({events} events)", h.0);
 }

@@ -5,7 +5,7 @@
 //!
 //! ```sh
 //! cargo run --release -p billiards-physics --example scaling -- [--events N] [--csv FILE]
-//!     [--against OTHER]
+//!     [--against OTHER] [--million]
 //! ```
 //!
 //! `--against OTHER` runs `OTHER` (this example built from another commit, see
@@ -13,12 +13,17 @@
 //! from the same minutes of a noisy machine. Each figure is the best of three rounds.
 //! Peak memory is the process's high-water mark (Linux `VmHWM`) after building the
 //! 100,000-ball gas and running 20,000 of its events with the history off, over the balls.
+//! `--million` adds a line for a gas of 1,000,000 balls (a tenth of the events, its set-up
+//! taking seconds) and its peak memory, measured the same way in a process of its own.
 
 use billiards_physics::*;
 use std::process::Command;
 use std::time::Instant;
 
 const SIZES: [usize; 5] = [16, 100, 1000, 10_000, 100_000];
+
+/// The size `--million` adds.
+const MILLION: usize = 1_000_000;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -37,6 +42,10 @@ fn main() {
         let ns = match what {
             (Some(k), Some(n)) if k == "gas" => n.parse().ok().map(|n| gas(n, events)),
             (Some(k), Some(c)) if k == "break" => cushion(c).map(break_us),
+            (Some(k), Some(n)) if k == "memory" => n
+                .parse()
+                .ok()
+                .map(|n| peak_memory_per_ball(n).unwrap_or(f64::NAN)),
             _ => None,
         };
         match ns {
@@ -67,9 +76,15 @@ fn main() {
     let best = |f: &dyn Fn() -> f64| (0..3).map(|_| f()).fold(f64::INFINITY, f64::min);
     let mut rows = Vec::new();
     let mut base = None;
-    for n in SIZES {
+    let million = args.iter().any(|a| a == "--million");
+    let sizes = SIZES.iter().copied().chain(million.then_some(MILLION));
+    for n in sizes {
         // Fewer events for the big gases, whose set-up (every ball predicted) is costly.
-        let events = if n >= 100_000 { events / 4 } else { events };
+        let events = match n {
+            MILLION => events / 10,
+            100_000.. => events / 4,
+            _ => events,
+        };
         let (mut mine, mut theirs) = (f64::INFINITY, f64::INFINITY);
         for _ in 0..3 {
             mine = mine.min(gas(n, events));
@@ -118,6 +133,24 @@ fn main() {
         Some(bytes) => println!("peak memory: {bytes:.0} bytes a ball (100,000 balls)"),
         None => println!("peak memory: not measured (no /proc/self/status)"),
     }
+    if million {
+        // In a process of its own: the high-water mark of this one is already the largest
+        // gas's.
+        let me = std::env::current_exe().ok();
+        let out = me.and_then(|me| {
+            let arg = format!("memory {MILLION}");
+            Command::new(me)
+                .arg("--one")
+                .args(arg.split(' '))
+                .output()
+                .ok()
+        });
+        let bytes = out.and_then(|o| String::from_utf8_lossy(&o.stdout).trim().parse().ok());
+        match bytes.filter(|b: &f64| b.is_finite()) {
+            Some(b) => println!("peak memory: {b:.0} bytes a ball (1,000,000 balls)"),
+            None => println!("peak memory: not measured (1,000,000 balls)"),
+        }
+    }
     if let Some(path) = csv {
         let mut text = String::from("balls,ns_per_event,other_ns_per_event\n");
         for (n, mine, theirs) in rows {
@@ -136,7 +169,10 @@ fn main() {
 }
 
 fn usage() -> ! {
-    eprintln!("usage: scaling [--events N (at least 1000)] [--csv FILE] [--against OTHER_BUILD]");
+    eprintln!(
+        "usage: scaling [--events N (at least 1000)] [--csv FILE] [--against OTHER_BUILD] \
+         [--million]"
+    );
     std::process::exit(2);
 }
 
