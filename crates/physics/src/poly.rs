@@ -224,6 +224,39 @@ fn closed_form_entry(c0: f64, c1: f64, c2: f64, a: f64, b: f64) -> Option<Option
     None
 }
 
+/// [`first_entry`] of `p` on `[0, b]` when `p` is surely decreasing from its start, through a
+/// bracket found by Newton's method instead of the critical points: `None` when it cannot
+/// certify one (then the general search runs). Newton from 0 (where `p > 0`), then a probe
+/// twice its last step further; the bracket `[lo, x]` (`p(lo) > 0 >= p(x)` as evaluated) is
+/// refined as [`first_entry`] refines its piece, once `falls(x)` shows `p' < 0` on all of
+/// `[0, x]`: `p` then has one root there and none before, so the answer is the first root, to
+/// the same few ulps (the bracket differs, so the last ulps may).
+pub(crate) fn first_entry_decreasing(p: &Poly, b: f64, falls: impl Fn(f64) -> bool) -> Option<f64> {
+    let dp = p.derivative();
+    let (mut lo, mut flo) = (0.0, p.eval(0.0));
+    if flo.is_nan() || flo <= 0.0 {
+        return None;
+    }
+    for step in 0..3 {
+        let d = dp.eval(lo);
+        if d.is_nan() || d >= 0.0 {
+            return None;
+        }
+        let delta = -flo / d;
+        // Newton's step, and the probe past it on the last round.
+        let x = lo + if step == 2 { 2.0 * delta } else { delta };
+        if !(x > lo && x <= b) {
+            return None;
+        }
+        let fx = p.eval(x);
+        if fx <= 0.0 {
+            return falls(x).then(|| refine(p, lo, x, flo, fx));
+        }
+        (lo, flo) = (x, fx);
+    }
+    None
+}
+
 /// Refines a bracket with `p(lo) = flo > 0 >= p(hi) = fhi`, `p` monotone on it, to a few ulps;
 /// returns the upper end (where `p <= 0`). Safeguarded Newton started from the secant point.
 fn refine(p: &Poly, mut lo: f64, mut hi: f64, flo: f64, fhi: f64) -> f64 {
