@@ -5,8 +5,13 @@
 //! is kept (the runs are deterministic), dropping what a loaded machine's preemption added.
 //!
 //! ```sh
-//! cargo run --release -p billiards-physics --example flight_cost -- [SHOTS]
+//! cargo run --release -p billiards-physics --example flight_cost -- [SHOTS] [--hash]
 //! ```
+//!
+//! `--hash` times nothing: it prints one hash (FNV-1a of the `Debug` text of every event: time,
+//! kind, the states after it) of the shots run to rest, so that a speed-up can be shown to
+//! change no result, or which shots it moves (crates/physics/README.md, "Balls in the air:
+//! cost").
 //!
 //! A cluster impact is resolved at its first event and recorded as one event a pair: its
 //! cost is shared by them, a kind of its own. Whether a level break costs what it did before
@@ -154,15 +159,36 @@ fn timed(sims: &[Simulation], rounds: usize) -> [(f64, usize); KINDS.len()] {
     sum.map(|(ns, count)| (ns / count.max(1) as f64, count))
 }
 
+/// FNV-1a of the `Debug` text of every event of `sims` run to rest, and the event count.
+fn hash(sims: Vec<Simulation>) -> (u64, usize) {
+    let (mut h, mut events) = (0xcbf2_9ce4_8422_2325u64, 0);
+    for mut sim in sims {
+        while let Some(e) = sim.step_event() {
+            for b in format!("{e:?}").bytes() {
+                h = (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3);
+            }
+            events += 1;
+        }
+    }
+    (h, events)
+}
+
 fn main() {
-    let n: usize = match std::env::args().nth(1).map(|s| s.parse()) {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let hashing = args.iter().any(|a| a == "--hash");
+    let n: usize = match args.iter().find(|a| *a != "--hash").map(|s| s.parse()) {
         None => 2000,
         Some(Ok(n)) if n > 0 => n,
         Some(_) => {
-            eprintln!("usage: flight_cost [SHOTS], SHOTS a positive integer");
+            eprintln!("usage: flight_cost [SHOTS] [--hash], SHOTS a positive integer");
             std::process::exit(2);
         }
     };
+    if hashing {
+        let (h, events) = hash(shots(n));
+        println!("{h:016x} ({events} events)");
+        return;
+    }
     const ROUNDS: usize = 5;
     let flights = timed(&shots(n), ROUNDS);
     let breaks = timed(&level_breaks(), ROUNDS);

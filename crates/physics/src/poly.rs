@@ -53,15 +53,63 @@ impl Poly {
     /// Visits the roots of this polynomial in the open interval `(a, b)` in ascending order
     /// (sign changes, and exact zeros at critical points) until `visit` returns `true`; returns
     /// whether it stopped early. Lazy, so a caller that needs only the first root pays only for
-    /// the critical points before it.
-    fn for_each_root(&self, a: f64, b: f64, visit: &mut dyn FnMut(f64) -> bool) -> bool {
+    /// the critical points before it. Generic in `visit` so that a contact search's closures
+    /// are inlined (the same arithmetic in the same order: no result changes); the derivative
+    /// of a quartic is searched through [`Poly::for_each_root_dyn`], which ends the
+    /// recursion of closure types.
+    fn for_each_root<F: FnMut(f64) -> bool + ?Sized>(&self, a: f64, b: f64, visit: &mut F) -> bool {
+        if self.degree() <= 2 {
+            return self.for_each_root_low(a, b, visit);
+        }
+        let mut lo = a;
+        let mut flo = self.eval(a);
+        let mut piece = |hi: f64, fhi: f64, lo: &mut f64, flo: &mut f64| -> bool {
+            let stop = if (*flo > 0.0 && fhi < 0.0) || (*flo < 0.0 && fhi > 0.0) {
+                let r = if *flo > 0.0 {
+                    refine(self, *lo, hi, *flo, fhi)
+                } else {
+                    refine(&self.negated(), *lo, hi, -*flo, -fhi)
+                };
+                r > a && r < b && visit(r)
+            } else {
+                fhi == 0.0 && hi < b && visit(hi)
+            };
+            *lo = hi;
+            *flo = fhi;
+            stop
+        };
+        let derivative = self.derivative();
+        let mut critical = |c: f64| piece(c, self.eval(c), &mut lo, &mut flo);
+        let stopped = if derivative.degree() <= 2 {
+            derivative.for_each_root_low(a, b, &mut critical)
+        } else {
+            derivative.for_each_root_dyn(a, b, &mut critical)
+        };
+        if stopped {
+            return true;
+        }
+        piece(b, self.eval(b), &mut lo, &mut flo)
+    }
+
+    /// [`Poly::for_each_root`] through a trait object (the quartic's derivative, a cubic).
+    fn for_each_root_dyn(&self, a: f64, b: f64, visit: &mut dyn FnMut(f64) -> bool) -> bool {
+        self.for_each_root(a, b, visit)
+    }
+
+    /// [`Poly::for_each_root`] of degree at most two, in closed form.
+    fn for_each_root_low<F: FnMut(f64) -> bool + ?Sized>(
+        &self,
+        a: f64,
+        b: f64,
+        visit: &mut F,
+    ) -> bool {
         match self.degree() {
             0 => false,
             1 => {
                 let t = -self.c[0] / self.c[1];
                 t > a && t < b && visit(t)
             }
-            2 => {
+            _ => {
                 let (q0, q1, q2) = (self.c[0], self.c[1], self.c[2]);
                 let disc = q1 * q1 - 4.0 * q2 * q0;
                 if disc < 0.0 {
@@ -74,32 +122,6 @@ impl Poly {
                     std::mem::swap(&mut r1, &mut r2);
                 }
                 (r1 > a && r1 < b && visit(r1)) || (r2 != r1 && r2 > a && r2 < b && visit(r2))
-            }
-            _ => {
-                let mut lo = a;
-                let mut flo = self.eval(a);
-                let mut piece = |hi: f64, fhi: f64, lo: &mut f64, flo: &mut f64| -> bool {
-                    let stop = if (*flo > 0.0 && fhi < 0.0) || (*flo < 0.0 && fhi > 0.0) {
-                        let r = if *flo > 0.0 {
-                            refine(self, *lo, hi, *flo, fhi)
-                        } else {
-                            refine(&self.negated(), *lo, hi, -*flo, -fhi)
-                        };
-                        r > a && r < b && visit(r)
-                    } else {
-                        fhi == 0.0 && hi < b && visit(hi)
-                    };
-                    *lo = hi;
-                    *flo = fhi;
-                    stop
-                };
-                if self
-                    .derivative()
-                    .for_each_root(a, b, &mut |c| piece(c, self.eval(c), &mut lo, &mut flo))
-                {
-                    return true;
-                }
-                piece(b, self.eval(b), &mut lo, &mut flo)
             }
         }
     }
@@ -202,6 +224,39 @@ fn closed_form_entry(c0: f64, c1: f64, c2: f64, a: f64, b: f64) -> Option<Option
     None
 }
 
+/// [`first_entry`] of `p` on `[0, b]` when `p` is surely decreasing from its start, through a
+/// bracket found by Newton's method instead of the critical points: `None` when it cannot
+/// certify one (then the general search runs). Newton from 0 (where `p > 0`), then a probe
+/// twice its last step further; the bracket `[lo, x]` (`p(lo) > 0 >= p(x)` as evaluated) is
+/// refined as [`first_entry`] refines its piece, once `falls(x)` shows `p' < 0` on all of
+/// `[0, x]`: `p` then has one root there and none before, so the answer is the first root, to
+/// the same few ulps (the bracket differs, so the last ulps may).
+pub(crate) fn first_entry_decreasing(p: &Poly, b: f64, falls: impl Fn(f64) -> bool) -> Option<f64> {
+    let dp = p.derivative();
+    let (mut lo, mut flo) = (0.0, p.eval(0.0));
+    if flo.is_nan() || flo <= 0.0 {
+        return None;
+    }
+    for step in 0..3 {
+        let d = dp.eval(lo);
+        if d.is_nan() || d >= 0.0 {
+            return None;
+        }
+        let delta = -flo / d;
+        // Newton's step, and the probe past it on the last round.
+        let x = lo + if step == 2 { 2.0 * delta } else { delta };
+        if !(x > lo && x <= b) {
+            return None;
+        }
+        let fx = p.eval(x);
+        if fx <= 0.0 {
+            return falls(x).then(|| refine(p, lo, x, flo, fx));
+        }
+        (lo, flo) = (x, fx);
+    }
+    None
+}
+
 /// Refines a bracket with `p(lo) = flo > 0 >= p(hi) = fhi`, `p` monotone on it, to a few ulps;
 /// returns the upper end (where `p <= 0`). Safeguarded Newton started from the secant point.
 fn refine(p: &Poly, mut lo: f64, mut hi: f64, flo: f64, fhi: f64) -> f64 {
@@ -295,7 +350,13 @@ pub fn first_contact(f: &Poly, h: f64, tol: ContactTolerance) -> Option<f64> {
     }
     let separate = entry(&f.negated().shifted(tol.separation), 0.0);
     let approaching = entry(&df.shifted(1e-3 * tol.slack), 0.0);
-    let sink = approaching.and_then(|ta| entry(&f.shifted(tol.depth), ta));
+    // A sinking contact starts no earlier than the approach (`tc >= ta`), so when the pair
+    // separates first (`ta >= ts`) it cannot come before the separation and the answer is the
+    // first root after it: the sinking search is skipped, the answer the same (a pair just
+    // resolved in space that parts, then falls back together).
+    let sink = approaching
+        .filter(|&ta| separate.is_none_or(|ts| ta < ts))
+        .and_then(|ta| entry(&f.shifted(tol.depth), ta));
     match (sink, separate) {
         (Some(tc), Some(ts)) if tc < ts => Some(tc),
         (Some(tc), None) => Some(tc),
