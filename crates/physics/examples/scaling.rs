@@ -138,10 +138,8 @@ fn main() {
         // gas's.
         let me = std::env::current_exe().ok();
         let out = me.and_then(|me| {
-            let arg = format!("memory {MILLION}");
             Command::new(me)
-                .arg("--one")
-                .args(arg.split(' '))
+                .args(["--one", "memory", &MILLION.to_string()])
                 .output()
                 .ok()
         });

@@ -37,13 +37,7 @@ fn space_contact(
     contact: f64,
     horizon: f64,
 ) -> Option<f64> {
-    let f = Poly::new([
-        dp.length_squared() + dz * dz - contact * contact,
-        2.0 * (dp.dot(dv) + dz * dvz),
-        dv.length_squared() + dp.dot(da) + dvz * dvz + dz * daz,
-        dv.dot(da) + dvz * daz,
-        0.25 * (da.length_squared() + daz * daz),
-    ]);
+    let f = contact_poly((dp, dv, da), (dz, dvz, daz), contact);
     if receding(&f, horizon) || clear(&f, horizon) {
         return None;
     }
@@ -51,6 +45,29 @@ fn space_contact(
         return Some(t);
     }
     first_contact(&f, horizon, tolerance(contact))
+}
+
+/// The contact function `f(t) = |d(t)|^2 - contact^2` of two balls whose centres differ by
+/// `d(t) = (dp + dv t + da t^2 / 2, dz + dvz t + daz t^2 / 2)`: a quartic in `t`.
+fn contact_poly(
+    (dp, dv, da): (Vec2, Vec2, Vec2),
+    (dz, dvz, daz): (f64, f64, f64),
+    contact: f64,
+) -> Poly {
+    Poly::new([
+        dp.length_squared() + dz * dz - contact * contact,
+        2.0 * (dp.dot(dv) + dz * dvz),
+        dv.length_squared() + dp.dot(da) + dvz * dvz + dz * daz,
+        dv.dot(da) + dvz * daz,
+        0.25 * (da.length_squared() + daz * daz),
+    ])
+}
+
+/// The sum of the sizes of `f`'s terms at `t = h`, the scale of the rounding of its
+/// evaluations over `[0, h]`.
+fn terms_size(f: &Poly, h: f64) -> f64 {
+    let [c0, c1, c2, c3, c4] = f.c;
+    c0.abs() + (c1.abs() + (c2.abs() + (c3.abs() + c4.abs() * h) * h) * h) * h
 }
 
 /// The first contact of a pair apart now and drawing together (`f(0) > 0 > f'(0)`), when
@@ -110,7 +127,7 @@ fn receding(f: &Poly, horizon: f64) -> bool {
     // f' = a0 + a1 t + a2 t^2 + a3 t^3.
     let (a0, a1, a2, a3) = (c1, 2.0 * c2, 3.0 * c3, 4.0 * c4);
     let d_scale = a0.abs() + (a1.abs() + (a2.abs() + a3.abs() * h) * h) * h;
-    let f_scale = c0.abs() + (c1.abs() + (c2.abs() + (c3.abs() + c4.abs() * h) * h) * h) * h;
+    let f_scale = terms_size(f, h);
     let floor = RECEDING_MARGIN * d_scale;
     // NaN anywhere fails every test below and keeps the pair.
     if floor.is_nan() || floor <= 0.0 || (c0 > 0.0 && c0 < RECEDING_MARGIN * f_scale) {
@@ -172,27 +189,49 @@ fn clear(f: &Poly, horizon: f64) -> bool {
     if q2 > 0.0 && c1 < 0.0 && -c1 < 2.0 * q2 * h {
         least = least.min(c0 - c1 * c1 / (4.0 * q2));
     }
-    let scale = c0.abs() + (c1.abs() + (c2.abs() + (c3.abs() + c4.abs() * h) * h) * h) * h;
     // NaN anywhere fails the test and keeps the pair.
-    least > RECEDING_MARGIN * scale
+    least > RECEDING_MARGIN * terms_size(f, h)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
 
-    /// A small deterministic generator (xorshift64*).
-    struct Rng(u64);
-
-    impl Rng {
-        fn range(&mut self, lo: f64, hi: f64) -> f64 {
-            self.0 ^= self.0 >> 12;
-            self.0 ^= self.0 << 25;
-            self.0 ^= self.0 >> 27;
-            let unit = (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64;
-            lo + (hi - lo) * unit / (1u64 << 53) as f64
-        }
+    /// A random pair in space: a ball in the air against one on the cloth (a quarter of
+    /// them: no relative fall) or in the air, touching now when `touching` or else up to
+    /// 30 cm apart, over a window up to 0.5 s; its relative motions, contact function and
+    /// window.
+    #[allow(clippy::type_complexity)]
+    fn random_pair(
+        rng: &mut ChaCha8Rng,
+        i: usize,
+        touching: bool,
+    ) -> ((Vec2, Vec2, Vec2), (f64, f64, f64), Poly, f64) {
+        let g = 9.80665;
+        let angle = rng.random_range(0.0..std::f64::consts::TAU);
+        let gap = if touching {
+            0.0
+        } else {
+            rng.random_range(0.0..0.3)
+        };
+        let dir = Vec2::new(angle.cos(), angle.sin());
+        let dz = rng.random_range(-CONTACT..CONTACT);
+        let dp = dir * ((CONTACT * CONTACT - dz * dz).sqrt() + gap);
+        let dv = Vec2::new(rng.random_range(-3.0..3.0), rng.random_range(-3.0..3.0));
+        let da = Vec2::new(rng.random_range(-2.0..2.0), rng.random_range(-2.0..2.0));
+        let (dvz, daz) = (
+            rng.random_range(-3.0..3.0),
+            if i.is_multiple_of(4) { 0.0 } else { g },
+        );
+        let horizon = rng.random_range(0.0..0.5);
+        let (plane, height) = ((dp, dv, da), (dz, dvz, daz));
+        (plane, height, contact_poly(plane, height, CONTACT), horizon)
     }
+
+    /// Two pool balls' contact distance, m.
+    const CONTACT: f64 = 0.05715;
 
     /// Two answers of a contact search within `[0, h]` agree: both none, or both at the same
     /// time to within the rounding of the root (16 ulps; 16 ulps of the terms' sizes over the
@@ -220,30 +259,13 @@ mod tests {
     /// share (pairs parting, pairs passing), or it would save nothing.
     #[test]
     fn culls_reject_only_pairs_the_search_finds_apart() {
-        let (contact, g) = (0.05715, 9.80665);
-        let mut rng = Rng(51);
+        let mut rng = ChaCha8Rng::seed_from_u64(51);
         let (mut culled, mut cleared, mut contacts, n) = (0, 0, 0, 200_000);
         for i in 0..n {
-            let angle = rng.range(0.0, std::f64::consts::TAU);
             // A third of the pairs touch now (just resolved), the rest are apart.
-            let gap = if i % 3 == 0 { 0.0 } else { rng.range(0.0, 0.3) };
-            let dir = Vec2::new(angle.cos(), angle.sin());
-            let dz = rng.range(-contact, contact);
-            let across = (contact * contact - dz * dz).sqrt() + gap;
-            let dp = dir * across;
-            let dv = Vec2::new(rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
-            let da = Vec2::new(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
-            let (dvz, daz) = (rng.range(-3.0, 3.0), if i % 4 == 0 { 0.0 } else { g });
-            let horizon = rng.range(0.0, 0.5);
-            let f = Poly::new([
-                dp.length_squared() + dz * dz - contact * contact,
-                2.0 * (dp.dot(dv) + dz * dvz),
-                dv.length_squared() + dp.dot(da) + dvz * dvz + dz * daz,
-                dv.dot(da) + dvz * daz,
-                0.25 * (da.length_squared() + daz * daz),
-            ]);
-            let search = first_contact(&f, horizon, tolerance(contact));
-            let answer = space_contact((dp, dv, da), (dz, dvz, daz), contact, horizon);
+            let (plane, height, f, horizon) = random_pair(&mut rng, i, i % 3 == 0);
+            let search = first_contact(&f, horizon, tolerance(CONTACT));
+            let answer = space_contact(plane, height, CONTACT, horizon);
             assert!(
                 same_contact(&f, horizon, answer, search),
                 "pair {i}: {answer:?} vs {search:?}"
@@ -270,26 +292,11 @@ mod tests {
     /// apart); and it answers most contacts, or it would save nothing.
     #[test]
     fn falling_search_finds_the_general_search_contact() {
-        let (contact, g) = (0.05715, 9.80665);
-        let mut rng = Rng(7);
+        let mut rng = ChaCha8Rng::seed_from_u64(7);
         let (mut answered, mut contacts, n) = (0, 0, 100_000);
         for i in 0..n {
-            let angle = rng.range(0.0, std::f64::consts::TAU);
-            let dir = Vec2::new(angle.cos(), angle.sin());
-            let dz = rng.range(-contact, contact);
-            let dp = dir * ((contact * contact - dz * dz).sqrt() + rng.range(0.0, 0.3));
-            let dv = Vec2::new(rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
-            let da = Vec2::new(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
-            let (dvz, daz) = (rng.range(-3.0, 3.0), if i % 4 == 0 { 0.0 } else { g });
-            let horizon = rng.range(0.0, 0.5);
-            let f = Poly::new([
-                dp.length_squared() + dz * dz - contact * contact,
-                2.0 * (dp.dot(dv) + dz * dvz),
-                dv.length_squared() + dp.dot(da) + dvz * dvz + dz * daz,
-                dv.dot(da) + dvz * daz,
-                0.25 * (da.length_squared() + daz * daz),
-            ]);
-            let search = first_contact(&f, horizon, tolerance(contact));
+            let (_, _, f, horizon) = random_pair(&mut rng, i, false);
+            let search = first_contact(&f, horizon, tolerance(CONTACT));
             contacts += usize::from(search.is_some());
             if let Some(t) = falling_contact(&f, horizon) {
                 assert!(
