@@ -188,21 +188,22 @@ fn break_shot(state: &mut GameState, shot: &ShotSummary, call: Call) -> Result<V
     } else {
         state.fouls[me] + 1
     };
+    let verdict = |fouls, outcome, next| Verdict {
+        shooter: breaker,
+        break_shot: true,
+        push_out: false,
+        fouls,
+        outcome,
+        assigned: None,
+        next,
+    };
     if shot.is_off_table(8) {
         // WPA 3.8: the 8 driven off the table loses the rack, on the break too.
         let outcome = Outcome::GameOver {
             winner: breaker.other(),
             reason: WinReason::EightOffTable,
         };
-        return Ok(Verdict {
-            shooter: breaker,
-            break_shot: true,
-            push_out: false,
-            fouls,
-            outcome,
-            assigned: None,
-            next: None,
-        });
+        return Ok(verdict(fouls, outcome, None));
     }
     // The table stays open after the break, whatever dropped (WPA 3.5).
     let (outcome, mut next) = if eight {
@@ -244,15 +245,7 @@ fn break_shot(state: &mut GameState, shot: &ShotSummary, call: Call) -> Result<V
         (Outcome::Passes, next)
     };
     next.spot.extend(spot);
-    Ok(Verdict {
-        shooter: breaker,
-        break_shot: true,
-        push_out: false,
-        fouls,
-        outcome,
-        assigned: None,
-        next: Some(next),
-    })
+    Ok(verdict(fouls, outcome, Some(next)))
 }
 
 /// Puts the object balls driven off the table (the 8 apart: it loses the rack, 3.8) back

@@ -268,7 +268,7 @@ impl GameRules for PoolMatch {
         let what = what_happened(&summary, call, &verdict.fouls);
         let mut text = if self.sandbox() {
             // Free play judges no fouls: what the stroke did, in words, no "legal".
-            what.clone()
+            what
         } else if what.is_empty() {
             verdict.reason()
         } else {
@@ -352,14 +352,17 @@ impl GameRules for PoolMatch {
     fn status_while(&self, off: &[u8]) -> Vec<String> {
         let rack = self.rack();
         let next = self.next();
-        let mut lines = Vec::new();
-        if rack.over.is_none() && !next.break_shot && !self.sandbox() {
-            lines.push(format!("ball on: {}", ball_on_text(rack, next)));
-        }
-        if self.sandbox() {
+        let balls_left = || {
             let left = rack.on_table.iter().filter(|b| !off.contains(b));
-            lines.push(format!("balls left: {}", left.count()));
-            return lines;
+            format!("balls left: {}", left.count())
+        };
+        if self.sandbox() {
+            // Free play: any ball is on (the turn says so), no groups, no fouls.
+            return vec![balls_left()];
+        }
+        let mut lines = Vec::new();
+        if rack.over.is_none() && !next.break_shot {
+            lines.push(format!("ball on: {}", ball_on_text(rack, next)));
         }
         if rack.game == Game::EightBall {
             lines.push(match rack.group(Seat::A) {
@@ -381,8 +384,7 @@ impl GameRules for PoolMatch {
                     .join(", "),
             });
         } else {
-            let left = rack.on_table.iter().filter(|b| !off.contains(b));
-            lines.push(format!("balls left: {}", left.count()));
+            lines.push(balls_left());
         }
         lines.push(format!(
             "fouls in a row: {} {}, {} {}",
