@@ -151,10 +151,10 @@ fn place_tool_key(
     if !keys.just_pressed(KeyCode::KeyP) {
         return;
     }
-    match (*state.get(), !referee.edits) {
+    match (*state.get(), referee.edits) {
         (Practice::Placing, _) => next.set(Practice::Off),
-        (Practice::Off, false) => next.set(Practice::Placing),
-        (Practice::Off, true) => {
+        (Practice::Off, true) => next.set(Practice::Placing),
+        (Practice::Off, false) => {
             status.note = Some("balls are placed in free play, not in a match".to_owned());
         }
         (Practice::Drill, _) => {

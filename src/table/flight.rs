@@ -20,11 +20,24 @@ pub fn plugin(app: &mut App) {
     );
 }
 
-/// The shadow's mesh (a unit disc) and material (black, half transparent, unlit).
+/// The shadow's mesh (a unit disc); each shadow has a material of its own
+/// ([`shadow_material`]), as each fades with its own ball's height.
 #[derive(Resource, Debug, Clone)]
 struct ShadowAssets {
     mesh: Handle<Mesh>,
-    material: Handle<StandardMaterial>,
+}
+
+/// The shadow's opacity under a ball on the cloth.
+const SHADOW_ALPHA: f32 = 0.45;
+
+/// A shadow's material: black, unlit, [`SHADOW_ALPHA`] opaque until its ball rises.
+fn shadow_material() -> StandardMaterial {
+    StandardMaterial {
+        base_color: Color::srgba(0.0, 0.0, 0.0, SHADOW_ALPHA),
+        alpha_mode: AlphaMode::Blend,
+        unlit: true,
+        ..default()
+    }
 }
 
 /// The shadow of the ball it names.
@@ -35,19 +48,9 @@ struct FlightShadow;
 /// touching balls is 1e-7 m).
 const SHADOW_MIN_HEIGHT: f64 = 1e-3;
 
-fn create_shadow_assets(
-    mut commands: Commands,
-    mut meshes: ResMut<Assets<Mesh>>,
-    mut materials: ResMut<Assets<StandardMaterial>>,
-) {
+fn create_shadow_assets(mut commands: Commands, mut meshes: ResMut<Assets<Mesh>>) {
     commands.insert_resource(ShadowAssets {
         mesh: meshes.add(Circle::new(1.0)),
-        material: materials.add(StandardMaterial {
-            base_color: Color::srgba(0.0, 0.0, 0.0, 0.45),
-            alpha_mode: AlphaMode::Blend,
-            unlit: true,
-            ..default()
-        }),
     });
 }
 
@@ -62,15 +65,23 @@ pub fn shadow_size(r: f64, h: f64) -> (f64, f64) {
 /// Balls whose motion changed.
 type MovedBall = (With<Ball>, Changed<BallMotion>);
 
-/// Puts a shadow under every ball in the air (spawned on first need) and hides it once the
-/// ball is down, for the balls whose motion changed; despawns the shadows of balls gone.
+/// A shadow's place, look and material.
+type ShadowParts<'a> = (
+    &'a mut Transform,
+    &'a mut Visibility,
+    &'a MeshMaterial3d<StandardMaterial>,
+);
+
+/// Puts a shadow under every ball in the air (spawned on first need), sized and faded by its
+/// height, and hides it once the ball is down, for the balls whose motion changed; despawns
+/// the shadows of balls gone.
 fn follow_shadows(
     mut commands: Commands,
-    assets: Option<Res<ShadowAssets>>,
+    (assets, mut materials): (Option<Res<ShadowAssets>>, ResMut<Assets<StandardMaterial>>),
     spec: Res<TableSpec>,
     balls: Query<(Entity, &BallMotion), MovedBall>,
     mut gone: RemovedComponents<Ball>,
-    mut shadows: Query<(&mut Transform, &mut Visibility), With<FlightShadow>>,
+    mut shadows: Query<ShadowParts, With<FlightShadow>>,
     mut of_ball: Local<HashMap<Entity, Entity>>,
 ) {
     let Some(assets) = assets else { return };
@@ -89,7 +100,7 @@ fn follow_shadows(
                         FlightShadow,
                         Name::new("Flight shadow"),
                         Mesh3d(assets.mesh.clone()),
-                        MeshMaterial3d(assets.material.clone()),
+                        MeshMaterial3d(materials.add(shadow_material())),
                         NotShadowCaster,
                         Transform::from_translation(Vec3::splat(1e4)),
                         Visibility::Hidden,
@@ -99,7 +110,7 @@ fn follow_shadows(
             }
             continue;
         };
-        let Ok((mut transform, mut visibility)) = shadows.get_mut(shadow) else {
+        let Ok((mut transform, mut visibility, material)) = shadows.get_mut(shadow) else {
             continue;
         };
         let wanted = if flying {
@@ -109,11 +120,14 @@ fn follow_shadows(
         };
         visibility.set_if_neq(wanted);
         if flying {
-            let (radius, _) = shadow_size(spec.ball_radius, motion.height);
+            let (radius, opacity) = shadow_size(spec.ball_radius, motion.height);
             // Just above the cloth, below the aiming aid's lines (2 mm).
             transform.translation = to_world(motion.position.extend(0.001));
             transform.rotation = flat;
             transform.scale = Vec3::splat(radius as f32);
+            if let Some(mut m) = materials.get_mut(&material.0) {
+                m.base_color.set_alpha(SHADOW_ALPHA * opacity as f32);
+            }
         }
     }
 }

@@ -11,7 +11,7 @@ use super::live_windows;
 use super::new_game::{NewGameForm, seat_rows};
 use crate::{
     play::computer::{Computer, HintRequested},
-    play::game::{GameChoice, NewGameRequested, Rules, Turn, TurnCommand},
+    play::game::{FREE_PLAY, GameChoice, NewGameRequested, Rules, Turn, TurnCommand},
     practice::{DrillBests, DrillList, DrillRequested},
     settings::{TableSetup, rack_style_label, table_choices, table_label},
     sim::{Solver, clock_seed},
@@ -361,7 +361,8 @@ fn new_game_form(ui: &mut egui::Ui, state: &mut GameParam) {
                 });
         });
     }
-    if form.game.sandbox() {
+    // The drills are played from free play's table (their own position, their own tries).
+    if form.game == FREE_PLAY {
         drill_row(ui, form, &state.drills, &state.bests);
     } else {
         form.drill = None;

@@ -43,15 +43,6 @@ impl GameChoice {
         self.entry().map_or("unknown game", |e| e.label)
     }
 
-    /// Whether it is the sandbox whose table the player sets by hand
-    /// ([`billiards_rules::GameRules::sandbox`], asked of a game started for the question).
-    pub fn sandbox(self) -> bool {
-        let settings = billiards_rules::catalog::MatchSettings::new(Default::default(), 1, 0);
-        self.entry()
-            .and_then(|e| e.start(&settings).ok())
-            .is_some_and(|g| g.sandbox())
-    }
-
     /// What the match's length counts ("race to", "best of", "points to") and its usual
     /// length.
     pub fn length(self) -> (&'static str, u32) {
@@ -85,7 +76,7 @@ impl From<Game> for GameChoice {
 /// Starts a new game (the dialog's Start).
 #[derive(Message, Debug, Clone, PartialEq, Eq)]
 pub struct NewGameRequested {
-    /// The game; free play is the sandbox ([`GameChoice::sandbox`]).
+    /// The game; free play ([`FREE_PLAY`]) is the sandbox.
     pub game: GameChoice,
     /// The players' names.
     pub players: [String; 2],
