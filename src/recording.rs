@@ -20,12 +20,7 @@ use crate::sim::{
 pub fn plugin(app: &mut App) {
     app.init_resource::<RecordingsFolder>()
         .init_resource::<Autosave>()
-        .add_systems(
-            Update,
-            save_finished_shot
-                .after(crate::sim::respot_after_scratch)
-                .in_set(SimSystems::Flow),
-        )
+        .add_systems(Update, save_finished_shot.in_set(SimSystems::Flow))
         // After the flow and the tools that ask for a new table (they order themselves before
         // it), before Commands, where the rack replaces the game.
         .configure_sets(

@@ -10,7 +10,7 @@ use billiards::{
     play::game,
     practice::{
         self, DrillCommand, DrillList, DrillRequested, DrillSession, EditRequested, Placing,
-        PositionRequested, Practice, placing, position::Origin,
+        PositionRequested, Practice, drill::drill_game, placing, position::Origin,
     },
     sim::{RackRequested, ShotRequested, SimStatus, Solver},
 };
@@ -27,6 +27,19 @@ fn at_rest(app: &App) -> bool {
     app.world().resource::<Solver>().simulation().is_at_rest()
 }
 
+/// The drill session in play: the game in play behind the interface.
+fn session(app: &App) -> billiards_rules::drill_game::DrillGame {
+    drill_game(app.world().resource::<game::Rules>())
+        .expect("a drill session is the game in play")
+        .clone()
+}
+
+/// The log of the try in play (the game in play's).
+fn try_log(app: &App) -> billiards_rules::StrokeLog {
+    let rules = app.world().resource::<game::Rules>();
+    rules.live.as_ref().unwrap().log.clone()
+}
+
 /// Starts the drill of `file` and runs the frames that set it up: the session's drill and
 /// its balls (number and centre, the cue ball first), checked to be on the table.
 fn start_drill(app: &mut App, file: &str) -> (billiards_rules::Drill, Vec<(u8, DVec2)>) {
@@ -36,7 +49,7 @@ fn start_drill(app: &mut App, file: &str) -> (billiards_rules::Drill, Vec<(u8, D
         app.update();
     }
     assert_eq!(practice_state(app), Practice::Drill, "{file}");
-    let drill = app.world().resource::<DrillSession>().drill().clone();
+    let drill = session(app).drill;
     let start: Vec<(u8, DVec2)> = drill
         .position
         .balls
@@ -58,8 +71,9 @@ fn drill_index(app: &App, file: &str) -> usize {
 
 /// The stop-shot drill from the dialog's request: its balls on the table, a shot straight at
 /// the 1 judged when the balls rest, exactly as `Drill::judge` judges the same shot on the
-/// pure solver from the same start (the game adds nothing of its own); Next try puts the
-/// balls back where the drill has them.
+/// pure solver from the same start (the game adds nothing of its own); the session is the
+/// game in play behind the interface, its try's end no verdict to read but a shot refused
+/// until Next try, which puts the balls back where the drill has them; leaving is free play.
 #[test]
 fn a_drill_attempt_is_judged_as_the_pure_solver_judges_it() {
     let mut app = app();
@@ -78,20 +92,27 @@ fn a_drill_attempt_is_judged_as_the_pure_solver_judges_it() {
     };
     app.world_mut().write_message(ShotRequested::from(shot));
     app.update();
-    common::update_until(&mut app, |app| {
-        at_rest(app) && app.world().resource::<DrillSession>().judged()
-    });
-    let session = app.world().resource::<DrillSession>().clone();
-    let judged = session.game.last.clone().unwrap();
-    assert_eq!(session.score().tries, 1);
+    common::update_until(&mut app, |app| at_rest(app) && session(app).try_over());
+    app.update();
+    let game = session(&app);
+    let judged = game.last.clone().unwrap();
+    assert_eq!(game.score.tries, 1);
     assert_eq!(judged.reasons.len(), drill.goals.len(), "{judged:?}");
+    assert_eq!(
+        *app.world().resource::<State<game::Turn>>().get(),
+        game::Turn::GameOver,
+        "the try is over"
+    );
+    let refused = app
+        .world()
+        .resource::<billiards::sim::Referee>()
+        .refuse_shot
+        .clone();
+    assert_eq!(refused.as_deref(), Some("the try is over: Next try"));
     // Judged through the one interface and logged as any game's stroke: the try's end.
-    assert_eq!(session.log.strokes.len(), 1);
-    let end = session.log.strokes[0]
-        .judgement
-        .end
-        .clone()
-        .expect("the try ended");
+    let log = try_log(&app);
+    assert_eq!(log.strokes.len(), 1);
+    let end = log.strokes[0].judgement.end.clone().expect("the try ended");
     assert!(end.reason.starts_with("try 1 "), "{}", end.reason);
 
     // The same shot on the pure solver, from the drill's own start.
@@ -115,14 +136,19 @@ fn a_drill_attempt_is_judged_as_the_pure_solver_judges_it() {
     for _ in 0..3 {
         app.update();
     }
-    let session = app.world().resource::<DrillSession>();
-    assert!(!session.judged());
-    assert_eq!(session.score().tries, 1);
+    let game = session(&app);
+    assert!(!game.try_over());
+    assert_eq!(game.score.tries, 1);
+    assert_eq!(game.try_text(), "try 2 of 10");
     assert!(
-        session.log.strokes.is_empty(),
+        try_log(&app).strokes.is_empty(),
         "a new try, a new recording and log"
     );
     assert_eq!(layout(&app), start, "Next try: the drill's position again");
+    assert_eq!(
+        *app.world().resource::<State<game::Turn>>().get(),
+        game::Turn::Aiming
+    );
 
     app.world_mut().write_message(DrillCommand::Leave);
     for _ in 0..2 {
@@ -130,6 +156,11 @@ fn a_drill_attempt_is_judged_as_the_pure_solver_judges_it() {
     }
     assert_eq!(practice_state(&app), Practice::Off);
     assert!(app.world().get_resource::<DrillSession>().is_none());
+    let rules = app.world().resource::<game::Rules>();
+    assert!(
+        rules.live.as_ref().is_some_and(|g| g.rules.sandbox()),
+        "left for free play"
+    );
 }
 
 /// The table as a code and back: a standard rack, broken and at rest, copied (balls only,
@@ -344,7 +375,7 @@ fn each_standard_drill_loads_plays_and_scores() {
         loop {
             common::update_until(&mut app, |app| at_rest(app));
             app.update();
-            if app.world().resource::<DrillSession>().judged() {
+            if session(&app).try_over() {
                 break;
             }
             shots += 1;
@@ -363,9 +394,9 @@ fn each_standard_drill_loads_plays_and_scores() {
             }));
             app.update();
         }
-        let session = app.world().resource::<DrillSession>();
-        let last = session.game.last.clone().unwrap();
-        assert_eq!(session.score().tries, 1, "{file}");
+        let game = session(&app);
+        let last = game.last.clone().unwrap();
+        assert_eq!(game.score.tries, 1, "{file}");
         assert!((0.0..=100.0).contains(&last.score), "{file}: {last:?}");
         assert_eq!(last.reasons.len(), drill.goals.len(), "{file}: {last:?}");
         app.world_mut().write_message(DrillCommand::Leave);
@@ -558,6 +589,35 @@ fn free_play_is_the_sandbox_behind_the_interface() {
         "{said}"
     );
     assert_eq!(status.ball_in_hand, Some(HandRule::Respot), "it may slide");
+    // Slid along the head string; beyond the side cushion it is held at the cushion. The
+    // solver and the recording get the placement.
+    for (wanted_y, expected_y) in [(0.2, 0.2), (5.0, spec.width / 2.0 - spec.ball_radius)] {
+        let mut query = app.world_mut().query::<(
+            &billiards::table::balls::Ball,
+            &mut billiards::table::balls::BallMotion,
+        )>();
+        let (_, mut motion) = query
+            .iter_mut(app.world_mut())
+            .find(|(ball, _)| ball.number == 0)
+            .unwrap();
+        billiards::sim::move_ball_in_hand(&spec, &mut motion, wanted_y);
+        app.update();
+        let cue = app.world().resource::<Solver>().simulation().ball(0);
+        assert_eq!(
+            (cue.position.x, cue.position.y),
+            (spec.head_spot().x, expected_y)
+        );
+    }
+    let placed = &app
+        .world()
+        .resource::<Solver>()
+        .recorder()
+        .recording()
+        .inputs;
+    assert!(matches!(
+        placed.last().unwrap().action,
+        billiards_physics::recording::Action::Place { .. }
+    ));
     let first = app.world().resource::<Autosave>().file.clone().unwrap();
     let log = |file: &std::path::Path| match billiards_rules::RulesLog::beside(file) {
         Some((_, Ok(billiards_rules::RulesLog::Strokes(log)))) => log,

@@ -1,15 +1,14 @@
-//! Drill sessions in the game: the drill's position set up for each try, every stroke judged
-//! through the one game interface by the session's [`DrillGame`] (the position's rules and
-//! the drill's goals, [`billiards_rules::Drill::judge`]) from the solver's own events, the
-//! tries counted, each try's log ([`StrokeLog`]) saved beside its recording, and the best
-//! session of each drill kept in the settings file. The list of drills is in
+//! Drill sessions in the game: a drill is a one-player game behind the one interface
+//! ([`DrillGame`]: the position's rules and the drill's goals,
+//! [`billiards_rules::Drill::judge`]), the game in play in [`Rules`] like any other, so the
+//! game's own flow judges each stroke from the solver's events and logs each try beside its
+//! recording. Here: the drill's position set up for each try, the notes, and the best session
+//! of each drill kept in the settings file. The list of drills is in
 //! [`super::drill_list`] (its items re-exported here).
 use std::collections::BTreeMap;
 
 use bevy::prelude::*;
-use billiards_rules::{
-    Drill, DrillScore, GameRules, StrokeEntry, StrokeLog, drill_game::DrillGame,
-};
+use billiards_rules::{Drill, DrillScore, drill_game::DrillGame};
 use serde::{Deserialize, Serialize};
 
 pub use super::drill_list::{DrillList, USER_PREFIX, drills_folder, file_name, save_drill};
@@ -18,11 +17,7 @@ use super::{
     state::Practice,
 };
 use crate::{
-    play::game::{
-        DialogOpen,
-        stroke::{judge_last_stroke, log_stroke},
-    },
-    recording::RecordingsFolder,
+    play::game::{DialogOpen, LiveGame, Rules},
     sim::{ShotFinished, SimStatus, Solver},
 };
 
@@ -103,63 +98,52 @@ pub enum DrillCommand {
     Leave,
 }
 
-/// A drill in session: a one-player game behind the one interface ([`DrillGame`]).
-#[derive(Resource, Debug, Clone, PartialEq)]
+/// A drill in session: which drill file it plays and how its session compared with the
+/// best. The session itself is a one-player game behind the one interface ([`DrillGame`],
+/// [`billiards_rules::GameRules::solo`]) held in [`Rules`] like every game, its strokes judged and logged by
+/// the game's own flow; [`drill_game`] finds it there.
+#[derive(Resource, Debug, Clone, PartialEq, Eq)]
 pub struct DrillSession {
     /// The drill's file name (its key in [`DrillBests`]).
     pub file: String,
-    /// The session: the drill, the tally, the shots of the try in play, the last try's
-    /// judgement.
-    pub game: DrillGame,
-    /// The log of the try in play, saved beside its recording.
-    pub log: StrokeLog,
     /// The session ended with a new best.
     pub new_best: bool,
+    /// The session's tally has been offered to the [`DrillBests`].
+    pub kept: bool,
 }
 
 impl DrillSession {
-    /// A new session of `drill` (from file `file`), or why it cannot be played.
-    pub fn new(file: &str, drill: Drill) -> Result<Self, String> {
-        let ball = drill.position.params.unwrap_or_default().ball;
-        let game = DrillGame::new(drill, "Player".to_owned(), ball).map_err(|e| e.0)?;
-        let log = StrokeLog::new(&game).map_err(|e| e.0)?;
-        Ok(Self {
+    /// A session of the drill in file `file`, its tally not yet kept.
+    pub fn new(file: &str) -> Self {
+        Self {
             file: file.to_owned(),
-            game,
-            log,
             new_best: false,
-        })
-    }
-
-    /// The drill.
-    pub fn drill(&self) -> &Drill {
-        &self.game.drill
-    }
-
-    /// This session's tally.
-    pub fn score(&self) -> DrillScore {
-        self.game.score
-    }
-
-    /// The last attempt is judged: the next try waits for the player.
-    pub fn judged(&self) -> bool {
-        self.game.try_over()
-    }
-
-    /// Every try of the session taken.
-    pub fn over(&self) -> bool {
-        self.game.score.tries >= self.game.drill.tries
-    }
-
-    /// "try 3 of 10".
-    pub fn try_text(&self) -> String {
-        let tries = self.game.drill.tries;
-        let k = (self.game.score.tries + u32::from(!self.judged())).min(tries);
-        format!("try {k} of {tries}")
+            kept: false,
+        }
     }
 }
 
-/// Starts the requested drill: its position on the table, the dialog closed, the session.
+/// The drill session in play in `rules`, if the game in play is one.
+pub fn drill_game(rules: &Rules) -> Option<&DrillGame> {
+    rules
+        .live
+        .as_ref()?
+        .rules
+        .as_any()
+        .downcast_ref::<DrillGame>()
+}
+
+/// A session of `drill` for `player`, as the game in play: a one-player game of the
+/// interface, outside the catalog (its layout and table are the drill's position's).
+fn drill_live(drill: Drill, player: String) -> Result<LiveGame, String> {
+    let ball = drill.position.params.unwrap_or_default().ball;
+    let game = DrillGame::new(drill, player, ball).map_err(|e| e.0)?;
+    LiveGame::new(Box::new(game), None, [None, None], 0).map_err(|e| e.0)
+}
+
+/// Starts the requested drill: its session the game in play, its position on the table, the
+/// dialog closed.
+#[allow(clippy::too_many_arguments)]
 pub(super) fn start_drill(
     mut requests: MessageReader<DrillRequested>,
     list: Res<DrillList>,
@@ -167,6 +151,7 @@ pub(super) fn start_drill(
     mut commands: Commands,
     mut next: ResMut<NextState<Practice>>,
     mut dialog: ResMut<DialogOpen>,
+    mut rules: ResMut<Rules>,
     mut status: ResMut<SimStatus>,
 ) {
     let Some(&DrillRequested { index }) = requests.read().last() else {
@@ -176,80 +161,63 @@ pub(super) fn start_drill(
         status.note = Some("that drill cannot be played (its file was refused)".to_owned());
         return;
     };
-    let session = match DrillSession::new(file, drill.clone()) {
-        Ok(session) => session,
+    // The player of the game in play takes the drill.
+    let player = rules
+        .live
+        .as_ref()
+        .map_or_else(|| "Player 1".to_owned(), |g| g.rules.players()[0].clone());
+    let live = match drill_live(drill.clone(), player) {
+        Ok(live) => live,
         Err(why) => {
             status.note = Some(format!("that drill cannot be played: {why}"));
             return;
         }
     };
     dialog.0 = false;
+    rules.live = Some(live);
     positions.write(PositionRequested {
         position: drill.position.clone(),
         origin: Origin::Drill,
         own_physics: true,
     });
     status.note = Some(format!("drill: {}", drill.name));
-    commands.insert_resource(session);
+    commands.insert_resource(DrillSession::new(file));
     next.set(Practice::Drill);
 }
 
-/// After each shot of an attempt: judged through the interface ([`GameRules::judge`]) from
-/// the solver's events since its strike and the layouts before and after, and logged; when
-/// the attempt is over (one shot, or the end of the visit), counted, and at the session's
-/// last try, the best kept.
-pub(super) fn judge_attempt(
+/// After each stroke, judged and logged by the game's flow like any game's
+/// ([`crate::play::game`]): the note says whether the try goes on or how it ended, and at the
+/// session's last try its tally is offered to the bests.
+pub(super) fn after_stroke(
     mut finished: MessageReader<ShotFinished>,
     session: Option<ResMut<DrillSession>>,
-    solver: Option<Res<Solver>>,
-    (mut bests, folder): (ResMut<DrillBests>, Res<RecordingsFolder>),
+    rules: Res<Rules>,
+    mut bests: ResMut<DrillBests>,
     mut status: ResMut<SimStatus>,
 ) {
     if finished.read().count() == 0 {
         return;
     }
-    let (Some(mut session), Some(solver)) = (session, solver) else {
+    let (Some(mut session), Some(game)) = (session, drill_game(&rules)) else {
         return;
     };
-    if session.judged() {
-        status.note = Some("this try is judged: Next try for another".to_owned());
-        return;
-    }
-    let declared = billiards_rules::Declaration::None;
-    let Some(judged) = judge_last_stroke(&mut session.game, solver.simulation(), declared) else {
-        return;
-    };
-    let judgement = match judged {
-        Ok(judgement) => judgement,
-        Err(error) => {
-            status.note = Some(format!("the drill refused the shot: {error}"));
-            return;
-        }
-    };
-    let session = &mut *session;
-    let entry = StrokeEntry {
-        choices: Vec::new(),
-        declared,
-        judgement: judgement.clone(),
-    };
-    log_stroke(&mut session.log, entry, (&folder, &solver), &mut status);
-    if judgement.continues {
-        status.note = Some(format!(
-            "shot {} of the attempt: go on",
-            session.game.shots.len()
-        ));
-        return;
-    }
-    if let Some(attempt) = &session.game.last {
+    if !game.shots.is_empty() {
+        status.note = Some(format!("shot {} of the try: go on", game.shots.len()));
+    } else if let Some(attempt) = game.last.as_ref().filter(|_| game.try_over()) {
         status.note = Some(format!(
             "{}: score {:.0}",
             if attempt.success { "made it" } else { "missed" },
             attempt.score
         ));
     }
-    if session.over() {
-        let (file, score) = (session.file.clone(), session.game.score);
-        session.new_best = bests.offer(&file, score);
+    keep_if_over(&mut session, game, &mut bests);
+}
+
+/// At the session's end, its tally offered to the bests once.
+fn keep_if_over(session: &mut DrillSession, game: &DrillGame, bests: &mut DrillBests) {
+    if game.session_over() && !session.kept {
+        session.new_best = bests.offer(&session.file, game.score);
+        session.kept = true;
     }
 }
 
@@ -273,69 +241,92 @@ pub(super) fn end_drill_on_new_table(
     }
 }
 
-/// Enter is Next try once the attempt is judged.
+/// Enter is Next try while tries are left.
 pub(super) fn drill_keys(
     keys: Res<ButtonInput<KeyCode>>,
-    session: Option<Res<DrillSession>>,
+    rules: Res<Rules>,
     mut commands: MessageWriter<DrillCommand>,
 ) {
-    if keys.just_pressed(KeyCode::Enter) && session.is_some_and(|s| s.judged() && !s.over()) {
+    if keys.just_pressed(KeyCode::Enter) && drill_game(&rules).is_some_and(|g| !g.session_over()) {
         commands.write(DrillCommand::NextTry);
     }
 }
 
-/// The session's commands: the next try, a new session, leaving.
+/// The session's commands: the next try (the try in play given up first, counted as a miss,
+/// if it has shots: [`billiards_rules::GameRules::concede`]), a new session, leaving.
+#[allow(clippy::too_many_arguments)]
 pub(super) fn drill_commands(
     mut requests: MessageReader<DrillCommand>,
     session: Option<ResMut<DrillSession>>,
     mut positions: MessageWriter<PositionRequested>,
     mut commands: Commands,
     mut next: ResMut<NextState<Practice>>,
-    (mut status, mut rules): (ResMut<SimStatus>, ResMut<crate::play::game::Rules>),
+    mut bests: ResMut<DrillBests>,
+    (mut status, mut rules): (ResMut<SimStatus>, ResMut<Rules>),
 ) {
     let Some(&command) = requests.read().last() else {
         return;
     };
     let Some(mut session) = session else { return };
+    let Some(drill) = drill_game(&rules).map(|g| g.drill.clone()) else {
+        return;
+    };
+    if command == DrillCommand::Leave {
+        commands.remove_resource::<DrillSession>();
+        next.set(Practice::Off);
+        rules.free_play();
+        status.note = Some("drill left: free play".to_owned());
+        return;
+    }
+    let Some(game) = rules.live.as_mut() else {
+        return;
+    };
     match command {
-        DrillCommand::Leave => {
-            commands.remove_resource::<DrillSession>();
-            next.set(Practice::Off);
-            rules.free_play();
-            status.note = Some("drill left: free play".to_owned());
-            return;
+        DrillCommand::Restart => {
+            match drill_live(drill.clone(), game.rules.players()[0].clone()) {
+                Ok(fresh) => *game = fresh,
+                Err(why) => {
+                    status.note = Some(format!("the drill cannot restart: {why}"));
+                    return;
+                }
+            }
+            *session = DrillSession::new(&session.file);
         }
-        DrillCommand::Restart => match DrillSession::new(&session.file, session.drill().clone()) {
-            Ok(fresh) => *session = fresh,
-            Err(why) => {
-                status.note = Some(format!("the drill cannot restart: {why}"));
+        _ => {
+            if game.rules.concedes() {
+                // The try in play given up after a shot: a miss in the tally.
+                match game.rules.concede() {
+                    Ok(end) => status.note = Some(end.reason),
+                    Err(e) => status.note = Some(e.0),
+                }
+                if let Some(drill_game) = drill_game(&rules) {
+                    keep_if_over(&mut session, drill_game, &mut bests);
+                }
+            }
+            let Some(game) = rules.live.as_mut() else {
+                return;
+            };
+            if game.rules.end().is_some_and(|end| end.match_over) {
+                status.note = Some("the session is over: Restart for another".to_owned());
                 return;
             }
-        },
-        DrillCommand::NextTry if session.over() => {
-            status.note = Some("the session is over: Restart for another".to_owned());
-            return;
-        }
-        DrillCommand::NextTry if !session.judged() => {
-            // The try in play given up: its shots are dropped, the try not counted.
-            let fresh = session.drill().game_state();
-            session.game.shots.clear();
-            session.game.state = fresh;
-        }
-        DrillCommand::NextTry => {
-            if let Err(error) = session.game.next_game() {
+            // A try over: the next one; a try not begun: its position set again.
+            if game.rules.end().is_some()
+                && let Err(error) = game.begin_next()
+            {
                 status.note = Some(error.0);
                 return;
             }
         }
     }
     // The position again: a new recording, so a new log.
-    match StrokeLog::new(&session.game) {
-        Ok(log) => session.log = log,
-        Err(e) => status.note = Some(format!("the drill's log restarts empty: {e}")),
+    if let Some(game) = rules.live.as_mut()
+        && let Err(e) = game.restart_log()
+    {
+        status.note = Some(format!("the drill's log restarts empty: {e}"));
     }
     positions.write(PositionRequested {
-        position: session.drill().position.clone(),
+        position: drill.position,
         origin: Origin::Drill,
         own_physics: true,
     });
@@ -393,13 +384,15 @@ pub(super) fn save_as_drill(
 /// The drill's goals on the table: the pocket a ball must drop in ringed, the balls it
 /// names ringed, the cue ball's zone outlined.
 pub(super) fn draw_goals(
-    session: Option<Res<DrillSession>>,
+    rules: Res<Rules>,
     spec: Res<crate::table::geometry::TableSpec>,
     solver: Option<Res<Solver>>,
     mut gizmos: Gizmos,
 ) {
     use billiards_rules::{Goal, Zone};
-    let Some(session) = session else { return };
+    let Some(session) = drill_game(&rules) else {
+        return;
+    };
     let at = |p: bevy::math::DVec2| crate::table::geometry::to_world(p.extend(0.003));
     let flat = Quat::from_rotation_x(std::f32::consts::FRAC_PI_2);
     let gold = Color::srgb(1.0, 0.8, 0.1);
@@ -414,7 +407,7 @@ pub(super) fn draw_goals(
                 .map(|(b, _)| crate::sim::to_dvec2(b.position))
         })
     };
-    for goal in &session.drill().goals {
+    for goal in &session.drill.goals {
         let ball = match *goal {
             Goal::Pocket { ball, pocket, .. } => {
                 if let Some(hole) = pocket.and_then(|p| spec.pocket(p)) {

@@ -8,9 +8,9 @@
 //! - [`position`]: [`PositionRequested`] sets a position on the table; the current table
 //!   as a position; the clipboard.
 //! - [`drill_list`]: the drills listed (the standard set, the player's folder) and saved;
-//! - [`drill`]: a drill session: the drill's position, each attempt judged from the solver's
-//!   own history ([`billiards_rules::Drill::judge`]), the tries counted, the best kept in the
-//!   settings file ([`DrillBests`]).
+//! - [`drill`]: a drill session, a one-player game behind the one interface in play like any
+//!   game: the drill's position for each try, the best kept in the settings file
+//!   ([`DrillBests`]).
 //!
 //! The mode is one [`Practice`] state: free play, the Place tool, or a drill.
 
@@ -97,7 +97,7 @@ pub fn plugin(app: &mut App) {
             Update,
             (
                 drill::end_drill_on_new_table,
-                drill::judge_attempt,
+                drill::after_stroke,
                 drill::drill_commands,
                 drill::start_drill,
                 position::open_pending,

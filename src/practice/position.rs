@@ -97,10 +97,8 @@ pub(super) fn load_position(
         return;
     }
     let ended_match = rules.in_match();
-    if request.origin == Origin::Drill {
-        // The drill session judges the strokes (drill::judge_attempt).
-        rules.clear();
-    } else {
+    // A drill's own position: its session is the game in play already (drill.rs).
+    if request.origin != Origin::Drill {
         rules.free_play();
     }
     // A drill in session ends (drill::end_drill_on_new_table) unless this is its own.

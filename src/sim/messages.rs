@@ -100,13 +100,11 @@ pub struct SceneRequested {
 }
 
 /// What the game in play (`crate::play::game`, behind the one interface) asks of the
-/// simulation: it takes over the cue ball after a scratch (so the respot of a table without
-/// a game stays out of its way), says whether the table may be set by hand, and may refuse a
-/// shot (a choice or a call is pending). The default: no game, the table the player's.
+/// simulation: whether the table may be set by hand, and whether a shot must wait (a choice
+/// or a call is pending, the game is over). A scratch's cue ball is the rules' to put back
+/// (their judgement's `put`). The default: the table the player's.
 #[derive(Resource, Debug, Clone, PartialEq, Eq)]
 pub struct Referee {
-    /// A game judges the strokes: a scratch is its to handle.
-    pub active: bool,
     /// The table may be set by hand: balls placed, racks from the panel, scenes, a shot taken
     /// back (free play's sandbox, or no game); a match's table is its own.
     pub edits: bool,
@@ -119,7 +117,6 @@ pub struct Referee {
 impl Default for Referee {
     fn default() -> Self {
         Self {
-            active: false,
             edits: true,
             refuse_shot: None,
             rack_over: false,

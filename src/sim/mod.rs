@@ -26,9 +26,7 @@ mod undo;
 
 pub use commands::{carom_layout, snooker_layout};
 pub use messages::*;
-pub use respot::{
-    HandError, move_ball_in_hand, place_ball_in_hand, respot_after_scratch, respot_ball,
-};
+pub use respot::{HandError, move_ball_in_hand, place_ball_in_hand};
 pub use solver::{JAW_RADIUS, Solver, ball_motion, layout_now, params_for, table_for, to_dvec2};
 
 use commands::{
@@ -79,7 +77,6 @@ pub fn plugin(app: &mut App) {
             Update,
             (
                 advance_solver.in_set(SimSystems::Step),
-                respot_after_scratch.in_set(SimSystems::Flow),
                 (
                     apply_clock_settings,
                     follow_table_setup,

@@ -1,14 +1,11 @@
-//! Balls put back on the table: respots after a scratch, the cue ball in hand.
+//! The cue ball in hand: placed where the rules allow, or slid along the head string.
 
 use bevy::{math::DVec2, prelude::*};
 
 use billiards_rules::{CueBall, PlacementError};
 
 use super::{messages::*, solver::*};
-use crate::{
-    table::balls::{BallMotion, MotionState, Pocketed},
-    table::geometry::TableSpec,
-};
+use crate::{table::balls::BallMotion, table::geometry::TableSpec};
 
 /// Why the cue ball in hand cannot go there.
 #[derive(Debug, Clone, PartialEq)]
@@ -32,75 +29,6 @@ impl From<PlacementError> for HandError {
     fn from(error: PlacementError) -> Self {
         HandError::Rules(error)
     }
-}
-
-/// A table without a game (a drill session, which judges its own strokes): after a scratch
-/// the cue ball goes back on the head string, where [`billiards_rules::cue_ball_spot`] says
-/// (the rule the command line plays by too). The edit reaches the solver like any other
-/// (change detection). With a game in play, free play's sandbox included, the game's
-/// judgement puts it back instead ([`Referee::active`]).
-pub fn respot_after_scratch(
-    mut commands: Commands,
-    mut finished: MessageReader<ShotFinished>,
-    solver: Option<Res<Solver>>,
-    referee: Res<Referee>,
-    mut balls: Query<&mut BallMotion>,
-    mut status: ResMut<SimStatus>,
-) {
-    if !finished.read().any(|shot| shot.scratch) || referee.active {
-        return;
-    }
-    let Some(solver) = solver else { return };
-    let Some(cue) = solver.cue_ball() else { return };
-    // Over a cushion (issue 52) or into a pocket: said as it happened.
-    let how = if solver.simulation().ball(cue).motion == billiards_physics::Motion::OffTable {
-        "the cue ball flew off the table"
-    } else {
-        "scratch"
-    };
-    if respot_ball(&mut commands, &solver, cue, &mut balls, &mut status) {
-        status.note = Some(format!(
-            "{how}: the cue ball is back on the head string (ball in hand: drag it, or the \
-             slider moves it along the string)"
-        ));
-        status.ball_in_hand = Some(HandRule::Respot);
-    }
-}
-
-/// Puts ball `id` back on the table by an edit of its [`BallMotion`] (so the solver and the
-/// recording get it): the cue ball on the head string ([`billiards_rules::cue_ball_spot`]),
-/// an object ball on the foot string ([`billiards_rules::object_ball_spot`], WPA 1.4).
-/// Returns whether a free spot was found (if not, a note says so).
-pub fn respot_ball(
-    commands: &mut Commands,
-    solver: &Solver,
-    id: usize,
-    balls: &mut Query<&mut BallMotion>,
-    status: &mut SimStatus,
-) -> bool {
-    let number = solver.simulation().numbers()[id];
-    let spot = if number == 0 {
-        billiards_rules::cue_ball_spot(solver.simulation(), id)
-    } else {
-        billiards_rules::object_ball_spot(solver.simulation(), id)
-    };
-    let Some(spot) = spot else {
-        status.note = Some(format!("no free spot for the ball {number}"));
-        return false;
-    };
-    let entity = solver.entities[id];
-    let Ok(mut motion) = balls.get_mut(entity) else {
-        return false;
-    };
-    *motion = BallMotion {
-        position: to_dvec2(spot),
-        velocity: DVec2::ZERO,
-        state: MotionState::Stationary,
-        spin: bevy::math::DVec3::ZERO,
-        height: 0.0,
-    };
-    commands.entity(entity).remove::<Pocketed>();
-    true
 }
 
 /// Puts the cue ball in hand at `at` if the rules allow it there

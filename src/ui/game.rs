@@ -306,7 +306,11 @@ pub fn game_windows(
                 live_windows::verdict(ui, game, &mut state.commands)
             });
         }
-        Turn::GameOver if let Some(game) = &state.rules.live => {
+        // A drill's try over: the drill's own window offers the next try.
+        Turn::GameOver
+            if let Some(game) = &state.rules.live
+                && !game.rules.solo() =>
+        {
             centre("Game over").show(&ctx, |ui| {
                 live_windows::game_over(ui, game, &mut state.commands)
             });

@@ -6,9 +6,11 @@ use bevy_egui::egui;
 
 use super::layout::{BUTTON_WIDTH, PATH_FIELD_WIDTH, SUCCESS, WARNING};
 use crate::{
+    play::game::Rules,
     practice::{
         DrillBests, DrillCommand, DrillSession, EditRequested, Placing, PositionCode,
         PositionCommand, Practice, SaveDrillRequested,
+        drill::drill_game,
         placing::{ball_name, missing_numbers},
     },
     sim::{Referee, Solver},
@@ -78,6 +80,7 @@ pub struct PracticeParam<'w> {
     code: ResMut<'w, PositionCode>,
     form: ResMut<'w, PositionForm>,
     session: Option<Res<'w, DrillSession>>,
+    rules: Res<'w, Rules>,
     drills: MessageWriter<'w, DrillCommand>,
     save_drill: MessageWriter<'w, SaveDrillRequested>,
     bests: Res<'w, DrillBests>,
@@ -343,10 +346,10 @@ fn placing_rows(ui: &mut egui::Ui, state: &mut PracticeParam, at_rest: bool) {
 /// The drill in session: its goals, the try, the last attempt's reasons, the tally and the
 /// best, and its buttons (Enter is Next try); its top below the HUD's `hud_bottom`.
 pub fn drill_window(ctx: &egui::Context, state: &mut PracticeParam, hud_bottom: f32) {
-    let Some(session) = state.session.as_deref() else {
+    let (Some(session), Some(game)) = (state.session.as_deref(), drill_game(&state.rules)) else {
         return;
     };
-    let drill = session.drill();
+    let drill = &game.drill;
     let mut command = None;
     egui::Window::new(format!("Drill: {}", drill.name))
         .id(egui::Id::new("drill window"))
@@ -361,8 +364,8 @@ pub fn drill_window(ctx: &egui::Context, state: &mut PracticeParam, hud_bottom: 
                 ui.label(format!("- {}", goal.text()));
             }
             ui.separator();
-            ui.label(session.try_text());
-            if let Some(last) = &session.game.last {
+            ui.label(game.try_text());
+            if let Some(last) = game.last.as_ref().filter(|_| game.try_over()) {
                 let (verdict, colour) = if last.success {
                     ("made it", SUCCESS)
                 } else {
@@ -372,13 +375,10 @@ pub fn drill_window(ctx: &egui::Context, state: &mut PracticeParam, hud_bottom: 
                 for reason in &last.reasons {
                     ui.label(reason);
                 }
-            } else if !session.game.shots.is_empty() {
-                ui.label(format!(
-                    "shot {} of the attempt: go on",
-                    session.game.shots.len()
-                ));
+            } else if !game.shots.is_empty() {
+                ui.label(format!("shot {} of the try: go on", game.shots.len()));
             }
-            let s = session.score();
+            let s = game.score;
             ui.label(format!(
                 "this session: {} of {} made, best score {:.0}",
                 s.successes, s.tries, s.best
@@ -400,15 +400,18 @@ pub fn drill_window(ctx: &egui::Context, state: &mut PracticeParam, hud_bottom: 
                     ui.label("no session finished yet");
                 }
             }
-            if session.over() {
+            let over = game.session_over();
+            if over {
                 ui.label("the session is over");
             }
             ui.horizontal(|ui| {
                 let next = egui::Button::new("Next try (Enter)");
-                if ui
-                    .add_enabled(session.judged() && !session.over(), next)
-                    .clicked()
-                {
+                let hover = if game.shots.is_empty() {
+                    "the drill's position for the next try"
+                } else {
+                    "gives this try up: it counts as missed"
+                };
+                if ui.add_enabled(!over, next).on_hover_text(hover).clicked() {
                     command = Some(DrillCommand::NextTry);
                 }
                 if ui.button("Restart").clicked() {

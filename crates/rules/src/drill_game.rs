@@ -56,8 +56,16 @@ impl DrillGame {
         self.last.is_some() && self.shots.is_empty()
     }
 
-    fn session_over(&self) -> bool {
+    /// Every try of the session taken.
+    pub fn session_over(&self) -> bool {
         self.score.tries >= self.drill.tries
+    }
+
+    /// "try 3 of 10": the try in play, or the last one while it waits for the next.
+    pub fn try_text(&self) -> String {
+        let tries = self.drill.tries;
+        let k = (self.score.tries + u32::from(!self.try_over())).min(tries);
+        format!("try {k} of {tries}")
     }
 
     fn end_of_try(&self) -> Option<GameEnd> {
@@ -218,6 +226,40 @@ impl GameRules for DrillGame {
 
     fn end(&self) -> Option<GameEnd> {
         self.end_of_try()
+    }
+
+    fn solo(&self) -> bool {
+        true
+    }
+
+    /// The try in play given up after its first shot: counted as a miss (a session's tally
+    /// cannot be bettered by walking away from a try that went wrong). Before its first shot
+    /// there is nothing to give up: the position is set again instead.
+    fn concede(&mut self) -> Result<GameEnd, RulesError> {
+        if !self.concedes() {
+            return Err(RulesError(
+                "no try in play to give up: it has no shot yet".to_owned(),
+            ));
+        }
+        let shots = self.shots.len();
+        let attempt = Attempt {
+            success: false,
+            score: 0.0,
+            reasons: vec![format!(
+                "given up after {shots} shot{}",
+                if shots == 1 { "" } else { "s" }
+            )],
+            shots,
+        };
+        self.score.add(&attempt);
+        self.shots.clear();
+        self.last = Some(attempt);
+        self.end_of_try()
+            .ok_or_else(|| RulesError("the try did not end".to_owned()))
+    }
+
+    fn concedes(&self) -> bool {
+        !self.shots.is_empty() && !self.session_over()
     }
 
     fn match_winner(&self) -> Option<Seat> {

@@ -342,3 +342,54 @@ fn a_drill_position_is_a_rack_in_progress() {
     );
     assert_eq!(d.game_state().next.legal_first, vec![1, 2]);
 }
+
+/// A drill session is a one-player game behind the interface ([`GameRules::solo`]); a try
+/// given up after its first shot ([`GameRules::concede`]) ends as a miss, counted in the
+/// tally, and the next try starts from the drill's position; before a shot there is nothing
+/// to give up (refused, nothing counted).
+#[test]
+fn a_try_given_up_is_a_miss_of_a_one_player_game() {
+    use billiards_rules::GameRules;
+    use billiards_rules::drill_game::DrillGame;
+    let drill = Drill::load(&assets().join("01-stop-shot.json")).unwrap();
+    let tries = drill.tries;
+    let layout = drill.position.balls.len();
+    let mut game = DrillGame::new(drill, "Ann".to_owned(), Default::default()).unwrap();
+    assert!(game.solo(), "a drill is one player's");
+    assert!(!game.concedes());
+    assert!(game.concede().is_err(), "no shot yet: nothing to give up");
+    assert_eq!(game.score.tries, 0);
+    assert_eq!(game.try_text(), format!("try 1 of {tries}"));
+
+    // One shot of the try in play, then given up.
+    game.shots
+        .push(shot(Some(1), &[], &[(0, (0.0, 0.0)), (1, (0.5, 0.2))]));
+    assert!(game.concedes());
+    let end = game.concede().unwrap();
+    assert_eq!(
+        end.winner,
+        billiards_rules::Seat::B,
+        "the drill takes the try"
+    );
+    assert!(
+        end.reason.contains("given up after 1 shot"),
+        "{}",
+        end.reason
+    );
+    assert_eq!(end.match_over, tries == 1);
+    assert_eq!((game.score.tries, game.score.successes), (1, 0));
+    assert_eq!(game.end(), Some(end));
+    assert!(!game.concedes(), "the try is over");
+    assert_eq!(
+        game.try_text(),
+        format!("try 1 of {tries}"),
+        "the last try's"
+    );
+    assert_eq!(
+        game.next_game().unwrap().len(),
+        layout,
+        "the drill's position"
+    );
+    assert_eq!(game.try_text(), format!("try 2 of {tries}"));
+    assert_eq!(game.end(), None, "the next try in play");
+}

@@ -76,7 +76,6 @@ fn start_game(
     status: &mut SimStatus,
 ) {
     state.dialog.0 = false;
-    state.rules.clear();
     let GameChoice::Catalog(id) = request.game;
     match start_live(
         request,
@@ -86,7 +85,11 @@ fn start_game(
         &mut table.layouts,
     ) {
         Ok(game) => state.rules.live = Some(game),
-        Err(error) => status.note = Some(error),
+        Err(error) => {
+            // The table may be the new game's already: the match in play ends in free play.
+            state.rules.free_play();
+            status.note = Some(error);
+        }
     }
 }
 

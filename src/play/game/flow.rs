@@ -37,7 +37,7 @@ pub(super) fn follow_rules(
     let refuse_shot = match wanted {
         Turn::NewGame => Some("finish the new-game dialog first"),
         Turn::Verdict => Some("the verdict first: continue or choose"),
-        Turn::GameOver => Some("the rack is over"),
+        Turn::GameOver => Some("the game is over"),
         Turn::Calling => Some("click a pocket to call it first"),
         // WPA 3.8: the 8 must be called; every 10-ball shot too (9.5), though a shot
         // without one is the rules' to judge, so only the 8 is refused here.
@@ -49,9 +49,16 @@ pub(super) fn follow_rules(
         Turn::Aiming | Turn::BallInHand => None,
         Turn::ShotInPlay => None,
     }
-    .map(str::to_owned);
+    .map(|why| match (wanted, &live) {
+        // "the rack is over", "the frame is over", "the try is over: Next try".
+        (Turn::GameOver, Some((game, _))) => format!(
+            "the {} is over{}",
+            game.game_noun(),
+            if game.rules.solo() { ": Next try" } else { "" }
+        ),
+        _ => why.to_owned(),
+    });
     let wanted_referee = Referee {
-        active: rules.live.is_some(),
         edits: !rules.in_match(),
         refuse_shot,
         rack_over: wanted == Turn::GameOver,

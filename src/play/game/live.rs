@@ -18,8 +18,9 @@ use super::turn::Turn;
 pub struct LiveGame {
     /// The game's rules and state.
     pub rules: Box<dyn GameRules>,
-    /// Its catalog entry (id, label, what its length counts).
-    pub entry: &'static GameEntry,
+    /// Its catalog entry (id, label, what its length counts); `None` for a game not of the
+    /// catalog (a drill session, [`GameRules::solo`]).
+    pub entry: Option<&'static GameEntry>,
     /// Each seat's computer level; `None`: a human.
     pub seats: [Option<Level>; 2],
     /// The seed of the match; each game of it takes the next.
@@ -53,11 +54,12 @@ pub struct LiveGame {
 }
 
 impl LiveGame {
-    /// `rules` as started from `entry`, with each seat's computer level and the match's
-    /// seed; its log empty from the game as it stands.
+    /// `rules` as started from `entry` (`None`: a game not of the catalog, a drill), with
+    /// each seat's computer level and the match's seed; its log empty from the game as it
+    /// stands.
     pub fn new(
         rules: Box<dyn GameRules>,
-        entry: &'static GameEntry,
+        entry: Option<&'static GameEntry>,
         seats: [Option<Level>; 2],
         seed: u64,
     ) -> Result<Self, billiards_rules::RulesError> {
@@ -89,7 +91,7 @@ impl LiveGame {
         let entry = billiards_rules::catalog::find("free-play").ok()?;
         let settings = MatchSettings::new(players, 1, 0);
         let rules = entry.start(&settings).ok()?;
-        Self::new(rules, entry, seats, 0).ok()
+        Self::new(rules, Some(entry), seats, 0).ok()
     }
 
     /// Free play's game follows the table: when the recording in play is not the one its log
@@ -102,14 +104,17 @@ impl LiveGame {
         table: billiards_physics::Table,
         ball: billiards_physics::BallSpec,
     ) -> Result<(), billiards_rules::RulesError> {
-        if !self.rules.sandbox() || self.recording == Some(recording) {
+        let Some(entry) = self.entry.filter(|_| self.rules.sandbox()) else {
+            return Ok(());
+        };
+        if self.recording == Some(recording) {
             return Ok(());
         }
         let settings = MatchSettings {
             equipment: Some((table, ball)),
             ..MatchSettings::new(self.rules.players().clone(), 1, self.seed)
         };
-        let rules = self.entry.start(&settings)?;
+        let rules = entry.start(&settings)?;
         *self = Self {
             recording: Some(recording),
             last: self.last.take(),
@@ -176,19 +181,48 @@ impl LiveGame {
         }
     }
 
-    /// What one game of the match is called: a rack (pool), a frame (snooker), a game.
+    /// What one game of the match is called: a rack (pool), a frame (snooker), a try (a
+    /// drill), a game.
     pub fn game_noun(&self) -> &'static str {
-        match self.entry.length_noun {
-            "racks" => "rack",
-            "frames" => "frame",
+        if self.rules.solo() {
+            return "try";
+        }
+        match self.entry.map(|e| e.length_noun) {
+            Some("racks") => "rack",
+            Some("frames") => "frame",
             _ => "game",
         }
+    }
+
+    /// The next game of the match started ([`GameRules::next_game`], a drill's next try):
+    /// the last stroke and foul forgotten. Returns the layout to set, a new recording
+    /// (whose log [`LiveGame::restart_log`] starts).
+    pub fn begin_next(
+        &mut self,
+    ) -> Result<Vec<billiards_physics::BallSetup>, billiards_rules::RulesError> {
+        let balls = self.rules.next_game()?;
+        self.games += 1;
+        self.last = None;
+        self.last_foul = None;
+        self.verdict_shown = false;
+        Ok(balls)
+    }
+
+    /// A new recording of the game as it stands: a new log, the options taken forgotten.
+    pub fn restart_log(&mut self) -> Result<(), billiards_rules::RulesError> {
+        self.choices.clear();
+        self.log = StrokeLog::new(self.rules.as_ref())?;
+        Ok(())
     }
 
     /// The end of the game in words: "Ann wins the rack and the match: the 9 was pocketed
     /// legally", "Ann wins the game and the match: 40 points".
     pub fn end_text(&self) -> Option<String> {
         let end = self.rules.end()?;
+        if self.rules.solo() {
+            // One player: the reason says who made what ("try 2 made (score 100): ...").
+            return Some(end.reason);
+        }
         Some(format!(
             "{} wins the {}{}: {}",
             self.name(end.winner),

@@ -5,7 +5,7 @@
 use bevy::prelude::*;
 use billiards_physics::{Rack, Simulation, Vec2};
 use billiards_rules::catalog::{self, MatchSettings};
-use billiards_rules::{CueBallPlace, Declaration, GameRules, Need, Setup, StrokeEntry, StrokeLog};
+use billiards_rules::{CueBallPlace, Declaration, GameRules, Need, Setup, StrokeEntry};
 
 use super::call::{preselected_ball, proposed_call};
 use super::live::LiveGame;
@@ -52,7 +52,7 @@ pub(super) fn start_live(
     let rules = entry.start(&match_settings).map_err(cannot)?;
     let balls = rules.layout().map_err(cannot)?;
     layouts.write(layout_request(rules.as_ref(), balls));
-    LiveGame::new(rules, entry, request.computer, request.seed).map_err(cannot)
+    LiveGame::new(rules, Some(entry), request.computer, request.seed).map_err(cannot)
 }
 
 /// The layout `balls` of `game` as asked of the simulation; the recording is named after
@@ -159,14 +159,8 @@ pub(super) fn live_command(
             if game.rules.end().is_none_or(|end| end.match_over) {
                 return;
             }
-            match game.rules.next_game() {
-                Ok(balls) => {
-                    game.games += 1;
-                    game.last = None;
-                    game.last_foul = None;
-                    game.verdict_shown = false;
-                    new_layout(game, balls, layouts, status);
-                }
+            match game.begin_next() {
+                Ok(balls) => new_layout(game, balls, layouts, status),
                 Err(e) => refused(status, e),
             }
         }
@@ -181,11 +175,9 @@ fn new_layout(
     layouts: &mut MessageWriter<LayoutRequested>,
     status: &mut SimStatus,
 ) {
-    match StrokeLog::new(game.rules.as_ref()) {
-        Ok(log) => game.log = log,
-        Err(e) => status.note = Some(format!("the game log restarts empty: {e}")),
+    if let Err(e) = game.restart_log() {
+        status.note = Some(format!("the game log restarts empty: {e}"));
     }
-    game.choices.clear();
     layouts.write(layout_request(game.rules.as_ref(), balls));
 }
 
@@ -238,7 +230,9 @@ pub(super) fn judge_live(
     };
     log_stroke(&mut game.log, entry, (&folder, &solver), &mut status);
     let mut moves = judgement.put.clone();
-    if game.rules.sandbox() {
+    if game.rules.solo() {
+        // A drill's try: its window and the HUD say how it went; nothing to read first.
+    } else if game.rules.sandbox() {
         // Free play's strokes need no reading: the HUD says what each did, and the note
         // what the rules put back (a scratch's cue ball on the head string).
         if !moves.is_empty() {

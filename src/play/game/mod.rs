@@ -71,8 +71,7 @@ pub fn plugin(app: &mut App) {
                 follow_rules,
             )
                 .chain()
-                .in_set(SimSystems::Flow)
-                .after(crate::sim::respot_after_scratch),
+                .in_set(SimSystems::Flow),
         );
 }
 

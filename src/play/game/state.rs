@@ -117,7 +117,7 @@ pub enum TurnCommand {
 }
 
 /// The rules side of the live game: the game in play behind the one interface, free play's
-/// sandbox included; `None` only while a drill session judges the strokes instead.
+/// sandbox and a drill session included; `None` only if even free play could not start.
 #[derive(Resource, Debug)]
 pub struct Rules {
     /// The game in play, behind the one interface, if any.
@@ -140,11 +140,6 @@ impl Rules {
         self.live.as_ref().is_some_and(|g| !g.rules.sandbox())
     }
 
-    /// No game: a drill session takes the strokes.
-    pub fn clear(&mut self) {
-        self.live = None;
-    }
-
     /// Free play from now on: the sandbox in play is kept, a match ends and free play
     /// starts with its players (its table and log bound at its first stroke,
     /// [`LiveGame::sandbox`]).
@@ -152,10 +147,15 @@ impl Rules {
         if self.live.as_ref().is_some_and(|g| g.rules.sandbox()) {
             return;
         }
-        let (players, seats) = self.live.as_ref().map_or_else(
-            || (["Player 1".to_owned(), "Player 2".to_owned()], [None, None]),
-            |g| (g.rules.players().clone(), g.seats),
-        );
+        let (players, seats) = match &self.live {
+            // A drill's second seat is the drill itself: its player and a second one.
+            Some(g) if g.rules.solo() => (
+                [g.rules.players()[0].clone(), "Player 2".to_owned()],
+                [None, None],
+            ),
+            Some(g) => (g.rules.players().clone(), g.seats),
+            None => (["Player 1".to_owned(), "Player 2".to_owned()], [None, None]),
+        };
         self.live = LiveGame::sandbox(players, seats);
     }
 

@@ -329,6 +329,13 @@ pub trait GameRules: std::fmt::Debug + Send + Sync {
     fn sandbox(&self) -> bool {
         false
     }
+    /// A one-player game (a drill session): the second seat is no player but the game
+    /// itself, a judgement needs no reading (the game's own window and the HUD say it), and a
+    /// game's end is the end of one try, whose reason says all ([`GameEnd::reason`]). Every
+    /// game between two players: `false`.
+    fn solo(&self) -> bool {
+        false
+    }
     /// A copy behind a new box (the computer searches on copies).
     fn boxed_clone(&self) -> Box<dyn GameRules>;
     /// The whole state as JSON tagged with its kind ([`saved`]), for a rules log that
