@@ -456,7 +456,7 @@ fn places(game: &dyn GameRules, sim: &Simulation, turn: &Turn, count: usize) -> 
 }
 
 /// The best stroke of the turn in play, the cue ball placed if it is in hand: the one search
-/// skeleton ([`rounds::find`]) on the game's parts ([`Any`]).
+/// skeleton ([`rounds::find`]) on any game's parts: the places, the kept candidates, the rounds.
 pub fn best_stroke(
     game: &dyn GameRules,
     sim: &Simulation,
