@@ -6,19 +6,21 @@
 //! no aim, a fan of directions (1440 at hard: a quarter degree apart) in four speeds and
 //! nine tips; each candidate is simulated once without noise and judged by a copy of the
 //! game ([`GameRules::boxed_clone`]). The best kept (256 at hard) are sampled under the
-//! level's planning noise and refined in rounds ([`Rounds`], the skeleton the pool and
-//! snooker searches share). A value is read from the judgement ([`stroke_value`]): the game
-//! won or lost, a foul, the turn kept, the points scored. Ball in hand: the same search from
-//! a few places the rules accept. Options offered before a stroke: each is taken on a copy
-//! and valued by the best stroke that follows, from the chooser's side.
+//! level's planning noise and refined in rounds: the one search skeleton the pool and
+//! snooker searches run too ([`rounds::find`]; this game's parts: [`Searched`]). A value is
+//! read from the judgement ([`stroke_value`]): the game won or lost, a foul, the turn kept,
+//! the points scored. Ball in hand: the same search from a few places the rules accept.
+//! Options offered before a stroke: each is taken on a copy and valued by the best stroke
+//! that follows, from the chooser's side.
 //!
 //! Every random draw comes from [`stream`], named by the seed and the candidate, so the same
 //! seed gives the same decision on any number of threads.
 
+use crate::AiError;
 use crate::candidates::{Aim, Layout, direct_aims, rail_aims};
 use crate::level::Level;
 use crate::noise::{Noise, stream};
-use crate::rounds::{Rounds, Sampler, Stats, best_choice};
+use crate::rounds::{self, Rounds, Sampler, Searched, Stats, best_choice};
 use billiards_physics::{Event, PocketShape, Shot, Simulation, TipOffset, Vec2};
 use billiards_rules::{
     CueBallPlace, Declaration, GameRules, Judgement, Need, Seat, StrokeRecord, Turn,
@@ -311,17 +313,20 @@ fn fan_candidates(place: Option<Vec2>, fan: usize) -> Vec<Candidate> {
     out
 }
 
-/// The noisy samples of a candidate: executed under the planning noise and judged by a
-/// copy of the game ([`crate::rounds::Sampler`]).
-struct Generic<'a> {
+/// The search of a turn: the noisy samples of a candidate, executed under the planning noise
+/// and judged by a copy of the game ([`Sampler`]), and its parts of the one search skeleton
+/// ([`Searched`]).
+struct Any<'a> {
     game: &'a dyn GameRules,
     sim: &'a Simulation,
-    cue: u8,
+    turn: &'a Turn,
+    /// Where the cue ball lies: its strokes start there when it is not in hand.
+    from: Vec2,
     noise: Noise,
     seed: u64,
 }
 
-impl Sampler for Generic<'_> {
+impl Sampler for Any<'_> {
     type Cand = Candidate;
     type Scratch = ();
 
@@ -330,7 +335,8 @@ impl Sampler for Generic<'_> {
     fn sample(&self, c: &Candidate, id: u64, k: u64, _: &mut ()) -> Stats {
         let mut rng = stream(self.seed, id, k);
         let shot = self.noise.apply(c.shot, self.sim.params(), &mut rng);
-        let value = try_stroke(self.game, self.sim, self.cue, Candidate { shot, ..*c });
+        let cue = self.turn.cue_ball;
+        let value = try_stroke(self.game, self.sim, cue, Candidate { shot, ..*c });
         // A stroke the solver or the rules refuse counts as a foul.
         let v = value.unwrap_or(-1.0);
         Stats {
@@ -344,43 +350,55 @@ impl Sampler for Generic<'_> {
     }
 }
 
-/// The best of `all`: each simulated once without noise, the best kept and sampled under
-/// noise, refined in rounds ([`Rounds`], the skeleton every search shares).
-fn best_of(
-    game: &dyn GameRules,
-    sim: &Simulation,
-    cue: u8,
-    all: Vec<Candidate>,
-    level: Level,
-    seed: u64,
-) -> Option<Stroke> {
-    let e = effort(level);
-    let mut scanned: Vec<(f64, usize)> = all
-        .par_iter()
-        .enumerate()
-        .filter_map(|(i, &c)| try_stroke(game, sim, cue, c).map(|v| (v, i)))
-        .collect();
-    scanned.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
-    scanned.truncate(e.keep);
-    let kept: Vec<Candidate> = scanned.iter().map(|&(_, i)| all[i]).collect();
-    let sampler = Generic {
-        game,
-        sim,
-        cue,
-        noise: level.planning_noise(),
-        seed,
-    };
-    let mut rounds: Rounds<Candidate> = Rounds::default();
-    // The kept candidates hold the safeties already (a legal hit that passes the turn).
-    rounds.play_rounds(&sampler, kept, |_| Vec::new(), (e.samples, e.rounds));
-    let found = rounds.found()?;
-    let c = rounds.cands[found.index];
-    Some(Stroke {
-        place: c.place,
-        shot: c.shot,
-        declared: c.declared,
-        value: found.value,
-    })
+/// Any game's parts of the one search skeleton ([`rounds::find`]): the places the rules
+/// accept, every candidate simulated once without noise and the best kept, the level's rounds;
+/// no safeties apart and no second ply.
+impl Searched for Any<'_> {
+    type Budget = Effort;
+
+    fn places(&self, e: &Effort) -> Result<Vec<Option<Vec2>>, AiError> {
+        Ok(match self.turn.place {
+            CueBallPlace::InHand { .. } => places(self.game, self.sim, self.turn, e.places)
+                .into_iter()
+                .map(Some)
+                .collect(),
+            CueBallPlace::AsItLies | CueBallPlace::Placed => vec![None],
+        })
+    }
+
+    /// Every candidate from every place, each simulated once without noise; the best
+    /// `e.keep` by that value (ties: the first generated).
+    fn offence(&self, places: &[Option<Vec2>], e: &Effort) -> Vec<Candidate> {
+        let all: Vec<Candidate> = places
+            .iter()
+            .flat_map(|&place| {
+                let from = place.unwrap_or(self.from);
+                candidates(self.turn, self.sim, (place, from), e.fan)
+            })
+            .collect();
+        let cue = self.turn.cue_ball;
+        let mut scanned: Vec<(f64, usize)> = all
+            .par_iter()
+            .enumerate()
+            .filter_map(|(i, &c)| try_stroke(self.game, self.sim, cue, c).map(|v| (v, i)))
+            .collect();
+        scanned.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+        scanned.truncate(e.keep);
+        scanned.iter().map(|&(_, i)| all[i]).collect()
+    }
+
+    /// None apart: the kept candidates hold the safeties already (a legal hit that passes
+    /// the turn is kept when it is valued above the rest).
+    fn safeties(&self, _: &[Option<Vec2>], _: &Effort, _: bool) -> Vec<Candidate> {
+        Vec::new()
+    }
+
+    fn rounds<'b>(&self, e: &'b Effort) -> (usize, &'b [(usize, usize)]) {
+        (e.samples, e.rounds)
+    }
+
+    /// One ply: the judgement of a stroke is its value.
+    fn second_ply(&self, _: &mut Rounds<Candidate>, _: &Effort) {}
 }
 
 /// Places for the cue ball in hand that the rules accept: where it lies if allowed, then
@@ -437,7 +455,8 @@ fn places(game: &dyn GameRules, sim: &Simulation, turn: &Turn, count: usize) -> 
     out
 }
 
-/// The best stroke of the turn in play, the cue ball placed if it is in hand.
+/// The best stroke of the turn in play, the cue ball placed if it is in hand: the one search
+/// skeleton ([`rounds::find`]) on any game's parts: the places, the kept candidates, the rounds.
 pub fn best_stroke(
     game: &dyn GameRules,
     sim: &Simulation,
@@ -445,25 +464,26 @@ pub fn best_stroke(
     seed: u64,
 ) -> Result<Stroke, String> {
     let turn = game.turn();
-    let e = effort(level);
-    let places: Vec<Option<Vec2>> = match turn.place {
-        CueBallPlace::InHand { .. } => places(game, sim, &turn, e.places)
-            .into_iter()
-            .map(Some)
-            .collect(),
-        CueBallPlace::AsItLies | CueBallPlace::Placed => vec![None],
-    };
     let cue = id_of(sim, turn.cue_ball)
         .ok_or_else(|| format!("{}: no cue ball on this table", game.name()))?;
-    let all: Vec<Candidate> = places
-        .iter()
-        .flat_map(|&place| {
-            let from = place.unwrap_or(sim.ball(cue).position);
-            candidates(&turn, sim, (place, from), e.fan)
-        })
-        .collect();
-    best_of(game, sim, turn.cue_ball, all, level, seed)
-        .ok_or_else(|| format!("{}: no stroke the rules accept was found", game.name()))
+    let search = Any {
+        game,
+        sim,
+        turn: &turn,
+        from: sim.ball(cue).position,
+        noise: level.planning_noise(),
+        seed,
+    };
+    let (c, found) = rounds::find(&search, &effort(level)).map_err(|e| match e {
+        AiError::NoBall => format!("{}: no stroke the rules accept was found", game.name()),
+        e => format!("{}: {e}", game.name()),
+    })?;
+    Ok(Stroke {
+        place: c.place,
+        shot: c.shot,
+        declared: c.declared,
+        value: found.value,
+    })
 }
 
 /// What the computer does next in any game: an option when the rules offer some, else the

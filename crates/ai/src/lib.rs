@@ -19,7 +19,8 @@
 //! - [`drill`]: the computer at a drill, by the rules' search or one scored by the drill;
 //! - [`level`]: skill levels (noise and budget); [`greedy`]: a baseline without simulation;
 //! - [`any_game`]: the computer at any game through the one game interface
-//!   ([`billiards_rules::GameRules`]): one search, valued from the rules' judgements;
+//!   ([`billiards_rules::GameRules`]): one search, valued from the rules' judgements, run
+//!   by the skeleton pool and snooker share ([`rounds::find`]);
 //!   [`any_match`]: a whole match of any game between two levels;
 //! - [`snooker`]: the computer at snooker ([`decide_snooker`]), the same search judged by the
 //!   WPBSA rules and valued in points, and a whole frame between two levels. Three-cushion

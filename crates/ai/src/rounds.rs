@@ -2,8 +2,9 @@
 //! copy per game): candidates evaluated by noisy samples ([`Sampler`]) on all cores, the
 //! best refined with more samples, the best chosen from the finalists or from a second ply.
 //! A game's search brings its candidates, its sampler (what one noisy sample of a
-//! candidate is worth) and, if any, its second ply ([`Searched`]); [`search`] runs them, the
-//! same for pool and snooker, and gives the one [`Plan`] type.
+//! candidate is worth) and, if any, its second ply ([`Searched`]); [`find`] runs them, the
+//! same for pool, snooker and any game ([`crate::any_game`]), and [`search`] gives pool's and
+//! snooker's best as the one [`Plan`] type ([`Planned`]).
 
 use crate::AiError;
 use crate::candidates::ShotKind;
@@ -325,14 +326,12 @@ impl<C: Sync> Rounds<C> {
 /// One outcome of a second ply: (second-ply value - one-ply value), simulations, events.
 pub type Correction = (f64, usize, usize);
 
-/// What a game's search brings to the skeleton ([`search`]): where the cue ball may start,
-/// its candidates and safeties from there, its rounds, its second ply, and what goes with
-/// the chosen candidate to the rules. Sampling is the [`Sampler`]'s.
+/// What a game's search brings to the skeleton ([`find`]): where the cue ball may start,
+/// its candidates and safeties from there, its rounds and its second ply. Sampling is the
+/// [`Sampler`]'s; what goes with the chosen candidate to the rules is [`Planned`]'s.
 pub trait Searched: Sampler {
     /// How much it searches (a level's budget).
     type Budget;
-    /// The per-game part of its plan (pool's call, snooker's nomination).
-    type Part;
     /// The cue ball's places to search from: `None` alone when it is not in hand.
     fn places(&self, budget: &Self::Budget) -> Result<Vec<Option<Vec2>>, AiError>;
     /// The first candidates (pots, or the break), from every place.
@@ -349,14 +348,21 @@ pub trait Searched: Sampler {
     fn rounds<'b>(&self, budget: &'b Self::Budget) -> (usize, &'b [(usize, usize)]);
     /// The second ply, if the budget has one ([`Rounds::second_ply`]).
     fn second_ply(&self, pool: &mut Rounds<Self::Cand>, budget: &Self::Budget);
+}
+
+/// A search whose best candidate becomes a [`Plan`] (pool's and snooker's): the shot, its
+/// place, what it tries and the per-game part that goes with it to the rules.
+pub trait Planned: Searched {
+    /// The per-game part of its plan (pool's call, snooker's nomination).
+    type Part;
     /// The shot of candidate `cand`, its place, what it tries and its per-game part.
     fn stroke(&self, cand: &Self::Cand) -> (Shot, Option<Vec2>, ShotKind, Self::Part);
 }
 
 /// The one search skeleton (issue 50): the places, the first candidates sampled, the
-/// safeties when the best does not score, the refinement rounds, the second ply, and the
-/// plan of the best candidate with the figures its samples gave.
-pub fn search<S: Searched>(s: &S, budget: &S::Budget) -> Result<Plan<S::Part>, AiError> {
+/// safeties when the best does not score, the refinement rounds, the second ply; the best
+/// candidate and what its samples gave ([`Rounds::found`]; no candidate: [`AiError::NoBall`]).
+pub fn find<S: Searched>(s: &S, budget: &S::Budget) -> Result<(S::Cand, Found), AiError> {
     let places = s.places(budget)?;
     let mut pool = Rounds::default();
     let first = s.offence(&places, budget);
@@ -364,7 +370,13 @@ pub fn search<S: Searched>(s: &S, budget: &S::Budget) -> Result<Plan<S::Part>, A
     pool.play_rounds(s, first, safeties, s.rounds(budget));
     s.second_ply(&mut pool, budget);
     let found = pool.found().ok_or(AiError::NoBall)?;
-    let (shot, place, kind, part) = s.stroke(&pool.cands[found.index]);
+    Ok((pool.cands.swap_remove(found.index), found))
+}
+
+/// The skeleton's best candidate ([`find`]) as a plan, with the figures its samples gave.
+pub fn search<S: Planned>(s: &S, budget: &S::Budget) -> Result<Plan<S::Part>, AiError> {
+    let (cand, found) = find(s, budget)?;
+    let (shot, place, kind, part) = s.stroke(&cand);
     Ok(Plan {
         shot,
         place,
@@ -460,7 +472,6 @@ mod tests {
 
     impl Searched for Toy {
         type Budget = (usize, Vec<(usize, usize)>);
-        type Part = bool;
         fn places(&self, _: &Self::Budget) -> Result<Vec<Option<Vec2>>, AiError> {
             Ok(vec![None])
         }
@@ -483,6 +494,10 @@ mod tests {
             (b.0, &b.1)
         }
         fn second_ply(&self, _: &mut Rounds<(f64, bool)>, _: &Self::Budget) {}
+    }
+
+    impl Planned for Toy {
+        type Part = bool;
         fn stroke(&self, c: &(f64, bool)) -> (Shot, Option<Vec2>, ShotKind, bool) {
             (Shot::new(c.0, 1.0), None, ShotKind::Break, c.1)
         }

@@ -11,7 +11,7 @@ use crate::noise::Noise;
 use crate::placement::places;
 use crate::plan::{Called, Decision, Plan};
 use crate::position::{aim_probability, best_success};
-use crate::rounds::{Rounds, Searched, best_choice, cue_and_base, search};
+use crate::rounds::{Planned, Rounds, Searched, best_choice, cue_and_base, search};
 use crate::{AiError, ready};
 use billiards_physics::{Shot, Simulation, TipOffset, Vec2};
 use billiards_rules::{CUE, Call, Choice, CueBall, Game, GameState, NextShot, check_placement};
@@ -83,10 +83,9 @@ pub fn decide_planned(
 }
 
 /// Pool's parts of the one search skeleton ([`search`]): the break or the pots, the
-/// safeties and push outs, the second ply ([`crate::twoply`]) and the call.
+/// safeties and push outs and the second ply ([`crate::twoply`]); the call is [`Planned`]'s.
 impl Searched for Search<'_> {
     type Budget = Budget;
-    type Part = Called;
 
     fn places(&self, budget: &Budget) -> Result<Vec<Option<Vec2>>, AiError> {
         cue_places(&self.base, self.cue, &self.state.next, self.noise, budget)
@@ -126,6 +125,11 @@ impl Searched for Search<'_> {
             pool.second_ply(two.finalists, two.outcomes, correct);
         }
     }
+}
+
+/// Pool's plan: the call goes with the shot.
+impl Planned for Search<'_> {
+    type Part = Called;
 
     fn stroke(&self, c: &Candidate) -> (Shot, Option<Vec2>, ShotKind, Called) {
         (c.shot, c.place, c.kind, Called { call: c.call })

@@ -10,7 +10,7 @@ use super::value::d_places;
 use crate::AiError;
 use crate::candidates::ShotKind;
 use crate::noise::Noise;
-use crate::rounds::{Rounds, Searched, at_rest, best_choice, cue_and_base, search};
+use crate::rounds::{Planned, Rounds, Searched, at_rest, best_choice, cue_and_base, search};
 use billiards_physics::{BallSetup, Shot, Simulation, Vec2};
 use billiards_rules::snooker::balls::WHITE;
 use billiards_rules::snooker::{Choice, Frame};
@@ -44,11 +44,10 @@ pub fn decide_snooker_with(
 }
 
 /// Snooker's parts of the one search skeleton ([`search`]): places in the D, pots and
-/// safeties valued in points (safeties even when a pot scores, if snookers are needed), the
-/// second ply and the nomination.
+/// safeties valued in points (safeties even when a pot scores, if snookers are needed) and
+/// the second ply; the nomination is [`Planned`]'s.
 impl Searched for Snook<'_> {
     type Budget = SnookerBudget;
-    type Part = Nominated;
 
     fn places(&self, budget: &SnookerBudget) -> Result<Vec<Option<Vec2>>, AiError> {
         if !self.frame.next.in_hand {
@@ -95,6 +94,11 @@ impl Searched for Snook<'_> {
             pool.second_ply(two.finalists, two.outcomes, correct);
         }
     }
+}
+
+/// Snooker's plan: the nomination goes with the stroke.
+impl Planned for Snook<'_> {
+    type Part = Nominated;
 
     fn stroke(&self, c: &Cand) -> (Shot, Option<Vec2>, ShotKind, Nominated) {
         let nominated = Nominated {
