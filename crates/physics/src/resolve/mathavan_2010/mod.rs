@@ -148,6 +148,8 @@ struct Impact {
     last_h: f64,
     /// The error of the last step kept, to the power 1/8 (the step size control's memory).
     err_old: f64,
+    /// The share of the reach to a zero slip the next step towards it may take.
+    frac: f64,
 }
 
 /// The step planned from the current state.
@@ -166,6 +168,8 @@ struct Plan {
     dz1: [f64; 4],
     /// The step planned before a zero slip shortened it, should that step fail.
     h_free: f64,
+    /// The reach to a zero slip whose approach share ([`Impact::frac`]) bounds the step.
+    approach: Option<f64>,
 }
 
 impl Impact {
@@ -215,6 +219,7 @@ impl Impact {
             slaved_at: None,
             last_h: 0.0,
             err_old: 0.1f64.sqrt(),
+            frac: 0.5,
         }
     }
 
@@ -300,7 +305,7 @@ impl Impact {
         };
         let (ri, rc) = setup.slip_rates_of(&d);
         let nn = setup.normal_of(&d);
-        let (mut h, finals) = self.limits(sizes, [ri, rc], nn, u0);
+        let (mut h, finals, mut approach) = self.limits(sizes, [ri, rc], nn, u0);
         let h_free = h;
         let mut predicted = None;
         for (k, reach) in finals.into_iter().enumerate() {
@@ -309,11 +314,13 @@ impl Impact {
             {
                 h = reach;
                 predicted = Some(Event::SlipZero(k == 0));
+                approach = None;
             }
         }
         Plan {
             h,
             h_free,
+            approach,
             predicted,
             u0,
             events,
@@ -392,6 +399,7 @@ impl Impact {
                 if self.dirs != [Dir::Own; 2] {
                     self.stats.slaved += 1;
                 }
+                self.approach_share(plan.approach, h, err);
                 if predicted.is_none() {
                     // Step size control with memory (Gustafsson's PI control, Hairer & Wanner,
                     // Solving ODEs II, section IV.2): the next step from this one's error and
