@@ -55,7 +55,7 @@ impl Impact {
         r: [[f64; 2]; 2],
         nn: f64,
         u0: [[f64; 2]; 2],
-    ) -> (f64, [Option<f64>; 2], Option<f64>) {
+    ) -> (f64, [Option<f64>; 2], f64) {
         let setup = &self.setup;
         let grips = [self.gi, self.gc];
         let mus = [setup.mu_w, setup.mu_s * nn];
@@ -64,7 +64,8 @@ impl Impact {
             h = h.min(cap);
         }
         let mut finals: [Option<f64>; 2] = [None; 2];
-        let mut approach = None;
+        // The shortest reach to a zero slip approached (infinite if none).
+        let mut nearest = f64::INFINITY;
         for k in 0..2 {
             let size = sl[k];
             if self.h.is_infinite() && matches!(grips[k], Grip::Slide(_)) && size <= setup.zero {
@@ -109,15 +110,11 @@ impl Impact {
             if (across * reach * (1.0 + mu / -along)).min(2.0 * mu * reach) <= self.atol {
                 finals[k] = Some(reach);
             } else {
-                let cap = self.frac * reach;
-                if cap < h {
-                    (h, approach) = (cap, Some(reach));
-                }
-                h = h.min(STABLE * size / stiff);
+                h = h.min(self.frac * reach).min(STABLE * size / stiff);
+                nearest = nearest.min(reach);
             }
         }
-        // The approach's reach, if its share bounds the step.
-        (h, finals, approach.filter(|&r| h == self.frac * r))
+        (h, finals, nearest)
     }
 
     /// Slaves a sliding contact to the direction its slip grows in (`slaved.rs`) while its
@@ -227,10 +224,12 @@ impl Impact {
     /// zero the slip's direction turns at a rate 1 / |slip|, so the approach is smooth in
     /// `ln |slip|`, not in the impulse: a step taking the share `f` of the reach advances
     /// `ln |slip|` by `-ln(1 - f)`, and that advance is what the error, a 2nd-order estimate,
-    /// sizes (as the step size control does with the impulse, aiming at `APPROACH_SAFETY` of
-    /// the tolerance). A step that no approach bounds starts the next one at half the reach.
-    pub(super) fn approach_share(&mut self, approach: Option<f64>, h: f64, err: f64) {
-        self.frac = match approach {
+    /// sizes as the step size control sizes the step: the next advance is the last times
+    /// `APPROACH_SAFETY err^(-1/3)` (within 0.2 to 2), the share within 0.05 to 0.9. A step
+    /// that no approach bounds starts the next one at half the reach.
+    #[inline(never)]
+    pub(super) fn approach_share(&mut self, h: f64, err: f64) {
+        self.frac = match self.approach {
             Some(reach) => {
                 let advance = -(1.0 - (h / reach).min(0.99)).ln();
                 let fac = (APPROACH_SAFETY / err.max(1e-12).cbrt()).clamp(0.2, 2.0);

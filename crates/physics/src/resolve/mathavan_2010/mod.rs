@@ -150,6 +150,8 @@ struct Impact {
     err_old: f64,
     /// The share of the reach to a zero slip the next step towards it may take.
     frac: f64,
+    /// The reach to a zero slip whose share ([`Impact::frac`]) bounds the planned step.
+    approach: Option<f64>,
 }
 
 /// The step planned from the current state.
@@ -168,8 +170,6 @@ struct Plan {
     dz1: [f64; 4],
     /// The step planned before a zero slip shortened it, should that step fail.
     h_free: f64,
-    /// The reach to a zero slip whose approach share ([`Impact::frac`]) bounds the step.
-    approach: Option<f64>,
 }
 
 impl Impact {
@@ -220,6 +220,7 @@ impl Impact {
             last_h: 0.0,
             err_old: 0.1f64.sqrt(),
             frac: 0.5,
+            approach: None,
         }
     }
 
@@ -305,7 +306,9 @@ impl Impact {
         };
         let (ri, rc) = setup.slip_rates_of(&d);
         let nn = setup.normal_of(&d);
-        let (mut h, finals, mut approach) = self.limits(sizes, [ri, rc], nn, u0);
+        let (mut h, finals, nearest) = self.limits(sizes, [ri, rc], nn, u0);
+        // The approach whose share bounds the step, if one does.
+        let mut approach = (h == self.frac * nearest).then_some(nearest);
         let h_free = h;
         let mut predicted = None;
         for (k, reach) in finals.into_iter().enumerate() {
@@ -317,10 +320,10 @@ impl Impact {
                 approach = None;
             }
         }
+        self.approach = approach;
         Plan {
             h,
             h_free,
-            approach,
             predicted,
             u0,
             events,
@@ -399,7 +402,9 @@ impl Impact {
                 if self.dirs != [Dir::Own; 2] {
                     self.stats.slaved += 1;
                 }
-                self.approach_share(plan.approach, h, err);
+                if self.approach.is_some() || self.frac != 0.5 {
+                    self.approach_share(h, err);
+                }
                 if predicted.is_none() {
                     // Step size control with memory (Gustafsson's PI control, Hairer & Wanner,
                     // Solving ODEs II, section IV.2): the next step from this one's error and
@@ -407,8 +412,11 @@ impl Impact {
                     // estimate, here err^(-1/4) err_old^(1/8) (square roots: `powf` took 12 %
                     // of an impact), within a factor 0.2 to 5, no larger after a rejection.
                     let e = err.max(1e-12);
-                    let fac = (SAFETY * self.err_old / e.sqrt().sqrt()).clamp(0.2, 5.0);
-                    self.err_old = e.max(1e-4).sqrt().sqrt().sqrt();
+                    let e4 = e.sqrt().sqrt();
+                    let fac = (SAFETY * self.err_old / e4).clamp(0.2, 5.0);
+                    // max(e, 1e-4)^(1/8) from e^(1/4): a correctly rounded square root is
+                    // monotone, so it commutes with `max` to the bit.
+                    self.err_old = e4.max(1e-4f64.sqrt().sqrt()).sqrt();
                     self.h = if rejected { h * fac.min(1.0) } else { h * fac };
                 }
                 break;
