@@ -5,12 +5,6 @@ use super::Impact;
 use super::bs3::STABLE;
 use super::contact::{Dir, Grip, hypot};
 
-/// The safety factor of the approach to a zero slip ([`Impact::approach_share`]): lower than
-/// the step size control's, as the slip's rates change faster towards the zero than the
-/// estimate of one step sees (at 0.8 the break's impacts end further from the fine
-/// reference, at 0.6 they take more steps; `examples/mathavan_probe.rs`).
-const APPROACH_SAFETY: f64 = 0.7;
-
 impl Impact {
     /// A sliding slip within the tolerance of zero is zero: moved into the spins (a change
     /// within the tolerance) and its grip decided again, stuck or sliding the way it then
@@ -55,7 +49,7 @@ impl Impact {
         r: [[f64; 2]; 2],
         nn: f64,
         u0: [[f64; 2]; 2],
-    ) -> (f64, [Option<f64>; 2], f64) {
+    ) -> (f64, [Option<f64>; 2]) {
         let setup = &self.setup;
         let grips = [self.gi, self.gc];
         let mus = [setup.mu_w, setup.mu_s * nn];
@@ -64,8 +58,6 @@ impl Impact {
             h = h.min(cap);
         }
         let mut finals: [Option<f64>; 2] = [None; 2];
-        // The shortest reach to a zero slip approached (infinite if none).
-        let mut nearest = f64::INFINITY;
         for k in 0..2 {
             let size = sl[k];
             if self.h.is_infinite() && matches!(grips[k], Grip::Slide(_)) && size <= setup.zero {
@@ -103,18 +95,16 @@ impl Impact {
             // that step neglects is within the tolerance: the part of its rate across it
             // leaves a residue (which the snap at the zero moves into the spins), and the
             // friction's direction, however it would turn, changes the velocities by at most
-            // 2 mu x the step. Until then each step takes at most a share of the remaining
-            // reach: half at first, then as the error of the last allows
-            // (`approach_share`).
+            // 2 mu x the step. Until then it is approached in steps of at most half the
+            // remaining reach.
             let reach = size / -along;
             if (across * reach * (1.0 + mu / -along)).min(2.0 * mu * reach) <= self.atol {
                 finals[k] = Some(reach);
             } else {
-                h = h.min(self.frac * reach).min(STABLE * size / stiff);
-                nearest = nearest.min(reach);
+                h = h.min(0.5 * reach).min(STABLE * size / stiff);
             }
         }
-        (h, finals, nearest)
+        (h, finals)
     }
 
     /// Slaves a sliding contact to the direction its slip grows in (`slaved.rs`) while its
@@ -217,25 +207,5 @@ impl Impact {
             self.slaved_at = None;
             self.d = None;
         }
-    }
-
-    /// The share of the reach to a zero slip that the next step of an approach may take,
-    /// from the step just kept (`h`, its error `err` relative to the tolerance). Towards a
-    /// zero the slip's direction turns at a rate 1 / |slip|, so the approach is smooth in
-    /// `ln |slip|`, not in the impulse: a step taking the share `f` of the reach advances
-    /// `ln |slip|` by `-ln(1 - f)`, and that advance is what the error, a 2nd-order estimate,
-    /// sizes as the step size control sizes the step: the next advance is the last times
-    /// `APPROACH_SAFETY err^(-1/3)` (within 0.2 to 2), the share within 0.05 to 0.9. A step
-    /// that no approach bounds starts the next one at half the reach.
-    #[inline(never)]
-    pub(super) fn approach_share(&mut self, h: f64, err: f64) {
-        self.frac = match self.approach {
-            Some(reach) => {
-                let advance = -(1.0 - (h / reach).min(0.99)).ln();
-                let fac = (APPROACH_SAFETY / err.max(1e-12).cbrt()).clamp(0.2, 2.0);
-                (1.0 - (-advance * fac).exp()).clamp(0.05, 0.9)
-            }
-            None => 0.5,
-        };
     }
 }

@@ -148,10 +148,6 @@ struct Impact {
     last_h: f64,
     /// The error of the last step kept, to the power 1/8 (the step size control's memory).
     err_old: f64,
-    /// The share of the reach to a zero slip the next step towards it may take.
-    frac: f64,
-    /// The reach to a zero slip whose share ([`Impact::frac`]) bounds the planned step.
-    approach: Option<f64>,
 }
 
 /// The step planned from the current state.
@@ -219,8 +215,6 @@ impl Impact {
             slaved_at: None,
             last_h: 0.0,
             err_old: 0.1f64.sqrt(),
-            frac: 0.5,
-            approach: None,
         }
     }
 
@@ -306,9 +300,7 @@ impl Impact {
         };
         let (ri, rc) = setup.slip_rates_of(&d);
         let nn = setup.normal_of(&d);
-        let (mut h, finals, nearest) = self.limits(sizes, [ri, rc], nn, u0);
-        // The approach whose share bounds the step, if one does.
-        let mut approach = (h == self.frac * nearest).then_some(nearest);
+        let (mut h, finals) = self.limits(sizes, [ri, rc], nn, u0);
         let h_free = h;
         let mut predicted = None;
         for (k, reach) in finals.into_iter().enumerate() {
@@ -317,10 +309,8 @@ impl Impact {
             {
                 h = reach;
                 predicted = Some(Event::SlipZero(k == 0));
-                approach = None;
             }
         }
-        self.approach = approach;
         Plan {
             h,
             h_free,
@@ -401,9 +391,6 @@ impl Impact {
                 self.last_h = h;
                 if self.dirs != [Dir::Own; 2] {
                     self.stats.slaved += 1;
-                }
-                if self.approach.is_some() || self.frac != 0.5 {
-                    self.approach_share(h, err);
                 }
                 if predicted.is_none() {
                     // Step size control with memory (Gustafsson's PI control, Hairer & Wanner,
