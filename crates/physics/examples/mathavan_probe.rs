@@ -1,5 +1,6 @@
 //! The Mathavan 2010 integration impact by impact: steps, rate evaluations, time and error
-//! against a reference with 100 times smaller steps, over the 18 cushion impacts of the
+//! (each set's largest and rms, relative to the incoming speed) against a reference with
+//! 100 times smaller steps, over the 18 cushion impacts of the
 //! spin model's 9-ball break (`realism_cost`'s, with Mathavan's cushion) and shots over
 //! angle and spin (the module's tests').
 //!
@@ -149,8 +150,8 @@ fn main() {
     }
 }
 
-/// `n` random impacts at `acc` against a fine reference: the largest, 99th percentile and
-/// mean difference relative to the incoming speed, and the rate evaluations an impact.
+/// `n` random impacts at `acc` against a fine reference: the largest, 99th percentile, mean
+/// and rms difference relative to the incoming speed, and the rate evaluations an impact.
 fn random_impacts(n: usize, game: &Mathavan2010, r: f64, acc: Accuracy) {
     let fine = Accuracy {
         tol: 1e-9,
