@@ -1,5 +1,6 @@
 //! The Mathavan 2010 integration impact by impact: steps, rate evaluations, time and error
-//! against a reference with 100 times smaller steps, over the 18 cushion impacts of the
+//! (each set's largest and rms, relative to the incoming speed) against a reference with
+//! 100 times smaller steps, over the 18 cushion impacts of the
 //! spin model's 9-ball break (`realism_cost`'s, with Mathavan's cushion) and shots over
 //! angle and spin (the module's tests').
 //!
@@ -93,6 +94,7 @@ fn main() {
         }
     }
     let (mut total_ns, mut total_evals, mut worst) = ([0.0; 2], [0usize; 2], [0.0f64; 2]);
+    let mut squares = [0.0f64; 2];
     for (k, &(v, w, n)) in cases.iter().enumerate() {
         if only.is_some_and(|o| o != k) {
             continue;
@@ -126,6 +128,7 @@ fn main() {
         total_ns[set] += ns;
         total_evals[set] += stats.evaluations;
         worst[set] = worst[set].max(err);
+        squares[set] += err * err;
         if verbose {
             println!(
                 "{k:>2} steps {:>3} rejected {:>3} evals {:>4} slaved {:>3} longest {:.3} err {err:.1e} {ns:>7.0} ns",
@@ -135,10 +138,11 @@ fn main() {
     }
     for (set, name, count) in [(0, "break", n_break), (1, "shots", cases.len() - n_break)] {
         println!(
-            "{name}: {count} impacts, {:.0} ns and {:.0} rate evaluations an impact, largest error {:.1e}",
+            "{name}: {count} impacts, {:.0} ns and {:.1} rate evaluations an impact, largest error {:.1e}, rms {:.1e}",
             total_ns[set] / count as f64,
             total_evals[set] as f64 / count as f64,
-            worst[set]
+            worst[set],
+            (squares[set] / count as f64).sqrt()
         );
     }
     if let Some(n) = std::env::var("RANDOM").ok().and_then(|s| s.parse().ok()) {
@@ -146,8 +150,8 @@ fn main() {
     }
 }
 
-/// `n` random impacts at `acc` against a fine reference: the largest, 99th percentile and
-/// mean difference relative to the incoming speed, and the rate evaluations an impact.
+/// `n` random impacts at `acc` against a fine reference: the largest, 99th percentile, mean
+/// and rms difference relative to the incoming speed, and the rate evaluations an impact.
 fn random_impacts(n: usize, game: &Mathavan2010, r: f64, acc: Accuracy) {
     let fine = Accuracy {
         tol: 1e-9,
@@ -178,11 +182,12 @@ fn random_impacts(n: usize, game: &Mathavan2010, r: f64, acc: Accuracy) {
     errs.sort_by(f64::total_cmp);
     println!(
         "random: {n} impacts, {:.1} rate evaluations an impact; difference from the fine \
-         reference: largest {:.1e}, 99th percentile {:.1e}, mean {:.1e}, {} above 2e-4",
+         reference: largest {:.1e}, 99th percentile {:.1e}, mean {:.1e}, rms {:.1e}, {} above 2e-4",
         evals as f64 / n as f64,
         errs[n - 1],
         errs[n * 99 / 100],
         errs.iter().sum::<f64>() / n as f64,
+        (errs.iter().map(|e| e * e).sum::<f64>() / n as f64).sqrt(),
         errs.iter().filter(|&&e| e > 2e-4).count()
     );
 }

@@ -399,8 +399,11 @@ impl Impact {
                     // estimate, here err^(-1/4) err_old^(1/8) (square roots: `powf` took 12 %
                     // of an impact), within a factor 0.2 to 5, no larger after a rejection.
                     let e = err.max(1e-12);
-                    let fac = (SAFETY * self.err_old / e.sqrt().sqrt()).clamp(0.2, 5.0);
-                    self.err_old = e.max(1e-4).sqrt().sqrt().sqrt();
+                    let e4 = e.sqrt().sqrt();
+                    let fac = (SAFETY * self.err_old / e4).clamp(0.2, 5.0);
+                    // max(e, 1e-4)^(1/8) from e^(1/4): a correctly rounded square root is
+                    // monotone, so it commutes with `max` to the bit.
+                    self.err_old = e4.max(1e-4f64.sqrt().sqrt()).sqrt();
                     self.h = if rejected { h * fac.min(1.0) } else { h * fac };
                 }
                 break;
