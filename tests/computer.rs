@@ -137,7 +137,9 @@ fn a_hint_aims_the_humans_cue_at_the_computers_choice_and_the_pointer_is_locked_
             .is_some_and(|(_, hint)| *hint != Hint::Thinking)
     });
     let (_, hint) = app.world().resource::<Computer>().hint.clone().unwrap();
-    let text = hint.text(&OrbitCamera::default());
+    let rules = app.world().resource::<Rules>();
+    let game = rules.live.as_ref().map(|g| g.rules.as_ref());
+    let text = hint.text(game, &OrbitCamera::default());
     assert!(text.starts_with("hint: the break"), "{text}");
     // The hint is shown as the aim: the break speed and direction, not the settings before.
     let after = *app.world().resource::<ShotSettings>();

@@ -71,11 +71,15 @@ pub enum Hint {
 }
 
 impl Hint {
-    /// The hint's line in the HUD, cushions named as `view` shows them.
-    pub fn text(&self, view: &OrbitCamera) -> String {
+    /// The hint's line in the HUD in the words of `game` (the game in play), cushions named
+    /// as `view` shows them.
+    pub fn text(&self, game: Option<&dyn GameRules>, view: &OrbitCamera) -> String {
         match self {
             Hint::Thinking => "hint: thinking...".to_owned(),
-            Hint::Decided(decision) => format!("hint: {}", describe(decision, view)),
+            Hint::Decided(decision) => match game {
+                Some(game) => format!("hint: {}", describe(decision, game, view)),
+                None => "hint: none (the game has ended)".to_owned(),
+            },
             Hint::Failed(error) => format!("hint: none ({error})"),
         }
     }
@@ -254,7 +258,10 @@ fn play_computer_turn(
                     let table = (&*solver, &*spec);
                     show_aim(shot, place, table, &mut shot_settings, &mut cue_ball);
                 }
-                computer.doing = Some(format!("{name} ({level}): {}", describe(&decision, &view)));
+                if let Some(game) = &rules.live {
+                    let words = describe(&decision, game.rules.as_ref(), &view);
+                    computer.doing = Some(format!("{name} ({level}): {words}"));
+                }
                 computer.turn = Some(Task::Showing {
                     key,
                     seed,

@@ -104,19 +104,12 @@ impl OpenRecording {
         (ta, tb)
     }
 
-    /// A ball in words by its table: snooker's by colour ("pink"; every red is "red"),
-    /// carom's white, yellow and red (UMB), pool's by number ("cue ball", "ball 3").
+    /// A ball in words, as the game whose table it is names it
+    /// ([`billiards_rules::catalog::of_table`]): snooker's by colour ("pink"; every red is
+    /// "red"), carom's white, yellow and red (UMB), pool's by number ("cue ball", "ball 3").
     fn ball_name(&self, id: usize) -> String {
-        use crate::table::geometry::{TableKind, TableSpec};
-        let kind = TableSpec::fitting(&self.recording.table).kind;
-        match (kind, self.number(id)) {
-            (TableKind::Carom, n) => billiards_rules::three_cushion::balls::Ball::ALL
-                .get(usize::from(n))
-                .map_or_else(|| format!("ball {n}"), |b| b.name().to_owned()),
-            (_, 0) => "cue ball".to_owned(),
-            (TableKind::Snooker, n) => billiards_rules::snooker::balls::name(n).to_owned(),
-            (_, n) => format!("ball {n}"),
-        }
+        let game = billiards_rules::catalog::of_table(&self.recording.table);
+        (game.ball_word)(self.number(id))
     }
 }
 

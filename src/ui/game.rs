@@ -61,13 +61,16 @@ pub fn free_play(state: &GameParam) -> bool {
     !state.rules.in_match()
 }
 
-/// The table is the snooker table (its balls are named by colour, not number).
-pub fn snooker(state: &GameParam) -> bool {
-    use billiards_physics::snooker::{SNOOKER_LENGTH, SNOOKER_WIDTH};
-    state.solver.as_ref().is_some_and(|solver| {
-        let table = solver.simulation().table();
-        table.length == SNOOKER_LENGTH && table.width == SNOOKER_WIDTH
-    })
+/// The game whose own table is on screen (snooker's, three-cushion's, else pool's): it names
+/// the balls where no game is in hand (a replay; [`billiards_rules::catalog::of_table`]).
+pub fn table_game(state: &GameParam) -> &'static billiards_rules::catalog::GameEntry {
+    let table = state
+        .solver
+        .as_ref()
+        .map_or_else(billiards_physics::Table::wpa_8ft, |s| {
+            *s.simulation().table()
+        });
+    billiards_rules::catalog::of_table(&table)
 }
 
 /// The HUD's buttons, one row, each always in its place: disabled when it does not apply
@@ -193,35 +196,34 @@ fn split_lines(
     {
         // A hint's odds are those of its own aim (issue 48: "61 % to succeed" stayed after
         // the aim moved): once the player's aim or nomination leaves it, it says so.
-        let nominated = state.rules.live.as_ref().map(|g| match g.declared {
-            billiards_rules::Declaration::Nominate { ball } => Some(ball),
-            _ => None,
-        });
-        let text = if hint_left(hint, &state.shot, nominated) {
+        let game = state.rules.live.as_ref();
+        let text = if hint_left(hint, &state.shot, game) {
             "hint: your aim has left the hint's shot (Hint again for its odds)".to_owned()
         } else {
-            hint.text(&state.view)
+            hint.text(game.map(|g| g.rules.as_ref()), &state.view)
         };
         first.push((text, Some(INFO)));
     }
     (first, second)
 }
 
-/// Whether the player's aim (angle, power, tip, elevation) or snooker nomination
-/// (`nominated`, `None` outside snooker) is no longer the hint's.
+/// Whether the player's aim (angle, power, tip, elevation) or nomination (in `game`, the
+/// game in play: snooker's colour after a red) is no longer the hint's.
 pub fn hint_left(
     hint: &crate::play::computer::Hint,
     shot: &crate::settings::ShotSettings,
-    nominated: Option<Option<u8>>,
+    game: Option<&crate::play::game::LiveGame>,
 ) -> bool {
-    use crate::play::computer::{Decided, Hint};
-    use billiards_ai::snooker::SnookerDecision;
+    use crate::play::computer::Hint;
+    use billiards_ai::any_game::Move;
+    use billiards_rules::Declaration;
     let Hint::Decided(decision) = hint else {
         return false;
     };
-    if let (Decided::Snooker(SnookerDecision::Shoot(plan)), Some(now)) = (decision, nominated)
-        && plan.nominated.is_some()
-        && plan.nominated != now
+    if let Some(game) = game
+        && let Some(Move::Strike(stroke)) = decision.as_move(game.rules.as_ref())
+        && matches!(stroke.declared, Declaration::Nominate { .. })
+        && stroke.declared != game.declared
     {
         return true;
     }

@@ -98,8 +98,8 @@ pub fn hud(
             let a = column(ui, "hud-match", widths[0], height, &match_lines);
             ui.separator();
             let mut table = table_lines;
-            let snooker = super::game::snooker(&game);
-            table.extend(table_state_lines(&state, &status, (replay, snooker)));
+            let names = super::game::table_game(&game);
+            table.extend(table_state_lines(&state, &status, (replay, names)));
             let b = column(ui, "hud-table", widths[1], height, &table);
             ui.separator();
             let solver = solver_lines(&state, &status, replay);
@@ -178,11 +178,12 @@ fn loading_line(progress: Option<&PipelineProgress>) -> Option<String> {
 fn table_state_lines(
     state: &HudParam,
     status: &SimStatus,
-    (replay, snooker): (bool, bool),
+    (replay, names): (bool, &billiards_rules::catalog::GameEntry),
 ) -> Vec<HudLine> {
     let mut pocketed: Vec<u8> = state.pocketed.iter().map(|b| b.number).collect();
     pocketed.sort_unstable();
-    let list = pocketed_text(&pocketed, snooker);
+    // Named by the game whose table it is (issue 48: "pocketed: 12" read as a count).
+    let list = (names.list_words)(&pocketed);
     let doing = if state.physics.paused {
         "paused"
     } else if status.at_rest {
@@ -206,42 +207,6 @@ fn table_state_lines(
             .flatten(),
     )
     .collect()
-}
-
-/// The balls pocketed, by name (issue 48: "pocketed: 12" read as a count): "the 3, the 12,
-/// the cue ball"; in snooker by colour, the reds counted ("2 reds, the pink"); "none".
-pub fn pocketed_text(numbers: &[u8], snooker: bool) -> String {
-    use billiards_rules::snooker::balls;
-    let mut names: Vec<String> = Vec::new();
-    if snooker {
-        let reds = numbers.iter().filter(|&&n| balls::is_red(n)).count();
-        match reds {
-            0 => {}
-            1 => names.push("a red".to_owned()),
-            k => names.push(format!("{k} reds")),
-        }
-        names.extend(
-            numbers
-                .iter()
-                .filter(|&&n| !balls::is_red(n))
-                .map(|&n| format!("the {}", balls::name(n))),
-        );
-    } else {
-        names.extend(
-            numbers
-                .iter()
-                .filter(|&&n| n != 0)
-                .map(|n| format!("the {n}")),
-        );
-        if numbers.contains(&0) {
-            names.push("the cue ball".to_owned());
-        }
-    }
-    if names.is_empty() {
-        "none".to_owned()
-    } else {
-        names.join(", ")
-    }
 }
 
 /// The solver and the frames, then the notes.
@@ -344,23 +309,8 @@ fn stress_lines(m: &StressMonitor) -> Vec<HudLine> {
 #[cfg(test)]
 mod tests {
     // Named from the crate root: a `super::` path reads as a use of `ui` in the layout test.
-    use crate::ui::hud::{HUD_MAX_SHARE, hud_height, pocketed_text};
+    use crate::ui::hud::{HUD_MAX_SHARE, hud_height};
     use crate::ui::layout::HUD_HEIGHT;
-
-    /// Balls are named, never a bare number that reads as a count; snooker's reds are
-    /// counted and its colours named (issue 48).
-    #[test]
-    fn pocketed_balls_are_named() {
-        assert_eq!(pocketed_text(&[], false), "none");
-        assert_eq!(pocketed_text(&[12], false), "the 12");
-        assert_eq!(
-            pocketed_text(&[0, 3, 12], false),
-            "the 3, the 12, the cue ball"
-        );
-        // Snooker: 11 is a red, 20 the pink (WPBSA 3.1 numbering of the rules crate).
-        assert_eq!(pocketed_text(&[11], true), "a red");
-        assert_eq!(pocketed_text(&[2, 11, 20], true), "2 reds, the pink");
-    }
 
     /// The HUD holds what its lines need, from its own height up to its share of the window.
     #[test]

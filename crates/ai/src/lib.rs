@@ -24,7 +24,9 @@
 //!   [`any_match`]: a whole match of any game between two levels;
 //! - [`snooker`]: the computer at snooker ([`decide_snooker`]), the same search judged by the
 //!   WPBSA rules and valued in points, and a whole frame between two levels. Three-cushion
-//!   (and every game added through the interface) is played by [`any_game`].
+//!   (and every game added through the interface) is played by [`any_game`];
+//! - [`game`]: the decision by the game's own search ([`game::decide_game`]); [`words`]: it
+//!   in the game's words, through the interface.
 //!
 //! The same seed gives the same decision on any number of threads: every random draw comes
 //! from a stream named by the seed, the candidate's index and the sample's ([`noise::stream`]).
@@ -55,6 +57,7 @@ pub mod rounds;
 mod search;
 pub mod snooker;
 pub mod twoply;
+pub mod words;
 
 pub use candidates::{Candidate, Layout, ShotKind};
 pub use evaluate::{Mode, Stats};

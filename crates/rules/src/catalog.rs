@@ -61,6 +61,12 @@ pub struct GameEntry {
     /// Played on any pool table of the player's choosing (its size, pockets, jaws and
     /// rack style: pool's games); otherwise only on its own ([`GameEntry::equipment`]).
     pub pool_table: bool,
+    /// A ball in the words of a view of the table without the game in hand (a replay):
+    /// "cue ball", "ball 3"; "pink"; "white".
+    pub ball_word: fn(u8) -> String,
+    /// Balls pocketed or off the table, in a sentence: "the 3, the 12, the cue ball", "2
+    /// reds, the pink", "none".
+    pub list_words: fn(&[u8]) -> String,
     start: Start,
 }
 
@@ -105,6 +111,43 @@ fn pool(game: Game, s: &MatchSettings, table: Table, ball: BallSpec) -> Box<dyn 
     ))
 }
 
+/// Pool's ball by number: "cue ball", "ball 3".
+fn pool_word(n: u8) -> String {
+    if n == 0 {
+        "cue ball".to_owned()
+    } else {
+        format!("ball {n}")
+    }
+}
+
+/// Pool's balls in a sentence, by number, the cue ball last: "the 3, the 12, the cue ball"
+/// (issue 48: "pocketed: 12" read as a count).
+fn pool_list(numbers: &[u8]) -> String {
+    let mut names: Vec<String> = numbers
+        .iter()
+        .filter(|&&n| n != 0)
+        .map(|n| format!("the {n}"))
+        .collect();
+    if numbers.contains(&0) {
+        names.push("the cue ball".to_owned());
+    }
+    if names.is_empty() {
+        "none".to_owned()
+    } else {
+        names.join(", ")
+    }
+}
+
+/// The game whose own table `table` is (snooker's, three-cushion's: by its length and
+/// width), else 9-ball's (any pool table): what names its balls where no game is in hand.
+pub fn of_table(table: &Table) -> &'static GameEntry {
+    let own = |g: &&GameEntry| {
+        let (t, _) = (g.equipment)();
+        !g.pool_table && t.length == table.length && t.width == table.width
+    };
+    GAMES.iter().find(own).unwrap_or(&GAMES[0])
+}
+
 /// Every game, in the dialog's order.
 pub const GAMES: &[GameEntry] = &[
     GameEntry {
@@ -115,6 +158,8 @@ pub const GAMES: &[GameEntry] = &[
         default_length: 3,
         equipment: pool_equipment,
         pool_table: true,
+        ball_word: pool_word,
+        list_words: pool_list,
         start: |s, t, b| Ok(pool(Game::NineBall, s, t, b)),
     },
     GameEntry {
@@ -125,6 +170,8 @@ pub const GAMES: &[GameEntry] = &[
         default_length: 3,
         equipment: pool_equipment,
         pool_table: true,
+        ball_word: pool_word,
+        list_words: pool_list,
         start: |s, t, b| Ok(pool(Game::EightBall, s, t, b)),
     },
     GameEntry {
@@ -135,6 +182,8 @@ pub const GAMES: &[GameEntry] = &[
         default_length: 3,
         equipment: pool_equipment,
         pool_table: true,
+        ball_word: pool_word,
+        list_words: pool_list,
         start: |s, t, b| Ok(pool(Game::TenBall, s, t, b)),
     },
     GameEntry {
@@ -145,6 +194,8 @@ pub const GAMES: &[GameEntry] = &[
         default_length: 3,
         equipment: snooker_equipment,
         pool_table: false,
+        ball_word: crate::snooker::balls::word,
+        list_words: crate::snooker::balls::list_words,
         start: |s, t, b| {
             Ok(Box::new(SnookerGame::new(
                 s.players.clone(),
@@ -163,6 +214,8 @@ pub const GAMES: &[GameEntry] = &[
         default_length: 40,
         equipment: carom_equipment,
         pool_table: false,
+        ball_word: crate::three_cushion::balls::word,
+        list_words: crate::three_cushion::balls::list_words,
         start: |s, t, b| {
             Ok(Box::new(ThreeCushionMatch::new(
                 s.players.clone(),
@@ -180,6 +233,8 @@ pub const GAMES: &[GameEntry] = &[
         default_length: 1,
         equipment: pool_equipment,
         pool_table: true,
+        ball_word: pool_word,
+        list_words: pool_list,
         start: |s, t, b| Ok(pool(Game::FreePlay, s, t, b)),
     },
 ];

@@ -47,3 +47,33 @@ pub fn next_colour(c: u8) -> Option<u8> {
         .position(|&k| k == c)
         .and_then(|i| COLOURS.get(i + 1).copied())
 }
+
+/// Balls pocketed, in a sentence: the reds counted, the colours named ("2 reds, the pink",
+/// "a red", "the cue ball"; "none").
+pub fn list_words(numbers: &[u8]) -> String {
+    let mut names: Vec<String> = Vec::new();
+    match numbers.iter().filter(|&&n| is_red(n)).count() {
+        0 => {}
+        1 => names.push("a red".to_owned()),
+        k => names.push(format!("{k} reds")),
+    }
+    names.extend(
+        numbers
+            .iter()
+            .filter(|&&n| !is_red(n) && n != WHITE)
+            .map(|&n| format!("the {}", name(n))),
+    );
+    if numbers.contains(&WHITE) {
+        names.push("the cue ball".to_owned());
+    }
+    if names.is_empty() {
+        "none".to_owned()
+    } else {
+        names.join(", ")
+    }
+}
+
+/// A ball in a replay's words: its [`name`].
+pub fn word(n: u8) -> String {
+    name(n).to_owned()
+}

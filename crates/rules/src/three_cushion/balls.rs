@@ -17,6 +17,26 @@ pub enum Ball {
     Red,
 }
 
+/// Ball `n` in words: "white", "yellow", "red" (its [`Ball::index`]), "ball N" beyond.
+pub fn word(n: u8) -> String {
+    Ball::ALL
+        .get(usize::from(n))
+        .map_or_else(|| format!("ball {n}"), |b| b.name().to_owned())
+}
+
+/// Balls in a sentence ("the white, the red"; "none"): those driven off the table.
+pub fn list_words(numbers: &[u8]) -> String {
+    let names: Vec<String> = numbers
+        .iter()
+        .map(|&n| format!("the {}", word(n)))
+        .collect();
+    if names.is_empty() {
+        "none".to_owned()
+    } else {
+        names.join(", ")
+    }
+}
+
 impl Ball {
     /// The three, in the order of [`Ball::index`].
     pub const ALL: [Ball; 3] = [Ball::White, Ball::Yellow, Ball::Red];
