@@ -414,6 +414,14 @@ impl GameRules for PoolMatch {
         Ok(self.rack_layout())
     }
 
+    fn set_by_hand(&mut self, layout: &[(u8, Vec2)]) -> Result<(), RulesError> {
+        if !self.sandbox() {
+            return Err(crate::interface::not_by_hand(self.name()));
+        }
+        self.play.rack.take_stock(layout);
+        Ok(())
+    }
+
     fn sandbox(&self) -> bool {
         self.play.game == Game::FreePlay
     }

@@ -53,17 +53,30 @@ fn on_the_diagonal(game: &dyn GameRules, d: f64) -> Vec2 {
     corner - Vec2::new(d, d) / 2f64.sqrt()
 }
 
+/// Only free play's table is the player's: it takes stock of a table set by hand (a drill's
+/// two balls left after leaving it: "balls left: 1", not the rack's 15), every other game
+/// refuses, its state untouched.
 #[test]
 fn only_free_play_lets_its_table_be_set_by_hand() {
+    let layout = [(0, Vec2::new(-0.5, 0.0)), (1, Vec2::new(0.4, 0.1))];
     for entry in GAMES {
         let settings = MatchSettings::new(["Ann".to_owned(), "Bob".to_owned()], 1, 0);
-        let game = entry.start(&settings).unwrap();
+        let mut game = entry.start(&settings).unwrap();
+        let free = entry.id == "free-play";
         assert_eq!(
             game.sandbox(),
-            entry.id == "free-play",
+            free,
             "{}: only free play's table is the player's",
             entry.id
         );
+        let status = game.status();
+        assert_eq!(game.set_by_hand(&layout).is_ok(), free, "{}", entry.id);
+        if free {
+            assert_eq!(game.status(), vec!["balls left: 1".to_owned()]);
+            assert_eq!(game.turn().legal_first, vec![1]);
+        } else {
+            assert_eq!(game.status(), status, "{}: refused, untouched", entry.id);
+        }
     }
 }
 

@@ -51,6 +51,9 @@ pub struct LiveGame {
     /// The recording (by its start) the log belongs to; `None` until free play's first
     /// stroke binds it ([`LiveGame::bind_sandbox`]).
     pub recording: Option<std::time::SystemTime>,
+    /// Free play: the table at rest its game last took stock of
+    /// ([`GameRules::set_by_hand`]).
+    pub seen: Vec<(u8, billiards_physics::Vec2)>,
 }
 
 impl LiveGame {
@@ -81,6 +84,7 @@ impl LiveGame {
             call_ball: None,
             proposed: None,
             recording: None,
+            seen: Vec::new(),
         })
     }
 

@@ -252,6 +252,36 @@ pub(super) fn judge_live(
     game.pending = moves;
 }
 
+/// Free play's table set by hand (a rack, a position, a drill left, a ball placed): at rest,
+/// when the table differs from the one its game last saw, the game follows it (bound to the
+/// recording in play, [`LiveGame::bind_sandbox`]) and takes stock of its balls
+/// ([`GameRules::set_by_hand`]), so that its lines between strokes are the table's (played:
+/// "balls left: 15" with the one ball a drill had left).
+pub(super) fn follow_sandbox_table(
+    mut rules: ResMut<Rules>,
+    solver: Option<Res<Solver>>,
+    mut status: ResMut<SimStatus>,
+) {
+    let (Some(solver), true) = (solver, status.at_rest) else {
+        return;
+    };
+    let Some(game) = rules.live.as_mut().filter(|g| g.rules.sandbox()) else {
+        return;
+    };
+    let sim = solver.simulation();
+    let layout = layout_at(sim, None);
+    if layout == game.seen {
+        return;
+    }
+    let taken = game
+        .bind_sandbox(solver.started(), *sim.table(), sim.params().ball)
+        .and_then(|()| game.rules.set_by_hand(&layout));
+    if let Err(error) = taken {
+        status.note = Some(format!("free play could not follow the table: {error}"));
+    }
+    game.seen = layout;
+}
+
 /// Balls the last judgement or an option put back ([`Judgement::put`](billiards_rules::Judgement),
 /// [`Setup::Put`]), set on the table after the frame's judging and commands.
 pub(super) fn put_pending(

@@ -68,6 +68,7 @@ pub fn plugin(app: &mut App) {
                 live_flow::judge_live,
                 apply_commands,
                 live_flow::put_pending,
+                live_flow::follow_sandbox_table,
                 follow_rules,
             )
                 .chain()

@@ -329,6 +329,14 @@ pub trait GameRules: std::fmt::Debug + Send + Sync {
     fn sandbox(&self) -> bool {
         false
     }
+    /// The sandbox's table set by hand (balls placed, taken off, a new rack): its game takes
+    /// stock of the balls now on it (`layout`: number and centre), as its next judgement
+    /// would, so that what it says between strokes ("balls left") is the table's. Refused by
+    /// every game whose table is its own.
+    fn set_by_hand(&mut self, layout: &[(u8, Vec2)]) -> Result<(), RulesError> {
+        let _ = layout;
+        Err(not_by_hand(self.name()))
+    }
     /// A one-player game (a drill session): the second seat is no player but the game
     /// itself, a judgement needs no reading (the game's own window and the HUD say it), and a
     /// game's end is the end of one try, whose reason says all ([`GameEnd::reason`]). Every
@@ -345,6 +353,11 @@ pub trait GameRules: std::fmt::Debug + Send + Sync {
     /// The game as [`std::any::Any`]: a caller with a game's own tools (the computer's
     /// dedicated pool and snooker searches) finds its type; every other caller needs none.
     fn as_any(&self) -> &dyn std::any::Any;
+}
+
+/// Why game `name`'s table may not be set by hand ([`GameRules::set_by_hand`]).
+pub fn not_by_hand(name: &str) -> RulesError {
+    RulesError(format!("{name}: the table is the rules', not set by hand"))
 }
 
 /// `state` as `{"kind": kind, "state": ...}`, the form [`crate::catalog::restore`] reads.
