@@ -52,12 +52,15 @@ impl GameArg {
         }
     }
 
-    /// The catalog's id of a game played through the one game interface alone (no stack of
-    /// its own here), `None` for the others.
-    pub fn interface_only(self) -> Option<&'static str> {
+    /// The game's id in the catalog ([`billiards_rules::catalog::find`]).
+    pub fn id(self) -> &'static str {
         match self {
-            GameArg::ThreeCushion => Some("three-cushion"),
-            _ => None,
+            GameArg::NineBall => "nine-ball",
+            GameArg::TenBall => "ten-ball",
+            GameArg::EightBall => "eight-ball",
+            GameArg::FreePlay => "free-play",
+            GameArg::Snooker => "snooker",
+            GameArg::ThreeCushion => "three-cushion",
         }
     }
 }

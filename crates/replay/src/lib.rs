@@ -11,7 +11,6 @@ pub mod cli;
 pub mod drill;
 pub mod export;
 pub mod flight;
-pub mod game;
 pub mod interface_game;
 pub mod position;
 pub mod render;

@@ -8,7 +8,6 @@ use crate::flight::FlightEvent;
 use billiards_physics::recording::Recorder;
 use billiards_physics::scene::{Scene, SceneFlight};
 use billiards_physics::*;
-use billiards_rules::Verdict as RulesVerdict;
 use serde::Serialize;
 
 /// The command line's shots, each at its own cue elevation, else at `--elevation`'s.
@@ -33,9 +32,9 @@ pub struct ShotSummary {
     /// Take-offs, bounces, landings and flights off the table (none for a shot that stays
     /// on the cloth).
     pub flight: Vec<FlightEvent>,
-    /// The rules' verdict (with `--game`).
+    /// The rules' judgement (with `--game`).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub verdict: Option<RulesVerdict>,
+    pub judgement: Option<billiards_rules::Judgement>,
 }
 
 /// What a `simulate` run starts from: the table, physics, balls, the balls in the air (a

@@ -1,6 +1,7 @@
 //! `simulate`: shots from a rack, a scene file or a game under its rules, recorded, with a
-//! summary. The dispatcher of `simulate`: a game goes to `game.rs`, a frame to `snooker.rs`;
-//! what they share with it lives in `args.rs` and `setup.rs`.
+//! summary. The dispatcher of `simulate`: a game's script goes through the one game interface
+//! (`interface_game.rs`), a snooker frame between computers to `snooker.rs`; what they share
+//! with it lives in `args.rs` and `setup.rs`.
 
 pub use crate::args::SimulateArgs;
 pub use crate::setup::ShotSummary;
@@ -34,19 +35,17 @@ fn play(rec: &mut Recorder, shot: Shot) -> Result<ShotSummary, String> {
         pocketed,
         time_to_rest: sim.time() - start,
         flight: flight::flight_events(events, sim.numbers(), start, in_air),
-        verdict: None,
+        judgement: None,
     })
 }
 
 pub(crate) fn simulate(a: SimulateArgs) -> Result<(), String> {
     if let Some(game) = a.game {
-        if let Some(id) = game.interface_only() {
-            return crate::interface_game::simulate(id, &a);
+        // Snooker without a script: a frame between two computer levels.
+        if matches!(game, crate::args::GameArg::Snooker) && a.shots.is_empty() {
+            return crate::snooker::simulate(&a);
         }
-        return match game.pool() {
-            Some(game) => crate::game::play_game(&a, game),
-            None => crate::snooker::simulate(&a),
-        };
+        return crate::interface_game::simulate(game.id(), &a);
     }
     let (table, params, balls, flights, shots) = setup(&a)?;
     let mut rec = Recorder::new(table, params, balls).map_err(|e| e.to_string())?;

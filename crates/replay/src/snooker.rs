@@ -38,10 +38,10 @@ pub fn levels(s: &str) -> Result<[Level; 2], String> {
 /// `--players`) breaking off, every draw from `--rack-seed` (else `--seed`, else 0); the
 /// strokes printed, and with `--out` the recording and its log beside it.
 pub fn simulate(a: &SimulateArgs) -> Result<(), String> {
-    if !a.shots.is_empty() || !a.calls.is_empty() || !a.choices.is_empty() {
+    if !a.calls.is_empty() || !a.choices.is_empty() {
         return Err(
-            "snooker is played by the computer here: --shot, --call and --choice are pool's \
-             (give --computer LEVEL,LEVEL)"
+            "a snooker frame between computers takes no --call or --choice (give --computer \
+             LEVEL,LEVEL, or --shot for a scripted frame)"
                 .into(),
         );
     }
@@ -88,12 +88,7 @@ pub fn simulate(a: &SimulateArgs) -> Result<(), String> {
 }
 
 fn save_log(recording: &Path, log: &FrameLog) -> Result<(), String> {
-    let path = FrameLog::path_beside(recording);
-    let json = serde_json::to_string_pretty(log).map_err(|e| e.to_string())?;
-    // Through a temporary file and a rename, as recordings are: never half-written.
-    let tmp = path.with_extension("json.tmp");
-    std::fs::write(&tmp, json).map_err(|e| format!("{}: {e}", tmp.display()))?;
-    std::fs::rename(&tmp, &path).map_err(|e| format!("{}: {e}", path.display()))
+    crate::interface_game::save_json(&FrameLog::path_beside(recording), log)
 }
 
 /// A snooker tournament's results (or one shard's).

@@ -127,8 +127,8 @@ fn players(s: &str) -> Result<[Player; 2], String> {
 }
 
 fn tournament(a: TournamentArgs) -> Result<(), Failure> {
-    if let Some(id) = a.game.interface_only() {
-        return crate::interface_game::tournament(id, &a).map_err(|(e, input)| {
+    if matches!(a.game, crate::args::GameArg::ThreeCushion) {
+        return crate::interface_game::tournament(a.game.id(), &a).map_err(|(e, input)| {
             if input {
                 Failure::Input(e)
             } else {

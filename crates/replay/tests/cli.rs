@@ -226,7 +226,7 @@ fn simulate_on_a_nine_foot_table_saves_the_table_and_a_bad_table_is_refused() {
         .args(["--shot", "0:11", "--out"])
         .arg(&file));
     assert!(ok, "{err}");
-    assert!(stdout.contains("shot 1: A (break)"), "{stdout}");
+    assert!(stdout.contains("stroke 1: A: legal"), "{stdout}");
     let rec = Recording::load(&file).unwrap();
     assert_eq!(rec.table.length, 100.0 * table::INCH);
     assert_eq!(rec.table.corner_mouth, 4.0 * table::INCH);

@@ -71,28 +71,32 @@ fn simulate_a_nine_ball_game_prints_verdicts_and_verify_rejudges_them() {
         .args(["--choice", "pass", "--shot", "45:2", "--out"])
         .arg(&file));
     assert!(ok, "{err}");
+    // Judged through the one game interface (issue 50), in its words.
     assert!(
-        stdout.contains("shot 1: A (break): legal; B to shoot (push out allowed)"),
+        stdout.contains("stroke 1: A: legal: nothing pocketed; B to shoot (push out allowed)"),
         "{stdout}"
     );
     assert!(
-        stdout.contains("shot 2: B (push out): legal push out"),
+        stdout.contains("stroke 2: B: legal push out")
+            && stdout.contains("A chooses: shoot from here or pass it back"),
         "{stdout}"
     );
-    assert!(stdout.contains("A chooses PassBack"), "{stdout}");
-    assert!(stdout.contains("shot 3: B: foul"), "{stdout}");
+    assert!(stdout.contains("A chooses \"pass it back\""), "{stdout}");
+    assert!(stdout.contains("stroke 3: B: foul"), "{stdout}");
     let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
     assert!(ok, "{err}");
     assert!(
-        stdout.contains("3 verdicts of NineBall re-judged identically"),
+        stdout.contains("3 9-ball verdicts re-judged identically"),
         "{stdout}"
     );
-    // A verdict edited in the log: verify names the shot and fails.
+    // A judgement edited in the log: verify names the stroke and fails.
     let log = dir.join("rack.game.json");
     let text = std::fs::read_to_string(&log).unwrap();
-    std::fs::write(&log, text.replacen("\"passes\"", "\"continues\"", 1)).unwrap();
+    let edited = text.replacen("nothing pocketed", "the 9 pocketed", 1);
+    assert_ne!(edited, text);
+    std::fs::write(&log, edited).unwrap();
     let (ok, _, err) = run(bin().arg("verify").arg(&file));
-    assert!(!ok && err.contains("shot 1: logged"), "{err}");
+    assert!(!ok && err.contains("stroke 1"), "{err}");
     // A call this game does not use is refused with the rules' reason.
     let (ok, _, err) = run(bin().args([
         "simulate",
@@ -103,10 +107,7 @@ fn simulate_a_nine_ball_game_prints_verdicts_and_verify_rejudges_them() {
         "--call",
         "1:9:foot-left",
     ]));
-    assert!(
-        !ok && err.contains("shot 1: NineBall has no called shots"),
-        "{err}"
-    );
+    assert!(!ok && err.contains("stroke 1: "), "{err}");
     std::fs::remove_dir_all(dir).ok();
 }
 
@@ -152,9 +153,11 @@ fn simulate_a_snooker_frame_and_verify_rejudges_its_log() {
         stdout.contains("frame.snooker.json: ") && stdout.contains("re-judged identically"),
         "{stdout}"
     );
-    // Pool's scripted shots are refused for snooker, with the reason.
-    let (ok, _, err) = run(bin().args(["simulate", "--game", "snooker", "--shot", "0:3"]));
-    assert!(!ok && err.contains("played by the computer"), "{err}");
+    // A scripted snooker stroke goes through the one interface: the cue ball in hand put in
+    // the D (WPBSA 3.4) where no hand places it, the break-off judged.
+    let (ok, stdout, err) = run(bin().args(["simulate", "--game", "snooker", "--shot", "0:3"]));
+    assert!(ok, "{err}");
+    assert!(stdout.contains("stroke 1: A: "), "{stdout}");
     let (ok, _, err) =
         run(bin().args(["simulate", "--game", "snooker", "--computer", "hard,greedy"]));
     assert!(

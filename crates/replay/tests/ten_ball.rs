@@ -76,24 +76,21 @@ fn wpa_9_3_9_5_simulate_a_ten_ball_rack_logs_calls_and_verify_rejudges_them() {
         .arg("--out")
         .arg(&file));
     assert!(ok, "{err}");
-    assert!(
-        stdout.contains("TenBall, rack seed 11: A breaks"),
-        "{stdout}"
-    );
+    assert!(stdout.contains("10-ball, rack seed 11: "), "{stdout}");
     // WPA 9, 9.9: the 10 made on a legal break is spotted, no win, the breaker continues.
     assert!(
         stdout.contains(
-            "shot 1: A (break): legal; pocketed 10 (head-right corner); A continues; \
-             the 10 is spotted (push out allowed)"
+            "stroke 1: A: legal: the 10 in the head-right corner; the 10 is spotted; A to \
+             shoot (push out allowed)"
         ),
         "{stdout}"
     );
-    assert!(stdout.contains("shot 2: A: "), "{stdout}");
+    assert!(stdout.contains("stroke 2: A: "), "{stdout}");
     assert!(!stdout.contains("game over"), "{stdout}");
     let (ok, stdout, err) = run(bin().arg("verify").arg(&file));
     assert!(ok, "{err}");
     assert!(
-        stdout.contains("2 verdicts of TenBall re-judged identically"),
+        stdout.contains("2 10-ball verdicts re-judged identically"),
         "{stdout}"
     );
     // WPA 9: no ball is called on the break.
@@ -107,7 +104,7 @@ fn wpa_9_3_9_5_simulate_a_ten_ball_rack_logs_calls_and_verify_rejudges_them() {
         "1:1:foot-left",
     ]));
     assert!(
-        !ok && err.contains("shot 1: TenBall has no call on the break"),
+        !ok && err.contains("stroke 1: TenBall has no call on the break"),
         "{err}"
     );
     std::fs::remove_dir_all(dir).ok();

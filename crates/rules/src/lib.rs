@@ -63,7 +63,7 @@ pub use game::{
 pub use hand::{PlacementError, check_place, check_placement};
 pub use interface::{
     CueBallPlace, Declaration, Declarations, GameEnd, GameRules, HandRegion, Judgement, Need,
-    RulesError, Setup, StrokeRecord, Turn,
+    RulesError, Setup, StrokeRecord, Turn, hand_place,
 };
 pub use log::{GameLog, LogError, LoggedShot, RulesLog};
 pub use position::{PlacedBall, Position, PositionError};

@@ -7,9 +7,7 @@
 
 use billiards_ai::Level;
 use billiards_rules::catalog::{GameEntry, MatchSettings};
-use billiards_rules::{
-    CueBallPlace, Declaration, GameRules, HandRegion, Judgement, Seat, StrokeLog,
-};
+use billiards_rules::{CueBallPlace, Declaration, GameRules, Judgement, Seat, StrokeLog};
 
 use super::turn::Turn;
 
@@ -241,16 +239,8 @@ impl LiveGame {
     pub fn next_text(&self) -> String {
         let turn = self.rules.turn();
         let hand = match turn.place {
-            CueBallPlace::InHand {
-                region: HandRegion::Anywhere,
-            } => ", with ball in hand anywhere on the table",
-            CueBallPlace::InHand {
-                region: HandRegion::BehindHeadString,
-            } => ", with ball in hand behind the head string",
-            CueBallPlace::InHand {
-                region: HandRegion::D,
-            } => ", with ball in hand in the D",
-            CueBallPlace::AsItLies | CueBallPlace::Placed => "",
+            CueBallPlace::InHand { region } => format!(", with ball in hand {}", region.words()),
+            CueBallPlace::AsItLies | CueBallPlace::Placed => String::new(),
         };
         format!(
             "{} plays {} next{hand}",
@@ -296,12 +286,7 @@ impl LiveGame {
             Turn::BallInHand => format!(
                 "{striker} {to}: ball in hand {}, drag it, aim and shoot",
                 match turn.place {
-                    CueBallPlace::InHand {
-                        region: HandRegion::BehindHeadString,
-                    } => "behind the head string",
-                    CueBallPlace::InHand {
-                        region: HandRegion::D,
-                    } => "in the D",
+                    CueBallPlace::InHand { region } => region.words(),
                     _ => "anywhere",
                 }
             ),

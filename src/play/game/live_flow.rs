@@ -310,8 +310,9 @@ pub(super) fn put_pending(
 }
 
 /// With the cue ball in hand and off the table (pocketed), a place the rules accept for it
-/// (after the balls `put` are set): the first clear one of a sweep of the table from the
-/// middle of its head half. `None` when it is on the table or nothing is in hand.
+/// (after the balls `put` are set): [`billiards_rules::hand_place`], the first clear one of a
+/// sweep of the table from the middle of its head half. `None` when it is on the table or
+/// nothing is in hand.
 fn hand_place(game: &dyn GameRules, sim: &Simulation, put: &[(u8, Vec2)]) -> Option<(u8, Vec2)> {
     let turn = game.turn();
     if !matches!(turn.place, CueBallPlace::InHand { .. }) {
@@ -328,19 +329,5 @@ fn hand_place(game: &dyn GameRules, sim: &Simulation, put: &[(u8, Vec2)]) -> Opt
         .chain(put.iter().copied())
         .filter(|&(n, _)| n != cue)
         .collect();
-    let table = sim.table();
-    let from = Vec2::new(-table.length / 4.0, 0.0);
-    let mut places: Vec<Vec2> = (0..40 * 20)
-        .map(|k| {
-            Vec2::new(
-                (f64::from(k % 40) + 0.5) / 40.0 * table.length - table.length / 2.0,
-                (f64::from(k / 40) + 0.5) / 20.0 * table.width - table.width / 2.0,
-            )
-        })
-        .collect();
-    places.sort_by(|a, b| (*a - from).length().total_cmp(&(*b - from).length()));
-    places
-        .into_iter()
-        .find(|&at| game.check_hand(at, &others).is_ok())
-        .map(|at| (cue, at))
+    billiards_rules::hand_place(game, &others, None).map(|at| (cue, at))
 }

@@ -118,6 +118,17 @@ pub enum HandRegion {
     D,
 }
 
+impl HandRegion {
+    /// Where, in words: "anywhere on the table", "behind the head string", "in the D".
+    pub fn words(self) -> &'static str {
+        match self {
+            HandRegion::Anywhere => "anywhere on the table",
+            HandRegion::BehindHeadString => "behind the head string",
+            HandRegion::D => "in the D",
+        }
+    }
+}
+
 /// Where the striker's cue ball is before the next stroke.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
@@ -353,6 +364,33 @@ pub trait GameRules: std::fmt::Debug + Send + Sync {
     /// The game as [`std::any::Any`]: a caller with a game's own tools (the computer's
     /// dedicated pool and snooker searches) finds its type; every other caller needs none.
     fn as_any(&self) -> &dyn std::any::Any;
+}
+
+/// A place the rules of `game` accept for its cue ball in hand, with the other balls at
+/// `others` (number and centre): `first` if given and accepted (a script's rule, the head
+/// spot), else the first of a 40 x 20 sweep of the table nearest the middle of its head
+/// half. `None` when nothing is accepted. Where a player has no hand to place it with (a
+/// script, a ball the rules put back), this is the hand.
+pub fn hand_place(
+    game: &dyn GameRules,
+    others: &[(u8, Vec2)],
+    first: Option<Vec2>,
+) -> Option<Vec2> {
+    let table = game.table();
+    let from = Vec2::new(-table.length / 4.0, 0.0);
+    let mut places: Vec<Vec2> = (0..40 * 20)
+        .map(|k| {
+            Vec2::new(
+                (f64::from(k % 40) + 0.5) / 40.0 * table.length - table.length / 2.0,
+                (f64::from(k / 40) + 0.5) / 20.0 * table.width - table.width / 2.0,
+            )
+        })
+        .collect();
+    places.sort_by(|a, b| (*a - from).length().total_cmp(&(*b - from).length()));
+    first
+        .into_iter()
+        .chain(places)
+        .find(|&at| game.check_hand(at, others).is_ok())
 }
 
 /// Why game `name`'s table may not be set by hand ([`GameRules::set_by_hand`]).
