@@ -21,6 +21,8 @@ pub(super) const EVALS: usize = 3;
 /// (at 2.5 by 0.98 only, which let 8 of 3,000 random impacts end above 2e-4 of the
 /// reference at 1e-4 a step; 3 at 2).
 pub(super) const STABLE: f64 = 2.0;
+/// Where in a step (as a fraction of it) [`step`] evaluates the rate, in the order it does.
+pub(super) const STAGES: [f64; 3] = [0.5, 0.75, 1.0];
 
 const B1: f64 = 2.0 / 9.0;
 const B2: f64 = 1.0 / 3.0;

@@ -77,6 +77,18 @@ impl Setup {
         gc: Grip,
         dirs: [Dir; 2],
     ) -> ([f64; 4], f64) {
+        let (f, n, _) = self.friction_slaved(y, gi, gc, dirs);
+        (f, n)
+    }
+
+    /// [`Self::friction_fixed`] and the slaved contact's growth rate `lambda` (zero if none).
+    pub(super) fn friction_slaved(
+        &self,
+        y: &State,
+        gi: Grip,
+        gc: Grip,
+        dirs: [Dir; 2],
+    ) -> ([f64; 4], f64, f64) {
         let (s, c) = (self.s, self.c);
         let (si, sc) = self.slips(y);
         // Both contacts' inverse lengths side by side (the two square roots and divisions
@@ -92,14 +104,15 @@ impl Setup {
         let (mut ui, mut uc) = (along(gi, si, 0), along(gc, sc, 1));
         // A slaved contact (never both) takes the direction its slip grows in, given the
         // other's friction.
+        let mut lambda = 0.0;
         if let Dir::Slaved(l0) = dirs[0]
-            && let Some((u, _, _)) = self.slaved(true, uc, gc == Grip::Stick, l0)
+            && let Some((u, l, _)) = self.slaved(true, uc, gc == Grip::Stick, l0)
         {
-            ui = u;
+            (ui, lambda) = (u, l);
         } else if let Dir::Slaved(l0) = dirs[1]
-            && let Some((u, _, _)) = self.slaved(false, ui, gi == Grip::Stick, l0)
+            && let Some((u, l, _)) = self.slaved(false, ui, gi == Grip::Stick, l0)
         {
-            uc = u;
+            (uc, lambda) = (u, l);
         }
         let normal = |b: f64| (s - c * b).max(0.0);
         // The slip rates are d(slip)/dP = g + K f with g = (0, s c | 0, -c) and
@@ -136,7 +149,7 @@ impl Setup {
                 ]
             }
         };
-        (f, normal(f[1]))
+        (f, normal(f[1]), lambda)
     }
 
     /// Whether stuck contacts' friction lies within their cones.
@@ -218,6 +231,18 @@ impl Setup {
 
     pub(super) fn rate_fixed(&self, y: &State, gi: Grip, gc: Grip, dirs: [Dir; 2]) -> State {
         self.rate_and_normal(y, gi, gc, dirs).0
+    }
+
+    /// [`Self::rate_fixed`] and the slaved contact's growth rate `lambda` (zero if none).
+    pub(super) fn rate_slaved(
+        &self,
+        y: &State,
+        gi: Grip,
+        gc: Grip,
+        dirs: [Dir; 2],
+    ) -> (State, f64) {
+        let ([a, b, p, q], _, lambda) = self.friction_slaved(y, gi, gc, dirs);
+        (self.rate_of_friction(&[a, b, p, q], y), lambda)
     }
 
     /// [`Self::rate_fixed`] and the table's normal `N` of the same friction.

@@ -41,7 +41,16 @@ impl Impact {
     /// dense output.
     pub(super) fn locate(&self, e: Event, plan: &Plan, st: &bs3::Step) -> Option<f64> {
         let u0 = &plan.u0;
-        let (g0, g1, tol) = (self.g(e, &self.y, u0), self.g(e, &st.y, u0), self.tol_of(e));
+        // The phase ends (checked every step) without the call into `g`: the same numbers.
+        let (g0, g1) = match e {
+            Event::Compressed => (self.y[1], st.y[1]),
+            Event::Restituted => {
+                let wf = self.target.unwrap_or(0.0);
+                (self.y[5] - wf, st.y[5] - wf)
+            }
+            _ => (self.g(e, &self.y, u0), self.g(e, &st.y, u0)),
+        };
+        let tol = self.tol_of(e);
         if g0 <= tol || g1 > tol {
             return None; // not approaching from above, or not reached in this step
         }

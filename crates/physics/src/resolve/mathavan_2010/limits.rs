@@ -129,7 +129,11 @@ impl Impact {
                 self.free(k);
                 continue;
             }
+            // From the last plan's growth rate, extrapolated over the last step.
             let start = match self.dirs[k] {
+                Dir::Slaved(l) if l + self.slope * self.last_h > 0.0 => {
+                    l + self.slope * self.last_h
+                }
                 Dir::Slaved(l) => l,
                 // Not worth a look unless its relaxation (about 7/2 mu / |S|) would bound the
                 // step well below the error's.
@@ -184,6 +188,10 @@ impl Impact {
                     self.d = None;
                     4.0 * stable
                 }),
+            };
+            self.slope = match self.dirs[k] {
+                Dir::Slaved(l) if self.last_h > 0.0 => (lambda - l) / self.last_h,
+                _ => 0.0,
             };
             match keep {
                 Some(h) => {

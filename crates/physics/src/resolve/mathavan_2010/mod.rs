@@ -144,6 +144,9 @@ struct Impact {
     lag: f64,
     /// The slaved direction at the last plan, and the longest slaved step from there.
     slaved_at: Option<([f64; 2], f64)>,
+    /// How fast the slaved contact's growth rate `lambda` changed per unit impulse over the
+    /// last step (its Newton iterations start from the extrapolation).
+    slope: f64,
     /// The last step kept.
     last_h: f64,
     /// The error of the last step kept, to the power 1/8 (the step size control's memory).
@@ -213,6 +216,7 @@ impl Impact {
             dirs: [Dir::Own; 2],
             lag: 0.0,
             slaved_at: None,
+            slope: 0.0,
             last_h: 0.0,
             err_old: 0.1f64.sqrt(),
         }
@@ -380,7 +384,12 @@ impl Impact {
                     #[inline(always)]
                     |f, t| setup.rate_of_friction(f, t),
                 ),
-                _ => bs3::step(&self.y, &plan.d, h, |t| setup.rate_fixed(t, gi, gc, dirs)),
+                _ => match dirs {
+                    [Dir::Slaved(l), _] | [_, Dir::Slaved(l)] => {
+                        self.slaved_step(plan, h, l, (gi, gc), dirs)
+                    }
+                    _ => bs3::step(&self.y, &plan.d, h, |t| setup.rate_fixed(t, gi, gc, dirs)),
+                },
             };
             self.stats.evaluations += bs3::EVALS;
             let err = self.error(&st.err);
@@ -425,7 +434,11 @@ impl Impact {
         // A step meant to end on a zero slip finds it like the other events: its rate along
         // the held direction need not stay constant (the other contact turns).
         let aimed = predicted.filter(|e| matches!(e, Event::SlipZero(_)));
-        for e in plan.events.into_iter().chain([aimed]).flatten() {
+        // (A plain loop: chained iterator adapters cost 0.6 % of the break.)
+        for i in 0..4 {
+            let Some(e) = (if i < 3 { plan.events[i] } else { aimed }) else {
+                continue;
+            };
             if let Some(at) = self.locate(e, plan, &st) {
                 found += 1;
                 if hit.is_none() || at < theta {
@@ -455,6 +468,41 @@ impl Impact {
         // The last stage is the next step's first unless an event changes the rates.
         self.d = (hit.is_none() && dirs == self.dirs).then_some(st.k4);
         (hit, next)
+    }
+}
+
+impl Impact {
+    /// A step with a slaved contact (`dirs`, its growth rate `lambda` at the step's start):
+    /// each stage's Newton iteration for the slaved direction starts from `lambda`
+    /// extrapolated linearly through the last two known (the last step's slope, then the
+    /// stages': stages at 1/2, 3/4 and 1 of the step, in turn), some two iterations fewer a
+    /// stage than from `lambda` itself, which grows quickly as a slip leaves zero.
+    fn slaved_step(
+        &self,
+        plan: &Plan,
+        h: f64,
+        lambda: f64,
+        (gi, gc): (Grip, Grip),
+        dirs: [Dir; 2],
+    ) -> bs3::Step {
+        let setup = self.setup;
+        let k = usize::from(!matches!(dirs[0], Dir::Slaved(_)));
+        // (fraction of the step, lambda there, d lambda / d fraction), and the stages so far.
+        let known = std::cell::Cell::new((0.0, lambda, self.slope * h));
+        let stage = std::cell::Cell::new(0usize);
+        bs3::step(&self.y, &plan.d, h, |t| {
+            let at = bs3::STAGES[stage.get().min(bs3::STAGES.len() - 1)];
+            stage.set(stage.get() + 1);
+            let (t0, l0, slope) = known.get();
+            let guess = l0 + slope * (at - t0);
+            let mut d = dirs;
+            d[k] = Dir::Slaved(if guess > 0.0 { guess } else { l0 });
+            let (rate, l) = setup.rate_slaved(t, gi, gc, d);
+            if l > 0.0 {
+                known.set((at, l, (l - l0) / (at - t0)));
+            }
+            rate
+        })
     }
 }
 

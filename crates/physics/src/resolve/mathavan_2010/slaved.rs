@@ -87,10 +87,13 @@ impl Setup {
         }
         // |u(hi)| < 1 at hi: |u_y| <= 1/2 and |u_x| <= (|A_x| + |B12| / 2) / hi < 1/2.
         let (mut lo, mut hi) = (0.0, 2.0 * (ax.abs() + ay.abs() + b12.abs()));
+        // Without a start, from zero: |u(lambda)|^2 - 1 falls and is (mostly) convex, so Newton's
+        // iterates from the left of the root rise to it without overshooting (from the middle
+        // of the bracket, a root near zero took some 30 bisections).
         let mut l = if lambda0 > lo && lambda0 < hi {
             lambda0
         } else {
-            0.5 * hi
+            lo
         };
         // `u(l)` once the iteration stops at `l` itself (not after a last step).
         let mut at_l = None;

@@ -217,7 +217,8 @@ fn random_impacts_all_finish_within_20_000_evaluations_and_lose_energy() {
 fn the_slaved_direction_is_the_one_its_slip_grows_along() {
     // For the nose with the cloth sliding or stuck, and the cloth with the nose sliding: the
     // slip rate with the slaved direction u* is lambda u* (parallel, growing), and kappa is
-    // the relaxation -dF/dphi of F(phi) = u_perp . (slip rate), by a central difference.
+    // the relaxation -dF/dphi of F(phi) = u_perp . (slip rate), by a central difference;
+    // Newton's iteration finds the same root from any start in its bracket.
     use super::contact::{Dir, Grip, Setup};
     let m = paper();
     let s = m.height / R - 1.0;
@@ -263,6 +264,15 @@ fn the_slaved_direction_is_the_one_its_slip_grows_along() {
             let phi = u[1].atan2(u[0]);
             let slope = (f(phi + 1e-6) - f(phi - 1e-6)) / 2e-6;
             assert!((kappa + slope).abs() < 1e-7, "{kappa} {slope}");
+            // The same root from the warm starts the integration gives (an extrapolated
+            // growth rate, near or far), to rounding.
+            for start in [0.5 * lambda, 0.999 * lambda, 1.001 * lambda, 1.5 * lambda] {
+                let (w, l, _) = setup
+                    .slaved(nose, other.unwrap_or([0.0; 2]), other.is_none(), start)
+                    .unwrap();
+                assert!((l - lambda).abs() <= 1e-13 * lambda, "{l} {lambda}");
+                assert!((w[0] - u[0]).abs() < 1e-13 && (w[1] - u[1]).abs() < 1e-13);
+            }
             checked += 1;
         }
     }
