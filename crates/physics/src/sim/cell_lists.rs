@@ -13,9 +13,10 @@ use crate::grid::{Grid, Side};
 use crate::math::Vec2;
 use crate::queue::Tournament;
 
-/// What a ball's pair searches read of it, in one cache line: its segment's start, state
-/// and acceleration, and the time of its next event with no other ball (a contact after it
-/// is searched again then). Random access by ball, so one line a neighbour, not one a field.
+/// What a ball's pair searches read of a neighbour, in one cache line (64 bytes, the first
+/// of the ball's [`Record`]): its segment's start, state and acceleration, and the time of
+/// its next event with no other ball (a contact after it is searched again then). Random
+/// access by ball, so one line a neighbour, not one a field.
 #[derive(Clone, Copy, Debug, Default)]
 struct Path {
     start: f64,
@@ -23,8 +24,6 @@ struct Path {
     v: Vec2,
     a: Vec2,
     until: f64,
-    /// [`MOVING`] and [`ON_TABLE`] bits (here, so a neighbour's test reads one record).
-    flags: u8,
 }
 
 impl Path {
@@ -40,40 +39,52 @@ impl Path {
     }
 }
 
-/// `Path::flags` bit: the ball moves.
+/// Everything the cell lists keep of one ball, in one record of three cache lines (issue 53:
+/// spread over five arrays and the segments, a crossing read some eight lines of its own
+/// ball and two of each neighbour). First line: the [`Path`] a neighbour's test reads;
+/// second: the cached events; third: what only the ball's own events read.
+#[derive(Clone, Copy, Debug, Default)]
+#[repr(C, align(64))]
+struct Record {
+    path: Path,
+    /// The ball's earliest contact with another ball found so far, valid until either
+    /// segment changes. Searched without the cap of the ball's next crossing, so a crossing
+    /// keeps it and searches only the cells it brings into the neighbourhood.
+    pair: Option<Pending>,
+    /// The ball's earliest event with no other ball, kept until its segment changes (a grid
+    /// crossing or a partner's event re-predicts only its pairs and crossing).
+    solo: Option<Pending>,
+    /// [`MOVING`] and [`ON_TABLE`] bits of the segment's motion.
+    flags: u8,
+    /// Stamp of the prediction round that last predicted the ball.
+    stamp: u64,
+    /// When the segment ends by itself (`f64::INFINITY` if never), the next crossing's
+    /// horizon, as `Segment::end`.
+    end: f64,
+}
+
+/// `Record::flags` bit: the ball moves.
 const MOVING: u8 = 1;
-/// `Path::flags` bit: the ball is on the table.
+/// `Record::flags` bit: the ball is on the table.
 const ON_TABLE: u8 = 2;
 
 /// The cell lists and the index of which predictions depend on which ball.
 #[derive(Debug)]
 pub(super) struct CellLists {
     grid: Grid,
-    /// Each ball's earliest event with no other ball, kept until its segment changes (a
-    /// grid crossing or a partner's event re-predicts only its pairs and crossing).
-    solo: Vec<Option<Pending>>,
-    /// Each ball's earliest contact with another ball found so far, valid until either
-    /// segment changes. Searched without the cap of the ball's next crossing, so a crossing
-    /// keeps it and searches only the cells it brings into the neighbourhood.
-    pairs: Vec<Option<Pending>>,
-    /// Each ball's path, for the pair cull.
-    paths: Vec<Path>,
+    /// Each ball's paths and cached events.
+    balls: Vec<Record>,
     /// For each ball, the balls whose cached event is a contact with it (may hold stale
     /// entries; checked before use).
     dependents: Vec<Vec<BallId>>,
-    /// Stamp of the prediction round that last predicted each ball.
-    stamps: Vec<u64>,
     /// The current prediction round.
     round: u64,
 }
 
 clone_reusing!(CellLists {
     grid,
-    solo,
-    pairs,
-    paths,
+    balls,
     dependents,
-    stamps,
     round
 });
 
@@ -82,11 +93,8 @@ impl CellLists {
     pub fn new(grid: Grid, n: usize) -> Self {
         Self {
             grid,
-            solo: vec![None; n],
-            pairs: vec![None; n],
-            paths: vec![Path::default(); n],
+            balls: vec![Record::default(); n],
             dependents: vec![Vec::new(); n],
-            stamps: vec![0; n],
             round: 0,
         }
     }
@@ -130,11 +138,11 @@ impl CellLists {
         }
         for &id in touched {
             for m in std::mem::take(&mut self.dependents[id]) {
-                let stale = self.pairs[m].is_some_and(|p| p.involves(id));
+                let stale = self.balls[m].pair.is_some_and(|p| p.involves(id));
                 if !stale {
                     continue;
                 }
-                if self.stamps[m] == self.round {
+                if self.balls[m].stamp == self.round {
                     // Re-predicted earlier in this round (say, as a dependent of another
                     // touched ball) and now waiting on `id`: keep the link, or the next change
                     // of `id` leaves `m`'s pair event stale and it fires at a gap.
@@ -159,8 +167,9 @@ impl CellLists {
     ) {
         self.round += 1;
         if self.grid.cross(id, side) {
-            let found = self.search(scene, id, t, self.pairs[id], self.grid.entered(id, side));
-            self.pairs[id] = found;
+            let best = self.balls[id].pair;
+            let found = self.search(scene, id, t, best, self.grid.entered(id, side));
+            self.balls[id].pair = found;
         }
         self.set_cache(queue, scene, id, t);
     }
@@ -169,9 +178,10 @@ impl CellLists {
     fn set_path(&mut self, scene: &Scene, id: BallId, t: f64) {
         let seg = &scene.segments[id];
         let solo = scene.predict_solo(id, t);
-        self.solo[id] = solo;
         let m = seg.state.motion;
-        self.paths[id] = Path {
+        let ball = &mut self.balls[id];
+        ball.solo = solo;
+        ball.path = Path {
             start: seg.start,
             p: seg.state.position,
             v: seg.state.velocity,
@@ -180,24 +190,26 @@ impl CellLists {
                 Kinematics::Linear => Vec2::ZERO,
             },
             until: solo.map_or(f64::INFINITY, |p| p.time),
-            flags: if m.is_moving() { MOVING } else { 0 } | if m.on_table() { ON_TABLE } else { 0 },
         };
+        ball.flags =
+            if m.is_moving() { MOVING } else { 0 } | if m.on_table() { ON_TABLE } else { 0 };
+        ball.end = seg.end.unwrap_or(f64::INFINITY);
     }
 
     /// Stores ball `id`'s earliest event (its own, its next crossing, its best pair) and
     /// indexes its best pair under the partner.
     fn set_cache(&mut self, queue: &mut Tournament<Pending>, scene: &Scene, id: BallId, t: f64) {
-        self.stamps[id] = self.round;
-        let pair = self.pairs[id];
-        let p = earlier(earlier(self.solo[id], self.crossing(scene, id, t)), pair);
+        self.balls[id].stamp = self.round;
+        let (pair, solo) = (self.balls[id].pair, self.balls[id].solo);
+        let p = earlier(earlier(solo, self.crossing(scene, id, t)), pair);
         queue.set(id, p, rank(p));
         if let Some(partner) = pair.and_then(|p| p.partner(id)) {
             let deps = &mut self.dependents[partner];
             deps.push(id);
             if deps.len() > 64 {
                 // Drop stale entries so the list stays short in long runs.
-                let pairs = &self.pairs;
-                deps.retain(|&m| pairs[m].is_some_and(|q| q.involves(partner)));
+                let balls = &self.balls;
+                deps.retain(|&m| balls[m].pair.is_some_and(|q| q.involves(partner)));
                 deps.sort_unstable();
                 deps.dedup();
             }
@@ -207,7 +219,7 @@ impl CellLists {
     /// Predicts ball `id` from `t` in full: its pairs with every ball around it.
     fn predict(&mut self, scene: &Scene, queue: &mut Tournament<Pending>, id: BallId, t: f64) {
         let found = self.search(scene, id, t, None, self.grid.neighbours(id));
-        self.pairs[id] = found;
+        self.balls[id].pair = found;
         self.set_cache(queue, scene, id, t);
     }
 
@@ -223,8 +235,8 @@ impl CellLists {
         mut best: Option<Pending>,
         others: impl Iterator<Item = BallId>,
     ) -> Option<Pending> {
-        let me = self.paths[id];
-        let fi = me.flags;
+        let fi = self.balls[id].flags;
+        let me = self.balls[id].path;
         if fi & ON_TABLE == 0 {
             return None;
         }
@@ -234,11 +246,14 @@ impl CellLists {
         let contact = 2.0 * r;
         let (pi, vi) = me.at(t);
         for j in others {
-            let other = self.paths[j];
-            let fj = other.flags;
-            if j == id || fj & ON_TABLE == 0 || (fi | fj) & MOVING == 0 {
+            // Only balls on the table are in the grid (`Grid::set` and `set_path` see the same
+            // segment), so `j` is; and its flags (another cache line) are read only when ball
+            // `id` stands still, to skip a pair of which neither ball moves.
+            if j == id || (fi & MOVING == 0 && self.balls[j].flags & MOVING == 0) {
                 continue;
             }
+            debug_assert!(self.balls[j].flags & ON_TABLE != 0, "ball {j} in the grid");
+            let other = self.balls[j].path;
             let until = if other.until < me.until {
                 other.until
             } else {
@@ -273,14 +288,26 @@ impl CellLists {
 
     /// When moving ball `id` first leaves its cell after `t`, if it does.
     fn crossing(&self, scene: &Scene, id: BallId, t: f64) -> Option<Pending> {
-        let seg = &scene.segments[id];
-        if !seg.state.motion.is_moving() {
+        let ball = &self.balls[id];
+        if ball.flags & MOVING == 0 {
             return None;
         }
-        let horizon = seg.end.map_or(f64::INFINITY, |e| e - t);
+        // `end - t` is infinite for a segment that never ends, as `Segment::end`'s `None`.
+        let horizon = ball.end - t;
         // The state once for every side, as `detect::ball_line` computes it for each; the
-        // real path even in the linear comparison mode.
-        let (p, v, a) = (seg.position_at(t), seg.velocity_at(t), seg.acceleration);
+        // real path even in the linear comparison mode (where the record's acceleration is
+        // zero, so the segment is read). `Path::at` is `Segment::position_at` and
+        // `velocity_at` to the bit.
+        let (p, v, a) = match scene.kinematics() {
+            Kinematics::Exact => {
+                let (p, v) = ball.path.at(t);
+                (p, v, ball.path.a)
+            }
+            Kinematics::Linear => {
+                let seg = &scene.segments[id];
+                (seg.position_at(t), seg.velocity_at(t), seg.acceleration)
+            }
+        };
         let mut best = None;
         for (side, at) in self.grid.exits(id) {
             let (n, offset) = match side {
