@@ -12,6 +12,7 @@ use crate::detect::{self, Kinematics};
 use crate::grid::{Grid, Side};
 use crate::math::Vec2;
 use crate::queue::Tournament;
+use crate::table::Cushion;
 
 /// What a ball's pair searches read of a neighbour, in one cache line (64 bytes, the first
 /// of the ball's [`Record`]): its segment's start, state and acceleration, and the time of
@@ -39,10 +40,10 @@ impl Path {
     }
 }
 
-/// Everything the cell lists keep of one ball, in one record of three cache lines (issue 53:
+/// Everything the cell lists keep of one ball, in one record of two cache lines (issue 53:
 /// spread over five arrays and the segments, a crossing read some eight lines of its own
 /// ball and two of each neighbour). First line: the [`Path`] a neighbour's test reads;
-/// second: the cached events; third: what only the ball's own events read.
+/// second: the cached events and what only the ball's own events read.
 #[derive(Clone, Copy, Debug, Default)]
 #[repr(C, align(64))]
 struct Record {
@@ -51,21 +52,75 @@ struct Record {
     /// segment changes. Searched without the cap of the ball's next crossing, so a crossing
     /// keeps it and searches only the cells it brings into the neighbourhood.
     pair: Option<Pending>,
-    /// The ball's earliest event with no other ball, kept until its segment changes (a grid
-    /// crossing or a partner's event re-predicts only its pairs and crossing).
-    solo: Option<Pending>,
-    /// [`MOVING`] and [`ON_TABLE`] bits of the segment's motion.
-    flags: u8,
-    /// Stamp of the prediction round that last predicted the ball.
-    stamp: u64,
     /// When the segment ends by itself (`f64::INFINITY` if never), the next crossing's
     /// horizon, as `Segment::end`.
     end: f64,
+    /// Stamp of the prediction round that last predicted the ball.
+    stamp: u64,
+    /// The ball's earliest event with no other ball, kept until its segment changes (a grid
+    /// crossing or a partner's event re-predicts only its pairs and crossing).
+    solo: Solo,
 }
 
-/// `Record::flags` bit: the ball moves.
+// Two cache lines a ball, the first the neighbours' (the layout above depends on it).
+const _: () = assert!(std::mem::size_of::<Record>() == 128 && std::mem::size_of::<Path>() == 64);
+
+/// A ball's earliest event with no other ball in 8 bytes: its time is the record's
+/// `Path::until` (to the bit: `until` is that time), its ball the record's; and the ball's
+/// motion bits.
+#[derive(Clone, Copy, Debug, Default)]
+struct Solo {
+    /// 0: none; 1 to 4: [`PendingKind::Transition`], `Opening`, `Cushion`, `Jaw`.
+    tag: u8,
+    /// [`MOVING`] and [`ON_TABLE`] bits of the segment's motion.
+    flags: u8,
+    /// The opening, cushion (its place in [`Cushion::ALL`]) or jaw.
+    index: u32,
+}
+
+impl Solo {
+    /// `solo`, an event of ball `id` alone ([`Scene::predict_solo`]), with `flags`.
+    fn pack(solo: Option<Pending>, id: BallId, flags: u8) -> Self {
+        let (tag, index) = match solo.map(|p| p.kind) {
+            None => (0, 0),
+            Some(PendingKind::Transition(_)) => (1, 0),
+            Some(PendingKind::Opening(_, k)) => (2, k),
+            Some(PendingKind::Cushion(_, c)) => (3, c as usize),
+            Some(PendingKind::Jaw(_, k)) => (4, k),
+            Some(PendingKind::Crossing(..) | PendingKind::Pair(..)) => {
+                unreachable!("a ball's own events are transitions, openings, cushions, jaws")
+            }
+        };
+        debug_assert!(solo.is_none_or(|p| p.involves(id) && p.partner(id).is_none()));
+        debug_assert!(
+            index < 1 << 30,
+            "part indices fit in 30 bits (`Pending::rank`)"
+        );
+        Self {
+            tag,
+            flags,
+            index: index as u32,
+        }
+    }
+
+    /// The event packed, of ball `id` at time `until`.
+    #[inline]
+    fn unpack(self, id: BallId, until: f64) -> Option<Pending> {
+        let k = self.index as usize;
+        let kind = match self.tag {
+            1 => PendingKind::Transition(id),
+            2 => PendingKind::Opening(id, k),
+            3 => PendingKind::Cushion(id, Cushion::ALL[k & 3]),
+            4 => PendingKind::Jaw(id, k),
+            _ => return None,
+        };
+        Some(Pending { time: until, kind })
+    }
+}
+
+/// `Solo::flags` bit: the ball moves.
 const MOVING: u8 = 1;
-/// `Record::flags` bit: the ball is on the table.
+/// `Solo::flags` bit: the ball is on the table.
 const ON_TABLE: u8 = 2;
 
 /// The cell lists and the index of which predictions depend on which ball.
@@ -180,7 +235,6 @@ impl CellLists {
         let solo = scene.predict_solo(id, t);
         let m = seg.state.motion;
         let ball = &mut self.balls[id];
-        ball.solo = solo;
         ball.path = Path {
             start: seg.start,
             p: seg.state.position,
@@ -191,8 +245,9 @@ impl CellLists {
             },
             until: solo.map_or(f64::INFINITY, |p| p.time),
         };
-        ball.flags =
+        let flags =
             if m.is_moving() { MOVING } else { 0 } | if m.on_table() { ON_TABLE } else { 0 };
+        ball.solo = Solo::pack(solo, id, flags);
         ball.end = seg.end.unwrap_or(f64::INFINITY);
     }
 
@@ -200,7 +255,8 @@ impl CellLists {
     /// indexes its best pair under the partner.
     fn set_cache(&mut self, queue: &mut Tournament<Pending>, scene: &Scene, id: BallId, t: f64) {
         self.balls[id].stamp = self.round;
-        let (pair, solo) = (self.balls[id].pair, self.balls[id].solo);
+        let ball = &self.balls[id];
+        let (pair, solo) = (ball.pair, ball.solo.unpack(id, ball.path.until));
         let p = earlier(earlier(solo, self.crossing(scene, id, t)), pair);
         queue.set(id, p, rank(p));
         if let Some(partner) = pair.and_then(|p| p.partner(id)) {
@@ -235,7 +291,7 @@ impl CellLists {
         mut best: Option<Pending>,
         others: impl Iterator<Item = BallId>,
     ) -> Option<Pending> {
-        let fi = self.balls[id].flags;
+        let fi = self.balls[id].solo.flags;
         let me = self.balls[id].path;
         if fi & ON_TABLE == 0 {
             return None;
@@ -249,10 +305,13 @@ impl CellLists {
             // Only balls on the table are in the grid (`Grid::set` and `set_path` see the same
             // segment), so `j` is; and its flags (another cache line) are read only when ball
             // `id` stands still, to skip a pair of which neither ball moves.
-            if j == id || (fi & MOVING == 0 && self.balls[j].flags & MOVING == 0) {
+            if j == id || (fi & MOVING == 0 && self.balls[j].solo.flags & MOVING == 0) {
                 continue;
             }
-            debug_assert!(self.balls[j].flags & ON_TABLE != 0, "ball {j} in the grid");
+            debug_assert!(
+                self.balls[j].solo.flags & ON_TABLE != 0,
+                "ball {j} in the grid"
+            );
             let other = self.balls[j].path;
             let until = if other.until < me.until {
                 other.until
@@ -289,7 +348,7 @@ impl CellLists {
     /// When moving ball `id` first leaves its cell after `t`, if it does.
     fn crossing(&self, scene: &Scene, id: BallId, t: f64) -> Option<Pending> {
         let ball = &self.balls[id];
-        if ball.flags & MOVING == 0 {
+        if ball.solo.flags & MOVING == 0 {
             return None;
         }
         // `end - t` is infinite for a segment that never ends, as `Segment::end`'s `None`.
