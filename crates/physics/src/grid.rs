@@ -64,9 +64,6 @@ struct Slots {
     ids: [u32; INLINE],
 }
 
-/// `Grid::of` for a ball in no cell.
-const NOWHERE: [u32; 2] = [u32::MAX; 2];
-
 /// The grid and which balls are in each cell.
 #[derive(Clone, Debug)]
 pub struct Grid {
@@ -77,9 +74,6 @@ pub struct Grid {
     cells: Vec<Slots>,
     /// Each cell's balls beyond its first [`INLINE`] (empty nearly always).
     spill: Vec<Vec<BallId>>,
-    /// Each ball's cell as `[x, y]`, [`NOWHERE`] if none (8 bytes a ball, so the whole
-    /// index stays in cache longer than `Option<Cell>`'s 24).
-    of: Vec<[u32; 2]>,
 }
 
 impl Grid {
@@ -112,7 +106,6 @@ impl Grid {
             ny,
             cells: vec![Slots::default(); nx * ny],
             spill: vec![Vec::new(); nx * ny],
-            of: vec![NOWHERE; count],
         }
     }
 
@@ -131,24 +124,17 @@ impl Grid {
         }
     }
 
-    /// Puts ball `id` in the cell containing `p` (or takes it out of the grid with `None`).
-    pub fn set(&mut self, id: BallId, p: Option<Vec2>) {
+    /// Moves ball `id` from cell `from` (`None`: in no cell) to the cell containing `p` (or
+    /// out of the grid with `None`); its cell now. The caller keeps each ball's cell (the
+    /// cell lists, in the ball's record: issue 53, a line fewer a crossing than an index
+    /// here).
+    pub fn set(&mut self, id: BallId, from: Option<Cell>, p: Option<Vec2>) -> Option<Cell> {
         let cell = p.map(|p| self.locate(p));
-        self.move_to(id, cell);
+        self.move_to(id, from, cell);
+        cell
     }
 
-    /// Ball `id`'s cell, if it is in one.
-    #[inline]
-    fn cell_of(&self, id: BallId) -> Option<Cell> {
-        let [x, y] = self.of[id];
-        (x != u32::MAX).then_some(Cell {
-            x: x as usize,
-            y: y as usize,
-        })
-    }
-
-    fn move_to(&mut self, id: BallId, cell: Option<Cell>) {
-        let old = self.cell_of(id);
+    fn move_to(&mut self, id: BallId, old: Option<Cell>, cell: Option<Cell>) {
         if old == cell {
             return;
         }
@@ -158,8 +144,6 @@ impl Grid {
         if let Some(new) = cell {
             self.push(new.y * self.nx + new.x, id);
         }
-        // Cells are indexed by `u32` (`Grid::with_cells` makes about one a ball).
-        self.of[id] = cell.map_or(NOWHERE, |c| [c.x as u32, c.y as u32]);
     }
 
     /// Appends ball `id` to cell `k`'s list, as `Vec::push`.
@@ -212,13 +196,10 @@ impl Grid {
             .chain(spill.iter().copied())
     }
 
-    /// Moves ball `id` one cell through `side` (set explicitly, not re-derived from a
-    /// position that may sit a rounding error short of the boundary); whether it moved (not
-    /// at the grid's edge).
-    pub fn cross(&mut self, id: BallId, side: Side) -> bool {
-        let Some(c) = self.cell_of(id) else {
-            return false;
-        };
+    /// Moves ball `id` from cell `c` one cell through `side` (set explicitly, not re-derived
+    /// from a position that may sit a rounding error short of the boundary); its cell now (`c`
+    /// itself at the grid's edge).
+    pub fn cross(&mut self, id: BallId, c: Cell, side: Side) -> Cell {
         let next = match side {
             Side::XPlus => Cell {
                 x: (c.x + 1).min(self.nx - 1),
@@ -237,14 +218,14 @@ impl Grid {
                 ..c
             },
         };
-        self.move_to(id, Some(next));
-        next != c
+        self.move_to(id, Some(c), Some(next));
+        next
     }
 
-    /// The balls in the cells that came into ball `id`'s neighbourhood when it crossed into
-    /// its cell through `side`: the row or column of three beyond it (fewer at the edge).
-    pub fn entered(&self, id: BallId, side: Side) -> impl Iterator<Item = BallId> + '_ {
-        let c = self.cell_of(id);
+    /// The balls in the cells that came into a ball's neighbourhood when it crossed into cell
+    /// `c` through `side`: the row or column of three beyond it (fewer at the edge; none
+    /// for `None`).
+    pub fn entered(&self, c: Option<Cell>, side: Side) -> impl Iterator<Item = BallId> + '_ {
         // (columns, rows) of the new cells; empty ranges when there are none.
         #[allow(clippy::reversed_empty_ranges)]
         let (xs, ys) = match c {
@@ -265,10 +246,9 @@ impl Grid {
             .flat_map(move |k| self.balls(k))
     }
 
-    /// The boundaries of ball `id`'s cell that are interior to the table, as
-    /// `(side, coordinate)`: a ball can cross only these.
-    pub fn exits(&self, id: BallId) -> impl Iterator<Item = (Side, f64)> + '_ {
-        let c = self.cell_of(id);
+    /// The boundaries of cell `c` that are interior to the table, as `(side, coordinate)`: a
+    /// ball can cross only these (none for `None`).
+    pub fn exits(&self, c: Option<Cell>) -> impl Iterator<Item = (Side, f64)> + '_ {
         Side::ALL.into_iter().filter_map(move |side| {
             let c = c?;
             match side {
@@ -285,9 +265,8 @@ impl Grid {
         })
     }
 
-    /// Balls in the cells around ball `id`'s cell (including its own, and itself).
-    pub fn neighbours(&self, id: BallId) -> impl Iterator<Item = BallId> + '_ {
-        let c = self.cell_of(id);
+    /// Balls in the cells around cell `c` (including `c`; none for `None`).
+    pub fn neighbours(&self, c: Option<Cell>) -> impl Iterator<Item = BallId> + '_ {
         let (xs, ys) = match c {
             Some(c) => (
                 c.x.saturating_sub(1)..=(c.x + 1).min(self.nx - 1),
@@ -317,28 +296,31 @@ mod tests {
         let k = 3 * 6 + 3;
         let mut model: Vec<BallId> = Vec::new();
         let order = [4, 0, 9, 3, 12, 7, 1, 18, 5, 11, 2];
+        let mut cell = None;
         for &id in &order {
-            grid.set(id, Some(centre));
+            cell = grid.set(id, None, Some(centre));
             model.push(id);
         }
+        let cell = cell.expect("the centre is on the grid");
+        assert_eq!((cell.x, cell.y), (3, 3));
         assert!(model.len() > INLINE, "the spill list is used");
         let seen = |g: &Grid| g.balls(k).collect::<Vec<_>>();
         assert_eq!(seen(&grid), model);
         // Front (an inline slot takes a spilled ball), spill middle, last, middle.
         for id in [4, 5, 2, 7, 11, 0] {
-            grid.set(id, None);
+            assert_eq!(grid.set(id, Some(cell), None), None, "ball {id} in no cell");
             let pos = model.iter().position(|&b| b == id).expect("in the model");
             model.swap_remove(pos);
             assert_eq!(seen(&grid), model, "after taking out ball {id}");
-            assert_eq!(grid.cell_of(id), None, "ball {id} in no cell");
         }
         // Back past the inline slots, then one ball crossing out and back.
         for id in [30, 31, 32] {
-            grid.set(id, Some(centre));
+            assert_eq!(grid.set(id, None, Some(centre)), Some(cell));
             model.push(id);
         }
         assert_eq!(seen(&grid), model);
-        assert!(grid.cross(9, Side::XPlus), "not at the grid's edge");
+        let next = grid.cross(9, cell, Side::XPlus);
+        assert_eq!((next.x, next.y), (4, 3), "not at the grid's edge");
         let pos = model.iter().position(|&b| b == 9).expect("in the model");
         model.swap_remove(pos);
         assert_eq!(seen(&grid), model);
@@ -347,10 +329,18 @@ mod tests {
             vec![9],
             "the cell to +x"
         );
-        assert!(grid.cross(9, Side::XMinus), "not at the grid's edge");
+        assert_eq!(grid.cross(9, next, Side::XMinus), cell);
         model.push(9);
         assert_eq!(seen(&grid), model);
         // The nine cells around the centre hold exactly the model's balls.
-        assert_eq!(grid.neighbours(9).collect::<Vec<_>>(), model);
+        assert_eq!(grid.neighbours(Some(cell)).collect::<Vec<_>>(), model);
+        // A ball come back to the centre through -x: the column at x = 2 is new, and empty.
+        assert_eq!(grid.entered(Some(cell), Side::XMinus).count(), 0);
+        assert_eq!(grid.entered(Some(next), Side::XPlus).count(), 0);
+        assert_eq!(
+            grid.entered(Some(next), Side::XMinus).collect::<Vec<_>>(),
+            model,
+            "the column at x = 3 is new to a ball come to x = 4 through -x"
+        );
     }
 }

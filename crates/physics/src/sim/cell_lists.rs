@@ -9,7 +9,7 @@ use super::pending::{Pending, PendingKind, earlier, rank};
 use super::scene::Scene;
 use crate::ball::BallId;
 use crate::detect::{self, Kinematics};
-use crate::grid::{Grid, Side};
+use crate::grid::{Cell, Grid, Side};
 use crate::math::Vec2;
 use crate::queue::Tournament;
 use crate::table::Cushion;
@@ -43,7 +43,7 @@ impl Path {
 /// Everything the cell lists keep of one ball, in one record of two cache lines (issue 53:
 /// spread over five arrays and the segments, a crossing read some eight lines of its own
 /// ball and two of each neighbour). First line: the [`Path`] a neighbour's test reads;
-/// second: the cached events and what only the ball's own events read.
+/// second: the cached events and what only the ball's own events read, its cell among them.
 #[derive(Clone, Copy, Debug, Default)]
 #[repr(C, align(64))]
 struct Record {
@@ -60,6 +60,30 @@ struct Record {
     /// The ball's earliest event with no other ball, kept until its segment changes (a grid
     /// crossing or a partner's event re-predicts only its pairs and crossing).
     solo: Solo,
+    /// The ball's grid cell as `[x, y]`, [`NOWHERE`] if none.
+    cell: [u32; 2],
+}
+
+/// `Record::cell` of a ball in no cell.
+const NOWHERE: [u32; 2] = [u32::MAX; 2];
+
+impl Record {
+    /// The ball's grid cell.
+    #[inline]
+    fn cell(&self) -> Option<Cell> {
+        let [x, y] = self.cell;
+        (x != u32::MAX).then_some(Cell {
+            x: x as usize,
+            y: y as usize,
+        })
+    }
+
+    /// Stores the ball's grid cell (cells are indexed by `u32`: `Grid::new` makes about one
+    /// a ball).
+    #[inline]
+    fn set_cell(&mut self, cell: Option<Cell>) {
+        self.cell = cell.map_or(NOWHERE, |c| [c.x as u32, c.y as u32]);
+    }
 }
 
 // Two cache lines a ball, the first the neighbours' (the layout above depends on it).
@@ -148,7 +172,13 @@ impl CellLists {
     pub fn new(grid: Grid, n: usize) -> Self {
         Self {
             grid,
-            balls: vec![Record::default(); n],
+            balls: vec![
+                Record {
+                    cell: NOWHERE,
+                    ..Record::default()
+                };
+                n
+            ],
             dependents: vec![Vec::new(); n],
             round: 0,
         }
@@ -163,7 +193,11 @@ impl CellLists {
         let segments = scene.segments;
         for (id, seg) in segments.iter().enumerate() {
             let on_table = seg.state.motion.on_table();
-            self.grid.set(id, on_table.then(|| seg.position_at(t)));
+            let from = self.balls[id].cell();
+            let cell = self
+                .grid
+                .set(id, from, on_table.then(|| seg.position_at(t)));
+            self.balls[id].set_cell(cell);
             self.set_path(scene, id, t);
         }
         for id in 0..segments.len() {
@@ -185,7 +219,11 @@ impl CellLists {
         for &id in touched {
             let seg = &scene.segments[id];
             let on_table = seg.state.motion.on_table();
-            self.grid.set(id, on_table.then_some(seg.state.position));
+            let from = self.balls[id].cell();
+            let cell = self
+                .grid
+                .set(id, from, on_table.then_some(seg.state.position));
+            self.balls[id].set_cell(cell);
             self.set_path(scene, id, t);
         }
         for &id in touched {
@@ -221,10 +259,14 @@ impl CellLists {
         t: f64,
     ) {
         self.round += 1;
-        if self.grid.cross(id, side) {
-            let best = self.balls[id].pair;
-            let found = self.search(scene, id, t, best, self.grid.entered(id, side));
-            self.balls[id].pair = found;
+        if let Some(from) = self.balls[id].cell() {
+            let cell = self.grid.cross(id, from, side);
+            if cell != from {
+                self.balls[id].set_cell(Some(cell));
+                let best = self.balls[id].pair;
+                let found = self.search(scene, id, t, best, self.grid.entered(Some(cell), side));
+                self.balls[id].pair = found;
+            }
         }
         self.set_cache(queue, scene, id, t);
     }
@@ -274,7 +316,8 @@ impl CellLists {
 
     /// Predicts ball `id` from `t` in full: its pairs with every ball around it.
     fn predict(&mut self, scene: &Scene, queue: &mut Tournament<Pending>, id: BallId, t: f64) {
-        let found = self.search(scene, id, t, None, self.grid.neighbours(id));
+        let cell = self.balls[id].cell();
+        let found = self.search(scene, id, t, None, self.grid.neighbours(cell));
         self.balls[id].pair = found;
         self.set_cache(queue, scene, id, t);
     }
@@ -368,7 +411,7 @@ impl CellLists {
             }
         };
         let mut best = None;
-        for (side, at) in self.grid.exits(id) {
+        for (side, at) in self.grid.exits(ball.cell()) {
             let (n, offset) = match side {
                 Side::XPlus => (Vec2::new(-1.0, 0.0), at),
                 Side::XMinus => (Vec2::new(1.0, 0.0), -at),
