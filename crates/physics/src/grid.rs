@@ -47,6 +47,23 @@ pub struct Cell {
     pub y: usize,
 }
 
+/// Balls a cell holds in its own [`Slots`]; more spill over into a list of the cell's own
+/// (rare: at about one ball a cell on average, eight or more in one cell has a Poisson
+/// chance of about 1e-5).
+const INLINE: usize = 7;
+
+/// A cell's balls in 32 bytes, two cells a cache line, so the cells a crossing searches are
+/// read where they are listed (issue 53: a `Vec` a cell sent each search to one heap block
+/// a cell). Logically one list, `ids[..min(len, INLINE)]` and then the cell's spill list,
+/// which `push` and `swap_remove` keep in the order a `Vec` would, so every search visits
+/// the same balls in the same order as with a `Vec` a cell.
+#[derive(Clone, Copy, Debug, Default)]
+#[repr(C, align(32))]
+struct Slots {
+    len: u32,
+    ids: [u32; INLINE],
+}
+
 /// The grid and which balls are in each cell.
 #[derive(Clone, Debug)]
 pub struct Grid {
@@ -54,8 +71,9 @@ pub struct Grid {
     size: Vec2,
     nx: usize,
     ny: usize,
-    cells: Vec<Vec<BallId>>,
-    of: Vec<Option<Cell>>,
+    cells: Vec<Slots>,
+    /// Each cell's balls beyond its first [`INLINE`] (empty nearly always).
+    spill: Vec<Vec<BallId>>,
 }
 
 impl Grid {
@@ -86,8 +104,8 @@ impl Grid {
             size: Vec2::new(w / nx as f64, h / ny as f64),
             nx,
             ny,
-            cells: vec![Vec::new(); nx * ny],
-            of: vec![None; count],
+            cells: vec![Slots::default(); nx * ny],
+            spill: vec![Vec::new(); nx * ny],
         }
     }
 
@@ -106,33 +124,82 @@ impl Grid {
         }
     }
 
-    /// Puts ball `id` in the cell containing `p` (or takes it out of the grid with `None`).
-    pub fn set(&mut self, id: BallId, p: Option<Vec2>) {
+    /// Moves ball `id` from cell `from` (`None`: in no cell) to the cell containing `p` (or
+    /// out of the grid with `None`); its cell now. The caller keeps each ball's cell (the
+    /// cell lists, in the ball's record: issue 53, a line fewer a crossing than an index
+    /// here).
+    pub fn set(&mut self, id: BallId, from: Option<Cell>, p: Option<Vec2>) -> Option<Cell> {
         let cell = p.map(|p| self.locate(p));
-        self.move_to(id, cell);
+        self.move_to(id, from, cell);
+        cell
     }
 
-    fn move_to(&mut self, id: BallId, cell: Option<Cell>) {
-        if self.of[id] == cell {
+    fn move_to(&mut self, id: BallId, old: Option<Cell>, cell: Option<Cell>) {
+        if old == cell {
             return;
         }
-        if let Some(old) = self.of[id] {
-            let v = &mut self.cells[old.y * self.nx + old.x];
-            if let Some(k) = v.iter().position(|&b| b == id) {
-                v.swap_remove(k);
-            }
+        if let Some(old) = old {
+            self.remove(old.y * self.nx + old.x, id);
         }
         if let Some(new) = cell {
-            self.cells[new.y * self.nx + new.x].push(id);
+            self.push(new.y * self.nx + new.x, id);
         }
-        self.of[id] = cell;
     }
 
-    /// Moves ball `id` one cell through `side` (set explicitly, not re-derived from a
-    /// position that may sit a rounding error short of the boundary); whether it moved (not
-    /// at the grid's edge).
-    pub fn cross(&mut self, id: BallId, side: Side) -> bool {
-        let Some(c) = self.of[id] else { return false };
+    /// Appends ball `id` to cell `k`'s list, as `Vec::push`.
+    fn push(&mut self, k: usize, id: BallId) {
+        let cell = &mut self.cells[k];
+        let n = cell.len as usize;
+        if n < INLINE {
+            cell.ids[n] = id as u32;
+        } else {
+            self.spill[k].push(id);
+        }
+        cell.len += 1;
+    }
+
+    /// Takes ball `id` out of cell `k`'s list, as `Vec::swap_remove` at its position (the
+    /// last ball takes its place), if it is there.
+    fn remove(&mut self, k: usize, id: BallId) {
+        let n = self.cells[k].len as usize;
+        let at = |g: &Self, i: usize| {
+            if i < INLINE {
+                g.cells[k].ids[i] as usize
+            } else {
+                g.spill[k][i - INLINE]
+            }
+        };
+        let Some(pos) = (0..n).find(|&i| at(self, i) == id) else {
+            return;
+        };
+        let last = at(self, n - 1);
+        if n > INLINE {
+            self.spill[k].pop();
+        }
+        if pos < INLINE {
+            self.cells[k].ids[pos] = last as u32;
+        } else if pos < n - 1 {
+            self.spill[k][pos - INLINE] = last;
+        }
+        self.cells[k].len -= 1;
+    }
+
+    /// The balls of cell `k`, in list order.
+    #[inline]
+    fn balls(&self, k: usize) -> impl Iterator<Item = BallId> + '_ {
+        let cell = &self.cells[k];
+        let n = cell.len as usize;
+        let spill: &[BallId] = if n > INLINE { &self.spill[k] } else { &[] };
+        cell.ids[..n.min(INLINE)]
+            .iter()
+            .map(|&b| b as usize)
+            .chain(spill.iter().copied())
+    }
+
+    /// Moves ball `id` from cell `c` one cell through `side` (set explicitly, not re-derived
+    /// from a position that may sit a rounding error short of the boundary); its cell now (`c`
+    /// itself at the grid's edge).
+    pub fn cross(&mut self, id: BallId, c: Cell, side: Side) -> Cell {
         let next = match side {
             Side::XPlus => Cell {
                 x: (c.x + 1).min(self.nx - 1),
@@ -151,14 +218,14 @@ impl Grid {
                 ..c
             },
         };
-        self.move_to(id, Some(next));
-        next != c
+        self.move_to(id, Some(c), Some(next));
+        next
     }
 
-    /// The balls in the cells that came into ball `id`'s neighbourhood when it crossed into
-    /// its cell through `side`: the row or column of three beyond it (fewer at the edge).
-    pub fn entered(&self, id: BallId, side: Side) -> impl Iterator<Item = BallId> + '_ {
-        let c = self.of[id];
+    /// The balls in the cells that came into a ball's neighbourhood when it crossed into cell
+    /// `c` through `side`: the row or column of three beyond it (fewer at the edge; none
+    /// for `None`).
+    pub fn entered(&self, c: Option<Cell>, side: Side) -> impl Iterator<Item = BallId> + '_ {
         // (columns, rows) of the new cells; empty ranges when there are none.
         #[allow(clippy::reversed_empty_ranges)]
         let (xs, ys) = match c {
@@ -176,13 +243,12 @@ impl Grid {
             None => (1..=0, 1..=0),
         };
         ys.flat_map(move |y| xs.clone().map(move |x| y * self.nx + x))
-            .flat_map(move |k| self.cells[k].iter().copied())
+            .flat_map(move |k| self.balls(k))
     }
 
-    /// The boundaries of ball `id`'s cell that are interior to the table, as
-    /// `(side, coordinate)`: a ball can cross only these.
-    pub fn exits(&self, id: BallId) -> impl Iterator<Item = (Side, f64)> + '_ {
-        let c = self.of[id];
+    /// The boundaries of cell `c` that are interior to the table, as `(side, coordinate)`: a
+    /// ball can cross only these (none for `None`).
+    pub fn exits(&self, c: Option<Cell>) -> impl Iterator<Item = (Side, f64)> + '_ {
         Side::ALL.into_iter().filter_map(move |side| {
             let c = c?;
             match side {
@@ -199,9 +265,8 @@ impl Grid {
         })
     }
 
-    /// Balls in the cells around ball `id`'s cell (including its own, and itself).
-    pub fn neighbours(&self, id: BallId) -> impl Iterator<Item = BallId> + '_ {
-        let c = self.of[id];
+    /// Balls in the cells around cell `c` (including `c`; none for `None`).
+    pub fn neighbours(&self, c: Option<Cell>) -> impl Iterator<Item = BallId> + '_ {
         let (xs, ys) = match c {
             Some(c) => (
                 c.x.saturating_sub(1)..=(c.x + 1).min(self.nx - 1),
@@ -211,6 +276,71 @@ impl Grid {
             None => (1..=0, 1..=0),
         };
         ys.flat_map(move |y| xs.clone().map(move |x| y * self.nx + x))
-            .flat_map(move |k| self.cells[k].iter().copied())
+            .flat_map(move |k| self.balls(k))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A cell's balls come out in the order a `Vec` kept under `push` and `swap_remove`
+    /// (the order the cell lists' searches depend on, bit for bit), also past the
+    /// [`INLINE`] balls a cell holds in place: eleven balls into one cell of a 6 x 6 grid,
+    /// taken out at the front, the middle, the spill and the end, against a `Vec` model.
+    #[test]
+    fn cell_order_is_a_vecs_past_the_inline_slots() {
+        let mut grid = Grid::with_cells(Vec2::new(1.5, 1.5), 0.01, 40, true);
+        assert_eq!((grid.nx, grid.ny), (6, 6), "cells of sqrt(9 / 40) m, 0.5 m");
+        let centre = Vec2::new(0.25, 0.25);
+        let k = 3 * 6 + 3;
+        let mut model: Vec<BallId> = Vec::new();
+        let order = [4, 0, 9, 3, 12, 7, 1, 18, 5, 11, 2];
+        let mut cell = None;
+        for &id in &order {
+            cell = grid.set(id, None, Some(centre));
+            model.push(id);
+        }
+        let cell = cell.expect("the centre is on the grid");
+        assert_eq!((cell.x, cell.y), (3, 3));
+        assert!(model.len() > INLINE, "the spill list is used");
+        let seen = |g: &Grid| g.balls(k).collect::<Vec<_>>();
+        assert_eq!(seen(&grid), model);
+        // Front (an inline slot takes a spilled ball), spill middle, last, middle.
+        for id in [4, 5, 2, 7, 11, 0] {
+            assert_eq!(grid.set(id, Some(cell), None), None, "ball {id} in no cell");
+            let pos = model.iter().position(|&b| b == id).expect("in the model");
+            model.swap_remove(pos);
+            assert_eq!(seen(&grid), model, "after taking out ball {id}");
+        }
+        // Back past the inline slots, then one ball crossing out and back.
+        for id in [30, 31, 32] {
+            assert_eq!(grid.set(id, None, Some(centre)), Some(cell));
+            model.push(id);
+        }
+        assert_eq!(seen(&grid), model);
+        let next = grid.cross(9, cell, Side::XPlus);
+        assert_eq!((next.x, next.y), (4, 3), "not at the grid's edge");
+        let pos = model.iter().position(|&b| b == 9).expect("in the model");
+        model.swap_remove(pos);
+        assert_eq!(seen(&grid), model);
+        assert_eq!(
+            grid.balls(k + 1).collect::<Vec<_>>(),
+            vec![9],
+            "the cell to +x"
+        );
+        assert_eq!(grid.cross(9, next, Side::XMinus), cell);
+        model.push(9);
+        assert_eq!(seen(&grid), model);
+        // The nine cells around the centre hold exactly the model's balls.
+        assert_eq!(grid.neighbours(Some(cell)).collect::<Vec<_>>(), model);
+        // A ball come back to the centre through -x: the column at x = 2 is new, and empty.
+        assert_eq!(grid.entered(Some(cell), Side::XMinus).count(), 0);
+        assert_eq!(grid.entered(Some(next), Side::XPlus).count(), 0);
+        assert_eq!(
+            grid.entered(Some(next), Side::XMinus).collect::<Vec<_>>(),
+            model,
+            "the column at x = 3 is new to a ball come to x = 4 through -x"
+        );
     }
 }

@@ -9,13 +9,15 @@ use super::pending::{Pending, PendingKind, earlier, rank};
 use super::scene::Scene;
 use crate::ball::BallId;
 use crate::detect::{self, Kinematics};
-use crate::grid::{Grid, Side};
+use crate::grid::{Cell, Grid, Side};
 use crate::math::Vec2;
 use crate::queue::Tournament;
+use crate::table::Cushion;
 
-/// What a ball's pair searches read of it, in one cache line: its segment's start, state
-/// and acceleration, and the time of its next event with no other ball (a contact after it
-/// is searched again then). Random access by ball, so one line a neighbour, not one a field.
+/// What a ball's pair searches read of a neighbour, in one cache line (64 bytes, the first
+/// of the ball's [`Record`]): its segment's start, state and acceleration, and the time of
+/// its next event with no other ball (a contact after it is searched again then). Random
+/// access by ball, so one line a neighbour, not one a field.
 #[derive(Clone, Copy, Debug, Default)]
 struct Path {
     start: f64,
@@ -23,8 +25,6 @@ struct Path {
     v: Vec2,
     a: Vec2,
     until: f64,
-    /// [`MOVING`] and [`ON_TABLE`] bits (here, so a neighbour's test reads one record).
-    flags: u8,
 }
 
 impl Path {
@@ -40,40 +40,130 @@ impl Path {
     }
 }
 
-/// `Path::flags` bit: the ball moves.
+/// Everything the cell lists keep of one ball, in one record of two cache lines (issue 53:
+/// spread over five arrays and the segments, a crossing read some eight lines of its own
+/// ball and two of each neighbour). First line: the [`Path`] a neighbour's test reads;
+/// second: the cached events and what only the ball's own events read, its cell among them.
+#[derive(Clone, Copy, Debug, Default)]
+#[repr(C, align(64))]
+struct Record {
+    path: Path,
+    /// The ball's earliest contact with another ball found so far, valid until either
+    /// segment changes. Searched without the cap of the ball's next crossing, so a crossing
+    /// keeps it and searches only the cells it brings into the neighbourhood.
+    pair: Option<Pending>,
+    /// When the segment ends by itself (`f64::INFINITY` if never), the next crossing's
+    /// horizon, as `Segment::end`.
+    end: f64,
+    /// Stamp of the prediction round that last predicted the ball.
+    stamp: u64,
+    /// The ball's earliest event with no other ball, kept until its segment changes (a grid
+    /// crossing or a partner's event re-predicts only its pairs and crossing).
+    solo: Solo,
+    /// The ball's grid cell as `[x, y]`, [`NOWHERE`] if none.
+    cell: [u32; 2],
+}
+
+/// `Record::cell` of a ball in no cell.
+const NOWHERE: [u32; 2] = [u32::MAX; 2];
+
+impl Record {
+    /// The ball's grid cell.
+    #[inline]
+    fn cell(&self) -> Option<Cell> {
+        let [x, y] = self.cell;
+        (x != u32::MAX).then_some(Cell {
+            x: x as usize,
+            y: y as usize,
+        })
+    }
+
+    /// Stores the ball's grid cell (cells are indexed by `u32`: `Grid::new` makes about one
+    /// a ball).
+    #[inline]
+    fn set_cell(&mut self, cell: Option<Cell>) {
+        self.cell = cell.map_or(NOWHERE, |c| [c.x as u32, c.y as u32]);
+    }
+}
+
+// Two cache lines a ball, the first the neighbours' (the layout above depends on it).
+const _: () = assert!(std::mem::size_of::<Record>() == 128 && std::mem::size_of::<Path>() == 64);
+
+/// A ball's earliest event with no other ball in 8 bytes: its time is the record's
+/// `Path::until` (to the bit: `until` is that time), its ball the record's; and the ball's
+/// motion bits.
+#[derive(Clone, Copy, Debug, Default)]
+struct Solo {
+    /// 0: none; 1 to 4: [`PendingKind::Transition`], `Opening`, `Cushion`, `Jaw`.
+    tag: u8,
+    /// [`MOVING`] and [`ON_TABLE`] bits of the segment's motion.
+    flags: u8,
+    /// The opening, cushion (its place in [`Cushion::ALL`]) or jaw.
+    index: u32,
+}
+
+impl Solo {
+    /// `solo`, an event of ball `id` alone ([`Scene::predict_solo`]), with `flags`.
+    fn pack(solo: Option<Pending>, id: BallId, flags: u8) -> Self {
+        let (tag, index) = match solo.map(|p| p.kind) {
+            None => (0, 0),
+            Some(PendingKind::Transition(_)) => (1, 0),
+            Some(PendingKind::Opening(_, k)) => (2, k),
+            Some(PendingKind::Cushion(_, c)) => (3, c as usize),
+            Some(PendingKind::Jaw(_, k)) => (4, k),
+            Some(PendingKind::Crossing(..) | PendingKind::Pair(..)) => {
+                unreachable!("a ball's own events are transitions, openings, cushions, jaws")
+            }
+        };
+        debug_assert!(solo.is_none_or(|p| p.involves(id) && p.partner(id).is_none()));
+        debug_assert!(
+            index < 1 << 30,
+            "part indices fit in 30 bits (`Pending::rank`)"
+        );
+        Self {
+            tag,
+            flags,
+            index: index as u32,
+        }
+    }
+
+    /// The event packed, of ball `id` at time `until`.
+    #[inline]
+    fn unpack(self, id: BallId, until: f64) -> Option<Pending> {
+        let k = self.index as usize;
+        let kind = match self.tag {
+            1 => PendingKind::Transition(id),
+            2 => PendingKind::Opening(id, k),
+            3 => PendingKind::Cushion(id, Cushion::ALL[k & 3]),
+            4 => PendingKind::Jaw(id, k),
+            _ => return None,
+        };
+        Some(Pending { time: until, kind })
+    }
+}
+
+/// `Solo::flags` bit: the ball moves.
 const MOVING: u8 = 1;
-/// `Path::flags` bit: the ball is on the table.
+/// `Solo::flags` bit: the ball is on the table.
 const ON_TABLE: u8 = 2;
 
 /// The cell lists and the index of which predictions depend on which ball.
 #[derive(Debug)]
 pub(super) struct CellLists {
     grid: Grid,
-    /// Each ball's earliest event with no other ball, kept until its segment changes (a
-    /// grid crossing or a partner's event re-predicts only its pairs and crossing).
-    solo: Vec<Option<Pending>>,
-    /// Each ball's earliest contact with another ball found so far, valid until either
-    /// segment changes. Searched without the cap of the ball's next crossing, so a crossing
-    /// keeps it and searches only the cells it brings into the neighbourhood.
-    pairs: Vec<Option<Pending>>,
-    /// Each ball's path, for the pair cull.
-    paths: Vec<Path>,
+    /// Each ball's paths and cached events.
+    balls: Vec<Record>,
     /// For each ball, the balls whose cached event is a contact with it (may hold stale
     /// entries; checked before use).
     dependents: Vec<Vec<BallId>>,
-    /// Stamp of the prediction round that last predicted each ball.
-    stamps: Vec<u64>,
     /// The current prediction round.
     round: u64,
 }
 
 clone_reusing!(CellLists {
     grid,
-    solo,
-    pairs,
-    paths,
+    balls,
     dependents,
-    stamps,
     round
 });
 
@@ -82,11 +172,14 @@ impl CellLists {
     pub fn new(grid: Grid, n: usize) -> Self {
         Self {
             grid,
-            solo: vec![None; n],
-            pairs: vec![None; n],
-            paths: vec![Path::default(); n],
+            balls: vec![
+                Record {
+                    cell: NOWHERE,
+                    ..Record::default()
+                };
+                n
+            ],
             dependents: vec![Vec::new(); n],
-            stamps: vec![0; n],
             round: 0,
         }
     }
@@ -100,7 +193,11 @@ impl CellLists {
         let segments = scene.segments;
         for (id, seg) in segments.iter().enumerate() {
             let on_table = seg.state.motion.on_table();
-            self.grid.set(id, on_table.then(|| seg.position_at(t)));
+            let from = self.balls[id].cell();
+            let cell = self
+                .grid
+                .set(id, from, on_table.then(|| seg.position_at(t)));
+            self.balls[id].set_cell(cell);
             self.set_path(scene, id, t);
         }
         for id in 0..segments.len() {
@@ -122,7 +219,11 @@ impl CellLists {
         for &id in touched {
             let seg = &scene.segments[id];
             let on_table = seg.state.motion.on_table();
-            self.grid.set(id, on_table.then_some(seg.state.position));
+            let from = self.balls[id].cell();
+            let cell = self
+                .grid
+                .set(id, from, on_table.then_some(seg.state.position));
+            self.balls[id].set_cell(cell);
             self.set_path(scene, id, t);
         }
         for &id in touched {
@@ -130,11 +231,11 @@ impl CellLists {
         }
         for &id in touched {
             for m in std::mem::take(&mut self.dependents[id]) {
-                let stale = self.pairs[m].is_some_and(|p| p.involves(id));
+                let stale = self.balls[m].pair.is_some_and(|p| p.involves(id));
                 if !stale {
                     continue;
                 }
-                if self.stamps[m] == self.round {
+                if self.balls[m].stamp == self.round {
                     // Re-predicted earlier in this round (say, as a dependent of another
                     // touched ball) and now waiting on `id`: keep the link, or the next change
                     // of `id` leaves `m`'s pair event stale and it fires at a gap.
@@ -158,9 +259,14 @@ impl CellLists {
         t: f64,
     ) {
         self.round += 1;
-        if self.grid.cross(id, side) {
-            let found = self.search(scene, id, t, self.pairs[id], self.grid.entered(id, side));
-            self.pairs[id] = found;
+        if let Some(from) = self.balls[id].cell() {
+            let cell = self.grid.cross(id, from, side);
+            if cell != from {
+                self.balls[id].set_cell(Some(cell));
+                let best = self.balls[id].pair;
+                let found = self.search(scene, id, t, best, self.grid.entered(Some(cell), side));
+                self.balls[id].pair = found;
+            }
         }
         self.set_cache(queue, scene, id, t);
     }
@@ -169,9 +275,9 @@ impl CellLists {
     fn set_path(&mut self, scene: &Scene, id: BallId, t: f64) {
         let seg = &scene.segments[id];
         let solo = scene.predict_solo(id, t);
-        self.solo[id] = solo;
         let m = seg.state.motion;
-        self.paths[id] = Path {
+        let ball = &mut self.balls[id];
+        ball.path = Path {
             start: seg.start,
             p: seg.state.position,
             v: seg.state.velocity,
@@ -180,24 +286,28 @@ impl CellLists {
                 Kinematics::Linear => Vec2::ZERO,
             },
             until: solo.map_or(f64::INFINITY, |p| p.time),
-            flags: if m.is_moving() { MOVING } else { 0 } | if m.on_table() { ON_TABLE } else { 0 },
         };
+        let flags =
+            if m.is_moving() { MOVING } else { 0 } | if m.on_table() { ON_TABLE } else { 0 };
+        ball.solo = Solo::pack(solo, id, flags);
+        ball.end = seg.end.unwrap_or(f64::INFINITY);
     }
 
     /// Stores ball `id`'s earliest event (its own, its next crossing, its best pair) and
     /// indexes its best pair under the partner.
     fn set_cache(&mut self, queue: &mut Tournament<Pending>, scene: &Scene, id: BallId, t: f64) {
-        self.stamps[id] = self.round;
-        let pair = self.pairs[id];
-        let p = earlier(earlier(self.solo[id], self.crossing(scene, id, t)), pair);
+        self.balls[id].stamp = self.round;
+        let ball = &self.balls[id];
+        let (pair, solo) = (ball.pair, ball.solo.unpack(id, ball.path.until));
+        let p = earlier(earlier(solo, self.crossing(scene, id, t)), pair);
         queue.set(id, p, rank(p));
         if let Some(partner) = pair.and_then(|p| p.partner(id)) {
             let deps = &mut self.dependents[partner];
             deps.push(id);
             if deps.len() > 64 {
                 // Drop stale entries so the list stays short in long runs.
-                let pairs = &self.pairs;
-                deps.retain(|&m| pairs[m].is_some_and(|q| q.involves(partner)));
+                let balls = &self.balls;
+                deps.retain(|&m| balls[m].pair.is_some_and(|q| q.involves(partner)));
                 deps.sort_unstable();
                 deps.dedup();
             }
@@ -206,8 +316,9 @@ impl CellLists {
 
     /// Predicts ball `id` from `t` in full: its pairs with every ball around it.
     fn predict(&mut self, scene: &Scene, queue: &mut Tournament<Pending>, id: BallId, t: f64) {
-        let found = self.search(scene, id, t, None, self.grid.neighbours(id));
-        self.pairs[id] = found;
+        let cell = self.balls[id].cell();
+        let found = self.search(scene, id, t, None, self.grid.neighbours(cell));
+        self.balls[id].pair = found;
         self.set_cache(queue, scene, id, t);
     }
 
@@ -223,8 +334,8 @@ impl CellLists {
         mut best: Option<Pending>,
         others: impl Iterator<Item = BallId>,
     ) -> Option<Pending> {
-        let me = self.paths[id];
-        let fi = me.flags;
+        let fi = self.balls[id].solo.flags;
+        let me = self.balls[id].path;
         if fi & ON_TABLE == 0 {
             return None;
         }
@@ -234,11 +345,17 @@ impl CellLists {
         let contact = 2.0 * r;
         let (pi, vi) = me.at(t);
         for j in others {
-            let other = self.paths[j];
-            let fj = other.flags;
-            if j == id || fj & ON_TABLE == 0 || (fi | fj) & MOVING == 0 {
+            // Only balls on the table are in the grid (`Grid::set` and `set_path` see the same
+            // segment), so `j` is; and its flags (another cache line) are read only when ball
+            // `id` stands still, to skip a pair of which neither ball moves.
+            if j == id || (fi & MOVING == 0 && self.balls[j].solo.flags & MOVING == 0) {
                 continue;
             }
+            debug_assert!(
+                self.balls[j].solo.flags & ON_TABLE != 0,
+                "ball {j} in the grid"
+            );
+            let other = self.balls[j].path;
             let until = if other.until < me.until {
                 other.until
             } else {
@@ -273,16 +390,28 @@ impl CellLists {
 
     /// When moving ball `id` first leaves its cell after `t`, if it does.
     fn crossing(&self, scene: &Scene, id: BallId, t: f64) -> Option<Pending> {
-        let seg = &scene.segments[id];
-        if !seg.state.motion.is_moving() {
+        let ball = &self.balls[id];
+        if ball.solo.flags & MOVING == 0 {
             return None;
         }
-        let horizon = seg.end.map_or(f64::INFINITY, |e| e - t);
+        // `end - t` is infinite for a segment that never ends, as `Segment::end`'s `None`.
+        let horizon = ball.end - t;
         // The state once for every side, as `detect::ball_line` computes it for each; the
-        // real path even in the linear comparison mode.
-        let (p, v, a) = (seg.position_at(t), seg.velocity_at(t), seg.acceleration);
+        // real path even in the linear comparison mode (where the record's acceleration is
+        // zero, so the segment is read). `Path::at` is `Segment::position_at` and
+        // `velocity_at` to the bit.
+        let (p, v, a) = match scene.kinematics() {
+            Kinematics::Exact => {
+                let (p, v) = ball.path.at(t);
+                (p, v, ball.path.a)
+            }
+            Kinematics::Linear => {
+                let seg = &scene.segments[id];
+                (seg.position_at(t), seg.velocity_at(t), seg.acceleration)
+            }
+        };
         let mut best = None;
-        for (side, at) in self.grid.exits(id) {
+        for (side, at) in self.grid.exits(ball.cell()) {
             let (n, offset) = match side {
                 Side::XPlus => (Vec2::new(-1.0, 0.0), at),
                 Side::XMinus => (Vec2::new(1.0, 0.0), -at),
