@@ -17,7 +17,7 @@
 //! seed gives the same decision on any number of threads.
 
 use crate::AiError;
-use crate::candidates::{Aim, Layout, direct_aims, rail_aims};
+use crate::candidates::{Aim, Layout, ShotKind, direct_aims, rail_aims};
 use crate::level::Level;
 use crate::noise::{Noise, stream};
 use crate::rounds::{self, Rounds, Sampler, Searched, Stats, best_choice};
@@ -46,6 +46,9 @@ pub struct Stroke {
     pub shot: Shot,
     /// What is declared.
     pub declared: Declaration,
+    /// What it tries, when it was aimed (a pot, a bank, a kick, a combination); `None`
+    /// for a direction of the fan or an opening stroke.
+    pub kind: Option<ShotKind>,
     /// The expected value the search found ([`stroke_value`] units).
     pub value: f64,
 }
@@ -129,6 +132,8 @@ struct Candidate {
     place: Option<Vec2>,
     shot: Shot,
     declared: Declaration,
+    /// What its aim tries (for the words of the decision; the search never reads it).
+    kind: Option<ShotKind>,
 }
 
 /// Plays `shot` from `sim` (the cue ball at `place` if given) and judges it on a copy of
@@ -235,6 +240,7 @@ fn opening_candidates(turn: &Turn, layout: &Layout, place: Option<Vec2>) -> Vec<
                 } else {
                     Declaration::None
                 },
+                kind: None,
             });
         }
     }
@@ -270,6 +276,7 @@ fn aimed_candidates(turn: &Turn, aims: &[Aim], place: Option<Vec2>) -> Vec<Candi
                     place,
                     shot,
                     declared: pocket.map_or(Declaration::None, |p| declare(aim.first, p)),
+                    kind: Some(aim.kind),
                 });
             }
         }
@@ -306,6 +313,7 @@ fn fan_candidates(place: Option<Vec2>, fan: usize) -> Vec<Candidate> {
                     place,
                     shot,
                     declared: Declaration::None,
+                    kind: None,
                 });
             }
         }
@@ -482,6 +490,7 @@ pub fn best_stroke(
         place: c.place,
         shot: c.shot,
         declared: c.declared,
+        kind: c.kind,
         value: found.value,
     })
 }

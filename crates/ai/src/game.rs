@@ -76,6 +76,7 @@ impl Decided {
                 place: plan.place,
                 shot: plan.shot,
                 declared: declaration_of(plan.call),
+                kind: Some(plan.kind),
                 value: plan.value,
             })),
             Decided::Snooker(SnookerDecision::Shoot(plan)) => Some(Move::Strike(Stroke {
@@ -84,6 +85,7 @@ impl Decided {
                 declared: plan
                     .nominated
                     .map_or(Declaration::None, |ball| Declaration::Nominate { ball }),
+                kind: Some(plan.kind),
                 value: plan.value,
             })),
         }

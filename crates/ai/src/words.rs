@@ -64,13 +64,24 @@ impl Decided {
             Decided::Any(Move::Choose(index)) => {
                 label().unwrap_or_else(|| format!("option {}", index + 1))
             }
-            Decided::Any(Move::Strike(stroke)) => format!(
-                "a stroke at {:.1} degrees, {:.1} m/s{} (worth {:+.2})",
-                stroke.shot.angle.to_degrees().rem_euclid(360.0),
-                stroke.shot.speed,
-                jump_text(stroke.shot.elevation),
-                stroke.value
-            ),
+            Decided::Any(Move::Strike(stroke)) => {
+                let aim = format!(
+                    "{:.1} degrees, {:.1} m/s",
+                    stroke.shot.angle.to_degrees().rem_euclid(360.0),
+                    stroke.shot.speed
+                );
+                let what = match stroke.kind {
+                    Some(kind) => format!("{} ({aim})", shot(kind)),
+                    None => format!("a stroke at {aim}"),
+                };
+                // The search's own scale (`stroke_value`): a game won +10, lost -10, a foul
+                // -1, a point or a pot +1.
+                format!(
+                    "{what}{}, expected value {:+.2}",
+                    jump_text(stroke.shot.elevation),
+                    stroke.value
+                )
+            }
         }
     }
 }
@@ -198,6 +209,27 @@ mod tests {
         assert!(
             said.starts_with("a kick off the right cushion, the pink in"),
             "{said}"
+        );
+        // The shared search's stroke says what its aim tries, else where it goes.
+        let stroke = |kind| {
+            Decided::Any(Move::Strike(crate::any_game::Stroke {
+                place: None,
+                shot: Shot::new(0.0, 2.0),
+                declared: billiards_rules::Declaration::None,
+                kind,
+                value: 1.0,
+            }))
+        };
+        let ten = start("ten-ball");
+        let said = stroke(Some(pot)).words(ten.as_ref(), &right);
+        assert!(
+            said.starts_with("the 3 in the ") && said.ends_with("m/s), expected value +1.00"),
+            "{said}"
+        );
+        let said = stroke(None).words(ten.as_ref(), &right);
+        assert_eq!(
+            said,
+            "a stroke at 0.0 degrees, 2.0 m/s, expected value +1.00"
         );
     }
 }
