@@ -102,7 +102,9 @@ impl Impact {
                 } else {
                     self.gc = setup.grip_at_zero(&y, false, gi);
                 }
-                if (nose && self.gi == Grip::Stick) || (!nose && self.gc == Grip::Stick) {
+                if (nose && matches!(self.gi, Grip::Stick))
+                    || (!nose && matches!(self.gc, Grip::Stick))
+                {
                     setup.snap(&mut self.y, nose);
                 }
             }

@@ -21,7 +21,7 @@ impl Impact {
             };
             let size = hypot(sl);
             let mu = if nose { setup.mu_w } else { setup.mu_s };
-            let free = self.dirs[usize::from(!nose)] == Dir::Own;
+            let free = matches!(self.dirs[usize::from(!nose)], Dir::Own);
             if matches!(grip, Grip::Slide(_))
                 && free
                 && mu > 0.0
@@ -68,7 +68,9 @@ impl Impact {
                 // tolerance at about half of it).
                 h = h.min(0.3 * self.span);
             }
-            if !matches!(grips[k], Grip::Slide(_)) || size <= setup.zero || self.dirs[k] != Dir::Own
+            if !matches!(grips[k], Grip::Slide(_))
+                || size <= setup.zero
+                || !matches!(self.dirs[k], Dir::Own)
             {
                 continue;
             }
@@ -125,7 +127,10 @@ impl Impact {
         for k in 0..2 {
             let other = 1 - k;
             let (size, mu) = (sl[k], [setup.mu_w, setup.mu_s][k]);
-            if !matches!(grips[k], Grip::Slide(_)) || self.dirs[other] != Dir::Own || mu <= 0.0 {
+            if !matches!(grips[k], Grip::Slide(_))
+                || !matches!(self.dirs[other], Dir::Own)
+                || mu <= 0.0
+            {
                 self.free(k);
                 continue;
             }
@@ -142,9 +147,12 @@ impl Impact {
                 }
                 _ => 0.0,
             };
-            let Some((u, lambda, kappa)) =
-                setup.slaved(k == 0, u0[other], grips[other] == Grip::Stick, start)
-            else {
+            let Some((u, lambda, kappa)) = setup.slaved(
+                k == 0,
+                u0[other],
+                matches!(grips[other], Grip::Stick),
+                start,
+            ) else {
                 self.free(k);
                 continue;
             };
@@ -199,7 +207,7 @@ impl Impact {
                     self.slaved_at = Some((u, h));
                 }
                 None => {
-                    if self.dirs[k] != Dir::Own {
+                    if !matches!(self.dirs[k], Dir::Own) {
                         self.lag += exit;
                     }
                     self.free(k);
@@ -210,7 +218,7 @@ impl Impact {
 
     /// Frees contact `k` from slaving.
     fn free(&mut self, k: usize) {
-        if self.dirs[k] != Dir::Own {
+        if !matches!(self.dirs[k], Dir::Own) {
             self.dirs[k] = Dir::Own;
             self.slaved_at = None;
             self.d = None;

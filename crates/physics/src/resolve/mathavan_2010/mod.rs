@@ -151,6 +151,8 @@ struct Impact {
     last_h: f64,
     /// The error of the last step kept, to the power 1/8 (the step size control's memory).
     err_old: f64,
+    /// The longest step kept (`Stats::longest` times the span).
+    longest: f64,
 }
 
 /// The step planned from the current state.
@@ -219,6 +221,7 @@ impl Impact {
             slope: 0.0,
             last_h: 0.0,
             err_old: 0.1f64.sqrt(),
+            longest: 0.0,
         }
     }
 
@@ -236,7 +239,11 @@ impl Impact {
                 self.compressed();
             }
             if self.target.is_some_and(|wf| self.y[5] - wf <= self.tol_w) {
-                return Some((self.y, self.stats));
+                let stats = Stats {
+                    longest: self.longest / self.span,
+                    ..self.stats
+                };
+                return Some((self.y, stats));
             }
             let plan = self.plan();
             let (hit, next) = self.take(&plan);
@@ -251,7 +258,7 @@ impl Impact {
     fn plan(&mut self) -> Plan {
         let setup = self.setup;
         let y = self.y;
-        if self.gi == Grip::Stick || self.gc == Grip::Stick {
+        if matches!(self.gi, Grip::Stick) || matches!(self.gc, Grip::Stick) {
             let settled = setup.settle(&y, self.gi, self.gc);
             if settled != (self.gi, self.gc) {
                 (self.gi, self.gc) = settled;
@@ -291,7 +298,8 @@ impl Impact {
         } else {
             Event::Restituted
         };
-        let lets_go = |nose: bool, grip: Grip| (grip == Grip::Stick).then_some(Event::LetsGo(nose));
+        let lets_go =
+            |nose: bool, grip: Grip| matches!(grip, Grip::Stick).then_some(Event::LetsGo(nose));
         let events = [Some(phase), lets_go(true, gi), lets_go(false, gc)];
         // The rate here, with the grips' directions (a contact held to its kept direction
         // has that direction here): the first stage of every step tried from here.
@@ -337,7 +345,7 @@ impl Impact {
             // cos(angle) < 0.8776 (0.5 rad) against the start, squared: no square root.
             let (dot, l2) = (sl[0] * u[0] + sl[1] * u[1], sl[0] * sl[0] + sl[1] * sl[1]);
             matches!(g, Grip::Slide(_))
-                && self.dirs[k] == Dir::Own
+                && matches!(self.dirs[k], Dir::Own)
                 && predicted != Some(Event::SlipZero(k == 0))
                 && l2 > z2
                 && (dot < 0.0 || dot * dot < 0.8776 * 0.8776 * l2)
@@ -396,9 +404,11 @@ impl Impact {
             let turned = self.turned(&st.y, predicted, plan);
             if (err <= 1.0 && !turned) || h <= floor {
                 self.stats.steps += 1;
-                self.stats.longest = self.stats.longest.max(h / self.span);
+                // (The longest step's fraction at the end: division by the positive span is
+                // monotone, so the largest quotient is the largest step's, to the bit.)
+                self.longest = self.longest.max(h);
                 self.last_h = h;
-                if self.dirs != [Dir::Own; 2] {
+                if !matches!(self.dirs, [Dir::Own, Dir::Own]) {
                     self.stats.slaved += 1;
                 }
                 if predicted.is_none() {
@@ -454,7 +464,7 @@ impl Impact {
             let target = (1.0 - self.e * self.e) * wc;
             if st.y[5] - target > 1e-14 * wc {
                 (self.target, self.tol_w) = (Some(target), 1e-14 * wc);
-                self.d = (dirs == self.dirs).then_some(st.k4);
+                self.d = Some(st.k4); // (no direction held: `predicted` is none)
                 return (None, st.y);
             }
         }
@@ -466,7 +476,8 @@ impl Impact {
             st.y
         };
         // The last stage is the next step's first unless an event changes the rates.
-        self.d = (hit.is_none() && dirs == self.dirs).then_some(st.k4);
+        // (A step aimed at a zero slip held its direction: `dirs` differs from `self.dirs`.)
+        self.d = (hit.is_none() && predicted.is_none()).then_some(st.k4);
         (hit, next)
     }
 }
