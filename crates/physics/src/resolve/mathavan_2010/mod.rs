@@ -162,8 +162,10 @@ struct Plan {
     predicted: Option<Event>,
     /// The contacts' sliding directions at the step's start.
     u0: [[f64; 2]; 2],
-    /// The events located inside a step (a slip's zero is met by the plan instead).
-    events: [Option<Event>; 3],
+    /// The events located inside a step (a slip's zero is met by the plan instead): the
+    /// phase's end, and a stuck nose's and cloth contact's let-go.
+    phase: Event,
+    lets_go: [Option<Event>; 2],
     /// The rate at the step's start (the first stage).
     d: State,
     /// The slips `(x_I, y'_I, x_C, y_C)` at the step's start and their rates there.
@@ -300,7 +302,7 @@ impl Impact {
         };
         let lets_go =
             |nose: bool, grip: Grip| matches!(grip, Grip::Stick).then_some(Event::LetsGo(nose));
-        let events = [Some(phase), lets_go(true, gi), lets_go(false, gc)];
+        let lets_go = [lets_go(true, gi), lets_go(false, gc)];
         // The rate here, with the grips' directions (a contact held to its kept direction
         // has that direction here): the first stage of every step tried from here.
         let d = match self.d {
@@ -328,7 +330,8 @@ impl Impact {
             h_free,
             predicted,
             u0,
-            events,
+            phase,
+            lets_go,
             d,
             z0: [si[0], si[1], sc[0], sc[1]],
             dz1: [ri[0], ri[1], rc[0], rc[1]],
@@ -444,17 +447,26 @@ impl Impact {
         // A step meant to end on a zero slip finds it like the other events: its rate along
         // the held direction need not stay constant (the other contact turns).
         let aimed = predicted.filter(|e| matches!(e, Event::SlipZero(_)));
-        // (A plain loop: chained iterator adapters cost 0.6 % of the break.)
-        for i in 0..4 {
-            let Some(e) = (if i < 3 { plan.events[i] } else { aimed }) else {
-                continue;
-            };
+        // The phase's end, then the stuck contacts' let-goes and the aimed zero, in turn (an
+        // event found no earlier than one before it does not replace it). Plain calls:
+        // chained iterator adapters cost 0.6 % of the break, a loop over the four 0.3 %.
+        let mut consider = |e: Event| {
             if let Some(at) = self.locate(e, plan, &st) {
                 found += 1;
                 if hit.is_none() || at < theta {
                     (hit, theta) = (Some(e), at);
                 }
             }
+        };
+        consider(plan.phase);
+        if let Some(e) = plan.lets_go[0] {
+            consider(e);
+        }
+        if let Some(e) = plan.lets_go[1] {
+            consider(e);
+        }
+        if let Some(e) = aimed {
+            consider(e);
         }
         // Compression's end changes no rate (it only fixes the work restitution ends at, eq.
         // 16): the step goes on past it, its work there from the dense output, unless another
