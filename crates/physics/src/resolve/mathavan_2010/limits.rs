@@ -3,7 +3,7 @@
 
 use super::Impact;
 use super::bs3::STABLE;
-use super::contact::{Dir, Grip, hypot};
+use super::contact::{Dir, Grip, State, hypot};
 
 impl Impact {
     /// A sliding slip within the tolerance of zero is zero: moved into the spins (a change
@@ -41,18 +41,18 @@ impl Impact {
     }
 
     /// The longest step the sliding contacts allow, from the slips' sizes `sl`, their rates `r`, the
-    /// table's normal `nn` and the sliding directions `u0`; and for each slip heading for
-    /// zero close enough to be met in one step, the impulse to its zero.
+    /// state's rate `d` (the table's normal from it, where the cloth's slip needs it) and the
+    /// sliding directions `u0`; and for each slip heading for zero close enough to be met in
+    /// one step, the impulse to its zero.
     pub(super) fn limits(
         &self,
         sl: [f64; 2],
         r: [[f64; 2]; 2],
-        nn: f64,
+        d: &State,
         u0: [[f64; 2]; 2],
     ) -> (f64, [Option<f64>; 2]) {
         let setup = &self.setup;
         let grips = [self.gi, self.gc];
-        let mus = [setup.mu_w, setup.mu_s * nn];
         let mut h = self.h.min(self.max_h);
         if let Some((_, cap)) = self.slaved_at {
             h = h.min(cap);
@@ -74,7 +74,13 @@ impl Impact {
             {
                 continue;
             }
-            let (u, r, mu) = (u0[k], r[k], mus[k]);
+            // (The table's normal only here: two divisions a plan otherwise.)
+            let mu = if k == 0 {
+                setup.mu_w
+            } else {
+                setup.mu_s * setup.normal_of(d)
+            };
+            let (u, r) = (u0[k], r[k]);
             let along = r[0] * u[0] + r[1] * u[1];
             let across = hypot([r[0] - along * u[0], r[1] - along * u[1]]);
             if self.h.is_infinite() {

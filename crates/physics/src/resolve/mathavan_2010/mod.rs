@@ -313,8 +313,7 @@ impl Impact {
             }
         };
         let (ri, rc) = setup.slip_rates_of(&d);
-        let nn = setup.normal_of(&d);
-        let (mut h, finals) = self.limits(sizes, [ri, rc], nn, u0);
+        let (mut h, finals) = self.limits(sizes, [ri, rc], &d, u0);
         let h_free = h;
         let mut predicted = None;
         for (k, reach) in finals.into_iter().enumerate() {
@@ -349,7 +348,7 @@ impl Impact {
             let (dot, l2) = (sl[0] * u[0] + sl[1] * u[1], sl[0] * sl[0] + sl[1] * sl[1]);
             matches!(g, Grip::Slide(_))
                 && matches!(self.dirs[k], Dir::Own)
-                && predicted != Some(Event::SlipZero(k == 0))
+                && !matches!(predicted, Some(Event::SlipZero(nose)) if nose == (k == 0))
                 && l2 > z2
                 && (dot < 0.0 || dot * dot < 0.8776 * 0.8776 * l2)
         };
@@ -471,7 +470,11 @@ impl Impact {
         // Compression's end changes no rate (it only fixes the work restitution ends at, eq.
         // 16): the step goes on past it, its work there from the dense output, unless another
         // event or restitution's end falls within the step too.
-        if hit == Some(Event::Compressed) && theta < 1.0 && found == 1 && predicted.is_none() {
+        if matches!(hit, Some(Event::Compressed))
+            && theta < 1.0
+            && found == 1
+            && predicted.is_none()
+        {
             let wc = st.at_one(5, theta);
             let target = (1.0 - self.e * self.e) * wc;
             if st.y[5] - target > 1e-14 * wc {
