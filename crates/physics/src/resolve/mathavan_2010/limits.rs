@@ -82,10 +82,11 @@ impl Impact {
             };
             let (u, r) = (u0[k], r[k]);
             let along = r[0] * u[0] + r[1] * u[1];
-            let across = hypot([r[0] - along * u[0], r[1] - along * u[1]]);
+            // (Its square root only where needed: not for a growing slip after the first step.)
+            let across = || hypot([r[0] - along * u[0], r[1] - along * u[1]]);
             if self.h.is_infinite() {
                 // The first step: one that turns no slip by more than 0.1 rad.
-                h = h.min(0.1 * size / across.max(f64::MIN_POSITIVE));
+                h = h.min(0.1 * size / across().max(f64::MIN_POSITIVE));
             }
             // Across the slip friction relaxes its direction at 7/2 mu / |slip| per unit
             // impulse; an explicit step is stable while that, integrated over the step,
@@ -106,7 +107,7 @@ impl Impact {
             // 2 mu x the step. Until then it is approached in steps of at most half the
             // remaining reach.
             let reach = size / -along;
-            if (across * reach * (1.0 + mu / -along)).min(2.0 * mu * reach) <= self.atol {
+            if (across() * reach * (1.0 + mu / -along)).min(2.0 * mu * reach) <= self.atol {
                 finals[k] = Some(reach);
             } else {
                 h = h.min(0.5 * reach).min(STABLE * size / stiff);
