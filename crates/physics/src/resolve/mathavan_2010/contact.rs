@@ -27,6 +27,8 @@ pub(super) struct Setup {
     pub(super) s: f64,
     pub(super) c: f64,
     pub(super) r: f64,
+    /// `5 / (2R)`, the spins' rate per unit friction (eq. 14), computed once: `2.5 / r`.
+    pub(super) k: f64,
     pub(super) mu_w: f64,
     pub(super) mu_s: f64,
     /// Slips below this (m/s) count as zero in the events.
@@ -214,7 +216,7 @@ impl Setup {
     pub(super) fn rate_of_friction(&self, f: &[f64; 4], y: &State) -> State {
         let (s, c) = (self.s, self.c);
         let [a, b, p, q] = *f;
-        let k = 2.5 / self.r;
+        let k = self.k;
         [
             a + p,
             -c - b * s + q,
@@ -255,7 +257,7 @@ impl Setup {
     ) -> (State, f64) {
         let (s, c) = (self.s, self.c);
         let ([a, b, p, q], n) = self.friction_fixed(y, gi, gc, dirs);
-        let k = 2.5 / self.r;
+        let k = self.k;
         let d = [
             a + p,
             -c - b * s + q,

@@ -183,6 +183,7 @@ impl Impact {
             s,
             c,
             r: radius,
+            k: 2.5 / radius,
             mu_w: m.mu_cushion,
             mu_s: m.mu_table,
             tol: 1e-12 * scale,
