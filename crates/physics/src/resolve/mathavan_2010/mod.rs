@@ -443,31 +443,10 @@ impl Impact {
             }
             predicted = None;
         }
-        let (mut hit, mut theta, mut found) = (None, 1.0, 0);
         // A step meant to end on a zero slip finds it like the other events: its rate along
         // the held direction need not stay constant (the other contact turns).
         let aimed = predicted.filter(|e| matches!(e, Event::SlipZero(_)));
-        // The phase's end, then the stuck contacts' let-goes and the aimed zero, in turn (an
-        // event found no earlier than one before it does not replace it). Plain calls:
-        // chained iterator adapters cost 0.6 % of the break, a loop over the four 0.3 %.
-        let mut consider = |e: Event| {
-            if let Some(at) = self.locate(e, plan, &st) {
-                found += 1;
-                if hit.is_none() || at < theta {
-                    (hit, theta) = (Some(e), at);
-                }
-            }
-        };
-        consider(plan.phase);
-        if let Some(e) = plan.lets_go[0] {
-            consider(e);
-        }
-        if let Some(e) = plan.lets_go[1] {
-            consider(e);
-        }
-        if let Some(e) = aimed {
-            consider(e);
-        }
+        let (hit, theta, found) = self.first_event(plan, &st, aimed);
         // Compression's end changes no rate (it only fixes the work restitution ends at, eq.
         // 16): the step goes on past it, its work there from the dense output, unless another
         // event or restitution's end falls within the step too.
