@@ -138,7 +138,7 @@ fn main() {
     }
     for (set, name, count) in [(0, "break", n_break), (1, "shots", cases.len() - n_break)] {
         println!(
-            "{name}: {count} impacts, {:.0} ns and {:.1} rate evaluations an impact, largest error {:.1e}, rms {:.1e}",
+            "{name}: {count} impacts, {:.0} ns and {:.1} rate evaluations an impact, largest error {:.3e}, rms {:.3e}",
             total_ns[set] / count as f64,
             total_evals[set] as f64 / count as f64,
             worst[set],
@@ -182,7 +182,7 @@ fn random_impacts(n: usize, game: &Mathavan2010, r: f64, acc: Accuracy) {
     errs.sort_by(f64::total_cmp);
     println!(
         "random: {n} impacts, {:.1} rate evaluations an impact; difference from the fine \
-         reference: largest {:.1e}, 99th percentile {:.1e}, mean {:.1e}, rms {:.1e}, {} above 2e-4",
+         reference: largest {:.3e}, 99th percentile {:.3e}, mean {:.3e}, rms {:.3e}, {} above 2e-4",
         evals as f64 / n as f64,
         errs[n - 1],
         errs[n * 99 / 100],

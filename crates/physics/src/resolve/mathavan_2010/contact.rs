@@ -27,6 +27,8 @@ pub(super) struct Setup {
     pub(super) s: f64,
     pub(super) c: f64,
     pub(super) r: f64,
+    /// `5 / (2R)`, the spins' rate per unit friction (eq. 14), computed once: `2.5 / r`.
+    pub(super) k: f64,
     pub(super) mu_w: f64,
     pub(super) mu_s: f64,
     /// Slips below this (m/s) count as zero in the events.
@@ -97,7 +99,7 @@ impl Setup {
         let inv = [1.0 / l2[0].sqrt(), 1.0 / l2[1].sqrt()];
         let z2 = self.zero * self.zero;
         let along = |g: Grip, sl: [f64; 2], k: usize| match g {
-            Grip::Slide(d) if dirs[k] == Dir::Held || l2[k] <= z2 => d,
+            Grip::Slide(d) if matches!(dirs[k], Dir::Held) || l2[k] <= z2 => d,
             Grip::Slide(_) => [sl[0] * inv[k], sl[1] * inv[k]],
             Grip::Stick => [0.0, 0.0],
         };
@@ -106,11 +108,11 @@ impl Setup {
         // other's friction.
         let mut lambda = 0.0;
         if let Dir::Slaved(l0) = dirs[0]
-            && let Some((u, l, _)) = self.slaved(true, uc, gc == Grip::Stick, l0)
+            && let Some((u, l, _)) = self.slaved(true, uc, matches!(gc, Grip::Stick), l0)
         {
             (ui, lambda) = (u, l);
         } else if let Dir::Slaved(l0) = dirs[1]
-            && let Some((u, l, _)) = self.slaved(false, ui, gi == Grip::Stick, l0)
+            && let Some((u, l, _)) = self.slaved(false, ui, matches!(gi, Grip::Stick), l0)
         {
             (uc, lambda) = (u, l);
         }
@@ -155,8 +157,8 @@ impl Setup {
     /// Whether stuck contacts' friction lies within their cones.
     pub(super) fn holds(&self, f: &[f64; 4], n: f64, gi: Grip, gc: Grip) -> bool {
         let slack = 1.0 + 1e-12;
-        (gi != Grip::Stick || hypot([f[0], f[1]]) <= self.mu_w * slack)
-            && (gc != Grip::Stick || hypot([f[2], f[3]]) <= self.mu_s * n * slack)
+        (!matches!(gi, Grip::Stick) || hypot([f[0], f[1]]) <= self.mu_w * slack)
+            && (!matches!(gc, Grip::Stick) || hypot([f[2], f[3]]) <= self.mu_s * n * slack)
     }
 
     /// The rates of the slips `z = (x_I, y'_I, x_C, y_C)` with both contacts sliding along their own slips
@@ -214,7 +216,7 @@ impl Setup {
     pub(super) fn rate_of_friction(&self, f: &[f64; 4], y: &State) -> State {
         let (s, c) = (self.s, self.c);
         let [a, b, p, q] = *f;
-        let k = 2.5 / self.r;
+        let k = self.k;
         [
             a + p,
             -c - b * s + q,
@@ -255,7 +257,7 @@ impl Setup {
     ) -> (State, f64) {
         let (s, c) = (self.s, self.c);
         let ([a, b, p, q], n) = self.friction_fixed(y, gi, gc, dirs);
-        let k = 2.5 / self.r;
+        let k = self.k;
         let d = [
             a + p,
             -c - b * s + q,
@@ -372,7 +374,8 @@ impl Setup {
             if self.holds(&f, n, gi, gc) {
                 break;
             }
-            let nose_holds = gi != Grip::Stick || self.holds(&f, n, gi, Grip::Slide([0.0, 0.0]));
+            let nose_holds =
+                !matches!(gi, Grip::Stick) || self.holds(&f, n, gi, Grip::Slide([0.0, 0.0]));
             if !nose_holds {
                 gi = self.grip_at_zero(y, true, gc);
             } else {

@@ -89,6 +89,39 @@ impl Impact {
         Some(at)
     }
 
+    /// The earliest event inside step `st` of `plan` (the aimed zero slip `aimed` among them),
+    /// where in the step it happens, and how many events the step holds.
+    pub(super) fn first_event(
+        &self,
+        plan: &Plan,
+        st: &bs3::Step,
+        aimed: Option<Event>,
+    ) -> (Option<Event>, f64, usize) {
+        let (mut hit, mut theta, mut found) = (None, 1.0, 0);
+        // The phase's end, then the stuck contacts' let-goes and the aimed zero, in turn (an
+        // event found no earlier than one before it does not replace it). Plain calls:
+        // chained iterator adapters cost 0.6 % of the break, a loop over the four 0.3 %.
+        let mut consider = |e: Event| {
+            if let Some(at) = self.locate(e, plan, st) {
+                found += 1;
+                if hit.is_none() || at < theta {
+                    (hit, theta) = (Some(e), at);
+                }
+            }
+        };
+        consider(plan.phase);
+        if let Some(e) = plan.lets_go[0] {
+            consider(e);
+        }
+        if let Some(e) = plan.lets_go[1] {
+            consider(e);
+        }
+        if let Some(e) = aimed {
+            consider(e);
+        }
+        (hit, theta, found)
+    }
+
     /// What an event does: the phase changes, or a contact's grip.
     pub(super) fn apply(&mut self, hit: Option<Event>) {
         let setup = self.setup;
@@ -102,7 +135,9 @@ impl Impact {
                 } else {
                     self.gc = setup.grip_at_zero(&y, false, gi);
                 }
-                if (nose && self.gi == Grip::Stick) || (!nose && self.gc == Grip::Stick) {
+                if (nose && matches!(self.gi, Grip::Stick))
+                    || (!nose && matches!(self.gc, Grip::Stick))
+                {
                     setup.snap(&mut self.y, nose);
                 }
             }

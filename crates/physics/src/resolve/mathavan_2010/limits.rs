@@ -3,7 +3,7 @@
 
 use super::Impact;
 use super::bs3::STABLE;
-use super::contact::{Dir, Grip, hypot};
+use super::contact::{Dir, Grip, State, hypot};
 
 impl Impact {
     /// A sliding slip within the tolerance of zero is zero: moved into the spins (a change
@@ -21,7 +21,7 @@ impl Impact {
             };
             let size = hypot(sl);
             let mu = if nose { setup.mu_w } else { setup.mu_s };
-            let free = self.dirs[usize::from(!nose)] == Dir::Own;
+            let free = matches!(self.dirs[usize::from(!nose)], Dir::Own);
             if matches!(grip, Grip::Slide(_))
                 && free
                 && mu > 0.0
@@ -41,18 +41,18 @@ impl Impact {
     }
 
     /// The longest step the sliding contacts allow, from the slips' sizes `sl`, their rates `r`, the
-    /// table's normal `nn` and the sliding directions `u0`; and for each slip heading for
-    /// zero close enough to be met in one step, the impulse to its zero.
+    /// state's rate `d` (the table's normal from it, where the cloth's slip needs it) and the
+    /// sliding directions `u0`; and for each slip heading for zero close enough to be met in
+    /// one step, the impulse to its zero.
     pub(super) fn limits(
         &self,
         sl: [f64; 2],
         r: [[f64; 2]; 2],
-        nn: f64,
+        d: &State,
         u0: [[f64; 2]; 2],
     ) -> (f64, [Option<f64>; 2]) {
         let setup = &self.setup;
         let grips = [self.gi, self.gc];
-        let mus = [setup.mu_w, setup.mu_s * nn];
         let mut h = self.h.min(self.max_h);
         if let Some((_, cap)) = self.slaved_at {
             h = h.min(cap);
@@ -68,16 +68,25 @@ impl Impact {
                 // tolerance at about half of it).
                 h = h.min(0.3 * self.span);
             }
-            if !matches!(grips[k], Grip::Slide(_)) || size <= setup.zero || self.dirs[k] != Dir::Own
+            if !matches!(grips[k], Grip::Slide(_))
+                || size <= setup.zero
+                || !matches!(self.dirs[k], Dir::Own)
             {
                 continue;
             }
-            let (u, r, mu) = (u0[k], r[k], mus[k]);
+            // (The table's normal only here: two divisions a plan otherwise.)
+            let mu = if k == 0 {
+                setup.mu_w
+            } else {
+                setup.mu_s * setup.normal_of(d)
+            };
+            let (u, r) = (u0[k], r[k]);
             let along = r[0] * u[0] + r[1] * u[1];
-            let across = hypot([r[0] - along * u[0], r[1] - along * u[1]]);
+            // (Its square root only where needed: not for a growing slip after the first step.)
+            let across = || hypot([r[0] - along * u[0], r[1] - along * u[1]]);
             if self.h.is_infinite() {
                 // The first step: one that turns no slip by more than 0.1 rad.
-                h = h.min(0.1 * size / across.max(f64::MIN_POSITIVE));
+                h = h.min(0.1 * size / across().max(f64::MIN_POSITIVE));
             }
             // Across the slip friction relaxes its direction at 7/2 mu / |slip| per unit
             // impulse; an explicit step is stable while that, integrated over the step,
@@ -98,7 +107,7 @@ impl Impact {
             // 2 mu x the step. Until then it is approached in steps of at most half the
             // remaining reach.
             let reach = size / -along;
-            if (across * reach * (1.0 + mu / -along)).min(2.0 * mu * reach) <= self.atol {
+            if (across() * reach * (1.0 + mu / -along)).min(2.0 * mu * reach) <= self.atol {
                 finals[k] = Some(reach);
             } else {
                 h = h.min(0.5 * reach).min(STABLE * size / stiff);
@@ -125,7 +134,10 @@ impl Impact {
         for k in 0..2 {
             let other = 1 - k;
             let (size, mu) = (sl[k], [setup.mu_w, setup.mu_s][k]);
-            if !matches!(grips[k], Grip::Slide(_)) || self.dirs[other] != Dir::Own || mu <= 0.0 {
+            if !matches!(grips[k], Grip::Slide(_))
+                || !matches!(self.dirs[other], Dir::Own)
+                || mu <= 0.0
+            {
                 self.free(k);
                 continue;
             }
@@ -142,9 +154,12 @@ impl Impact {
                 }
                 _ => 0.0,
             };
-            let Some((u, lambda, kappa)) =
-                setup.slaved(k == 0, u0[other], grips[other] == Grip::Stick, start)
-            else {
+            let Some((u, lambda, kappa)) = setup.slaved(
+                k == 0,
+                u0[other],
+                matches!(grips[other], Grip::Stick),
+                start,
+            ) else {
                 self.free(k);
                 continue;
             };
@@ -199,7 +214,7 @@ impl Impact {
                     self.slaved_at = Some((u, h));
                 }
                 None => {
-                    if self.dirs[k] != Dir::Own {
+                    if !matches!(self.dirs[k], Dir::Own) {
                         self.lag += exit;
                     }
                     self.free(k);
@@ -210,7 +225,7 @@ impl Impact {
 
     /// Frees contact `k` from slaving.
     fn free(&mut self, k: usize) {
-        if self.dirs[k] != Dir::Own {
+        if !matches!(self.dirs[k], Dir::Own) {
             self.dirs[k] = Dir::Own;
             self.slaved_at = None;
             self.d = None;

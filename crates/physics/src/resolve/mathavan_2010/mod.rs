@@ -151,6 +151,8 @@ struct Impact {
     last_h: f64,
     /// The error of the last step kept, to the power 1/8 (the step size control's memory).
     err_old: f64,
+    /// The longest step kept (`Stats::longest` times the span).
+    longest: f64,
 }
 
 /// The step planned from the current state.
@@ -160,8 +162,10 @@ struct Plan {
     predicted: Option<Event>,
     /// The contacts' sliding directions at the step's start.
     u0: [[f64; 2]; 2],
-    /// The events located inside a step (a slip's zero is met by the plan instead).
-    events: [Option<Event>; 3],
+    /// The events located inside a step (a slip's zero is met by the plan instead): the
+    /// phase's end, and a stuck nose's and cloth contact's let-go.
+    phase: Event,
+    lets_go: [Option<Event>; 2],
     /// The rate at the step's start (the first stage).
     d: State,
     /// The slips `(x_I, y'_I, x_C, y_C)` at the step's start and their rates there.
@@ -179,6 +183,7 @@ impl Impact {
             s,
             c,
             r: radius,
+            k: 2.5 / radius,
             mu_w: m.mu_cushion,
             mu_s: m.mu_table,
             tol: 1e-12 * scale,
@@ -219,6 +224,7 @@ impl Impact {
             slope: 0.0,
             last_h: 0.0,
             err_old: 0.1f64.sqrt(),
+            longest: 0.0,
         }
     }
 
@@ -236,7 +242,11 @@ impl Impact {
                 self.compressed();
             }
             if self.target.is_some_and(|wf| self.y[5] - wf <= self.tol_w) {
-                return Some((self.y, self.stats));
+                let stats = Stats {
+                    longest: self.longest / self.span,
+                    ..self.stats
+                };
+                return Some((self.y, stats));
             }
             let plan = self.plan();
             let (hit, next) = self.take(&plan);
@@ -251,7 +261,7 @@ impl Impact {
     fn plan(&mut self) -> Plan {
         let setup = self.setup;
         let y = self.y;
-        if self.gi == Grip::Stick || self.gc == Grip::Stick {
+        if matches!(self.gi, Grip::Stick) || matches!(self.gc, Grip::Stick) {
             let settled = setup.settle(&y, self.gi, self.gc);
             if settled != (self.gi, self.gc) {
                 (self.gi, self.gc) = settled;
@@ -291,8 +301,9 @@ impl Impact {
         } else {
             Event::Restituted
         };
-        let lets_go = |nose: bool, grip: Grip| (grip == Grip::Stick).then_some(Event::LetsGo(nose));
-        let events = [Some(phase), lets_go(true, gi), lets_go(false, gc)];
+        let lets_go =
+            |nose: bool, grip: Grip| matches!(grip, Grip::Stick).then_some(Event::LetsGo(nose));
+        let lets_go = [lets_go(true, gi), lets_go(false, gc)];
         // The rate here, with the grips' directions (a contact held to its kept direction
         // has that direction here): the first stage of every step tried from here.
         let d = match self.d {
@@ -303,8 +314,7 @@ impl Impact {
             }
         };
         let (ri, rc) = setup.slip_rates_of(&d);
-        let nn = setup.normal_of(&d);
-        let (mut h, finals) = self.limits(sizes, [ri, rc], nn, u0);
+        let (mut h, finals) = self.limits(sizes, [ri, rc], &d, u0);
         let h_free = h;
         let mut predicted = None;
         for (k, reach) in finals.into_iter().enumerate() {
@@ -320,7 +330,8 @@ impl Impact {
             h_free,
             predicted,
             u0,
-            events,
+            phase,
+            lets_go,
             d,
             z0: [si[0], si[1], sc[0], sc[1]],
             dz1: [ri[0], ri[1], rc[0], rc[1]],
@@ -337,8 +348,8 @@ impl Impact {
             // cos(angle) < 0.8776 (0.5 rad) against the start, squared: no square root.
             let (dot, l2) = (sl[0] * u[0] + sl[1] * u[1], sl[0] * sl[0] + sl[1] * sl[1]);
             matches!(g, Grip::Slide(_))
-                && self.dirs[k] == Dir::Own
-                && predicted != Some(Event::SlipZero(k == 0))
+                && matches!(self.dirs[k], Dir::Own)
+                && !matches!(predicted, Some(Event::SlipZero(nose)) if nose == (k == 0))
                 && l2 > z2
                 && (dot < 0.0 || dot * dot < 0.8776 * 0.8776 * l2)
         };
@@ -396,9 +407,11 @@ impl Impact {
             let turned = self.turned(&st.y, predicted, plan);
             if (err <= 1.0 && !turned) || h <= floor {
                 self.stats.steps += 1;
-                self.stats.longest = self.stats.longest.max(h / self.span);
+                // (The longest step's fraction at the end: division by the positive span is
+                // monotone, so the largest quotient is the largest step's, to the bit.)
+                self.longest = self.longest.max(h);
                 self.last_h = h;
-                if self.dirs != [Dir::Own; 2] {
+                if !matches!(self.dirs, [Dir::Own, Dir::Own]) {
                     self.stats.slaved += 1;
                 }
                 if predicted.is_none() {
@@ -430,31 +443,23 @@ impl Impact {
             }
             predicted = None;
         }
-        let (mut hit, mut theta, mut found) = (None, 1.0, 0);
         // A step meant to end on a zero slip finds it like the other events: its rate along
         // the held direction need not stay constant (the other contact turns).
         let aimed = predicted.filter(|e| matches!(e, Event::SlipZero(_)));
-        // (A plain loop: chained iterator adapters cost 0.6 % of the break.)
-        for i in 0..4 {
-            let Some(e) = (if i < 3 { plan.events[i] } else { aimed }) else {
-                continue;
-            };
-            if let Some(at) = self.locate(e, plan, &st) {
-                found += 1;
-                if hit.is_none() || at < theta {
-                    (hit, theta) = (Some(e), at);
-                }
-            }
-        }
+        let (hit, theta, found) = self.first_event(plan, &st, aimed);
         // Compression's end changes no rate (it only fixes the work restitution ends at, eq.
         // 16): the step goes on past it, its work there from the dense output, unless another
         // event or restitution's end falls within the step too.
-        if hit == Some(Event::Compressed) && theta < 1.0 && found == 1 && predicted.is_none() {
+        if matches!(hit, Some(Event::Compressed))
+            && theta < 1.0
+            && found == 1
+            && predicted.is_none()
+        {
             let wc = st.at_one(5, theta);
             let target = (1.0 - self.e * self.e) * wc;
             if st.y[5] - target > 1e-14 * wc {
                 (self.target, self.tol_w) = (Some(target), 1e-14 * wc);
-                self.d = (dirs == self.dirs).then_some(st.k4);
+                self.d = Some(st.k4); // (no direction held: `predicted` is none)
                 return (None, st.y);
             }
         }
@@ -466,7 +471,8 @@ impl Impact {
             st.y
         };
         // The last stage is the next step's first unless an event changes the rates.
-        self.d = (hit.is_none() && dirs == self.dirs).then_some(st.k4);
+        // (A step aimed at a zero slip held its direction: `dirs` differs from `self.dirs`.)
+        self.d = (hit.is_none() && predicted.is_none()).then_some(st.k4);
         (hit, next)
     }
 }

@@ -226,6 +226,7 @@ fn the_slaved_direction_is_the_one_its_slip_grows_along() {
         s,
         c: (1.0 - s * s).sqrt(),
         r: R,
+        k: 2.5 / R,
         mu_w: m.mu_cushion,
         mu_s: m.mu_table,
         tol: 1e-12,
