@@ -7,13 +7,13 @@
 /// read only where two high halves are equal, which events seldom are. The order is that of
 /// the whole 128-bit ranks, so the same key wins as with whole ranks compared.
 ///
-/// The slots come in blocks of `2^shift` (one for the pair table's small scenes), each
+/// The slots come in blocks of `2^shift` (one for the small scenes), each
 /// block's best kept at a leaf of a binary tree over the blocks (issue 53): setting a slot
 /// that neither beats its block's best nor was it leaves the tree alone, and otherwise
-/// replays a tree of `n / 2^shift` leaves, which at 100,000 balls in blocks of 64 is 64 kB
-/// (in cache) where a tree over the slots is 4 MB (a cache miss a level near its leaves).
-/// Only a block's best that gets worse costs a scan of the block's high halves (512 bytes in
-/// one run of memory).
+/// replays a tree of `n / 2^shift` leaves, which at 100,000 balls in blocks of 16 is 256 kB
+/// (in the L2 cache) where a tree over the slots is 4 MB (a cache miss a level near its
+/// leaves). Only a block's best that gets worse costs a scan of the block's high halves
+/// (128 bytes in one run of memory).
 #[derive(Debug)]
 pub struct Tournament<K: Copy> {
     /// Leaves of the tree over the blocks (a power of two).

@@ -75,7 +75,7 @@ impl Predictions {
         // From 32,768 balls, where a tree over the balls passes 2 MB (the L2 cache), the
         // queue in blocks of 16 balls, whose tree stays in cache (issue 53, `Tournament`;
         // measured in the physics README, "The queue in blocks"). At 10,000 balls the blocks
-        // cost more instructions than their fewer misses save.
+        // were no faster: fewer misses, more instructions.
         let (strategy, queue) = match grid {
             Some(grid) => (
                 Strategy::CellLists(CellLists::new(grid, n)),
