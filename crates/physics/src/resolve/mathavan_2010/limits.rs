@@ -96,8 +96,13 @@ impl Impact {
                 // A slip growing at `along` relaxes ever more slowly: the integral is
                 // (stiff / along) ln(1 + along h / |slip|), so h may reach |slip| / along
                 // (exp(x) - 1), x = STABLE along / stiff; its cubic bounds that from below.
-                let x = STABLE * along / stiff;
-                h = h.min(STABLE * size / stiff * (1.0 + x * (0.5 + x / 6.0)));
+                // (The bound is at least `STABLE size / stiff` (x >= 0, rounding monotone):
+                // a step within that need not wait on the divisions of the cubic.)
+                let floor = STABLE * size / stiff;
+                if h > floor || h.is_nan() {
+                    let x = STABLE * along / stiff;
+                    h = h.min(floor * (1.0 + x * (0.5 + x / 6.0)));
+                }
                 continue;
             }
             // A slip heading for zero is met in one step along its start direction once what

@@ -363,7 +363,14 @@ impl Impact {
         let w = r * err[2].abs().max(err[3].abs()).max(err[4].abs());
         // The work is about speed x speed: its error over the speed.
         let work = err[5].abs() / self.scale;
-        v.max(w).max(work) / self.atol
+        // max(v, w) / atol unless the work's error is the larger: the one division need
+        // not wait on the other (the same quotient to the bit).
+        let top = v.max(w);
+        if work <= top {
+            top / self.atol
+        } else {
+            top.max(work) / self.atol
+        }
     }
 
     /// Takes the planned step, shortened while its error is above the tolerance or a slip
