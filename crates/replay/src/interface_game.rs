@@ -99,14 +99,12 @@ pub(crate) fn simulate(id: &str, a: &SimulateArgs) -> Result<(), String> {
             judged.text,
             what_next(game.as_ref())
         );
-        out.push(ShotSummary {
+        out.push(ShotSummary::of(
             shot,
-            events: events.len(),
-            pocketed: pocketed(events, sim.numbers()),
-            time_to_rest: sim.time() - start,
-            flight: crate::flight::flight_events(events, sim.numbers(), start, in_air),
-            judgement: Some(judged.clone()),
-        });
+            sim,
+            (first, start, in_air),
+            Some(judged.clone()),
+        ));
         put(&mut rec, &judged.put).map_err(|e| at(&e))?;
         log.strokes.push(StrokeEntry {
             choices: made,
@@ -157,18 +155,6 @@ fn what_next(game: &dyn GameRules) -> String {
 /// The simulation's index of ball number `number`.
 fn id_of(rec: &Recorder, number: u8) -> Option<usize> {
     rec.sim().numbers().iter().position(|&n| n == number)
-}
-
-/// The object balls `events` pocketed, by number.
-fn pocketed(events: &[billiards_physics::Event], numbers: &[u8]) -> Vec<u8> {
-    events
-        .iter()
-        .filter_map(|e| match e.kind {
-            billiards_physics::EventKind::Pocketed { ball, .. } => Some(numbers[ball]),
-            _ => None,
-        })
-        .filter(|&n| n != 0)
-        .collect()
 }
 
 /// The options the rules offer before the stroke, taken from the script's `--choice` in

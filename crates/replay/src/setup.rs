@@ -37,6 +37,35 @@ pub struct ShotSummary {
     pub judgement: Option<billiards_rules::Judgement>,
 }
 
+impl ShotSummary {
+    /// The shot `shot` as `sim` played it from its event `first` (the strike) on: begun at
+    /// `start` seconds with the balls `in_air` then ([`crate::flight::airborne`]), judged
+    /// `judgement` if a game's rules judged it.
+    pub(crate) fn of(
+        shot: Shot,
+        sim: &Simulation,
+        (first, start, in_air): (usize, f64, Vec<bool>),
+        judgement: Option<billiards_rules::Judgement>,
+    ) -> Self {
+        let events = &sim.history().events()[first..];
+        let pocketed = events
+            .iter()
+            .filter_map(|e| match e.kind {
+                EventKind::Pocketed { ball, .. } => Some(sim.numbers()[ball]),
+                _ => None,
+            })
+            .collect();
+        Self {
+            shot,
+            events: events.len(),
+            pocketed,
+            time_to_rest: sim.time() - start,
+            flight: crate::flight::flight_events(events, sim.numbers(), start, in_air),
+            judgement,
+        }
+    }
+}
+
 /// What a `simulate` run starts from: the table, physics, balls, the balls in the air (a
 /// scene file's `flights`) and the shots.
 pub(crate) type Start = (Table, Params, Vec<BallSetup>, Vec<SceneFlight>, Vec<Shot>);

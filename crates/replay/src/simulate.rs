@@ -20,23 +20,12 @@ fn play(rec: &mut Recorder, shot: Shot) -> Result<ShotSummary, String> {
     let in_air = flight::airborne(rec.sim());
     rec.strike(0, shot).map_err(|e| e.to_string())?;
     rec.run_to_rest().map_err(|e| e.to_string())?;
-    let sim = rec.sim();
-    let events = &sim.history().events()[first..];
-    let pocketed = events
-        .iter()
-        .filter_map(|e| match e.kind {
-            EventKind::Pocketed { ball, .. } => Some(sim.numbers()[ball]),
-            _ => None,
-        })
-        .collect();
-    Ok(ShotSummary {
+    Ok(ShotSummary::of(
         shot,
-        events: events.len(),
-        pocketed,
-        time_to_rest: sim.time() - start,
-        flight: flight::flight_events(events, sim.numbers(), start, in_air),
-        judgement: None,
-    })
+        rec.sim(),
+        (first, start, in_air),
+        None,
+    ))
 }
 
 pub(crate) fn simulate(a: SimulateArgs) -> Result<(), String> {
