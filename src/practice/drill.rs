@@ -100,8 +100,8 @@ pub enum DrillCommand {
 
 /// A drill in session: which drill file it plays and how its session compared with the
 /// best. The session itself is a one-player game behind the one interface ([`DrillGame`],
-/// [`billiards_rules::GameRules::solo`]) held in [`Rules`] like every game, its strokes judged and logged by
-/// the game's own flow; [`drill_game`] finds it there.
+/// [`billiards_rules::GameRules::solo`]) held in [`Rules`] like every game, its strokes
+/// judged and logged by the game's own flow; [`drill_game`] finds it there.
 #[derive(Resource, Debug, Clone, PartialEq, Eq)]
 pub struct DrillSession {
     /// The drill's file name (its key in [`DrillBests`]).
@@ -390,7 +390,7 @@ pub(super) fn draw_goals(
     mut gizmos: Gizmos,
 ) {
     use billiards_rules::{Goal, Zone};
-    let Some(session) = drill_game(&rules) else {
+    let Some(game) = drill_game(&rules) else {
         return;
     };
     let at = |p: bevy::math::DVec2| crate::table::geometry::to_world(p.extend(0.003));
@@ -407,7 +407,7 @@ pub(super) fn draw_goals(
                 .map(|(b, _)| crate::sim::to_dvec2(b.position))
         })
     };
-    for goal in &session.drill.goals {
+    for goal in &game.drill.goals {
         let ball = match *goal {
             Goal::Pocket { ball, pocket, .. } => {
                 if let Some(hole) = pocket.and_then(|p| spec.pocket(p)) {

@@ -183,7 +183,7 @@ fn table_state_lines(
     let mut pocketed: Vec<u8> = state.pocketed.iter().map(|b| b.number).collect();
     pocketed.sort_unstable();
     // Named by the game whose table it is (issue 48: "pocketed: 12" read as a count).
-    let list = (names.list_words)(&pocketed);
+    let list = names.list_words(&pocketed);
     let doing = if state.physics.paused {
         "paused"
     } else if status.at_rest {

@@ -64,13 +64,24 @@ pub struct GameEntry {
     /// A ball in the words of a view of the table without the game in hand (a replay):
     /// "cue ball", "ball 3"; "pink"; "white".
     pub ball_word: fn(u8) -> String,
-    /// Balls pocketed or off the table, in a sentence: "the 3, the 12, the cue ball", "2
-    /// reds, the pink", "none".
-    pub list_words: fn(&[u8]) -> String,
+    /// Balls pocketed or off the table, named for [`GameEntry::list_words`]: "the 3", "2
+    /// reds", "the pink", "the cue ball".
+    pub list_names: fn(&[u8]) -> Vec<String>,
     start: Start,
 }
 
 impl GameEntry {
+    /// Balls pocketed or off the table, in a sentence in this game's words ("the 3, the 12,
+    /// the cue ball", "2 reds, the pink"; "none").
+    pub fn list_words(&self, numbers: &[u8]) -> String {
+        let names = (self.list_names)(numbers);
+        if names.is_empty() {
+            "none".to_owned()
+        } else {
+            names.join(", ")
+        }
+    }
+
     /// Starts a match of this game.
     pub fn start(&self, settings: &MatchSettings) -> Result<Box<dyn GameRules>, RulesError> {
         if settings.length == 0 {
@@ -120,9 +131,9 @@ fn pool_word(n: u8) -> String {
     }
 }
 
-/// Pool's balls in a sentence, by number, the cue ball last: "the 3, the 12, the cue ball"
-/// (issue 48: "pocketed: 12" read as a count).
-fn pool_list(numbers: &[u8]) -> String {
+/// Pool's balls by number, the cue ball last: "the 3", "the 12", "the cue ball" (issue 48:
+/// "pocketed: 12" read as a count).
+fn pool_list(numbers: &[u8]) -> Vec<String> {
     let mut names: Vec<String> = numbers
         .iter()
         .filter(|&&n| n != 0)
@@ -131,11 +142,7 @@ fn pool_list(numbers: &[u8]) -> String {
     if numbers.contains(&0) {
         names.push("the cue ball".to_owned());
     }
-    if names.is_empty() {
-        "none".to_owned()
-    } else {
-        names.join(", ")
-    }
+    names
 }
 
 /// The game whose own table `table` is (snooker's, three-cushion's: by its length and
@@ -159,7 +166,7 @@ pub const GAMES: &[GameEntry] = &[
         equipment: pool_equipment,
         pool_table: true,
         ball_word: pool_word,
-        list_words: pool_list,
+        list_names: pool_list,
         start: |s, t, b| Ok(pool(Game::NineBall, s, t, b)),
     },
     GameEntry {
@@ -171,7 +178,7 @@ pub const GAMES: &[GameEntry] = &[
         equipment: pool_equipment,
         pool_table: true,
         ball_word: pool_word,
-        list_words: pool_list,
+        list_names: pool_list,
         start: |s, t, b| Ok(pool(Game::EightBall, s, t, b)),
     },
     GameEntry {
@@ -183,7 +190,7 @@ pub const GAMES: &[GameEntry] = &[
         equipment: pool_equipment,
         pool_table: true,
         ball_word: pool_word,
-        list_words: pool_list,
+        list_names: pool_list,
         start: |s, t, b| Ok(pool(Game::TenBall, s, t, b)),
     },
     GameEntry {
@@ -195,7 +202,7 @@ pub const GAMES: &[GameEntry] = &[
         equipment: snooker_equipment,
         pool_table: false,
         ball_word: crate::snooker::balls::word,
-        list_words: crate::snooker::balls::list_words,
+        list_names: crate::snooker::balls::list_names,
         start: |s, t, b| {
             Ok(Box::new(SnookerGame::new(
                 s.players.clone(),
@@ -215,7 +222,7 @@ pub const GAMES: &[GameEntry] = &[
         equipment: carom_equipment,
         pool_table: false,
         ball_word: crate::three_cushion::balls::word,
-        list_words: crate::three_cushion::balls::list_words,
+        list_names: crate::three_cushion::balls::list_names,
         start: |s, t, b| {
             Ok(Box::new(ThreeCushionMatch::new(
                 s.players.clone(),
@@ -234,7 +241,7 @@ pub const GAMES: &[GameEntry] = &[
         equipment: pool_equipment,
         pool_table: true,
         ball_word: pool_word,
-        list_words: pool_list,
+        list_names: pool_list,
         start: |s, t, b| Ok(pool(Game::FreePlay, s, t, b)),
     },
 ];

@@ -372,23 +372,20 @@ fn balls_are_named_by_the_game_whose_table_it_is() {
     use billiards_rules::catalog::of_table;
     let pool = of_table(&Table::wpa_8ft());
     assert_eq!(pool.id, "nine-ball");
-    assert_eq!((pool.list_words)(&[]), "none");
-    assert_eq!((pool.list_words)(&[12]), "the 12");
-    assert_eq!(
-        (pool.list_words)(&[0, 3, 12]),
-        "the 3, the 12, the cue ball"
-    );
+    assert_eq!(pool.list_words(&[]), "none");
+    assert_eq!(pool.list_words(&[12]), "the 12");
+    assert_eq!(pool.list_words(&[0, 3, 12]), "the 3, the 12, the cue ball");
     assert_eq!(
         ((pool.ball_word)(0), (pool.ball_word)(3)),
         ("cue ball".into(), "ball 3".into())
     );
     let snooker = of_table(&Table::snooker_12ft());
     assert_eq!(snooker.id, "snooker");
-    assert_eq!((snooker.list_words)(&[11]), "a red");
-    assert_eq!((snooker.list_words)(&[2, 11, 20]), "2 reds, the pink");
+    assert_eq!(snooker.list_words(&[11]), "a red");
+    assert_eq!(snooker.list_words(&[2, 11, 20]), "2 reds, the pink");
     assert_eq!((snooker.ball_word)(20), "pink");
     let carom = of_table(&Table::carom_match());
     assert_eq!(carom.id, "three-cushion");
     assert_eq!((carom.ball_word)(1), "yellow");
-    assert_eq!((carom.list_words)(&[0, 2]), "the white, the red");
+    assert_eq!(carom.list_words(&[0, 2]), "the white, the red");
 }

@@ -20,8 +20,9 @@
 //! ([`billiards_rules::GameRules::sandbox`]): its table may be set by hand (the
 //! [`Referee`](crate::sim::Referee)'s `edits`), its strokes are judged on the table their
 //! strike finds and need no reading, a scratch's cue ball is put back by its judgement, and
-//! it follows a new table or recording at its next stroke ([`LiveGame::bind_sandbox`]). Only
-//! a drill session has no game here (it judges its own strokes, `crate::practice`).
+//! it follows a table set by hand ([`LiveGame::bind_sandbox`], `follow_sandbox_table`). A
+//! drill session is a game here too, a one-player one
+//! ([`billiards_rules::GameRules::solo`], started by `crate::practice`).
 //!
 //! [`table_plugin`] adds what needs a window: the legal area of the cue ball in hand, the
 //! pockets while calling and the called pocket (gizmos), and the click on a pocket.

@@ -48,9 +48,9 @@ pub fn next_colour(c: u8) -> Option<u8> {
         .and_then(|i| COLOURS.get(i + 1).copied())
 }
 
-/// Balls pocketed, in a sentence: the reds counted, the colours named ("2 reds, the pink",
-/// "a red", "the cue ball"; "none").
-pub fn list_words(numbers: &[u8]) -> String {
+/// Balls pocketed, named: the reds counted, the colours named ("2 reds", "the pink", "the
+/// cue ball").
+pub fn list_names(numbers: &[u8]) -> Vec<String> {
     let mut names: Vec<String> = Vec::new();
     match numbers.iter().filter(|&&n| is_red(n)).count() {
         0 => {}
@@ -66,11 +66,7 @@ pub fn list_words(numbers: &[u8]) -> String {
     if numbers.contains(&WHITE) {
         names.push("the cue ball".to_owned());
     }
-    if names.is_empty() {
-        "none".to_owned()
-    } else {
-        names.join(", ")
-    }
+    names
 }
 
 /// A ball in a replay's words: its [`name`].

@@ -24,17 +24,12 @@ pub fn word(n: u8) -> String {
         .map_or_else(|| format!("ball {n}"), |b| b.name().to_owned())
 }
 
-/// Balls in a sentence ("the white, the red"; "none"): those driven off the table.
-pub fn list_words(numbers: &[u8]) -> String {
-    let names: Vec<String> = numbers
+/// Balls named ("the white", "the red"): those driven off the table.
+pub fn list_names(numbers: &[u8]) -> Vec<String> {
+    numbers
         .iter()
         .map(|&n| format!("the {}", word(n)))
-        .collect();
-    if names.is_empty() {
-        "none".to_owned()
-    } else {
-        names.join(", ")
-    }
+        .collect()
 }
 
 impl Ball {
