@@ -77,7 +77,15 @@ fn main() {
     let (mut all, mut worst, mut n) = (0.0, 0.0f64, 0usize);
     for seed in 0..frames {
         let start = Instant::now();
-        let run = play_frame([level, level], names.clone(), seed, seed, Seat::A, false).unwrap();
+        let run = play_frame(
+            [level, level],
+            names.clone(),
+            (seed, seed),
+            Seat::A,
+            false,
+            &mut |_| {},
+        )
+        .unwrap();
         let r = &run.record;
         for t in &r.players {
             all += t.decision_secs;

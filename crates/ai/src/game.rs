@@ -8,7 +8,7 @@
 use crate::any_game::{Move, Stroke, decide_any};
 use crate::level::Level;
 use crate::snooker::{SnookerDecision, decide_snooker};
-use crate::{Decision, decide};
+use crate::{Decision, Player, decide};
 use billiards_physics::Simulation;
 use billiards_rules::pool::PoolMatch;
 use billiards_rules::snooker::rules::SnookerGame;
@@ -45,7 +45,58 @@ pub fn decide_game(
     decide_any(game, sim, level, seed).map(Decided::Any)
 }
 
+impl Player {
+    /// What this player does next in `game`: a computer level by the game's own search
+    /// ([`decide_game`]); a baseline (greedy, one-ply) at pool's games only, refused with
+    /// why at any other.
+    pub fn decide_game(
+        self,
+        game: &dyn GameRules,
+        sim: &Simulation,
+        seed: u64,
+    ) -> Result<Decided, String> {
+        match self {
+            Player::Computer(level) => decide_game(game, sim, level, seed),
+            Player::Greedy | Player::OnePly => {
+                let pool = game.as_any().downcast_ref::<PoolMatch>().ok_or_else(|| {
+                    format!("{self} plays pool's games only: {}", levels_only(game))
+                })?;
+                self.decide(pool.rack(), sim, seed)
+                    .map(Decided::Pool)
+                    .map_err(|e| e.to_string())
+            }
+        }
+    }
+
+    /// Whether this player plays `game`: every player at pool's games, only the computer's
+    /// levels at the others (`Err` says so, in words).
+    pub fn plays(self, game: &dyn GameRules) -> Result<(), String> {
+        match self {
+            Player::Computer(_) => Ok(()),
+            _ if game.as_any().is::<PoolMatch>() => Ok(()),
+            _ => Err(format!("{self}: {}", levels_only(game))),
+        }
+    }
+}
+
+/// "snooker has computer levels only".
+fn levels_only(game: &dyn GameRules) -> String {
+    format!(
+        "{} has computer levels only (easy, medium, hard, expert, perfect)",
+        game.name()
+    )
+}
+
 impl Decided {
+    /// Noisy simulations the search ran, where it counts them (pool's and snooker's).
+    pub fn simulations(&self) -> Option<usize> {
+        match self {
+            Decided::Pool(Decision::Shoot(plan)) => Some(plan.simulations),
+            Decided::Snooker(SnookerDecision::Shoot(plan)) => Some(plan.simulations),
+            _ => None,
+        }
+    }
+
     /// The shot decided on and the cue ball's place in hand; `None` for an option.
     pub fn aim(&self) -> Option<(billiards_physics::Shot, Option<billiards_physics::Vec2>)> {
         match self {

@@ -2,19 +2,19 @@
 //! core, and what the tests and examples use to watch the players at work.
 //!
 //! The table is the game's (WPA 8-ft, jaws of 15 mm, the spin model) or another [`Venue`];
-//! each rack comes from the game's seed ([`billiards_rules::Game::rack_styled`]); every shot is the player's decision
-//! struck with its execution noise, run to rest without a history, summarised and judged.
+//! each rack comes from the game's seed ([`billiards_rules::Game::rack_styled`]); the rack
+//! is played through the one game interface by the match loop every game shares
+//! ([`crate::any_match`]), and its figures read from it.
 
+use crate::any_match::{Seating, play_match};
 use crate::noise::Noise;
 use crate::noise::stream;
-use crate::{Decision, Plan, Player};
+use crate::{Plan, Player};
 use billiards_physics::{Model, Params, Simulation, SpinModel, Table, TableChoice, Vec2, Vec3};
-use billiards_rules::{
-    CUE, Game, GameState, Outcome, RackStyle, Seat, ShotSummary, object_ball_spot,
-};
+use billiards_rules::pool::PoolMatch;
+use billiards_rules::{CUE, Game, RackStyle, Seat, ShotSummary, object_ball_spot};
 use rand::Rng;
 use serde::{Deserialize, Serialize};
-use std::time::Instant;
 
 /// Most shots a rack may take before it is given up as a draw.
 pub const MAX_SHOTS: usize = 400;
@@ -84,15 +84,6 @@ pub fn table_and_params_on(table: TableChoice) -> (Table, Params) {
     (table.table().with_jaws(0.015), params)
 }
 
-/// A fresh rack of `game` from `seed` at `venue`, without a history.
-fn rack(venue: Venue, game: Game, seed: u64) -> Result<Simulation, String> {
-    let (table, params) = table_and_params_on(venue.table);
-    let balls = game.rack_styled(&table, &params.ball, seed, venue.rack);
-    let mut sim = Simulation::new(table, params, &balls).map_err(|e| e.to_string())?;
-    sim.set_record_history(false);
-    Ok(sim)
-}
-
 /// Plays one rack of `game` between `players` (`players[0]` is seat A), `breaker` breaking,
 /// every random draw from `seed`, on the game's default table. Re-racks (8-ball break
 /// options) start a new rack in the same record.
@@ -132,7 +123,10 @@ pub fn execute(
     Ok(summary)
 }
 
-/// [`play_rack`] at `venue`.
+/// [`play_rack`] at `venue`: one rack of a [`PoolMatch`] race to 1, played by the one
+/// match loop of every game ([`play_match`]); player `breaker` sits in seat A (the rules'
+/// breaker), and the seats' figures are given back by player. The rack comes from
+/// `stream(seed, 0, 0)`, a re-rack (8-ball's break options, WPA 3.3) from the next seed.
 pub fn play_rack_at(
     venue: Venue,
     game: Game,
@@ -141,78 +135,61 @@ pub fn play_rack_at(
     seed: u64,
     breaker: usize,
 ) -> Result<RackRecord, String> {
-    let seat = |i: usize| if i == 0 { Seat::A } else { Seat::B };
-    let mut racks = 0u64;
-    let mut sim = rack(venue, game, stream(seed, 0, racks).random())?;
-    let mut state = GameState::new(game, seat(breaker));
-    let mut tally: [Tally; 2] = Default::default();
-    let (mut shots, mut last, mut opponent_shot) = (0, None, false);
-    let mut breaker_now = seat(breaker);
-    while state.over.is_none() && shots < MAX_SHOTS {
-        let next = state.next.clone();
-        if next.rerack {
-            racks += 1;
-            sim = rack(venue, game, stream(seed, 0, racks).random())?;
-            state.next.rerack = false;
-            breaker_now = next.shooter;
-            opponent_shot = false;
-        }
-        spot_balls(&mut sim, &next.spot)?;
-        state.next.spot.clear();
-        let who = next.shooter.index();
-        let player = players[who];
-        let started = Instant::now();
-        let decision = player
-            .decide(&state, &sim, stream(seed, 1, shots as u64).random())
-            .map_err(|e| format!("shot {shots}: {player}: {e}"))?;
-        let secs = started.elapsed().as_secs_f64();
-        let t = &mut tally[who];
-        t.decisions += 1;
-        t.decision_secs += secs;
-        t.max_decision_secs = t.max_decision_secs.max(secs);
-        let plan = match decision {
-            Decision::Choose { choice, .. } => {
-                state.choose(choice).map_err(|e| e.to_string())?;
-                continue;
-            }
-            Decision::Shoot(plan) => plan,
-        };
-        t.simulations += plan.simulations;
-        if last != Some(who) {
-            t.innings += 1;
-            last = Some(who);
-        }
-        if next.shooter != breaker_now {
-            opponent_shot = true;
-        }
-        let summary = execute(
-            &mut sim,
-            &plan,
-            player.execution_noise(),
-            stream(seed, 2, shots as u64).random(),
-        )?;
-        let verdict = state.play(&summary, plan.call).map_err(|e| e.to_string())?;
-        shots += 1;
-        t.shots += 1;
-        t.pocketed += summary.pocketed_object_balls().count();
-        t.fouls += usize::from(!verdict.legal());
-        if verdict.outcome != Outcome::Continues {
-            last = None;
-        }
+    let (table, params) = table_and_params_on(venue.table);
+    // Player `k` sits in seat `seat_of(k)`.
+    let seat_of = |k: usize| if k == breaker { 0 } else { 1 };
+    let mut seats = [players[0]; 2];
+    for k in 0..2 {
+        seats[seat_of(k)] = players[k];
     }
-    let winner = state.over.map(|(w, _)| w.index());
+    let names = seats.map(|p| p.to_string());
+    let mut rack = PoolMatch::new(
+        game,
+        names,
+        1,
+        table,
+        params.ball,
+        stream(seed, 0, 0).random(),
+        venue.rack,
+    );
+    let run = play_match(
+        &mut rack,
+        &Seating::new(seats, params, seed, MAX_SHOTS),
+        &mut |_| {},
+    )?;
+    let played = run.played.last().ok_or("no rack was played")?;
+    let player_of = |seat: Seat| {
+        if seat.index() == 0 {
+            breaker
+        } else {
+            1 - breaker
+        }
+    };
+    let tally = |k: usize| {
+        let t = &run.tally[seat_of(k)];
+        Tally {
+            innings: t.visits,
+            pocketed: t.pocketed,
+            shots: t.strokes,
+            fouls: t.fouls,
+            decisions: t.decisions,
+            decision_secs: t.decision_secs,
+            max_decision_secs: t.max_decision_secs,
+            simulations: t.simulations,
+        }
+    };
     Ok(RackRecord {
         index,
         seed,
         breaker,
-        winner,
-        break_and_run: winner.is_some() && winner == Some(breaker_now.index()) && !opponent_shot,
-        shots,
-        reason: match state.over {
-            Some((_, why)) => why.to_string(),
+        winner: run.winner.map(player_of),
+        break_and_run: played.run_out,
+        shots: run.strokes,
+        reason: match run.winner {
+            Some(_) => played.reason.clone(),
             None => format!("no winner after {MAX_SHOTS} shots"),
         },
-        players: tally,
+        players: [tally(0), tally(1)],
     })
 }
 

@@ -1,8 +1,8 @@
 //! The computer plays whole matches of every game with a winner through the one game
 //! interface alone (issue 50): one search, one match loop, no game named.
 
-use billiards_ai::Level;
-use billiards_ai::any_match::{MatchRun, play_match};
+use billiards_ai::any_match::{MatchRun, Seating, play_match};
+use billiards_ai::{Level, Player};
 use billiards_physics::{Model, Params, SpinModel};
 use billiards_rules::catalog::{GAMES, MatchSettings};
 
@@ -14,8 +14,18 @@ fn run(id: &str, seed: u64) -> MatchRun {
         model: Model::Spin(SpinModel::default()),
         ..Params::default()
     };
-    let levels = [Level::Medium, Level::Medium];
-    play_match(game.as_mut(), &params, levels, seed, 600, &mut |_| {}).unwrap()
+    let players = [Player::Computer(Level::Medium); 2];
+    let mut run = play_match(
+        game.as_mut(),
+        &Seating::new(players, params, seed, 600),
+        &mut |_| {},
+    )
+    .unwrap();
+    // Decision times are the machine's, not the match's.
+    for t in &mut run.tally {
+        (t.decision_secs, t.max_decision_secs) = (0.0, 0.0);
+    }
+    run
 }
 
 #[test]
@@ -56,8 +66,13 @@ fn every_standard_drill_is_a_session_played_through_the_interface() {
         drill.tries = 3;
         let name = drill.name.clone();
         let mut game = DrillGame::new(drill, "A".to_owned(), params.ball).unwrap();
-        let levels = [Level::Medium, Level::Medium];
-        let r = play_match(&mut game, &params, levels, 1, 100, &mut |_| {}).unwrap();
+        let players = [Player::Computer(Level::Medium); 2];
+        let r = play_match(
+            &mut game,
+            &Seating::new(players, params, 1, 100),
+            &mut |_| {},
+        )
+        .unwrap();
         assert_eq!(r.games, 3, "{name}: three tries judged: {}", r.score_line);
         assert_eq!(r.winner, Some(billiards_rules::Seat::A), "{name}");
         assert_eq!(game.score.tries, 3, "{name}");

@@ -2,8 +2,8 @@
 //! ([`billiards_rules::catalog`]) between two computer levels, played through the one game
 //! interface alone ([`billiards_ai::any_match`], issue 50), each stroke's verdict printed.
 
-use billiards_ai::Level;
-use billiards_ai::any_match::play_match;
+use billiards_ai::any_match::{Seating, play_match};
+use billiards_ai::{Level, Player};
 use billiards_physics::{Model, Params, SpinModel};
 use billiards_rules::catalog::{MatchSettings, find};
 
@@ -69,14 +69,8 @@ pub fn run(a: MatchArgs) -> Result<(), String> {
             println!("{line}");
         }
     };
-    let run = play_match(
-        game.as_mut(),
-        &params,
-        levels,
-        a.seed,
-        a.max_strokes,
-        &mut say,
-    )?;
+    let seating = Seating::new(levels.map(Player::Computer), params, a.seed, a.max_strokes);
+    let run = play_match(game.as_mut(), &seating, &mut say)?;
     match run.winner {
         Some(w) => println!(
             "{} wins the match in {} strokes ({} games; fouls {} - {}): {}",

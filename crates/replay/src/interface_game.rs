@@ -8,7 +8,7 @@ use crate::args::{SimulateArgs, TournamentArgs};
 use crate::setup::{ShotSummary, setup};
 use crate::stats::wilson;
 use billiards_ai::any_game::layout_of;
-use billiards_ai::any_match::play_match;
+use billiards_ai::any_match::{Seating, play_match};
 use billiards_ai::game::declaration_of;
 use billiards_ai::{Level, Player};
 use billiards_physics::recording::Recorder;
@@ -298,7 +298,8 @@ pub(crate) fn tournament(id: &str, a: &TournamentArgs) -> Result<(), (String, bo
         let mut game = entry
             .start(&MatchSettings::new(names, length, seed))
             .map_err(|e| input(e.0))?;
-        let run = play_match(game.as_mut(), &params, seats, seed, 5000, &mut |_| {})
+        let seating = Seating::new(seats.map(Player::Computer), params, seed, 5000);
+        let run = play_match(game.as_mut(), &seating, &mut |_| {})
             .map_err(|e| (format!("game {g}: {e}"), false))?;
         let player = |seat: usize| if swap { 1 - seat } else { seat };
         t.games += 1;

@@ -1,6 +1,6 @@
 //! Snooker on the command line: `simulate --game snooker` (a frame between two computer
-//! levels, recorded, its [`FrameLog`] written beside the recording), `verify` of a snooker
-//! recording (the log re-judged by [`FrameLog::check`]) and `tournament --game snooker`
+//! levels through the one match loop, recorded, its [`StrokeLog`] written beside the
+//! recording) and `tournament --game snooker`
 //! (frames on all cores: frames won, breaks, centuries, fouls, decision time).
 
 use crate::args::{SimulateArgs, TournamentArgs};
@@ -10,13 +10,12 @@ use billiards_ai::Level;
 use billiards_ai::noise::stream;
 use billiards_ai::snooker::play::{FrameRecord, play_frame};
 use billiards_rules::Seat;
-use billiards_rules::snooker::FrameLog;
+use billiards_rules::StrokeLog;
 use indicatif::{ProgressBar, ProgressStyle};
 use rand::Rng;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
-use std::path::Path;
 
 /// A century: a break of 100 points or more.
 pub const CENTURY: u32 = 100;
@@ -55,16 +54,14 @@ pub fn simulate(a: &SimulateArgs) -> Result<(), String> {
         "snooker, seed {seed}: {} ({}) breaks off against {} ({})",
         names[0], lv[0], names[1], lv[1]
     );
-    let run = play_frame(lv, names, 0, seed, Seat::A, a.out.is_some())?;
-    for (k, s) in (1..).zip(&run.log.strokes) {
-        let chose: Vec<String> = s.choices.iter().map(|c| format!("{c:?}")).collect();
-        let pre = if chose.is_empty() {
-            String::new()
-        } else {
-            format!("(chose {}) ", chose.join(", "))
-        };
-        println!("stroke {k}: {pre}{}", s.verdict.text);
-    }
+    let run = play_frame(
+        lv,
+        names,
+        (0, seed),
+        Seat::A,
+        a.out.is_some(),
+        &mut |line| println!("{line}"),
+    )?;
     let r = &run.record;
     println!(
         "{}-{} in {} strokes ({}); highest breaks {} and {}",
@@ -75,20 +72,16 @@ pub fn simulate(a: &SimulateArgs) -> Result<(), String> {
         run.frame.highest_break[0],
         run.frame.highest_break[1]
     );
-    if let (Some(path), Some(rec)) = (&a.out, &run.recording) {
+    if let (Some(path), Some((rec, log))) = (&a.out, &run.recorded) {
         rec.save(path).map_err(|e| e.to_string())?;
-        save_log(path, &run.log)?;
+        crate::interface_game::save_json(&StrokeLog::path_beside(path), log)?;
         println!(
             "{} and {}",
             path.display(),
-            FrameLog::path_beside(path).display()
+            StrokeLog::path_beside(path).display()
         );
     }
     Ok(())
-}
-
-fn save_log(recording: &Path, log: &FrameLog) -> Result<(), String> {
-    crate::interface_game::save_json(&FrameLog::path_beside(recording), log)
 }
 
 /// A snooker tournament's results (or one shard's).
@@ -191,10 +184,10 @@ fn play(
             let r = play_frame(
                 players,
                 names.clone(),
-                g,
-                stream(seed, 3, g).random(),
+                (g, stream(seed, 3, g).random()),
                 breaker,
                 false,
+                &mut |_| {},
             );
             bar.inc(1);
             r.map(|run| run.record)

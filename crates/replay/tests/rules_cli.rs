@@ -136,10 +136,10 @@ fn simulate_a_snooker_frame_and_verify_rejudges_its_log() {
         stdout.contains("snooker verdicts re-judged identically"),
         "{stdout}"
     );
-    // The first verdict's scores edited: verify names the stroke and fails.
+    // The first judgement's words edited: verify names the stroke and fails.
     let text = std::fs::read_to_string(&log).unwrap();
     let mut json: serde_json::Value = serde_json::from_str(&text).unwrap();
-    json["strokes"][0]["verdict"]["scores"][0] = serde_json::json!(99);
+    json["strokes"][0]["judgement"]["text"] = serde_json::json!("edited");
     std::fs::write(&log, json.to_string()).unwrap();
     let (ok, _, err) = run(bin().arg("verify").arg(&file));
     assert!(!ok && err.contains("stroke 1: logged"), "{err}");

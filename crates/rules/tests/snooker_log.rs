@@ -239,7 +239,7 @@ fn the_log_lives_beside_the_recording() {
 
 #[test]
 fn a_replace_swapping_two_balls_is_placed_without_an_overlap() {
-    use billiards_rules::snooker::geometry::replace_moves;
+    use billiards_rules::interface::layout_moves;
     let table = Table::snooker_12ft();
     let r = Params::snooker().ball.radius;
     let (a, b, c) = (
@@ -250,7 +250,7 @@ fn a_replace_swapping_two_balls_is_placed_without_an_overlap() {
     // The red and the cue ball swap places, the blue comes back from the pocket.
     let now = [(WHITE, a), (1, b)];
     let layout = [(WHITE, b), (1, a), (19, c)];
-    let moves = replace_moves(&now, &layout, r, &table).unwrap();
+    let moves = layout_moves(&now, &layout, r, &table).unwrap();
     let mut at: Vec<(u8, Vec2)> = now.to_vec();
     for &(n, p) in &moves {
         at.retain(|q| q.0 != n);

@@ -1,26 +1,23 @@
 //! A whole snooker frame between two computer players, headless: what `billiards-cli
 //! tournament --game snooker` runs on every core and `simulate --game snooker` records.
 //!
-//! The table is the WPBSA 12-ft table with [`Params::snooker`]; the balls start as 3.2 sets
-//! them, the cue ball in the D. Every stroke: the choices the rules offer, the player's
-//! decision, the cue ball placed in the D when in hand, the strike with the player's
-//! execution noise, run to rest, judged by [`Frame::play`], the verdict's colours spotted
-//! (3.6); a replace (3.14) puts every ball back. With a recording every placement is an input,
-//! so [`FrameLog::check`] re-judges the frame from it.
+//! The table is the WPBSA 12-ft table with [`Params::snooker`]; the frame is a
+//! [`SnookerGame`] of one frame played by the match loop every game shares
+//! ([`crate::any_match`]): the options the rules offer, the player's decision, the cue ball
+//! placed in the D when in hand, the strike with the player's execution noise, judged
+//! through the interface, the colours spotted (3.6), a replace (3.14) set ball by ball.
+//! With a recording every placement is an input, so [`StrokeLog::check`] re-judges the frame
+//! from it.
 
-use super::{SnookerDecision, SnookerPlan, decide_snooker};
+use crate::Player;
+use crate::any_match::{Seating, play_match};
 use crate::level::Level;
-use crate::noise::stream;
-use billiards_physics::recording::{Recorder, Recording};
-use billiards_physics::snooker::{default_cue_position, layout};
-use billiards_physics::{BallId, Params, Shot, Simulation, Table, Vec2, Vec3};
-use billiards_rules::snooker::balls::WHITE;
-use billiards_rules::snooker::geometry::replace_moves;
-use billiards_rules::snooker::{Choice, Frame, FrameLog, LoggedStroke, Stroke, Verdict};
-use billiards_rules::{Seat, ShotSummary, summarise};
-use rand::Rng;
+use billiards_physics::recording::Recording;
+use billiards_physics::{Params, Table};
+use billiards_rules::snooker::Frame;
+use billiards_rules::snooker::rules::SnookerGame;
+use billiards_rules::{GameRules, Seat, StrokeLog};
 use serde::{Deserialize, Serialize};
-use std::time::Instant;
 
 /// Most strokes a frame may take; then it is decided on points (a tie: no winner).
 pub const MAX_STROKES: usize = 400;
@@ -72,238 +69,82 @@ pub struct FrameRecord {
     pub players: [FrameTally; 2],
 }
 
-/// A frame played: its record, the frame at the end, its rules log and, when asked for, the
-/// recording of every input.
+/// A frame played: its record, the frame at the end and, when asked for, the recording of
+/// every input and its rules log.
 #[derive(Clone, Debug)]
 pub struct FrameRun {
     /// The figures.
     pub record: FrameRecord,
     /// The frame as it ended.
     pub frame: Frame,
-    /// The rules log (one stroke per strike).
-    pub log: FrameLog,
-    /// The recording (with `record`).
-    pub recording: Option<Recording>,
+    /// The recording and its rules log (with `record`).
+    pub recorded: Option<(Recording, StrokeLog)>,
 }
 
-/// The table of a frame: lean, or recorded input by input.
-enum Table2 {
-    Lean(Box<Simulation>),
-    Recorded(Box<Recorder>),
-}
-
-impl Table2 {
-    fn sim(&self) -> &Simulation {
-        match self {
-            Table2::Lean(s) => s,
-            Table2::Recorded(r) => r.sim(),
-        }
-    }
-
-    fn place(&mut self, id: BallId, p: Vec2) -> Result<(), String> {
-        match self {
-            Table2::Lean(s) => s.place(id, p, Vec2::ZERO, Vec3::ZERO),
-            Table2::Recorded(r) => r.place(id, p, Vec2::ZERO, Vec3::ZERO),
-        }
-        .map_err(|e| format!("place ball {id} at ({:.4}, {:.4}): {e}", p.x, p.y))
-    }
-
-    /// Strikes the cue ball and runs to rest; the stroke's summary.
-    fn strike(&mut self, id: BallId, shot: Shot) -> Result<ShotSummary, String> {
-        match self {
-            Table2::Lean(s) => {
-                s.strike(id, shot).map_err(|e| e.to_string())?;
-                let mut summary = ShotSummary::default();
-                while let Some(e) = s.step_event() {
-                    summary.record(&e.kind, s.numbers());
-                }
-                Ok(summary)
-            }
-            Table2::Recorded(r) => {
-                let first = r.sim().history().events().len();
-                r.strike(id, shot).map_err(|e| e.to_string())?;
-                r.run_to_rest().map_err(|e| e.to_string())?;
-                let sim = r.sim();
-                Ok(summarise(&sim.history().events()[first..], sim.numbers()))
-            }
-        }
-    }
-
-    fn id(&self, n: u8) -> Result<BallId, String> {
-        self.sim()
-            .numbers()
-            .iter()
-            .position(|&m| m == n)
-            .ok_or_else(|| format!("no ball {n}"))
-    }
-
-    /// Every ball of `balls` where it says, as the rules' replace asks (3.14), in the order
-    /// of [`replace_moves`] (no placement on another ball).
-    fn set_layout(&mut self, balls: &[(u8, Vec2)]) -> Result<(), String> {
-        let sim = self.sim();
-        let moves = replace_moves(&on_table(sim), balls, sim.params().ball.radius, sim.table())
-            .ok_or("no room to move a ball aside for the replace")?;
-        for (n, p) in moves {
-            let id = self.id(n)?;
-            self.place(id, p)?;
-        }
-        Ok(())
-    }
-}
-
-fn on_table(sim: &Simulation) -> Vec<(u8, Vec2)> {
-    sim.balls()
-        .zip(sim.numbers())
-        .filter(|(b, _)| b.motion.on_table())
-        .map(|(b, &n)| (n, b.position))
-        .collect()
-}
-
-/// The choices the rules offer, taken one by one (a replace sets its layout), then the
-/// stroke: each decision timed into `tally`, seeded by the `decisions` count.
-fn plan_next(
-    frame: &mut Frame,
-    t: &mut Table2,
-    levels: [Level; 2],
-    seed: u64,
-    decisions: &mut u64,
-    tally: &mut [FrameTally; 2],
-) -> Result<(SnookerPlan, Vec<Choice>), String> {
-    let mut made = Vec::new();
-    loop {
-        let who = frame.next.striker.index();
-        let started = Instant::now();
-        let d = decide_snooker(
-            frame,
-            t.sim(),
-            levels[who],
-            stream(seed, 1, *decisions).random(),
-        )
-        .map_err(|e| format!("{}: {e}", levels[who]))?;
-        *decisions += 1;
-        let secs = started.elapsed().as_secs_f64();
-        let tl = &mut tally[who];
-        tl.decisions += 1;
-        tl.decision_secs += secs;
-        tl.max_decision_secs = tl.max_decision_secs.max(secs);
-        match d {
-            SnookerDecision::Choose { choice, .. } => {
-                let chosen = frame.choose(choice).map_err(|e| e.to_string())?;
-                if let Some(l) = chosen.layout {
-                    t.set_layout(&l)?;
-                }
-                made.push(choice);
-            }
-            SnookerDecision::Shoot(plan) => return Ok((plan, made)),
-        }
-    }
-}
-
-/// Plays one frame between `levels` (`levels[0]` is seat A) named `names`, `breaker`
-/// breaking off, every random draw from `seed`; with `record`, every input is recorded.
+/// Plays one frame between `levels` (`levels[0]` is player 0) named `names`, `breaker`
+/// breaking off, every random draw from `seed`; with `record`, every input is recorded; each
+/// stroke's verdict and option taken goes to `say`. The breaker sits in seat A, as the rules'
+/// frame starts; the figures are given back by player.
 pub fn play_frame(
     levels: [Level; 2],
     names: [String; 2],
-    index: u64,
-    seed: u64,
+    (index, seed): (u64, u64),
     breaker: Seat,
     record: bool,
+    say: &mut dyn FnMut(String),
 ) -> Result<FrameRun, String> {
     let (table, params) = snooker_table();
-    let marks = billiards_physics::SnookerMarks::of(&table)?;
-    let balls = layout(&table, &params.ball, default_cue_position(&marks))?;
-    let mut t = if record {
-        Table2::Recorded(Box::new(
-            Recorder::new(table, params, balls).map_err(|e| e.to_string())?,
-        ))
-    } else {
-        let mut s = Simulation::new(table, params, &balls).map_err(|e| e.to_string())?;
-        s.set_record_history(false);
-        Table2::Lean(Box::new(s))
+    // Player `k` sits in seat `seat_of(k)`.
+    let seat_of = |k: usize| if k == breaker.index() { 0 } else { 1 };
+    let player_of = |seat: usize| {
+        if seat == 0 {
+            breaker.index()
+        } else {
+            1 - breaker.index()
+        }
     };
-    let mut frame =
-        Frame::new(names.clone(), table, &params.ball, breaker).map_err(|e| e.to_string())?;
-    let mut log = FrameLog::new(names, breaker);
-    let mut tally: [FrameTally; 2] = Default::default();
-    let mut current = [0u32; 2];
-    let cue = t.id(WHITE)?;
-    let mut strokes = 0;
-    let mut decisions = 0u64;
-    while frame.end.is_none() && strokes < MAX_STROKES {
-        let (plan, made) = plan_next(&mut frame, &mut t, levels, seed, &mut decisions, &mut tally)
-            .map_err(|e| format!("stroke {}: {e}", strokes + 1))?;
-        let who = frame.next.striker.index();
-        tally[who].simulations += plan.simulations;
-        if let Some(p) = plan.place {
-            t.place(cue, p)?;
-        }
-        let before = on_table(t.sim());
-        let shot = plan.executed(
-            levels[who].execution_noise(),
-            t.sim().params(),
-            stream(seed, 2, strokes as u64).random(),
-        );
-        let summary = t.strike(cue, shot)?;
-        let after = on_table(t.sim());
-        let verdict = frame
-            .play(Stroke {
-                summary: &summary,
-                nominated: plan.nominated,
-                before: &before,
-                after: &after,
-            })
-            .map_err(|e| format!("stroke {}: {e}", strokes + 1))?;
-        strokes += 1;
-        count_stroke(&mut tally[who], &mut current[who], &verdict);
-        for &(c, p) in &verdict.spots {
-            let id = t.id(c)?;
-            t.place(id, p)?;
-        }
-        log.strokes.push(LoggedStroke {
-            choices: made,
-            nominated: plan.nominated,
-            verdict,
-        });
-    }
-    for (who, c) in current.iter().enumerate() {
-        if *c > 0 {
-            tally[who].breaks.push(*c);
-        }
-    }
-    let (winner, reason) = frame_winner(&frame);
-    let recording = match &t {
-        Table2::Recorded(r) => Some(r.recording()),
-        Table2::Lean(_) => None,
+    let seats = [player_of(0), player_of(1)];
+    let mut game = SnookerGame::new(seats.map(|k| names[k].clone()), 1, table, params.ball)
+        .map_err(|e| e.0)?;
+    let seating = Seating {
+        record,
+        ..Seating::new(
+            seats.map(|k| Player::Computer(levels[k])),
+            params,
+            seed,
+            MAX_STROKES,
+        )
     };
+    let run = play_match(&mut game, &seating, say)?;
+    let tally = |k: usize| {
+        let t = &run.tally[seat_of(k)];
+        FrameTally {
+            strokes: t.strokes,
+            fouls: t.fouls,
+            potted_points: t.points,
+            breaks: t.runs.clone(),
+            decisions: t.decisions,
+            decision_secs: t.decision_secs,
+            max_decision_secs: t.max_decision_secs,
+            simulations: t.simulations,
+        }
+    };
+    let (winner, reason) = frame_winner(&game.frame);
+    let scores = game.points();
     Ok(FrameRun {
         record: FrameRecord {
             index,
             seed,
             breaker: breaker.index(),
-            winner,
-            scores: frame.scores,
-            strokes,
+            winner: winner.map(player_of),
+            scores: [scores[seat_of(0)], scores[seat_of(1)]],
+            strokes: run.strokes,
             reason,
-            players: tally,
+            players: [tally(0), tally(1)],
         },
-        frame,
-        log,
-        recording,
+        frame: game.frame,
+        recorded: run.recorded.into_iter().next(),
     })
-}
-
-/// Adds one judged stroke to its player's figures; a stroke that scores nothing ends the
-/// player's break (`current`), which is then recorded, since breaks are counted as visits.
-fn count_stroke(tl: &mut FrameTally, current: &mut u32, verdict: &Verdict) {
-    tl.strokes += 1;
-    tl.fouls += usize::from(!verdict.fair());
-    tl.potted_points += verdict.points;
-    if verdict.points > 0 {
-        *current += verdict.points;
-    } else if *current > 0 {
-        tl.breaks.push(*current);
-        *current = 0;
-    }
 }
 
 /// The winner's seat index and how the frame ended; a frame cut off at [`MAX_STROKES`] goes

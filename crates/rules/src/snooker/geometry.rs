@@ -105,62 +105,6 @@ pub fn respot_all(
     Ok(out)
 }
 
-/// 3.14's replace as placements that never overlap: from the balls on the table `now` to
-/// `layout` (what `Chosen::layout` returns), the moves `(number, centre)` to make one after
-/// another (`Simulation::place`). A ball whose place is clear goes first; when every place
-/// left is taken by a ball still to move, that ball is first parked on a free point along the
-/// bottom cushion. `None` when no point there is free (never on a real table).
-/// `radius` is the balls' radius, `table` the table (for its cushions).
-pub fn replace_moves(
-    now: &[(u8, Vec2)],
-    layout: &[(u8, Vec2)],
-    radius: f64,
-    table: &Table,
-) -> Option<Vec<(u8, Vec2)>> {
-    const CLEAR: f64 = 1e-9;
-    let mut at: Vec<(u8, Vec2)> = now.to_vec();
-    let mut todo: Vec<(u8, Vec2)> = layout.to_vec();
-    let mut moves = Vec::new();
-    let bound = table.centre_bounds(radius);
-    let clear = |at: &[(u8, Vec2)], n: u8, p: Vec2| {
-        at.iter()
-            .all(|&(m, q)| m == n || (p - q).length() >= 2.0 * radius + CLEAR)
-    };
-    let set = |at: &mut Vec<(u8, Vec2)>, moves: &mut Vec<(u8, Vec2)>, n: u8, p: Vec2| {
-        at.retain(|b| b.0 != n);
-        at.push((n, p));
-        moves.push((n, p));
-    };
-    // Each pass places a ball or parks one; a parked ball is placed in a later pass.
-    for _ in 0..4 * (layout.len() + 1) {
-        if todo.is_empty() {
-            return Some(moves);
-        }
-        if let Some(i) = todo.iter().position(|&(n, p)| clear(&at, n, p)) {
-            let (n, p) = todo.remove(i);
-            set(&mut at, &mut moves, n, p);
-            continue;
-        }
-        let (n, p) = todo[0];
-        let &(blocker, _) = at
-            .iter()
-            .find(|&&(m, q)| m != n && (p - q).length() < 2.0 * radius + CLEAR)?;
-        // Along the bottom cushion, 20 cm clear of the corner pockets.
-        let (from, pitch) = (-bound.y + 0.2, 2.0 * radius + 1e-3);
-        let steps = ((2.0 * bound.y - 0.4) / pitch) as usize;
-        let park = (0..=steps)
-            .map(|j| Vec2::new(-bound.x + 1e-4, from + j as f64 * pitch))
-            .find(|&q| {
-                clear(&at, blocker, q)
-                    && todo
-                        .iter()
-                        .all(|&(_, t)| (t - q).length() >= 2.0 * radius + CLEAR)
-            })?;
-        set(&mut at, &mut moves, blocker, park);
-    }
-    None
-}
-
 /// Directions (angles) in which the cue ball at `cue` meets the ball at `target` at its
 /// extreme edges: the two thinnest contacts. `None` when they touch.
 fn edges(cue: Vec2, target: Vec2, r: f64) -> Option<(f64, f64, f64)> {
