@@ -7,12 +7,15 @@
 //! RAYON_NUM_THREADS=1 cargo run --release -p billiards-ai --example snooker_time -- hard 1
 //! ```
 
-use billiards_ai::snooker::play::{play_frame, snooker_table};
-use billiards_ai::{Level, SnookerDecision, decide_snooker};
+use billiards_ai::match_record::{Between, play_between};
+use billiards_ai::play::MAX_SHOTS;
+use billiards_ai::snooker::play::snooker_table;
+use billiards_ai::{Level, Player, SnookerDecision, decide_snooker};
 use billiards_physics::snooker::{default_cue_position, layout};
 use billiards_physics::{Simulation, SnookerMarks, Vec2, Vec3};
+use billiards_rules::snooker::rules::SnookerGame;
 use billiards_rules::snooker::{Frame, Stroke};
-use billiards_rules::{Seat, summarise};
+use billiards_rules::{GameRules, Seat, summarise};
 use std::time::Instant;
 
 /// The balls of `sim` on the table, by number.
@@ -76,17 +79,19 @@ fn main() {
     }
     let (mut all, mut worst, mut n) = (0.0, 0.0f64, 0usize);
     for seed in 0..frames {
-        let start = Instant::now();
-        let run = play_frame(
-            [level, level],
-            names.clone(),
-            (seed, seed),
-            Seat::A,
-            false,
-            &mut |_| {},
-        )
-        .unwrap();
-        let r = &run.record;
+        let began = Instant::now();
+        let between = Between {
+            players: [Player::Computer(level); 2],
+            params,
+            seed,
+            max_strokes: MAX_SHOTS,
+        };
+        let start = |names: [String; 2]| {
+            SnookerGame::new(names, 1, table, params.ball)
+                .map(|g| Box::new(g) as Box<dyn GameRules>)
+                .map_err(|e| e.0)
+        };
+        let (r, _) = play_between(seed, 0, &between, &start).unwrap();
         for t in &r.players {
             all += t.decision_secs;
             worst = worst.max(t.max_decision_secs);
@@ -94,13 +99,13 @@ fn main() {
         }
         println!(
             "frame {seed}: {}-{} in {} strokes ({}), breaks {:?} / {:?}, {:.1} s",
-            r.scores[0],
-            r.scores[1],
+            r.points[0],
+            r.points[1],
             r.strokes,
             r.reason,
-            r.players[0].breaks,
-            r.players[1].breaks,
-            start.elapsed().as_secs_f64()
+            r.players[0].runs,
+            r.players[1].runs,
+            began.elapsed().as_secs_f64()
         );
     }
     if n > 0 {

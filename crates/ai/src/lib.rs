@@ -21,7 +21,9 @@
 //! - [`any_game`]: the computer at any game through the one game interface
 //!   ([`billiards_rules::GameRules`]): one search, valued from the rules' judgements, run
 //!   by the skeleton pool and snooker share ([`rounds::find`]);
-//!   [`any_match`]: a whole match of any game between two levels;
+//!   [`any_match`]: a whole match of any game between two players, the one loop every
+//!   tournament and game between computers runs; [`match_record`]: such a match between
+//!   players by index, opener alternating, its figures by player;
 //! - [`snooker`]: the computer at snooker ([`decide_snooker`]), the same search judged by the
 //!   WPBSA rules and valued in points, and a whole frame between two levels. Three-cushion
 //!   (and every game added through the interface) is played by [`any_game`];
@@ -47,6 +49,7 @@ pub mod game;
 pub mod greedy;
 pub mod jump;
 pub mod level;
+pub mod match_record;
 pub mod noise;
 pub mod placement;
 pub mod plan;

@@ -4,10 +4,13 @@
 //! between two computers ends with the scores its verdicts add up to and a log that
 //! re-judges its recording.
 
-use billiards_ai::snooker::play::{play_frame, snooker_table};
-use billiards_ai::{Level, ShotKind, SnookerDecision, SnookerPlan, decide_snooker};
+use billiards_ai::any_match::{Seating, play_match};
+use billiards_ai::play::MAX_SHOTS;
+use billiards_ai::snooker::play::snooker_table;
+use billiards_ai::{Level, Player, ShotKind, SnookerDecision, SnookerPlan, decide_snooker};
 use billiards_physics::{BallSetup, Pocket, Simulation, SnookerMarks, Vec2, Vec3};
 use billiards_rules::snooker::balls::{BLACK, PINK, WHITE, is_colour};
+use billiards_rules::snooker::rules::SnookerGame;
 use billiards_rules::snooker::{BallOn, Frame, Stroke};
 use billiards_rules::{Seat, ShotSummary};
 
@@ -223,51 +226,46 @@ fn the_same_seed_decides_the_same_on_one_thread_and_on_two() {
 
 #[test]
 fn a_frame_between_two_computers_adds_up_and_rejudges_from_its_recording() {
-    let run = play_frame(
-        [Level::Medium, Level::Easy],
-        names(),
-        (0, 2),
-        Seat::A,
-        true,
-        &mut |_| {},
-    )
-    .unwrap();
-    let r = &run.record;
-    assert!(r.strokes > 0);
-    assert_eq!(r.scores, run.frame.scores);
-    // The frame ended (or reached the stroke limit) and the winner has more points.
-    match run.frame.end {
-        Some((w, _)) => assert_eq!(r.winner, Some(w.index())),
-        None => assert_eq!(r.strokes, billiards_ai::snooker::play::MAX_STROKES),
-    }
-    if let Some(w) = r.winner
-        && r.reason == "on points"
-    {
-        assert!(r.scores[w] > r.scores[1 - w], "{:?}", r.scores);
+    let (table, params) = snooker_table();
+    let mut game = SnookerGame::new(names(), 1, table, params.ball).unwrap();
+    let players = [
+        Player::Computer(Level::Medium),
+        Player::Computer(Level::Easy),
+    ];
+    let seating = Seating {
+        record: true,
+        ..Seating::new(players, params, 2, MAX_SHOTS)
+    };
+    let run = play_match(&mut game, &seating, &mut |_| {}).unwrap();
+    let frame = &game.frame;
+    assert!(run.strokes > 0);
+    assert_eq!(run.points, frame.scores);
+    // The frame ended (or reached the stroke limit).
+    match frame.end {
+        Some((w, _)) => assert_eq!(run.winner, Some(w)),
+        None => assert_eq!(run.strokes, MAX_SHOTS),
     }
     // The points a player's own strokes scored and the penalties the other's fouls gave
     // (WPBSA 3.15: at least 4 each) make the score.
+    let t = &run.tally;
     for p in 0..2 {
-        let (own, given) = (r.players[p].potted_points, r.scores[p]);
+        let (own, given) = (t[p].points, frame.scores[p]);
         assert!(own <= given, "{own} of {given}");
         assert!(
-            given - own >= 4 * r.players[1 - p].fouls as u32,
+            given - own >= 4 * t[1 - p].fouls as u32,
             "{own} potted, {given} in all, {} fouls against",
-            r.players[1 - p].fouls
+            t[1 - p].fouls
         );
     }
-    // The breaks the tally counts (points in a visit, 2.8) are the frame's highest breaks,
-    // and add up to the points potted.
-    for p in 0..2 {
-        let best = r.players[p].breaks.iter().copied().max().unwrap_or(0);
-        assert_eq!(best, run.frame.highest_break[p]);
-        assert_eq!(
-            r.players[p].breaks.iter().sum::<u32>(),
-            r.players[p].potted_points
-        );
+    // The runs the tally counts (points in a visit: breaks, 2.8) are the frame's highest
+    // breaks, and add up to the points potted.
+    for (tally, highest) in t.iter().zip(frame.highest_break) {
+        let best = tally.runs.iter().copied().max().unwrap_or(0);
+        assert_eq!(best, highest);
+        assert_eq!(tally.runs.iter().sum::<u32>(), tally.points);
     }
     // The rules log re-judges the recording stroke by stroke.
-    let (rec, log) = run.recorded.as_ref().expect("recorded");
-    assert_eq!(log.strokes.len(), r.strokes);
-    assert_eq!(log.check(rec), Ok(r.strokes));
+    let (rec, log) = run.recorded.first().expect("recorded");
+    assert_eq!(log.strokes.len(), run.strokes);
+    assert_eq!(log.check(rec), Ok(run.strokes));
 }

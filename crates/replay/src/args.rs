@@ -293,17 +293,18 @@ pub struct SimulateArgs {
     /// (default: the first offered). Re-racks are not supported here (one rack a recording).
     #[arg(long = "choice", value_parser = parse_choice, requires = "game")]
     pub choices: Vec<Choice>,
-    /// Snooker: the computer levels of the two players, `A,B` (easy, medium, hard, expert,
-    /// perfect); the frame's draws come from `--rack-seed`.
-    #[arg(long, default_value = "hard,hard", requires = "game")]
-    pub computer: String,
+    /// Without `--shot`: the computer players of the game, `A,B` (easy, medium, hard, expert,
+    /// perfect; greedy and one-ply at pool's games; default hard,hard); its draws come from
+    /// `--rack-seed`.
+    #[arg(long, requires = "game")]
+    pub computer: Option<String>,
 }
 
 /// `tournament` options.
 #[derive(clap::Args, Debug)]
 pub struct TournamentArgs {
-    /// The game: nine-ball, ten-ball, eight-ball or snooker (computer levels only; frames,
-    /// breaks and centuries).
+    /// The game: nine-ball, ten-ball, eight-ball, snooker, three-cushion (snooker's and
+    /// carom's players are computer levels only).
     #[arg(long, value_enum, default_value = "nine-ball")]
     pub game: GameArg,
     /// The two players, `A,B`: easy, medium, hard, expert, perfect, greedy or one-ply. A
@@ -331,7 +332,8 @@ pub struct TournamentArgs {
     /// How the racks are racked: `template` (frozen) or `triangle` (small seeded gaps).
     #[arg(long, default_value = "triangle")]
     pub rack_style: billiards_rules::RackStyle,
-    /// Three-cushion: the points of each game (default 40, the UMB distance).
+    /// Each match's length in the game's unit (racks to win, frames best of, points); default
+    /// one game: a rack, a frame, a carom game of 40 points (the UMB distance).
     #[arg(long)]
     pub length: Option<u32>,
 }

@@ -1,18 +1,14 @@
-//! `simulate --game` for every game through the one game interface (issue 50): a scripted
-//! rack of shots judged stroke by stroke by [`billiards_rules::GameRules`], logged as any
-//! game's ([`StrokeLog`]); and `tournament --game` for the games the interface alone plays
-//! (three-cushion): matches between two computer levels ([`billiards_ai::any_match`]) with
-//! their win rates.
+//! `simulate --game ID --shot ...` for every game through the one game interface (issue 50):
+//! a scripted rack of shots judged stroke by stroke by [`billiards_rules::GameRules`], logged
+//! as any game's ([`StrokeLog`]). A game between computers is `computer_game.rs`'s, a
+//! tournament `tournament.rs`'s.
 
-use crate::args::{SimulateArgs, TournamentArgs};
+use crate::args::SimulateArgs;
 use crate::setup::{ShotSummary, setup};
-use crate::stats::wilson;
 use billiards_ai::any_game::layout_of;
-use billiards_ai::any_match::{Seating, play_match};
 use billiards_ai::game::declaration_of;
-use billiards_ai::{Level, Player};
 use billiards_physics::recording::Recorder;
-use billiards_physics::{Model, Params, SpinModel, Vec2, Vec3};
+use billiards_physics::{Params, Vec2, Vec3};
 use billiards_rules::catalog::{GameEntry, MatchSettings, find};
 use billiards_rules::{
     CueBallPlace, Declaration, GameRules, Setup, StrokeEntry, StrokeLog, StrokeRecord, Turn,
@@ -243,110 +239,4 @@ pub(crate) fn save_json(
     let tmp = path.with_extension("json.tmp");
     std::fs::write(&tmp, json).map_err(|e| format!("{}: {e}", tmp.display()))?;
     std::fs::rename(&tmp, path).map_err(|e| format!("{}: {e}", path.display()))
-}
-
-/// The results of a tournament of a game played through the interface.
-#[derive(Debug, Default, serde::Serialize)]
-struct Tally {
-    games: u64,
-    wins: [u64; 2],
-    strokes: usize,
-    fouls: [usize; 2],
-    undecided: u64,
-}
-
-fn levels(a: &TournamentArgs) -> Result<[Level; 2], String> {
-    let (x, y) = a
-        .players
-        .split_once(',')
-        .ok_or_else(|| format!("--players {:?}: expected A,B (e.g. hard,easy)", a.players))?;
-    let level = |s: &str| match s.trim().parse::<Player>() {
-        Ok(Player::Computer(level)) => Ok(level),
-        Ok(other) => Err(format!(
-            "{other:?} plays pool only: give computer levels (easy, medium, hard, expert, perfect)"
-        )),
-        Err(e) => Err(e.to_string()),
-    };
-    Ok([level(x)?, level(y)?])
-}
-
-/// `tournament --game ID`: `a.games` games of the game's length (`--length`, else its usual
-/// one) between the two levels, the first player opening the even games, each game's draws
-/// from the seed and its index. Errors: `(message, whether the input is at fault)`.
-pub(crate) fn tournament(id: &str, a: &TournamentArgs) -> Result<(), (String, bool)> {
-    let input = |e: String| (e, true);
-    let entry = entry(id).map_err(input)?;
-    if a.shard.is_some() || !a.merge.is_empty() {
-        return Err(input(format!(
-            "--shard and --merge are not supported for {} yet: run the games in one process",
-            entry.label
-        )));
-    }
-    let levels = levels(a).map_err(input)?;
-    let length = a.length.unwrap_or(entry.default_length);
-    let params = Params {
-        model: Model::Spin(SpinModel::default()),
-        ..Params::default()
-    };
-    let mut t = Tally::default();
-    for g in 0..a.games {
-        // Player k sits in seat A of the even games, in seat B of the odd ones.
-        let swap = g % 2 == 1;
-        let seats = if swap { [levels[1], levels[0]] } else { levels };
-        let names = seats.map(|l| l.name().to_owned());
-        let seed = a.seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ g;
-        let mut game = entry
-            .start(&MatchSettings::new(names, length, seed))
-            .map_err(|e| input(e.0))?;
-        let seating = Seating::new(seats.map(Player::Computer), params, seed, 5000);
-        let run = play_match(game.as_mut(), &seating, &mut |_| {})
-            .map_err(|e| (format!("game {g}: {e}"), false))?;
-        let player = |seat: usize| if swap { 1 - seat } else { seat };
-        t.games += 1;
-        match run.winner {
-            Some(w) => t.wins[player(w.index())] += 1,
-            None => t.undecided += 1,
-        }
-        for seat in 0..2 {
-            t.fouls[player(seat)] += run.fouls[seat];
-        }
-        t.strokes += run.strokes;
-        println!("game {g}: {}", run.score_line);
-    }
-    print!("{}", report(entry, &levels, length, a.seed, &t));
-    if let Some(path) = &a.out {
-        let json = serde_json::to_string_pretty(&t).map_err(|e| (e.to_string(), false))?;
-        std::fs::write(path, json).map_err(|e| (format!("{}: {e}", path.display()), false))?;
-    }
-    Ok(())
-}
-
-fn report(entry: &GameEntry, levels: &[Level; 2], length: u32, seed: u64, t: &Tally) -> String {
-    let mut out = format!(
-        "{}, {} {length}, {} vs {}: {} games (seed {seed}), {} strokes\n",
-        entry.label,
-        entry.length_unit,
-        levels[0].name(),
-        levels[1].name(),
-        t.games,
-        t.strokes
-    );
-    out += "player    wins   win % 95 % interval  fouls\n";
-    for (k, level) in levels.iter().enumerate() {
-        let n = t.games as usize;
-        let (lo, hi) = wilson(t.wins[k] as usize, n);
-        out += &format!(
-            "{:<8} {:>5} {:>6.1}% {:>5.1}-{:>5.1}%  {:>5}\n",
-            level.name(),
-            t.wins[k],
-            100.0 * t.wins[k] as f64 / n.max(1) as f64,
-            100.0 * lo,
-            100.0 * hi,
-            t.fouls[k]
-        );
-    }
-    if t.undecided > 0 {
-        out += &format!("{} games without a winner\n", t.undecided);
-    }
-    out
 }

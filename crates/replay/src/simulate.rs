@@ -1,6 +1,6 @@
 //! `simulate`: shots from a rack, a scene file or a game under its rules, recorded, with a
 //! summary. The dispatcher of `simulate`: a game's script goes through the one game interface
-//! (`interface_game.rs`), a snooker frame between computers to `snooker.rs`; what they share
+//! (`interface_game.rs`), a game between computers to `computer_game.rs`; what they share
 //! with it lives in `args.rs` and `setup.rs`.
 
 pub use crate::args::SimulateArgs;
@@ -30,9 +30,15 @@ fn play(rec: &mut Recorder, shot: Shot) -> Result<ShotSummary, String> {
 
 pub(crate) fn simulate(a: SimulateArgs) -> Result<(), String> {
     if let Some(game) = a.game {
-        // Snooker without a script: a frame between two computer levels.
-        if matches!(game, crate::args::GameArg::Snooker) && a.shots.is_empty() {
-            return crate::snooker::simulate(&a);
+        let entry = billiards_rules::catalog::find(game.id()).map_err(|e| e.0)?;
+        // Without a script the computers play the game.
+        if a.shots.is_empty() && a.scene.is_none() {
+            return crate::computer_game::simulate(entry, &a);
+        }
+        if a.computer.is_some() {
+            return Err(
+                "--computer plays the game itself: give --shot or --computer, not both".into(),
+            );
         }
         return crate::interface_game::simulate(game.id(), &a);
     }

@@ -121,7 +121,7 @@ fn simulate_a_snooker_frame_and_verify_rejudges_its_log() {
         .arg(&file));
     assert!(ok, "{err}");
     assert!(
-        stdout.contains("Ann (easy) breaks off against Bob (easy)"),
+        stdout.contains("snooker, seed 3: Ann (easy) opens against Bob (easy)"),
         "{stdout}"
     );
     assert!(stdout.contains("stroke 1: "), "{stdout}");

@@ -172,7 +172,7 @@ fn a_tournament_shard_that_lost_games_is_refused() {
     run("tournament", &args, &["--shard", "2/2"], &b);
     let mut v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&b).unwrap()).unwrap();
-    v["racks"].as_array_mut().unwrap().pop();
+    v["matches"].as_array_mut().unwrap().pop();
     std::fs::write(&b, v.to_string()).unwrap();
     refused(
         &merge("tournament", &[&a, &b], None),

@@ -34,12 +34,12 @@ fn wpa_9_5_a_ten_ball_tournament_plays_every_rack_to_a_winner() {
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(
-        stdout.contains("TenBall, easy vs greedy: 4 of 4 games"),
+        stdout.contains("10-ball, race to 1, easy vs greedy: 4 of 4 games"),
         "{stdout}"
     );
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
-    let racks = v["racks"].as_array().unwrap();
+    let racks = v["matches"].as_array().unwrap();
     assert_eq!(racks.len(), 4);
     for r in racks {
         // Every rack ends with a winner: the called 10 made (9.5) or three fouls (9.11).
@@ -51,7 +51,7 @@ fn wpa_9_5_a_ten_ball_tournament_plays_every_rack_to_a_winner() {
             "{reason}"
         );
         assert!(
-            r["shots"].as_u64().unwrap() >= 2,
+            r["strokes"].as_u64().unwrap() >= 2,
             "no win on the break (9.9): {r}"
         );
     }

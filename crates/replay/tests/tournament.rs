@@ -76,7 +76,7 @@ fn two_shards_merged_are_the_whole_tournament() {
     let racks = |p: &PathBuf| {
         let v: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap();
-        v["racks"]
+        v["matches"]
             .as_array()
             .unwrap()
             .iter()
@@ -84,7 +84,7 @@ fn two_shards_merged_are_the_whole_tournament() {
                 (
                     r["index"].clone(),
                     r["winner"].clone(),
-                    r["shots"].clone(),
+                    r["strokes"].clone(),
                     r["seed"].clone(),
                 )
             })
@@ -117,7 +117,7 @@ fn a_snooker_tournament_reports_frames_breaks_and_centuries() {
         String::from_utf8_lossy(&out.stderr)
     );
     assert!(
-        stdout.contains("snooker, easy vs easy: 2 of 2 frames"),
+        stdout.contains("snooker, best of 1, easy vs easy: 2 of 2 games"),
         "{stdout}"
     );
     for column in [

@@ -9,7 +9,7 @@ use crate::racks::RackStyle;
 use crate::snooker::rules::SnookerGame;
 use crate::state::Game;
 use crate::three_cushion::rules::ThreeCushionMatch;
-use billiards_physics::{BallSpec, Table};
+use billiards_physics::{BallSpec, Model, Params, SpinModel, Table};
 
 /// How a match is set up, for any game.
 #[derive(Clone, Debug, PartialEq)]
@@ -40,6 +40,21 @@ impl MatchSettings {
     }
 }
 
+/// What a tournament counts of a game besides wins, fouls and decision times, each read from
+/// the interface (the judgements and [`GameRules::points`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Figures {
+    /// Pool's: object balls pocketed an inning, racks won from the break without the other
+    /// player striking (break and run).
+    Racks,
+    /// Snooker's: points a frame, breaks (points in a visit, WPBSA 2.8), the highest,
+    /// centuries.
+    Frames,
+    /// Carom's: the general average (points an inning) and the high run (the most points
+    /// in one inning).
+    Points,
+}
+
 /// How an entry starts a match on the given table and balls.
 pub type Start = fn(&MatchSettings, Table, BallSpec) -> Result<Box<dyn GameRules>, RulesError>;
 
@@ -56,6 +71,15 @@ pub struct GameEntry {
     pub length_noun: &'static str,
     /// The usual length of a match.
     pub default_length: u32,
+    /// The length of a match of one game: one rack (race to 1), one frame (best of 1), one
+    /// carom game to its usual points; what a tournament plays by default.
+    pub one_game: u32,
+    /// What a tournament counts of this game besides wins and fouls.
+    pub figures: Figures,
+    /// The solver's parameters the command line's tournaments play it under (their figures in
+    /// the READMEs were measured so): pool's and carom's the spin model (Han 2005's cushion),
+    /// snooker's the paper model of issue 26's frames; the ball is always the game's.
+    pub params: fn() -> Params,
     /// The game's own table and balls.
     pub equipment: fn() -> (Table, BallSpec),
     /// Played on any pool table of the player's choosing (its size, pockets, jaws and
@@ -92,6 +116,14 @@ impl GameEntry {
         }
         let (table, ball) = settings.equipment.unwrap_or_else(self.equipment);
         (self.start)(settings, table, ball)
+    }
+}
+
+/// The spin model with its default cushion (Han 2005): pool's and carom's studies.
+fn spin_params() -> Params {
+    Params {
+        model: Model::Spin(SpinModel::default()),
+        ..Params::default()
     }
 }
 
@@ -163,6 +195,9 @@ pub const GAMES: &[GameEntry] = &[
         length_unit: "race to",
         length_noun: "racks",
         default_length: 3,
+        one_game: 1,
+        figures: Figures::Racks,
+        params: spin_params,
         equipment: pool_equipment,
         pool_table: true,
         ball_word: pool_word,
@@ -175,6 +210,9 @@ pub const GAMES: &[GameEntry] = &[
         length_unit: "race to",
         length_noun: "racks",
         default_length: 3,
+        one_game: 1,
+        figures: Figures::Racks,
+        params: spin_params,
         equipment: pool_equipment,
         pool_table: true,
         ball_word: pool_word,
@@ -187,6 +225,9 @@ pub const GAMES: &[GameEntry] = &[
         length_unit: "race to",
         length_noun: "racks",
         default_length: 3,
+        one_game: 1,
+        figures: Figures::Racks,
+        params: spin_params,
         equipment: pool_equipment,
         pool_table: true,
         ball_word: pool_word,
@@ -199,6 +240,9 @@ pub const GAMES: &[GameEntry] = &[
         length_unit: "best of",
         length_noun: "frames",
         default_length: 3,
+        one_game: 1,
+        figures: Figures::Frames,
+        params: Params::snooker,
         equipment: snooker_equipment,
         pool_table: false,
         ball_word: crate::snooker::balls::word,
@@ -219,6 +263,9 @@ pub const GAMES: &[GameEntry] = &[
         length_noun: "points",
         // UMB world cup and championship distance (Art. 29 leaves it to the event).
         default_length: 40,
+        one_game: 40,
+        figures: Figures::Points,
+        params: spin_params,
         equipment: carom_equipment,
         pool_table: false,
         ball_word: crate::three_cushion::balls::word,
@@ -238,6 +285,9 @@ pub const GAMES: &[GameEntry] = &[
         length_unit: "race to",
         length_noun: "racks",
         default_length: 1,
+        one_game: 1,
+        figures: Figures::Racks,
+        params: spin_params,
         equipment: pool_equipment,
         pool_table: true,
         ball_word: pool_word,

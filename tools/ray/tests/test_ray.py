@@ -69,7 +69,7 @@ def test_tournament_on_8_shards_is_one_process(tmp_path):
     merged = on_ray("tournament", TOURNAMENT, tmp_path)
     whole = one_process("tournament", TOURNAMENT, tmp_path)
     assert without_timing(merged) == without_timing(whole)
-    assert len(json.loads(merged)["racks"]) == 8
+    assert len(json.loads(merged)["matches"]) == 8
 
 
 def test_breaks_on_8_shards_is_one_process_bit_for_bit(tmp_path):
