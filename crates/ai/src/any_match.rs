@@ -17,7 +17,7 @@ use billiards_physics::recording::{Recorder, Recording};
 use billiards_physics::{BallId, BallSetup, Event, Params, Shot, Simulation, Vec2, Vec3};
 use billiards_rules::interface::layout_moves;
 use billiards_rules::{
-    CueBallPlace, GameRules, Judgement, Seat, Setup, StrokeEntry, StrokeLog, StrokeRecord,
+    CueBallPlace, GameEnd, GameRules, Judgement, Seat, Setup, StrokeEntry, StrokeLog, StrokeRecord,
 };
 use rand::Rng;
 use serde::{Deserialize, Serialize};
@@ -371,8 +371,9 @@ pub fn play_match(
     Ok(run)
 }
 
-/// The options the striker takes, then one stroke, judged and counted; `true` once the
-/// match is over.
+/// One decision of the striker carried out: an option taken, or a stroke played, judged,
+/// counted and logged, the balls put back and a finished game closed; `true` once the match
+/// is over.
 fn strike_once(
     game: &mut dyn GameRules,
     play: &mut Play<'_>,
@@ -401,6 +402,38 @@ fn strike_once(
     if let Some(sims) = decided.simulations() {
         play.run.tally[turn.striker.index()].simulations += sims;
     }
+    let judged = play_stroke(game, play, &turn, &stroke)?;
+    let who = &game.players()[judged.striker.index()];
+    let declared = stroke
+        .declared
+        .text(&|b| game.ball_name(b))
+        .map_or(String::new(), |d| format!(" ({d})"));
+    say(format!(
+        "stroke {}: {who}{declared}: {}",
+        play.run.strokes, judged.text
+    ));
+    for &(n, p) in &judged.put {
+        play.table.place(n, p)?;
+    }
+    play.table.log(StrokeEntry {
+        choices: std::mem::take(&mut play.choices),
+        declared: stroke.declared,
+        judgement: judged.clone(),
+    });
+    match &judged.end {
+        Some(end) => close_game(game, play, end, say),
+        None => Ok(false),
+    }
+}
+
+/// Plays `stroke` under `turn`: the cue ball placed if in hand, struck with the striker's
+/// execution noise, run to rest, judged and counted.
+fn play_stroke(
+    game: &mut dyn GameRules,
+    play: &mut Play<'_>,
+    turn: &billiards_rules::Turn,
+    stroke: &crate::any_game::Stroke,
+) -> Result<Judgement, String> {
     match (turn.place, stroke.place) {
         (CueBallPlace::InHand { .. }, Some(at)) => play.table.place(turn.cue_ball, at)?,
         (_, Some(at)) => {
@@ -440,26 +473,17 @@ fn strike_once(
         .map_err(|e| format!("stroke {}: {e}", play.run.strokes + 1))?;
     let gained = game.points()[turn.striker.index()].saturating_sub(points_before);
     play.count(judged.striker, &judged, gained, pocketed);
-    let who = &game.players()[judged.striker.index()];
-    let declared = stroke
-        .declared
-        .text(&|b| game.ball_name(b))
-        .map_or(String::new(), |d| format!(" ({d})"));
-    say(format!(
-        "stroke {}: {who}{declared}: {}",
-        play.run.strokes, judged.text
-    ));
-    for &(n, p) in &judged.put {
-        play.table.place(n, p)?;
-    }
-    play.table.log(StrokeEntry {
-        choices: std::mem::take(&mut play.choices),
-        declared: stroke.declared,
-        judgement: judged.clone(),
-    });
-    let Some(end) = &judged.end else {
-        return Ok(false);
-    };
+    Ok(judged)
+}
+
+/// A game that ended with `end`: recorded, said, and the next one set up unless the match
+/// is over too (`true` then).
+fn close_game(
+    game: &mut dyn GameRules,
+    play: &mut Play<'_>,
+    end: &GameEnd,
+    say: &mut dyn FnMut(String),
+) -> Result<bool, String> {
     play.run.games += 1;
     play.run.played.push(GamePlayed {
         winner: Some(end.winner),
