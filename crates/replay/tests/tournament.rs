@@ -143,3 +143,87 @@ fn a_snooker_tournament_reports_frames_breaks_and_centuries() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("computer levels only"), "{err}");
 }
+
+/// Every game's tournament is the same path (issue 50): snooker's frames and carom's games
+/// shard and merge as pool's racks do, each match with its figures from the interface.
+#[test]
+fn every_game_shards_and_merges_into_the_whole_tournament() {
+    let dir = temp("every-game");
+    let without_times = |p: &PathBuf| {
+        let mut v: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap();
+        for m in v["matches"].as_array_mut().unwrap() {
+            for player in m["players"].as_array_mut().unwrap() {
+                let player = player.as_object_mut().unwrap();
+                player.remove("decision_secs");
+                player.remove("max_decision_secs");
+            }
+        }
+        v.as_object_mut().unwrap().remove("shard");
+        v
+    };
+    for (game, length, columns) in [
+        (
+            "snooker",
+            "1",
+            &["pts/frame", "mean break", "centuries"][..],
+        ),
+        ("three-cushion", "2", &["average", "high run"][..]),
+    ] {
+        let common = [
+            "tournament",
+            "--game",
+            game,
+            "--players",
+            "medium,easy",
+            "--games",
+            "3",
+            "--seed",
+            "8",
+            "--length",
+            length,
+        ];
+        let run = |extra: &[&str], name: &str| {
+            let path = dir.join(format!("{game}-{name}.json"));
+            let o = bin()
+                .args(common)
+                .args(extra)
+                .arg("--out")
+                .arg(&path)
+                .output()
+                .unwrap();
+            assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+            (path, String::from_utf8_lossy(&o.stdout).into_owned())
+        };
+        let (whole, report) = run(&[], "whole");
+        for column in columns {
+            assert!(report.contains(column), "{game}: {column}: {report}");
+        }
+        let (a, _) = run(&["--shard", "1/2"], "a");
+        let (b, _) = run(&["--shard", "2/2"], "b");
+        let merged = dir.join(format!("{game}-merged.json"));
+        let o = bin()
+            .args(["tournament", "--merge"])
+            .arg(&a)
+            .arg(&b)
+            .arg("--out")
+            .arg(&merged)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        assert!(
+            String::from_utf8_lossy(&o.stdout).contains("3 of 3 games"),
+            "{game}"
+        );
+        assert_eq!(without_times(&whole), without_times(&merged), "{game}");
+        // Each match has a result: a winner, or level on points at the stroke limit.
+        let v = without_times(&whole);
+        for m in v["matches"].as_array().unwrap() {
+            assert!(
+                m["winner"].is_u64() || m["points"][0] == m["points"][1],
+                "{game}: {m}"
+            );
+        }
+    }
+    std::fs::remove_dir_all(dir).ok();
+}
