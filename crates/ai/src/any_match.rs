@@ -403,14 +403,14 @@ fn strike_once(
         play.run.tally[turn.striker.index()].simulations += sims;
     }
     let judged = play_stroke(game, play, &turn, &stroke)?;
-    let who = &game.players()[judged.striker.index()];
     let declared = stroke
         .declared
         .text(&|b| game.ball_name(b))
         .map_or(String::new(), |d| format!(" ({d})"));
     say(format!(
-        "stroke {}: {who}{declared}: {}",
-        play.run.strokes, judged.text
+        "stroke {}{declared}: {}",
+        play.run.strokes,
+        judged.text_by(&game.players()[judged.striker.index()])
     ));
     for &(n, p) in &judged.put {
         play.table.place(n, p)?;

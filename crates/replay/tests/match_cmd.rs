@@ -112,3 +112,21 @@ fn tournament_and_simulate_take_three_cushion() {
     assert!(ok && out.contains("bit for bit"), "{out}{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A reader that stops early (`billiards-cli match ... | head -1`) ends the command quietly
+/// with a broken pipe's status (141, as a Unix tool killed by SIGPIPE), never a panic. The
+/// pipe's reading end is closed before the command starts, so its first line meets it.
+#[test]
+fn a_reader_that_stops_early_is_no_panic() {
+    let (reader, writer) = std::io::pipe().unwrap();
+    drop(reader);
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_billiards-cli"))
+        .args(["match", "--game", "nine-ball", "--players", "easy,easy"])
+        .args(["--length", "1", "--seed", "1"])
+        .stdout(writer)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(out.status.code(), Some(141), "{err}");
+}

@@ -175,12 +175,7 @@ impl LiveGame {
     /// The last judgement in words, with the striker: "Ann: no point ...". A text that names
     /// the striker already ("Ann pots a red") is given as it is.
     pub fn verdict_text(&self, judgement: &Judgement) -> String {
-        let name = self.name(judgement.striker);
-        if judgement.text.contains(name) {
-            judgement.text.clone()
-        } else {
-            format!("{name}: {}", judgement.text)
-        }
+        judgement.text_by(self.name(judgement.striker))
     }
 
     /// What one game of the match is called: a rack (pool), a frame (snooker), a try (a

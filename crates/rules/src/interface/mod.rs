@@ -265,6 +265,18 @@ pub struct Judgement {
     pub end: Option<GameEnd>,
 }
 
+impl Judgement {
+    /// The verdict with the striker named once: "Ann: no point ..."; a text that names the
+    /// striker already ("Ann pots a red", snooker's) is given as it is. `name`: the striker's.
+    pub fn text_by(&self, name: &str) -> String {
+        if self.text.contains(name) {
+            self.text.clone()
+        } else {
+            format!("{name}: {}", self.text)
+        }
+    }
+}
+
 /// Why a call on a game was refused (nothing changed).
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[error("{0}")]
