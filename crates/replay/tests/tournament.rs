@@ -14,6 +14,27 @@ fn temp(name: &str) -> PathBuf {
     dir
 }
 
+/// `billiards-cli ARGS --out OUT`, which must succeed; its report.
+fn played(args: &[&str], out: &PathBuf) -> String {
+    let o = bin().args(args).arg("--out").arg(out).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// `tournament --merge a b --out merged`, which must succeed; its report.
+fn merge(a: &PathBuf, b: &PathBuf, merged: &PathBuf) -> String {
+    let o = bin()
+        .args(["tournament", "--merge"])
+        .arg(a)
+        .arg(b)
+        .arg("--out")
+        .arg(merged)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
 #[test]
 fn bad_input_exits_2_with_a_sentence_and_no_panic() {
     for (args, says) in [
@@ -47,31 +68,15 @@ fn two_shards_merged_are_the_whole_tournament() {
     ];
     let run = |extra: &[&str], out: &str| {
         let path = dir.join(out);
-        let o = bin()
-            .args(common)
-            .args(["--games", "4", "--seed", "9"])
-            .args(extra)
-            .arg("--out")
-            .arg(&path)
-            .output()
-            .unwrap();
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let args = [&common[..], &["--games", "4", "--seed", "9"], extra].concat();
+        played(&args, &path);
         path
     };
     let whole = run(&[], "whole.json");
     let a = run(&["--shard", "1/2"], "a.json");
     let b = run(&["--shard", "2/2"], "b.json");
     let merged = dir.join("merged.json");
-    let o = bin()
-        .args(["tournament", "--merge"])
-        .arg(&a)
-        .arg(&b)
-        .arg("--out")
-        .arg(&merged)
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    assert!(String::from_utf8_lossy(&o.stdout).contains("4 of 4 games"));
+    assert!(merge(&a, &b, &merged).contains("4 of 4 games"));
     // The same racks, game for game (decision times aside).
     let racks = |p: &PathBuf| {
         let v: serde_json::Value =
@@ -185,15 +190,8 @@ fn every_game_shards_and_merges_into_the_whole_tournament() {
         ];
         let run = |extra: &[&str], name: &str| {
             let path = dir.join(format!("{game}-{name}.json"));
-            let o = bin()
-                .args(common)
-                .args(extra)
-                .arg("--out")
-                .arg(&path)
-                .output()
-                .unwrap();
-            assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-            (path, String::from_utf8_lossy(&o.stdout).into_owned())
+            let report = played(&[&common[..], extra].concat(), &path);
+            (path, report)
         };
         let (whole, report) = run(&[], "whole");
         for column in columns {
@@ -202,19 +200,7 @@ fn every_game_shards_and_merges_into_the_whole_tournament() {
         let (a, _) = run(&["--shard", "1/2"], "a");
         let (b, _) = run(&["--shard", "2/2"], "b");
         let merged = dir.join(format!("{game}-merged.json"));
-        let o = bin()
-            .args(["tournament", "--merge"])
-            .arg(&a)
-            .arg(&b)
-            .arg("--out")
-            .arg(&merged)
-            .output()
-            .unwrap();
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        assert!(
-            String::from_utf8_lossy(&o.stdout).contains("3 of 3 games"),
-            "{game}"
-        );
+        assert!(merge(&a, &b, &merged).contains("3 of 3 games"), "{game}");
         assert_eq!(without_times(&whole), without_times(&merged), "{game}");
         // Each match has a result: a winner, or level on points at the stroke limit.
         let v = without_times(&whole);
