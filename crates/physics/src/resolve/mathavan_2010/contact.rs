@@ -232,7 +232,8 @@ impl Setup {
     }
 
     pub(super) fn rate_fixed(&self, y: &State, gi: Grip, gc: Grip, dirs: [Dir; 2]) -> State {
-        self.rate_and_normal(y, gi, gc, dirs).0
+        let (f, _) = self.friction_fixed(y, gi, gc, dirs);
+        self.rate_of_friction(&f, y)
     }
 
     /// [`Self::rate_fixed`] and the slaved contact's growth rate `lambda` (zero if none).
@@ -243,30 +244,8 @@ impl Setup {
         gc: Grip,
         dirs: [Dir; 2],
     ) -> (State, f64) {
-        let ([a, b, p, q], _, lambda) = self.friction_slaved(y, gi, gc, dirs);
-        (self.rate_of_friction(&[a, b, p, q], y), lambda)
-    }
-
-    /// [`Self::rate_fixed`] and the table's normal `N` of the same friction.
-    pub(super) fn rate_and_normal(
-        &self,
-        y: &State,
-        gi: Grip,
-        gc: Grip,
-        dirs: [Dir; 2],
-    ) -> (State, f64) {
-        let (s, c) = (self.s, self.c);
-        let ([a, b, p, q], n) = self.friction_fixed(y, gi, gc, dirs);
-        let k = self.k;
-        let d = [
-            a + p,
-            -c - b * s + q,
-            k * (b + q),
-            k * (a * s - p),
-            -k * a * c,
-            c * y[1],
-        ];
-        (d, n)
+        let (f, _, lambda) = self.friction_slaved(y, gi, gc, dirs);
+        (self.rate_of_friction(&f, y), lambda)
     }
 
     /// Slip rates of the nose and the cloth.
