@@ -99,10 +99,6 @@ pub struct MatchRun {
     pub winner: Option<Seat>,
     /// Strokes played.
     pub strokes: usize,
-    /// Fouls committed, by seat.
-    pub fouls: [usize; 2],
-    /// Games (racks, frames) finished.
-    pub games: usize,
     /// Every game begun, in order (the last unfinished when the match was stopped).
     pub played: Vec<GamePlayed>,
     /// Each seat's figures.
@@ -113,6 +109,18 @@ pub struct MatchRun {
     pub score_line: String,
     /// With [`Seating::record`]: each game's recording and rules log.
     pub recorded: Vec<(Recording, StrokeLog)>,
+}
+
+impl MatchRun {
+    /// Games (racks, frames, tries) finished.
+    pub fn games(&self) -> usize {
+        self.played.iter().filter(|g| g.winner.is_some()).count()
+    }
+
+    /// Fouls committed, by seat.
+    pub fn fouls(&self) -> [usize; 2] {
+        [self.tally[0].fouls, self.tally[1].fouls]
+    }
 }
 
 /// The table in play: a lean solver, or one recorded input by input.
@@ -291,7 +299,6 @@ impl Play<'_> {
         t.points += gained;
         if !judged.fair {
             t.fouls += 1;
-            run.fouls[striker.index()] += 1;
         }
         // A visit's run goes on while its strokes score (snooker's break, 2.8): a stroke that
         // gains nothing, or the end of the visit or of the game, closes it.
@@ -329,8 +336,6 @@ pub fn play_match(
         run: MatchRun {
             winner: None,
             strokes: 0,
-            fouls: [0; 2],
-            games: 0,
             played: Vec::new(),
             tally: Default::default(),
             points: [0; 2],
@@ -484,7 +489,6 @@ fn close_game(
     end: &GameEnd,
     say: &mut dyn FnMut(String),
 ) -> Result<bool, String> {
-    play.run.games += 1;
     play.run.played.push(GamePlayed {
         winner: Some(end.winner),
         opener: play.opener,

@@ -60,7 +60,7 @@ impl Sides {
 
     /// `by_player` by seat: seat A's first.
     pub fn by_seat<T: Clone>(self, by_player: &[T; 2]) -> [T; 2] {
-        [0, 1].map(|s| by_player[if s == 0 { self.opener } else { 1 - self.opener }].clone())
+        [Seat::A, Seat::B].map(|s| by_player[self.player_of(s)].clone())
     }
 }
 

@@ -33,7 +33,7 @@ fn every_game_with_a_winner_is_played_to_the_end_between_computers() {
     for entry in GAMES.iter().filter(|g| g.id != "free-play") {
         let r = run(entry.id, 5);
         assert!(
-            r.winner.is_some() && r.games == 1,
+            r.winner.is_some() && r.games() == 1,
             "{}: no winner in {} strokes: {}",
             entry.label,
             r.strokes,
@@ -73,7 +73,7 @@ fn every_standard_drill_is_a_session_played_through_the_interface() {
             &mut |_| {},
         )
         .unwrap();
-        assert_eq!(r.games, 3, "{name}: three tries judged: {}", r.score_line);
+        assert_eq!(r.games(), 3, "{name}: three tries judged: {}", r.score_line);
         assert_eq!(r.winner, Some(billiards_rules::Seat::A), "{name}");
         assert_eq!(game.score.tries, 3, "{name}");
         assert!(r.score_line.contains("of 3 tries made"), "{}", r.score_line);

@@ -76,9 +76,9 @@ pub fn run(a: MatchArgs) -> Result<(), String> {
             "{} wins the match in {} strokes ({} games; fouls {} - {}): {}",
             game.players()[w.index()],
             run.strokes,
-            run.games,
-            run.fouls[0],
-            run.fouls[1],
+            run.games(),
+            run.fouls()[0],
+            run.fouls()[1],
             run.score_line
         ),
         None => println!(
