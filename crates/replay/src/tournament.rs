@@ -1,7 +1,7 @@
 //! `tournament --game ID`: matches of any game of the catalog between two players,
 //! headless, on all cores, each played by the one match loop through the one game interface
 //! ([`billiards_ai::any_match`], issue 50): win rates, fouls, decision times and what the
-//! game counts besides ([`Figures`]: pool's balls an inning and break and run, snooker's
+//! game counts besides ([`Unit`]: pool's balls an inning and break and run, snooker's
 //! breaks and centuries, carom's average and high run). A match is one game by default
 //! ([`GameEntry::one_game`]: a rack, a frame, a carom game), `--length` otherwise.
 //! `--shard K/M` plays the K-th of M slices of the matches (match `g` belongs to slice
@@ -21,7 +21,7 @@ use billiards_ai::match_record::{Between, MatchRecord, play_between};
 use billiards_ai::noise::stream;
 use billiards_ai::play::{MAX_SHOTS, Venue};
 use billiards_rules::GameRules;
-use billiards_rules::catalog::{Figures, GameEntry, MatchSettings, find};
+use billiards_rules::catalog::{GameEntry, MatchSettings, Unit, find};
 use indicatif::{ProgressBar, ProgressStyle};
 use rand::Rng;
 use rayon::prelude::*;
@@ -263,14 +263,13 @@ pub fn report(entry: &GameEntry, r: &Results) -> String {
         "{}, {} {}, {} vs {}: {n} of {} games (seed {}), {table}\n",
         entry.label, entry.length_unit, r.length, r.players[0], r.players[1], r.games, r.seed,
     );
-    let figures = Columns::of(entry.figures);
     out += &format!(
         "{:<8} {:>5} {:>7} {:>13} {} {:>11} {:>17}\n",
         "player",
         "wins",
         "win %",
         "95 % interval",
-        figures.head(),
+        head(entry.unit),
         "fouls/shot",
         "decision mean/max"
     );
@@ -296,7 +295,7 @@ pub fn report(entry: &GameEntry, r: &Results) -> String {
             100.0 * wins as f64 / n.max(1) as f64,
             100.0 * lo,
             100.0 * hi,
-            figures.row(r, p),
+            row(entry.unit, r, p),
             fouls / strokes.max(1.0),
             secs / decisions.max(1.0),
             max,
@@ -328,65 +327,58 @@ fn games(n: usize) -> String {
 /// A snooker break of 100 or more.
 pub const CENTURY: u32 = 100;
 
-/// The game's own columns of the report ([`Figures`]).
-struct Columns(Figures);
-
-impl Columns {
-    fn of(figures: Figures) -> Self {
-        Self(figures)
+/// The game's own columns' heads ([`Unit`]).
+fn head(unit: Unit) -> String {
+    match unit {
+        Unit::Racks => format!("{:>12} {:>14}", "balls/inning", "break and run"),
+        Unit::Frames => format!(
+            "{:>9} {:>10} {:>8} {:>15}",
+            "pts/frame", "mean break", "highest", "centuries"
+        ),
+        Unit::Points => format!("{:>9} {:>8}", "average", "high run"),
     }
+}
 
-    fn head(&self) -> String {
-        match self.0 {
-            Figures::Racks => format!("{:>12} {:>14}", "balls/inning", "break and run"),
-            Figures::Frames => format!(
-                "{:>9} {:>10} {:>8} {:>15}",
-                "pts/frame", "mean break", "highest", "centuries"
-            ),
-            Figures::Points => format!("{:>9} {:>8}", "average", "high run"),
+/// Player `p`'s figures in the game's own columns ([`Unit`]).
+fn row(unit: Unit, r: &Results, p: usize) -> String {
+    let n = r.matches.len().max(1) as f64;
+    let sum = |f: &dyn Fn(&MatchRecord) -> f64| r.matches.iter().map(f).sum::<f64>();
+    let runs: Vec<u32> = r
+        .matches
+        .iter()
+        .flat_map(|x| x.players[p].runs.iter().copied())
+        .collect();
+    let highest = runs.iter().max().copied().unwrap_or(0);
+    match unit {
+        Unit::Racks => {
+            let balls = sum(&|x| x.players[p].pocketed as f64);
+            let innings = sum(&|x| x.players[p].visits as f64);
+            let runs_out = sum(&|x| x.run_outs[p] as f64);
+            let opened = sum(&|x| x.openings[p] as f64);
+            format!(
+                "{:>12.2} {:>7}/{:<3} {:>3.0}%",
+                balls / innings.max(1.0),
+                runs_out,
+                opened,
+                100.0 * runs_out / opened.max(1.0)
+            )
         }
-    }
-
-    fn row(&self, r: &Results, p: usize) -> String {
-        let n = r.matches.len().max(1) as f64;
-        let sum = |f: &dyn Fn(&MatchRecord) -> f64| r.matches.iter().map(f).sum::<f64>();
-        let runs: Vec<u32> = r
-            .matches
-            .iter()
-            .flat_map(|x| x.players[p].runs.iter().copied())
-            .collect();
-        let highest = runs.iter().max().copied().unwrap_or(0);
-        match self.0 {
-            Figures::Racks => {
-                let balls = sum(&|x| x.players[p].pocketed as f64);
-                let innings = sum(&|x| x.players[p].visits as f64);
-                let runs_out = sum(&|x| x.run_outs[p] as f64);
-                let opened = sum(&|x| x.openings[p] as f64);
-                format!(
-                    "{:>12.2} {:>7}/{:<3} {:>3.0}%",
-                    balls / innings.max(1.0),
-                    runs_out,
-                    opened,
-                    100.0 * runs_out / opened.max(1.0)
-                )
-            }
-            Figures::Frames => {
-                let points = sum(&|x| f64::from(x.points[p]));
-                let centuries = runs.iter().filter(|&&b| b >= CENTURY).count();
-                format!(
-                    "{:>9.1} {:>10.2} {:>8} {:>5} ({:>5.3}/fr)",
-                    points / n,
-                    f64::from(runs.iter().sum::<u32>()) / runs.len().max(1) as f64,
-                    highest,
-                    centuries,
-                    centuries as f64 / n
-                )
-            }
-            Figures::Points => {
-                let points = sum(&|x| f64::from(x.players[p].points));
-                let innings = sum(&|x| x.players[p].visits as f64);
-                format!("{:>9.3} {:>8}", points / innings.max(1.0), highest)
-            }
+        Unit::Frames => {
+            let points = sum(&|x| f64::from(x.points[p]));
+            let centuries = runs.iter().filter(|&&b| b >= CENTURY).count();
+            format!(
+                "{:>9.1} {:>10.2} {:>8} {:>5} ({:>5.3}/fr)",
+                points / n,
+                f64::from(runs.iter().sum::<u32>()) / runs.len().max(1) as f64,
+                highest,
+                centuries,
+                centuries as f64 / n
+            )
+        }
+        Unit::Points => {
+            let points = sum(&|x| f64::from(x.players[p].points));
+            let innings = sum(&|x| x.players[p].visits as f64);
+            format!("{:>9.3} {:>8}", points / innings.max(1.0), highest)
         }
     }
 }

@@ -40,19 +40,40 @@ impl MatchSettings {
     }
 }
 
-/// What a tournament counts of a game besides wins, fouls and decision times, each read from
-/// the interface (the judgements and [`GameRules::points`]).
+/// What a game's match is counted in, and with it what a tournament counts of the game
+/// besides wins, fouls and decision times (each read from the interface: the judgements and
+/// [`GameRules::points`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Figures {
-    /// Pool's: object balls pocketed an inning, racks won from the break without the other
-    /// player striking (break and run).
+pub enum Unit {
+    /// Racks (pool): object balls pocketed an inning, racks won from the break without the
+    /// other player striking (break and run).
     Racks,
-    /// Snooker's: points a frame, breaks (points in a visit, WPBSA 2.8), the highest,
+    /// Frames (snooker): points a frame, breaks (points in a visit, WPBSA 2.8), the highest,
     /// centuries.
     Frames,
-    /// Carom's: the general average (points an inning) and the high run (the most points
-    /// in one inning).
+    /// Points (carom): the general average (points an inning) and the high run (the most
+    /// points in one inning).
     Points,
+}
+
+impl Unit {
+    /// What a match's length is in: "racks", "frames", "points".
+    pub fn noun(self) -> &'static str {
+        match self {
+            Unit::Racks => "racks",
+            Unit::Frames => "frames",
+            Unit::Points => "points",
+        }
+    }
+
+    /// What one game of a match is called: a rack, a frame, a game.
+    pub fn game(self) -> &'static str {
+        match self {
+            Unit::Racks => "rack",
+            Unit::Frames => "frame",
+            Unit::Points => "game",
+        }
+    }
 }
 
 /// How an entry starts a match on the given table and balls.
@@ -67,15 +88,13 @@ pub struct GameEntry {
     pub label: &'static str,
     /// What the match's length counts ("race to", "best of", "points to").
     pub length_unit: &'static str,
-    /// What the length is in ("racks", "frames", "points").
-    pub length_noun: &'static str,
+    /// What the length is in ([`Unit::noun`]) and what a tournament counts of the game.
+    pub unit: Unit,
     /// The usual length of a match.
     pub default_length: u32,
     /// The length of a match of one game: one rack (race to 1), one frame (best of 1), one
     /// carom game to its usual points; what a tournament plays by default.
     pub one_game: u32,
-    /// What a tournament counts of this game besides wins and fouls.
-    pub figures: Figures,
     /// The solver's parameters the command line's tournaments play it under (their figures in
     /// the READMEs were measured so): pool's and carom's the spin model (Han 2005's cushion),
     /// snooker's the paper model of issue 26's frames; the ball is always the game's.
@@ -193,10 +212,9 @@ pub const GAMES: &[GameEntry] = &[
         id: "nine-ball",
         label: "9-ball",
         length_unit: "race to",
-        length_noun: "racks",
+        unit: Unit::Racks,
         default_length: 3,
         one_game: 1,
-        figures: Figures::Racks,
         params: spin_params,
         equipment: pool_equipment,
         pool_table: true,
@@ -208,10 +226,9 @@ pub const GAMES: &[GameEntry] = &[
         id: "eight-ball",
         label: "8-ball",
         length_unit: "race to",
-        length_noun: "racks",
+        unit: Unit::Racks,
         default_length: 3,
         one_game: 1,
-        figures: Figures::Racks,
         params: spin_params,
         equipment: pool_equipment,
         pool_table: true,
@@ -223,10 +240,9 @@ pub const GAMES: &[GameEntry] = &[
         id: "ten-ball",
         label: "10-ball",
         length_unit: "race to",
-        length_noun: "racks",
+        unit: Unit::Racks,
         default_length: 3,
         one_game: 1,
-        figures: Figures::Racks,
         params: spin_params,
         equipment: pool_equipment,
         pool_table: true,
@@ -238,10 +254,9 @@ pub const GAMES: &[GameEntry] = &[
         id: "snooker",
         label: "snooker",
         length_unit: "best of",
-        length_noun: "frames",
+        unit: Unit::Frames,
         default_length: 3,
         one_game: 1,
-        figures: Figures::Frames,
         params: Params::snooker,
         equipment: snooker_equipment,
         pool_table: false,
@@ -260,11 +275,10 @@ pub const GAMES: &[GameEntry] = &[
         id: "three-cushion",
         label: "three-cushion",
         length_unit: "points to",
-        length_noun: "points",
+        unit: Unit::Points,
         // UMB world cup and championship distance (Art. 29 leaves it to the event).
         default_length: 40,
         one_game: 40,
-        figures: Figures::Points,
         params: spin_params,
         equipment: carom_equipment,
         pool_table: false,
@@ -283,10 +297,9 @@ pub const GAMES: &[GameEntry] = &[
         id: "free-play",
         label: "free play",
         length_unit: "race to",
-        length_noun: "racks",
+        unit: Unit::Racks,
         default_length: 1,
         one_game: 1,
-        figures: Figures::Racks,
         params: spin_params,
         equipment: pool_equipment,
         pool_table: true,

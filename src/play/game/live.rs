@@ -184,11 +184,7 @@ impl LiveGame {
         if self.rules.solo() {
             return "try";
         }
-        match self.entry.map(|e| e.length_noun) {
-            Some("racks") => "rack",
-            Some("frames") => "frame",
-            _ => "game",
-        }
+        self.entry.map_or("game", |e| e.unit.game())
     }
 
     /// The next game of the match started ([`GameRules::next_game`], a drill's next try):

@@ -52,7 +52,7 @@ impl GameChoice {
 
     /// What the length is in: "racks", "frames", "points".
     pub fn length_noun(self) -> &'static str {
-        self.entry().map_or("racks", |e| e.length_noun)
+        self.entry().map_or("racks", |e| e.unit.noun())
     }
 
     /// Whether it is played on the pool table of the player's choosing (size, pockets,
