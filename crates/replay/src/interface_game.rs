@@ -84,17 +84,13 @@ pub(crate) fn simulate(id: &str, a: &SimulateArgs) -> Result<(), String> {
                 declared,
             })
             .map_err(|e| at(&e))?;
-        let who = &game.players()[judged.striker.index()];
+        let said = judged.text_by(&game.players()[judged.striker.index()]);
         let spotted: String = judged
             .put
             .iter()
             .map(|&(n, _)| format!("; {} is spotted", game.ball_name(n)))
             .collect();
-        println!(
-            "stroke {k}: {who}: {}{spotted}{}",
-            judged.text,
-            what_next(game.as_ref())
-        );
+        println!("stroke {k}: {said}{spotted}{}", what_next(game.as_ref()));
         out.push(ShotSummary::of(
             shot,
             sim,

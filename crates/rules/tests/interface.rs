@@ -389,3 +389,32 @@ fn balls_are_named_by_the_game_whose_table_it_is() {
     assert_eq!((carom.ball_word)(1), "yellow");
     assert_eq!(carom.list_words(&[0, 2]), "the white, the red");
 }
+
+/// A judgement's words name the striker once: prefixed when they do not open with the name,
+/// as they are when they do (snooker's "Ann pots a red"), and prefixed when the name appears
+/// only later, as the opponent's ("4 points to Ann" said of Bob's foul).
+#[test]
+fn a_judgement_names_its_striker_once() {
+    use billiards_rules::{Judgement, Seat};
+    let judged = |text: &str| Judgement {
+        striker: Seat::B,
+        fair: false,
+        fouls: Vec::new(),
+        text: text.to_owned(),
+        put: Vec::new(),
+        continues: false,
+        end: None,
+    };
+    assert_eq!(
+        judged("Bob pots a red: 1 point").text_by("Bob"),
+        "Bob pots a red: 1 point"
+    );
+    assert_eq!(
+        judged("legal: the 3 in the left side pocket").text_by("Bob"),
+        "Bob: legal: the 3 in the left side pocket"
+    );
+    assert_eq!(
+        judged("foul: the cue ball went in-off: 4 points to Ann").text_by("Ann"),
+        "Ann: foul: the cue ball went in-off: 4 points to Ann"
+    );
+}

@@ -266,10 +266,11 @@ pub struct Judgement {
 }
 
 impl Judgement {
-    /// The verdict with the striker named once: "Ann: no point ..."; a text that names the
-    /// striker already ("Ann pots a red", snooker's) is given as it is. `name`: the striker's.
+    /// The verdict with the striker named once: "Ann: no point ..."; a text that opens with
+    /// the striker's name already ("Ann pots a red", snooker's) is given as it is (a name
+    /// elsewhere in it may be the opponent's: "4 points to Ann"). `name`: the striker's.
     pub fn text_by(&self, name: &str) -> String {
-        if self.text.contains(name) {
+        if self.text.starts_with(name) {
             self.text.clone()
         } else {
             format!("{name}: {}", self.text)
